@@ -1,0 +1,20 @@
+# Warnings, floating-point hygiene and sanitizers shared by every target.
+
+add_library(exactgeo_warnings INTERFACE)
+target_compile_options(exactgeo_warnings INTERFACE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
+                                                   -Wno-sign-conversion)
+if(EXACTGEO_WERROR)
+  target_compile_options(exactgeo_warnings INTERFACE -Werror)
+endif()
+
+# Predicate code relies on every floating-point operation being rounded exactly once, to
+# nearest: no fused multiply-add contraction (it breaks the error-free transformations
+# and the filter error bounds) and no fast-math. Excess precision (x87) is refused at
+# compile time in error_free.hpp (FLT_EVAL_METHOD must be 0).
+add_library(exactgeo_strict_fp INTERFACE)
+target_compile_options(exactgeo_strict_fp INTERFACE -ffp-contract=off -fno-fast-math)
+
+if(EXACTGEO_SANITIZE)
+  add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=address,undefined -fno-sanitize-recover=all)
+endif()

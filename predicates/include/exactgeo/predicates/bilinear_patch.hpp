@@ -1,0 +1,62 @@
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "exactgeo/predicates/arithmetic.hpp"
+#include "exactgeo/predicates/point.hpp"
+#include "exactgeo/predicates/sign.hpp"
+
+namespace exactgeo {
+
+/// The bilinear patch p(u, v) = (1-u)(1-v) p00 + u(1-v) p10 + u v p11 + (1-u) v p01 over
+/// (u, v) in [0, 1]^2. Its boundary is the closed polygon p00 -> p10 -> p11 -> p01. A
+/// triangle (a, b, c) is the degenerate patch {a, b, c, c}.
+struct BilinearPatch {
+  Point3 p00;
+  Point3 p10;
+  Point3 p11;
+  Point3 p01;
+};
+
+/// The exact shape of a patch.
+enum class PatchShape : std::uint8_t {
+  skew,               ///< corners not coplanar: a piece of hyperbolic paraboloid
+  convex,             ///< planar, boundary a strictly convex quadrilateral
+  concave,            ///< planar, simple boundary with one reflex corner ("dart")
+  butterfly,          ///< planar, self-intersecting boundary ("hourglass", "bow tie")
+  degenerate_planar,  ///< planar, but a boundary corner has zero turn (repeated or
+                      ///< collinear consecutive corners, e.g. a triangle)
+  segment,            ///< all corners collinear, not all equal
+  point,              ///< all corners equal
+};
+std::string_view to_string(PatchShape shape) noexcept;
+
+PatchShape classify_patch(const BilinearPatch& patch) noexcept;
+
+/// Crossing parity of the ray {origin + s * direction : s > 0} with the patch, counting
+/// the solutions (u, v) in [0,1]^2 of p(u, v) = origin + s direction (a flat patch that
+/// folds over itself covers some points twice: they count twice).
+enum class RayPatch : std::uint8_t {
+  even,
+  odd,
+  origin_on_patch,  ///< origin = p(u, v) for some (u, v) in [0, 1]^2
+  degenerate,       ///< no transversal count along this ray: it meets the patch boundary,
+                    ///< or lies in the plane of a flat patch and meets the corners' hull.
+                    ///< Ask again with another direction.
+};
+std::string_view to_string(RayPatch r) noexcept;
+
+/// Exact (Brochu, Edwards, Bridson 2012, Algorithm 1, with every flat shape handled).
+/// Preconditions: finite coordinates, direction != 0.
+RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
+                          const BilinearPatch& patch,
+                          Arithmetic arithmetic = Arithmetic::exact) noexcept;
+
+/// Sign of the patch's implicit function phi at x (DESIGN.md section 1): zero on the
+/// patch's quadric; for a skew patch and x inside the corners' tetrahedron, negative on the
+/// side of the triangles (p00, p10, p01), (p10, p11, p01), positive on the other side.
+Sign patch_side(const BilinearPatch& patch, const Point3& x,
+                Arithmetic arithmetic = Arithmetic::exact) noexcept;
+
+}  // namespace exactgeo

@@ -1,0 +1,54 @@
+#pragma once
+
+// The ray-independent facts about a patch with double corners (PatchFrame), and its
+// public shape classification. Computed from differences of corners, so the filters are
+// relative to the patch's own size, not to its distance from any ray origin.
+
+#include <array>
+#include <optional>
+
+#include "exactgeo/predicates/bilinear_patch.hpp"
+#include "exactgeo/predicates/internal/ray_patch_core.hpp"
+
+namespace exactgeo::internal {
+
+/// Corners in the internal order x0 = p00, x1 = p10, x2 = p01, x3 = p11.
+inline std::array<Point3, 4> internal_corners(const BilinearPatch& p) noexcept {
+  return {p.p00, p.p10, p.p01, p.p11};
+}
+
+/// Offsets x_i - origin.
+inline Offsets<4> offsets_from(const Point3& origin, const std::array<Point3, 4>& x) noexcept {
+  return {Offset::between(origin, x[0]), Offset::between(origin, x[1]),
+          Offset::between(origin, x[2]), Offset::between(origin, x[3])};
+}
+
+/// The four triangles of the corners' tetrahedron (pair A, then pair B).
+inline constexpr std::array<std::array<std::uint8_t, 3>, 4> kFaceTriples{
+    {{0, 1, 2}, {1, 3, 2}, {0, 1, 3}, {0, 3, 2}}};
+
+/// An axis k with ((x_j - x_i) x (x_l - x_i))_k != 0: the triangle is not degenerate and
+/// dropping k projects its plane injectively. nullopt for a degenerate triangle.
+template <class Signs>
+std::optional<int> normal_axis(const Signs& signs, const std::array<Point3, 4>& x,
+                               const std::array<std::uint8_t, 3>& t) noexcept {
+  const Offset u = Offset::between(x[t[0]], x[t[1]]);
+  const Offset v = Offset::between(x[t[0]], x[t[2]]);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (signs.cross2(axis, u, v) != Sign::zero) return axis;
+  }
+  return std::nullopt;
+}
+
+template <class Signs>
+PatchFrame patch_frame(const Signs& signs, const std::array<Point3, 4>& x) noexcept {
+  const Sign volume = signs.det3_by_axis(Offset::between(x[0], x[1]), Offset::between(x[0], x[2]),
+                                         Offset::between(x[0], x[3]));
+  if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
+  for (const auto& triple : kFaceTriples) {
+    if (normal_axis(signs, x, triple)) return {PatchFrame::Kind::planar, Sign::zero, triple};
+  }
+  return {PatchFrame::Kind::collinear, Sign::zero, {}};
+}
+
+}  // namespace exactgeo::internal

@@ -1,0 +1,148 @@
+#pragma once
+
+// Sign policies: the one interface through which the geometric algorithms (ray-triangle,
+// ray-patch, and later CCD) ask for the sign of a polynomial. Writing the algorithms
+// against a policy gives, from one source,
+//
+//   ExactSigns     filter -> expansions -> rationals: the product (optionally counting
+//                  which stage decided, into a caller-owned StageCounts);
+//   DoubleSigns    the plain double evaluation of the same formulas, no filter and no
+//                  fallback: the non-exact baseline users compare against;
+//   RationalSigns  rationals only: the slow reference.
+//
+// Policies are small value types without global state; they are safe to copy and to use
+// from many threads (a StageCounts must not be shared between threads).
+
+#include <cstdint>
+#include <utility>
+
+#include "exactgeo/predicates/arithmetic.hpp"
+#include "exactgeo/predicates/internal/sign_stages.hpp"
+
+namespace exactgeo::internal {
+
+/// How many signs each stage decided.
+struct StageCounts {
+  std::uint64_t filter = 0;
+  std::uint64_t expansion = 0;
+  std::uint64_t rational = 0;
+
+  std::uint64_t total() const noexcept { return filter + expansion + rational; }
+  StageCounts& operator+=(const StageCounts& o) noexcept {
+    filter += o.filter;
+    expansion += o.expansion;
+    rational += o.rational;
+    return *this;
+  }
+};
+
+/// The named predicates every policy offers, in terms of the policy's generic sign().
+template <class Policy>
+class NamedSigns {
+ public:
+  /// sign of det[a, b, c]; filter normalised per axis (inputs are points' offsets).
+  Sign det3_by_axis(const Offset& a, const Offset& b, const Offset& c) const noexcept {
+    return self().template sign<Det3Formula, Grouping::by_axis>(Offsets<3>{a, b, c});
+  }
+  /// sign of det[a, b, c]; filter normalised per vector (one of them is a direction).
+  Sign det3_by_vector(const Offset& a, const Offset& b, const Offset& c) const noexcept {
+    return self().template sign<Det3Formula, Grouping::by_vector>(Offsets<3>{a, b, c});
+  }
+  /// sign of (a x b)[axis].
+  Sign cross2(int axis, const Offset& a, const Offset& b) const noexcept {
+    return self().template sign<Cross2Formula, Grouping::by_vector>(Offsets<2>{a, b}, axis);
+  }
+  Sign dot3(const Offset& a, const Offset& b) const noexcept {
+    return self().template sign<Dot3Formula, Grouping::by_vector>(Offsets<2>{a, b});
+  }
+  /// sign of the bilinear patch's implicit function at the origin (formulas.hpp).
+  Sign phi(const Offsets<4>& a) const noexcept {
+    return self().template sign<PhiFormula, Grouping::by_axis>(a);
+  }
+
+ private:
+  const Policy& self() const noexcept { return static_cast<const Policy&>(*this); }
+};
+
+class ExactSigns : public NamedSigns<ExactSigns> {
+ public:
+  using Number = Rational;  // for the few rare-path computations done outside formulas
+
+  explicit ExactSigns(StageCounts* counts = nullptr) noexcept : counts_(counts) {}
+
+  template <class Formula, Grouping grouping, std::size_t N>
+  Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
+    if (const auto s = filtered_sign<Formula, grouping>(rounded(in), parameter)) {
+      if (counts_) ++counts_->filter;
+      return *s;
+    }
+    if (const auto s = expansion_sign<Formula>(in, parameter)) {
+      if (counts_) ++counts_->expansion;
+      return *s;
+    }
+    if (counts_) ++counts_->rational;
+    return rational_sign<Formula>(in, parameter);
+  }
+
+  /// Exact numbers for the few rare-path computations done outside sign() (the folded
+  /// flat patch test).
+  template <std::size_t N>
+  static VectorArray<Rational, N> numbers(const Offsets<N>& in) {
+    return rational_vectors(in);
+  }
+
+ private:
+  StageCounts* counts_;
+};
+
+class DoubleSigns : public NamedSigns<DoubleSigns> {
+ public:
+  using Number = double;
+
+  template <class Formula, Grouping grouping, std::size_t N>
+  Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
+    return sign_of(Formula::evaluate(rounded(in), parameter));
+  }
+
+  template <std::size_t N>
+  static VectorArray<double, N> numbers(const Offsets<N>& in) noexcept {
+    return rounded(in);
+  }
+};
+
+class RationalSigns : public NamedSigns<RationalSigns> {
+ public:
+  using Number = Rational;
+
+  template <class Formula, Grouping grouping, std::size_t N>
+  Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
+    return rational_sign<Formula>(in, parameter);
+  }
+
+  template <std::size_t N>
+  static VectorArray<Rational, N> numbers(const Offsets<N>& in) {
+    return rational_vectors(in);
+  }
+};
+
+/// Calls f with the policy that implements `arithmetic`.
+template <class F>
+decltype(auto) with_signs(Arithmetic arithmetic, F&& f) {
+  switch (arithmetic) {
+    case Arithmetic::plain_double:
+      return std::forward<F>(f)(DoubleSigns{});
+    case Arithmetic::rational:
+      return std::forward<F>(f)(RationalSigns{});
+    case Arithmetic::exact:
+      break;
+  }
+  return std::forward<F>(f)(ExactSigns{});
+}
+
+/// The exact sign of one coordinate of an offset: fl(head - tail) has the sign of
+/// head - tail under round-to-nearest, and is zero only when they are equal.
+inline Sign coordinate_sign(const Offset& v, int axis) noexcept {
+  return sign_of(v.head(axis) - v.tail(axis));
+}
+
+}  // namespace exactgeo::internal

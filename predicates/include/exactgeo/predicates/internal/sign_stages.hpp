@@ -1,0 +1,252 @@
+#pragma once
+
+// The three stages that decide the sign of a formula on Offset inputs:
+//
+//   filtered_sign   semi-static filter: evaluate in double, compare with a bound derived at
+//                   compile time (roundoff.hpp); answers or says "don't know" (nullopt).
+//   expansion_sign  exact, with stack-allocated floating-point expansions, after an exact
+//                   power-of-two rescaling if the inputs' exponents demand one
+//                   (exponent_range.hpp); "don't know" only when no rescaling makes
+//                   expansion arithmetic safe or a narrowing does not fit.
+//   rational_sign   exact with GMP rationals; always answers.
+//
+// A formula descriptor names the polynomial (formulas.hpp), its number of input vectors,
+// its total degree, which coordinates it reads (cross2 ignores one), and optionally a
+// custom expansion evaluation.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <utility>
+
+#include "exactgeo/predicates/internal/expansion.hpp"
+#include "exactgeo/predicates/internal/exponent_range.hpp"
+#include "exactgeo/predicates/internal/formulas.hpp"
+#include "exactgeo/predicates/internal/offset.hpp"
+#include "exactgeo/predicates/internal/rational.hpp"
+#include "exactgeo/predicates/internal/roundoff.hpp"
+#include "exactgeo/predicates/sign.hpp"
+
+namespace exactgeo::internal {
+
+/// How the filter normalises its inputs. The bound is epsilon * prod_g m_g^deg_g with m_g
+/// the largest |input| of group g; any grouping in which the formula is homogeneous is
+/// sound. By axis suits formulas on points (orient3d: one max per coordinate, as in FPG);
+/// by vector suits formulas with a direction whose scale is unrelated to the points'.
+enum class Grouping { by_axis, by_vector };
+
+template <class Formula, Grouping grouping>
+constexpr int kGroupCount = grouping == Grouping::by_axis ? 3 : Formula::kVectors;
+
+template <class T, std::size_t N>
+using VectorArray = std::array<Vec3<T>, N>;
+
+// --- formula descriptors ----------------------------------------------------------------
+
+/// Default: every coordinate of every input vector is read.
+struct ReadsAllCoordinates {
+  static constexpr bool reads(int /*axis*/, int /*parameter*/) { return true; }
+};
+
+struct Det3Formula : ReadsAllCoordinates {
+  static constexpr int kVectors = 3;
+  static constexpr int kDegree = 3;
+  template <class T>
+  static constexpr auto evaluate(const VectorArray<T, 3>& v, int /*unused*/) {
+    return det3(v[0], v[1], v[2]);
+  }
+};
+
+/// cross2(axis, a, b): the parameter is the dropped axis.
+struct Cross2Formula {
+  static constexpr int kVectors = 2;
+  static constexpr int kDegree = 2;
+  static constexpr bool reads(int axis, int dropped_axis) { return axis != dropped_axis; }
+  template <class T>
+  static constexpr auto evaluate(const VectorArray<T, 2>& v, int axis) {
+    return cross2(axis, v[0], v[1]);
+  }
+};
+
+struct Dot3Formula : ReadsAllCoordinates {
+  static constexpr int kVectors = 2;
+  static constexpr int kDegree = 2;
+  template <class T>
+  static constexpr auto evaluate(const VectorArray<T, 2>& v, int /*unused*/) {
+    return dot3(v[0], v[1]);
+  }
+};
+
+struct PhiFormula : ReadsAllCoordinates {
+  static constexpr int kVectors = 4;
+  static constexpr int kDegree = 6;
+  template <class T>
+  static constexpr auto evaluate(const VectorArray<T, 4>& v, int /*unused*/) {
+    return bilinear_phi(v[0], v[1], v[2], v[3]);
+  }
+
+  /// The four determinants are exact 192-component expansions at most; compressed they
+  /// are a handful of components for any input the exponent check lets through, so they
+  /// are narrowed to 16 before the products (which would otherwise need 2*192*192).
+  static std::optional<Sign> expansion_sign(const VectorArray<Expansion<2>, 4>& v, int) noexcept {
+    constexpr int kNarrow = 16;
+    auto narrowed = [](auto&& e) { return e.compress().template narrow<kNarrow>(); };
+    const auto g012 = narrowed(det3(v[0], v[1], v[2]));
+    const auto g132 = narrowed(det3(v[1], v[3], v[2]));
+    const auto g013 = narrowed(det3(v[0], v[1], v[3]));
+    const auto g032 = narrowed(det3(v[0], v[3], v[2]));
+    if (!g012 || !g132 || !g013 || !g032) return std::nullopt;
+    return ((*g012) * (*g132) - (*g013) * (*g032)).sign();
+  }
+};
+
+// --- stage 1: semi-static filter ------------------------------------------------------
+
+template <class Formula, Grouping grouping>
+inline constexpr auto kFilterConstant = [] {
+  constexpr int groups = kGroupCount<Formula, grouping>;
+  using R = Roundoff<groups>;
+  VectorArray<R, Formula::kVectors> inputs{};
+  for (int v = 0; v < Formula::kVectors; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      inputs[v][axis] =
+          R::input(grouping == Grouping::by_axis ? axis : v, R::InputError::one_rounding);
+    }
+  }
+  return derive_filter(Formula::evaluate(inputs, 0));
+}();
+
+/// x^k for a compile-time k.
+template <int k>
+constexpr double power(double x) noexcept {
+  if constexpr (k == 0) {
+    return 1.0;
+  } else {
+    return x * power<k - 1>(x);
+  }
+}
+
+/// The filter: the sign of `value` when the error bound certifies it, Sign::zero when a
+/// whole group is exactly zero (every term of the formula then vanishes), else nullopt.
+/// Written with folds over the groups so that no loop is left for the compiler to unroll.
+template <const auto& constant, std::size_t G>
+inline std::optional<Sign> certify(double value, const std::array<double, G>& maxima) noexcept {
+  return [&]<std::size_t... g>(std::index_sequence<g...>)->std::optional<Sign> {
+    if (((maxima[g] == 0.0) || ...)) return Sign::zero;
+    if (!((maxima[g] >= constant.guard_low && maxima[g] <= constant.guard_high) && ...)) {
+      return std::nullopt;
+    }
+    const double bound = (constant.epsilon * ... * power<constant.degree[g]>(maxima[g]));
+    // Branch-free sign; the one branch left (certified or not) is predictable.
+    const int above = value > bound;
+    const int below = value < -bound;
+    if ((above | below) == 0) return std::nullopt;
+    return static_cast<Sign>(above - below);
+  }
+  (std::make_index_sequence<G>{});
+}
+
+/// max(a, b) for non-NaN operands, in the form compilers turn into one maxsd.
+inline double larger(double a, double b) noexcept {
+  return a < b ? b : a;
+}
+
+template <std::size_t N>
+inline VectorArray<double, N> rounded(const Offsets<N>& in) noexcept {
+  VectorArray<double, N> out;
+  for (std::size_t v = 0; v < N; ++v)
+    out[v] = in[v].rounded();
+  return out;
+}
+
+/// Per group, the largest |input|. Each maximum starts from an input, not from 0: a
+/// comparison with a known constant would compile to a data-dependent branch.
+template <Grouping grouping, std::size_t N>
+inline auto group_maxima(const VectorArray<double, N>& x) noexcept {
+  if constexpr (grouping == Grouping::by_axis) {
+    std::array<double, 3> m;
+    for (int axis = 0; axis < 3; ++axis) {
+      m[axis] = std::fabs(x[0][axis]);
+      for (std::size_t v = 1; v < N; ++v)
+        m[axis] = larger(m[axis], std::fabs(x[v][axis]));
+    }
+    return m;
+  } else {
+    std::array<double, N> m;
+    for (std::size_t v = 0; v < N; ++v) {
+      m[v] = larger(larger(std::fabs(x[v][0]), std::fabs(x[v][1])), std::fabs(x[v][2]));
+    }
+    return m;
+  }
+}
+
+template <class Formula, Grouping grouping, std::size_t N>
+inline std::optional<Sign> filtered_sign(VectorArray<double, N> x, int parameter) noexcept {
+  static_assert(N == Formula::kVectors);
+  // Coordinates the formula ignores must not inflate the maxima.
+  for (int axis = 0; axis < 3; ++axis) {
+    if (Formula::reads(axis, parameter)) continue;
+    for (std::size_t v = 0; v < N; ++v)
+      x[v][axis] = 0.0;
+  }
+  return certify<kFilterConstant<Formula, grouping>>(Formula::evaluate(x, parameter),
+                                                     group_maxima<grouping>(x));
+}
+
+// --- stage 2: expansions ----------------------------------------------------------------
+
+// The exact stages are kept out of line and marked cold: inlined, their kilobytes of
+// stack-allocated expansions would make every call pay for a frame (and stack probes) that
+// the filter almost never needs.
+template <class Formula, std::size_t N>
+[[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N>& in,
+                                                                int parameter) noexcept {
+  ExponentRange range;
+  for (const Offset& o : in) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!Formula::reads(axis, parameter)) continue;
+      range.include(o.head(axis));
+      range.include(o.tail(axis));
+    }
+  }
+  const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
+  if (!scaling) return std::nullopt;
+  VectorArray<Expansion<2>, N> e;
+  for (std::size_t v = 0; v < N; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!Formula::reads(axis, parameter)) continue;  // left zero
+      const double head = in[v].head(axis);
+      const double tail = in[v].tail(axis);
+      e[v][axis] = *scaling == 0 ? Expansion<2>::difference(head, tail)
+                                 : Expansion<2>::difference(std::ldexp(head, *scaling),
+                                                            std::ldexp(tail, *scaling));
+    }
+  }
+  if constexpr (requires { Formula::expansion_sign(e, parameter); }) {
+    return Formula::expansion_sign(e, parameter);
+  } else {
+    return Formula::evaluate(e, parameter).sign();
+  }
+}
+
+// --- stage 3: rationals -----------------------------------------------------------------
+
+template <std::size_t N>
+VectorArray<Rational, N> rational_vectors(const Offsets<N>& in) {
+  VectorArray<Rational, N> q;
+  for (std::size_t v = 0; v < N; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      q[v][axis] = Rational(in[v].head(axis)) - Rational(in[v].tail(axis));
+    }
+  }
+  return q;
+}
+
+template <class Formula, std::size_t N>
+[[gnu::noinline, gnu::cold]] Sign rational_sign(const Offsets<N>& in, int parameter) noexcept {
+  return Formula::evaluate(rational_vectors(in), parameter).sign();
+}
+
+}  // namespace exactgeo::internal

@@ -1,0 +1,28 @@
+#include "exactgeo/predicates/orient3d.hpp"
+
+#include "exactgeo/predicates/internal/sign_policies.hpp"
+
+namespace exactgeo {
+
+namespace {
+
+template <class Signs>
+Sign orient3d_with(const Signs& signs, const Point3& a, const Point3& b, const Point3& c,
+                   const Point3& d) noexcept {
+  using internal::Offset;
+  return signs.det3_by_axis(Offset::between(a, b), Offset::between(a, c), Offset::between(a, d));
+}
+
+}  // namespace
+
+Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) noexcept {
+  return orient3d_with(internal::ExactSigns{}, a, b, c, d);
+}
+
+Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
+              Arithmetic arithmetic) noexcept {
+  return internal::with_signs(arithmetic,
+                              [&](const auto& signs) { return orient3d_with(signs, a, b, c, d); });
+}
+
+}  // namespace exactgeo

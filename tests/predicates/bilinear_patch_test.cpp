@@ -1,0 +1,323 @@
+// Ray vs bilinear patch parity, the patch's implicit function and its shape: hand cases
+// for every flat shape, then the independent rational oracle (which counts preimages
+// directly, by exact algebra in Q(sqrt D)) on generic, dense dyadic, flat, collapsed and
+// scaled inputs.
+
+#include "exactgeo/predicates/bilinear_patch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "exactgeo/predicates/ray_triangle.hpp"
+#include "support/generators.hpp"
+#include "support/rational_oracle.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo {
+namespace {
+
+using testing::Rng;
+
+const BilinearPatch kSaddle{{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {0, 1, 0}};  // (u, v, uv)
+const BilinearPatch kDart{{0, 0, 0}, {2, 0, 0}, {0.5, 0.5, 0}, {0, 2, 0}};
+// The hourglass of DESIGN.md section 5: in the plane x + y = 1, edges p00p10 and p11p01 cross.
+const BilinearPatch kHourglass{{1, 0, 1}, {0, 1, 1}, {1, 0, 0}, {0, 1, 0}};
+const BilinearPatch kSquare{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+
+std::string describe(const Point3& o, const Vector3& d, const BilinearPatch& p) {
+  char buf[640];
+  std::snprintf(buf, sizeof buf,
+                "origin (%a,%a,%a) direction (%a,%a,%a) p00 (%a,%a,%a) p10 (%a,%a,%a) "
+                "p11 (%a,%a,%a) p01 (%a,%a,%a)",
+                o[0], o[1], o[2], d[0], d[1], d[2], p.p00[0], p.p00[1], p.p00[2], p.p10[0],
+                p.p10[1], p.p10[2], p.p11[0], p.p11[1], p.p11[2], p.p01[0], p.p01[1], p.p01[2]);
+  return buf;
+}
+
+TEST(PatchShape, EveryShapeByHand) {
+  EXPECT_EQ(classify_patch(kSaddle), PatchShape::skew);
+  EXPECT_EQ(classify_patch(kSquare), PatchShape::convex);
+  EXPECT_EQ(classify_patch(kDart), PatchShape::concave);
+  EXPECT_EQ(classify_patch(kHourglass), PatchShape::butterfly);
+  EXPECT_EQ(classify_patch({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 1, 0}}),
+            PatchShape::degenerate_planar);  // a triangle
+  EXPECT_EQ(classify_patch({{0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {-1, -1, -1}}), PatchShape::segment);
+  EXPECT_EQ(classify_patch({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}}), PatchShape::point);
+}
+
+TEST(RayPatch, SkewPatchByHand) {
+  EXPECT_EQ(ray_patch_parity({0.3, 0.3, 5}, {0, 0, -1}, kSaddle), RayPatch::odd);
+  EXPECT_EQ(ray_patch_parity({0.3, 0.3, -5}, {0, 0, 1}, kSaddle), RayPatch::odd);
+  EXPECT_EQ(ray_patch_parity({3, 3, 5}, {0, 0, -1}, kSaddle), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.25}, {0, 0, 1}, kSaddle), RayPatch::origin_on_patch);
+  EXPECT_EQ(ray_patch_parity({0.5, 0, 5}, {0, 0, -1}, kSaddle), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({1, 1, 5}, {0, 0, -1}, kSaddle), RayPatch::degenerate);
+  // Inside the corners' tetrahedron, on either side of the saddle (it passes z = 0.25).
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.2}, {0, 0, 1}, kSaddle), RayPatch::odd);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.2}, {0, 0, -1}, kSaddle), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.3}, {0, 0, 1}, kSaddle), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.3}, {0, 0, -1}, kSaddle), RayPatch::odd);
+  // The line z = t - 3/16 over (t, t) meets the saddle z = uv twice, at t = 1/4 and 3/4:
+  // from before both crossings the count is even, from between them odd.
+  EXPECT_EQ(ray_patch_parity({0, 0, -0.1875}, {1, 1, 1}, kSaddle), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.3125}, {1, 1, 1}, kSaddle), RayPatch::odd);
+}
+
+TEST(RayPatch, FlatShapesByHand) {
+  // Convex: crossing, missing, on, edge.
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 1}, {0, 0, -1}, kSquare), RayPatch::odd);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0}, {1, 2, 3}, kSquare), RayPatch::origin_on_patch);
+  EXPECT_EQ(ray_patch_parity({1, 0.5, 1}, {0, 0, -1}, kSquare), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 1}, {1, 1, 0}, kSquare), RayPatch::even);
+  // Through the square's diagonal p10 p01 (x + y = 1): one crossing, not two or zero.
+  EXPECT_EQ(ray_patch_parity({0.25, 0.75, 1}, {0, 0, -1}, kSquare), RayPatch::odd);
+  // Ray in the plane: degenerate when it meets the patch, even when it does not.
+  EXPECT_EQ(ray_patch_parity({-1, 0.5, 0}, {1, 0, 0}, kSquare), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({-1, 0.5, 0}, {-1, 0, 0}, kSquare), RayPatch::even);
+  // Concave dart: its centre p(1/2, 1/2) = (0.625, 0.625, 0) is outside the quadrilateral
+  // but on the patch (two preimages), so a ray through it crosses twice.
+  EXPECT_EQ(ray_patch_parity({0.625, 0.625, 0}, {0, 0, 1}, kDart), RayPatch::origin_on_patch);
+  EXPECT_EQ(ray_patch_parity({0.625, 0.625, 1}, {0, 0, -1}, kDart), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0.2, 0.2, 1}, {0, 0, -1}, kDart), RayPatch::odd);
+  // In the corners' hull but not on the patch (the fold does not reach it).
+  EXPECT_EQ(ray_patch_parity({0.9, 0.9, 0}, {0, 0, 1}, kDart), RayPatch::even);
+  // Hourglass: each lobe is covered once, the crossing point p(1/2, 1/2) = (1/2, 1/2, 1/2)
+  // is on it.
+  EXPECT_EQ(ray_patch_parity({0, 0, 0.75}, {1, 1, 0}, kHourglass), RayPatch::odd);
+  EXPECT_EQ(ray_patch_parity({0, 0, 0.25}, {1, 1, 0}, kHourglass), RayPatch::odd);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.5}, {1, 0, 0}, kHourglass), RayPatch::origin_on_patch);
+  EXPECT_EQ(ray_patch_parity({0, 0, 0.5}, {1, 1, 0}, kHourglass), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({0.5, 0.5, 0.2}, {1, 0, 0}, kHourglass), RayPatch::origin_on_patch);
+  // Between the lobes, in the plane (exactly: 0.75 + 0.25 = 1): off the patch. A ray
+  // leaving the plane crosses nothing; a ray in the plane meeting the corners' hull is
+  // reported degenerate. (From (0.9, 0.1, 0.5) the same ray would cross nothing: 0.9 + 0.1
+  // is not 1 in binary, so that origin is off the plane and the ray parallel to it.)
+  EXPECT_EQ(ray_patch_parity({0.75, 0.25, 0.5}, {1, 0, 0}, kHourglass), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0.75, 0.25, 0.5}, {0, 0, 1}, kHourglass), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({0.9, 0.1, 0.5}, {0, 0, 1}, kHourglass), RayPatch::even);
+}
+
+TEST(RayPatch, CollapsedPatchesByHand) {
+  const BilinearPatch segment{{0, 0, 0}, {2, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+  EXPECT_EQ(ray_patch_parity({1.5, 0, 0}, {0, 1, 0}, segment), RayPatch::origin_on_patch);
+  EXPECT_EQ(ray_patch_parity({1, -1, 0}, {0, 1, 0}, segment), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({1, -1, 0}, {0, 1, 1}, segment), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({3, 0, 0}, {-1, 0, 0}, segment), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({3, 0, 0}, {1, 0, 0}, segment), RayPatch::even);
+  const BilinearPatch point{{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
+  EXPECT_EQ(ray_patch_parity({1, 1, 1}, {0, 1, 0}, point), RayPatch::origin_on_patch);
+  EXPECT_EQ(ray_patch_parity({0, 0, 0}, {2, 2, 2}, point), RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_parity({0, 0, 0}, {-2, -2, -2}, point), RayPatch::even);
+  EXPECT_EQ(ray_patch_parity({0, 0, 0}, {2, 2, 2.5}, point), RayPatch::even);
+}
+
+TEST(PatchSide, ZeroOnThePatchAndSidesInsideTheTetrahedron) {
+  // p(u, v) with dyadic (u, v) is exact for small integer corners: phi vanishes there.
+  for (int i = 0; i <= 8; ++i) {
+    for (int j = 0; j <= 8; ++j) {
+      const double u = i / 8.0, v = j / 8.0;
+      const Point3 p{u, v, u * v};
+      EXPECT_EQ(patch_side(kSaddle, p), Sign::zero) << u << " " << v;
+    }
+  }
+  // Inside the tetrahedron: below the saddle is the side of triangles (p00, p10, p01) and
+  // (p10, p11, p01), which phi calls negative.
+  EXPECT_EQ(patch_side(kSaddle, {0.5, 0.5, 0.2}), Sign::negative);
+  EXPECT_EQ(patch_side(kSaddle, {0.5, 0.5, 0.3}), Sign::positive);
+}
+
+void expect_matches_oracle(const Point3& o, const Vector3& d, const BilinearPatch& p) {
+  const RayPatch expected = testing::ray_patch_oracle(o, d, p);
+  ASSERT_EQ(ray_patch_parity(o, d, p), expected) << describe(o, d, p);
+  ASSERT_EQ(ray_patch_parity(o, d, p, Arithmetic::rational), expected) << describe(o, d, p);
+}
+
+Vector3 nonzero_integer_direction(Rng& rng, int range) {
+  Vector3 d;
+  do {
+    d = testing::integer_point(rng, range);
+  } while (d[0] == 0 && d[1] == 0 && d[2] == 0);
+  return d;
+}
+
+BilinearPatch integer_patch(Rng& rng, int range) {
+  return {testing::integer_point(rng, range), testing::integer_point(rng, range),
+          testing::integer_point(rng, range), testing::integer_point(rng, range)};
+}
+
+TEST(RayPatch, GenericInputsAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("ray-patch-generic");
+  for (int i = 0; i < 3000; ++i) {
+    const BilinearPatch p{testing::random_point(rng), testing::random_point(rng),
+                          testing::random_point(rng), testing::random_point(rng)};
+    // Origins near the patch so that many fall inside the corners' tetrahedron.
+    const Point3 o = testing::rounded_affine(p.p00, p.p10, p.p01, testing::uniform(rng, 0, 1),
+                                             testing::uniform(rng, 0, 1));
+    const Point3 jitter = testing::random_point(rng, 0.2);
+    expect_matches_oracle({o[0] + jitter[0], o[1] + jitter[1], o[2] + jitter[2]},
+                          testing::random_point(rng), p);
+  }
+}
+
+/// Small integer and half-integer coordinates: rays through corners and edges, along
+/// rulings, origins on the patch, flat and collapsed patches all occur often.
+TEST(RayPatch, DenseDyadicInputsAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("ray-patch-dyadic");
+  std::map<RayPatch, int> outcomes;
+  std::map<PatchShape, int> shapes;
+  for (int i = 0; i < 20000; ++i) {
+    const BilinearPatch p = integer_patch(rng, 2);
+    const Point3 o = testing::scaled(testing::integer_point(rng, 4), -1);
+    const Vector3 d = nonzero_integer_direction(rng, 2);
+    expect_matches_oracle(o, d, p);
+    ++outcomes[ray_patch_parity(o, d, p)];
+    ++shapes[classify_patch(p)];
+  }
+  for (const RayPatch r :
+       {RayPatch::even, RayPatch::odd, RayPatch::origin_on_patch, RayPatch::degenerate}) {
+    EXPECT_GT(outcomes[r], 200) << to_string(r);
+  }
+  EXPECT_GT(shapes[PatchShape::skew], 1000);
+}
+
+/// Flat patches of every shape, with origins in and off their plane.
+TEST(RayPatch, FlatPatchesAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("ray-patch-flat");
+  std::map<PatchShape, int> shapes;
+  for (int i = 0; i < 30000; ++i) {
+    BilinearPatch p = integer_patch(rng, 3);
+    p.p00[2] = p.p10[2] = p.p11[2] = p.p01[2] = 0;  // flat in z = 0
+    Point3 o = testing::scaled(testing::integer_point(rng, 6), -1);
+    if (i % 2 == 0) o[2] = 0;  // origin in the plane half of the time
+    const Vector3 d = nonzero_integer_direction(rng, 2);
+    expect_matches_oracle(o, d, p);
+    ++shapes[classify_patch(p)];
+  }
+  for (const PatchShape s : {PatchShape::convex, PatchShape::concave, PatchShape::butterfly,
+                             PatchShape::degenerate_planar, PatchShape::segment}) {
+    EXPECT_GT(shapes[s], 100) << to_string(s);
+  }
+}
+
+/// Tilted flat patches (the plane is not a coordinate plane) and origins in the fold
+/// region of concave and butterfly patches: p(u, v) at dyadic parameters is on the patch.
+TEST(RayPatch, FoldRegionsOfTiltedFlatPatchesAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("ray-patch-fold");
+  int folded_on = 0;
+  for (int i = 0; i < 5000; ++i) {
+    // Corners a + s e1 + t e2 with integer s, t: coplanar, exactly.
+    const Point3 a = testing::integer_point(rng, 2), e1 = testing::integer_point(rng, 2),
+                 e2 = testing::integer_point(rng, 2);
+    auto corner = [&] {
+      return testing::rounded_affine(
+          a, {a[0] + e1[0], a[1] + e1[1], a[2] + e1[2]}, {a[0] + e2[0], a[1] + e2[1], a[2] + e2[2]},
+          testing::uniform_int(rng, -3, 3), testing::uniform_int(rng, -3, 3));
+    };
+    const BilinearPatch p{corner(), corner(), corner(), corner()};
+    const double u = testing::uniform_int(rng, 0, 4) / 4.0,
+                 v = testing::uniform_int(rng, 0, 4) / 4.0;
+    Point3 o;
+    for (int k = 0; k < 3; ++k) {
+      o[k] = (1 - u) * (1 - v) * p.p00[k] + u * (1 - v) * p.p10[k] + u * v * p.p11[k] +
+             (1 - u) * v * p.p01[k];  // exact: few bits
+    }
+    const Vector3 d = nonzero_integer_direction(rng, 2);
+    expect_matches_oracle(o, d, p);
+    ASSERT_EQ(ray_patch_parity(o, d, p), RayPatch::origin_on_patch) << describe(o, d, p);
+    const PatchShape shape = classify_patch(p);
+    folded_on += shape == PatchShape::concave || shape == PatchShape::butterfly;
+    // Off the point along the plane normal-ish direction: a generic nearby origin.
+    expect_matches_oracle({o[0] + 0.125, o[1] - 0.375, o[2] + 0.25}, d, p);
+  }
+  EXPECT_GT(folded_on, 200);
+}
+
+TEST(RayPatch, ScalingByPowersOfTwoChangesNothing) {
+  Rng rng = testing::seeded_engine("ray-patch-scaled");
+  for (int i = 0; i < 2000; ++i) {
+    const BilinearPatch p = integer_patch(rng, 3);
+    const Point3 o = testing::scaled(testing::integer_point(rng, 6), -1);
+    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const RayPatch reference = ray_patch_parity(o, d, p);
+    const int k = testing::uniform_int(rng, -1070, 1015);
+    const BilinearPatch ps{testing::scaled(p.p00, k), testing::scaled(p.p10, k),
+                           testing::scaled(p.p11, k), testing::scaled(p.p01, k)};
+    const Vector3 ds = testing::scaled(d, testing::uniform_int(rng, -1070, 1015));
+    ASSERT_EQ(ray_patch_parity(testing::scaled(o, k), ds, ps), reference)
+        << "k=" << k << " " << describe(o, d, p);
+  }
+}
+
+TEST(RayPatch, ReparametrizingThePatchChangesNothing) {
+  // The same surface with (u, v) swapped or reversed has the same crossings.
+  Rng rng = testing::seeded_engine("ray-patch-reparametrize");
+  for (int i = 0; i < 5000; ++i) {
+    const BilinearPatch p = integer_patch(rng, 2);
+    const Point3 o = testing::scaled(testing::integer_point(rng, 4), -1);
+    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const RayPatch r = ray_patch_parity(o, d, p);
+    EXPECT_EQ(ray_patch_parity(o, d, {p.p00, p.p01, p.p11, p.p10}), r);  // swap u, v
+    EXPECT_EQ(ray_patch_parity(o, d, {p.p10, p.p00, p.p01, p.p11}), r);  // u -> 1 - u
+    EXPECT_EQ(ray_patch_parity(o, d, {p.p11, p.p01, p.p00, p.p10}), r);  // both reversed
+  }
+}
+
+TEST(RayPatch, TriangleAsDegeneratePatchMatchesRayTriangle) {
+  Rng rng = testing::seeded_engine("ray-patch-triangle");
+  for (int i = 0; i < 10000; ++i) {
+    const Point3 a = testing::integer_point(rng, 2), b = testing::integer_point(rng, 2),
+                 c = testing::integer_point(rng, 2);
+    const Point3 o = testing::integer_point(rng, 2);
+    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const RayTriangle t = classify_ray_triangle(o, d, a, b, c).kind;
+    const RayPatch r = ray_patch_parity(o, d, {a, b, c, c});
+    switch (t) {
+      case RayTriangle::miss:
+        EXPECT_EQ(r, RayPatch::even);
+        break;
+      case RayTriangle::interior:
+        EXPECT_EQ(r, RayPatch::odd);
+        break;
+      case RayTriangle::origin_on:
+        EXPECT_EQ(r, RayPatch::origin_on_patch);
+        break;
+      case RayTriangle::edge:
+      case RayTriangle::vertex:
+      case RayTriangle::coplanar:
+        EXPECT_EQ(r, RayPatch::degenerate);
+        break;
+    }
+  }
+}
+
+TEST(PatchShape, AgreesWithOracle) {
+  Rng rng = testing::seeded_engine("patch-shape");
+  for (int i = 0; i < 20000; ++i) {
+    BilinearPatch p = integer_patch(rng, 2);
+    if (i % 2 == 0) p.p00[1] = p.p10[1] = p.p11[1] = p.p01[1] = 1;  // flat half of the time
+    ASSERT_EQ(classify_patch(p), testing::patch_shape_oracle(p))
+        << describe({0, 0, 0}, {0, 0, 0}, p);
+  }
+}
+
+TEST(PatchSide, AgreesWithOracleOnSkewPatches) {
+  // (For a flat patch phi is identically zero on its plane and its sign elsewhere depends
+  // on the choice of equation; only skew patches have a canonical side.)
+  Rng rng = testing::seeded_engine("patch-side");
+  for (int i = 0; i < 10000; ++i) {
+    const BilinearPatch p =
+        i % 2 ? integer_patch(rng, 2)
+              : BilinearPatch{testing::random_point(rng), testing::random_point(rng),
+                              testing::random_point(rng), testing::random_point(rng)};
+    if (classify_patch(p) != PatchShape::skew) continue;
+    const Point3 x =
+        i % 2 ? testing::scaled(testing::integer_point(rng, 4), -1) : testing::random_point(rng);
+    ASSERT_EQ(patch_side(p, x), testing::patch_side_oracle(p, x));
+  }
+}
+
+}  // namespace
+}  // namespace exactgeo
