@@ -36,7 +36,7 @@ void check_stages(const Point3& a, const Point3& b, const Point3& c, const Point
   const Sign expected = testing::orient3d_oracle(a, b, c, d);
   const Offsets<3> in{Offset::between(a, b), Offset::between(a, c), Offset::between(a, d)};
   ++answers.cases;
-  if (const auto s = filtered_sign<Det3Formula, Grouping::by_axis>(rounded(in), 0)) {
+  if (const auto s = filtered_sign<Det3Formula, Grouping::by_axis>(in, 0)) {
     ASSERT_EQ(*s, expected) << "filter";
     ++answers.filter;
   }
@@ -78,18 +78,15 @@ TEST(SignStages, FilterIsSoundOnNearDegenerateInputsAndDefers) {
 TEST(SignStages, FilterCertifiesExactZeroWhenAnAxisVanishes) {
   // All four points in the plane z = 0.3: every z difference is exactly zero.
   const OrientCase flat{{0.1, 0.2, 0.3}, {1.7, -2, 0.3}, {5, 1e-3, 0.3}, {-9, 4, 0.3}};
-  EXPECT_EQ((filtered_sign<Det3Formula, Grouping::by_axis>(rounded(flat.offsets()), 0)),
-            Sign::zero);
+  EXPECT_EQ((filtered_sign<Det3Formula, Grouping::by_axis>(flat.offsets(), 0)), Sign::zero);
 }
 
 TEST(SignStages, FilterDefersOutsideItsGuard) {
   const double big = 0x1p300, tiny = 0x1p-300;
   const OrientCase huge{{0, 0, 0}, {big, 0, 0}, {0, big, 0}, {0, 0, big}};
-  EXPECT_FALSE(
-      (filtered_sign<Det3Formula, Grouping::by_axis>(rounded(huge.offsets()), 0)).has_value());
+  EXPECT_FALSE((filtered_sign<Det3Formula, Grouping::by_axis>(huge.offsets(), 0)).has_value());
   const OrientCase small{{0, 0, 0}, {tiny, 0, 0}, {0, tiny, 0}, {0, 0, tiny}};
-  EXPECT_FALSE(
-      (filtered_sign<Det3Formula, Grouping::by_axis>(rounded(small.offsets()), 0)).has_value());
+  EXPECT_FALSE((filtered_sign<Det3Formula, Grouping::by_axis>(small.offsets(), 0)).has_value());
 }
 
 TEST(SignStages, ExpansionStageRescalesExtremeInputsExactly) {

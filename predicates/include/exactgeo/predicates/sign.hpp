@@ -7,9 +7,9 @@ namespace exactgeo {
 /// The sign of an exactly evaluated quantity.
 enum class Sign : std::int8_t { negative = -1, zero = 0, positive = 1 };
 
-/// Sign of a double. Precondition: `x` is not NaN.
+/// Sign of a double (branch-free). Precondition: `x` is not NaN.
 constexpr Sign sign_of(double x) noexcept {
-  return x > 0 ? Sign::positive : (x < 0 ? Sign::negative : Sign::zero);
+  return static_cast<Sign>((x > 0) - (x < 0));
 }
 
 constexpr Sign operator-(Sign s) noexcept {

@@ -64,6 +64,23 @@ class NamedSigns {
   const Policy& self() const noexcept { return static_cast<const Policy&>(*this); }
 };
 
+/// The stages after the filter, out of line: the inputs are passed by value so that the
+/// hot path never has to store them.
+template <class Formula, std::size_t N>
+[[gnu::noinline, gnu::cold]] Sign exact_sign(const Offsets<N> in, int parameter, bool group_is_zero,
+                                             StageCounts* counts) noexcept {
+  if (group_is_zero) {  // the filter's exact-zero rule
+    if (counts) ++counts->filter;
+    return Sign::zero;
+  }
+  if (const auto s = expansion_sign<Formula>(in, parameter)) {
+    if (counts) ++counts->expansion;
+    return *s;
+  }
+  if (counts) ++counts->rational;
+  return rational_sign<Formula>(in, parameter);
+}
+
 class ExactSigns : public NamedSigns<ExactSigns> {
  public:
   using Number = Rational;  // for the few rare-path computations done outside formulas
@@ -72,16 +89,14 @@ class ExactSigns : public NamedSigns<ExactSigns> {
 
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
-    if (const auto s = filtered_sign<Formula, grouping>(rounded(in), parameter)) {
+    const VectorArray<double, N> x = filter_inputs<Formula>(in, parameter);
+    const double value = Formula::evaluate(x, parameter);
+    const auto maxima = group_maxima<grouping>(x);
+    if (filter_certifies<kFilterConstant<Formula, grouping>>(value, maxima)) [[likely]] {
       if (counts_) ++counts_->filter;
-      return *s;
+      return sign_of(value);
     }
-    if (const auto s = expansion_sign<Formula>(in, parameter)) {
-      if (counts_) ++counts_->expansion;
-      return *s;
-    }
-    if (counts_) ++counts_->rational;
-    return rational_sign<Formula>(in, parameter);
+    return exact_sign<Formula>(in, parameter, some_group_is_zero(maxima), counts_);
   }
 
   /// Exact numbers for the few rare-path computations done outside sign() (the folded

@@ -87,10 +87,11 @@ struct PhiFormula : ReadsAllCoordinates {
     return bilinear_phi(v[0], v[1], v[2], v[3]);
   }
 
-  /// The four determinants are exact 192-component expansions at most; compressed they
+  /// The four determinants are exact expansions of up to 192 components; compressed they
   /// are a handful of components for any input the exponent check lets through, so they
   /// are narrowed to 16 before the products (which would otherwise need 2*192*192).
-  static std::optional<Sign> expansion_sign(const VectorArray<Expansion<2>, 4>& v, int) noexcept {
+  template <int C>
+  static std::optional<Sign> expansion_sign(const VectorArray<Expansion<C>, 4>& v, int) noexcept {
     constexpr int kNarrow = 16;
     auto narrowed = [](auto&& e) { return e.compress().template narrow<kNarrow>(); };
     const auto g012 = narrowed(det3(v[0], v[1], v[2]));
@@ -128,24 +129,28 @@ constexpr double power(double x) noexcept {
   }
 }
 
-/// The filter: the sign of `value` when the error bound certifies it, Sign::zero when a
-/// whole group is exactly zero (every term of the formula then vanishes), else nullopt.
-/// Written with folds over the groups so that no loop is left for the compiler to unroll.
+/// The filter's test: every group maximum within the guard, and |value| above the
+/// certified error bound. Written with folds over the groups and non-short-circuit `&` so
+/// that the hot path has no loop and a single, predictable branch.
 template <const auto& constant, std::size_t G>
-inline std::optional<Sign> certify(double value, const std::array<double, G>& maxima) noexcept {
-  return [&]<std::size_t... g>(std::index_sequence<g...>)->std::optional<Sign> {
-    if (((maxima[g] == 0.0) || ...)) return Sign::zero;
-    if (!((maxima[g] >= constant.guard_low && maxima[g] <= constant.guard_high) && ...)) {
-      return std::nullopt;
-    }
+inline bool filter_certifies(double value, const std::array<double, G>& maxima) noexcept {
+  return [&]<std::size_t... g>(std::index_sequence<g...>) {
+    const bool in_guard =
+        (((maxima[g] >= constant.guard_low) & (maxima[g] <= constant.guard_high)) & ...);
     const double bound = (constant.epsilon * ... * power<constant.degree[g]>(maxima[g]));
-    // Branch-free sign; the one branch left (certified or not) is predictable.
-    const int above = value > bound;
-    const int below = value < -bound;
-    if ((above | below) == 0) return std::nullopt;
-    return static_cast<Sign>(above - below);
+    return in_guard & (std::fabs(value) > bound);
   }
   (std::make_index_sequence<G>{});
+}
+
+/// A group whose inputs are all exactly zero makes every term vanish (every group appears
+/// in every term: derive_filter checks it).
+template <std::size_t G>
+inline bool some_group_is_zero(const std::array<double, G>& maxima) noexcept {
+  for (const double m : maxima) {
+    if (m == 0.0) return true;
+  }
+  return false;
 }
 
 /// max(a, b) for non-NaN operands, in the form compilers turn into one maxsd.
@@ -182,17 +187,29 @@ inline auto group_maxima(const VectorArray<double, N>& x) noexcept {
   }
 }
 
-template <class Formula, Grouping grouping, std::size_t N>
-inline std::optional<Sign> filtered_sign(VectorArray<double, N> x, int parameter) noexcept {
-  static_assert(N == Formula::kVectors);
-  // Coordinates the formula ignores must not inflate the maxima.
+/// The filter's approximation of the formula: rounded inputs, with the coordinates the
+/// formula ignores set to zero so that they do not inflate the maxima.
+template <class Formula, std::size_t N>
+inline VectorArray<double, N> filter_inputs(const Offsets<N>& in, int parameter) noexcept {
+  VectorArray<double, N> x = rounded(in);
   for (int axis = 0; axis < 3; ++axis) {
     if (Formula::reads(axis, parameter)) continue;
     for (std::size_t v = 0; v < N; ++v)
       x[v][axis] = 0.0;
   }
-  return certify<kFilterConstant<Formula, grouping>>(Formula::evaluate(x, parameter),
-                                                     group_maxima<grouping>(x));
+  return x;
+}
+
+/// Stage 1 on its own: the certified sign, Sign::zero for a vanishing group, or nullopt.
+template <class Formula, Grouping grouping, std::size_t N>
+inline std::optional<Sign> filtered_sign(const Offsets<N>& in, int parameter) noexcept {
+  static_assert(N == Formula::kVectors);
+  const VectorArray<double, N> x = filter_inputs<Formula>(in, parameter);
+  const double value = Formula::evaluate(x, parameter);
+  const auto maxima = group_maxima<grouping>(x);
+  if (filter_certifies<kFilterConstant<Formula, grouping>>(value, maxima)) return sign_of(value);
+  if (some_group_is_zero(maxima)) return Sign::zero;
+  return std::nullopt;
 }
 
 // --- stage 2: expansions ----------------------------------------------------------------
@@ -201,7 +218,7 @@ inline std::optional<Sign> filtered_sign(VectorArray<double, N> x, int parameter
 // stack-allocated expansions would make every call pay for a frame (and stack probes) that
 // the filter almost never needs.
 template <class Formula, std::size_t N>
-[[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N>& in,
+[[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N> in,
                                                                 int parameter) noexcept {
   ExponentRange range;
   for (const Offset& o : in) {
@@ -213,7 +230,11 @@ template <class Formula, std::size_t N>
   }
   const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
   if (!scaling) return std::nullopt;
+  // Exact differences; when none of them needed a second component (dyadic grids, inputs
+  // already relative to one another) the whole evaluation runs on one-component inputs,
+  // with every product four times smaller.
   VectorArray<Expansion<2>, N> e;
+  bool all_single = true;
   for (std::size_t v = 0; v < N; ++v) {
     for (int axis = 0; axis < 3; ++axis) {
       if (!Formula::reads(axis, parameter)) continue;  // left zero
@@ -222,13 +243,25 @@ template <class Formula, std::size_t N>
       e[v][axis] = *scaling == 0 ? Expansion<2>::difference(head, tail)
                                  : Expansion<2>::difference(std::ldexp(head, *scaling),
                                                             std::ldexp(tail, *scaling));
+      all_single &= e[v][axis].size() <= 1;
     }
   }
-  if constexpr (requires { Formula::expansion_sign(e, parameter); }) {
-    return Formula::expansion_sign(e, parameter);
-  } else {
-    return Formula::evaluate(e, parameter).sign();
+  auto evaluate = [parameter](const auto& inputs) -> std::optional<Sign> {
+    if constexpr (requires { Formula::expansion_sign(inputs, parameter); }) {
+      return Formula::expansion_sign(inputs, parameter);
+    } else {
+      return Formula::evaluate(inputs, parameter).sign();
+    }
+  };
+  if (all_single) {
+    VectorArray<Expansion<1>, N> single;
+    for (std::size_t v = 0; v < N; ++v) {
+      for (int axis = 0; axis < 3; ++axis)
+        single[v][axis] = *e[v][axis].template narrow<1>();
+    }
+    return evaluate(single);
   }
+  return evaluate(e);
 }
 
 // --- stage 3: rationals -----------------------------------------------------------------
@@ -245,7 +278,7 @@ VectorArray<Rational, N> rational_vectors(const Offsets<N>& in) {
 }
 
 template <class Formula, std::size_t N>
-[[gnu::noinline, gnu::cold]] Sign rational_sign(const Offsets<N>& in, int parameter) noexcept {
+[[gnu::noinline, gnu::cold]] Sign rational_sign(const Offsets<N> in, int parameter) noexcept {
   return Formula::evaluate(rational_vectors(in), parameter).sign();
 }
 
