@@ -99,7 +99,7 @@ TEST(FilterConstant, Det3BoundHoldsOnNearDegenerateInputs) {
     worst_ratio = std::max(worst_ratio, error / bound);
   }
   std::printf("[ info     ] worst observed error / bound = %.3g\n", worst_ratio);
-  EXPECT_GT(worst_ratio, 1e-3);  // the bound is sound and within a sane factor of reality
+  EXPECT_GT(worst_ratio, 0.02);  // sound, and not wildly pessimistic (0.13 seen)
 }
 
 }  // namespace

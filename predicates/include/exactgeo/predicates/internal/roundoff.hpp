@@ -53,10 +53,11 @@ namespace exactgeo::internal {
 
 /// A polynomial sum_k c_k u^k in the unit roundoff u = 2^-53, with nonnegative integer
 /// coefficients. Terms beyond kMaxPower are folded into the u^kMaxPower coefficient,
-/// which only makes the polynomial larger for 0 < u < 1.
+/// which only makes the polynomial larger for 0 < u < 1 (and keeps compile-time
+/// evaluation cheap: by u^4 the terms are 2^-159 relative to the first).
 class UnitRoundoffPolynomial {
  public:
-  static constexpr int kMaxPower = 12;
+  static constexpr int kMaxPower = 4;
 
   constexpr UnitRoundoffPolynomial() = default;
   static constexpr UnitRoundoffPolynomial constant(double c) {
@@ -101,7 +102,7 @@ class UnitRoundoffPolynomial {
   }
 
   /// An upper bound of the polynomial's value at u = 2^-53, as a double. Each term
-  /// c_k 2^(-53k) is exact (c_k < 2^53, no underflow for k <= 12); the sum of the
+  /// c_k 2^(-53k) is exact (c_k < 2^53, no underflow for k <= kMaxPower); the sum of the
   /// nonnegative terms is rounded at most kMaxPower times, so multiplying by
   /// (1 + 2^-40) > (1 - u)^-kMaxPower more than covers it.
   constexpr double upper_bound_at_unit_roundoff() const {

@@ -135,10 +135,11 @@ constexpr double power(double x) noexcept {
 template <const auto& constant, std::size_t G>
 inline bool filter_certifies(double value, const std::array<double, G>& maxima) noexcept {
   return [&]<std::size_t... g>(std::index_sequence<g...>) {
-    const bool in_guard =
-        (((maxima[g] >= constant.guard_low) & (maxima[g] <= constant.guard_high)) & ...);
+    const int in_guard = ((static_cast<int>(maxima[g] >= constant.guard_low) &
+                           static_cast<int>(maxima[g] <= constant.guard_high)) &
+                          ...);
     const double bound = (constant.epsilon * ... * power<constant.degree[g]>(maxima[g]));
-    return in_guard & (std::fabs(value) > bound);
+    return (in_guard & static_cast<int>(std::fabs(value) > bound)) != 0;
   }
   (std::make_index_sequence<G>{});
 }
