@@ -135,14 +135,6 @@ void expect_matches_oracle(const Point3& o, const Vector3& d, const BilinearPatc
   ASSERT_EQ(ray_patch_parity(o, d, p, Arithmetic::rational), expected) << describe(o, d, p);
 }
 
-Vector3 nonzero_integer_direction(Rng& rng, int range) {
-  Vector3 d;
-  do {
-    d = testing::integer_point(rng, range);
-  } while (d[0] == 0 && d[1] == 0 && d[2] == 0);
-  return d;
-}
-
 BilinearPatch integer_patch(Rng& rng, int range) {
   return {testing::integer_point(rng, range), testing::integer_point(rng, range),
           testing::integer_point(rng, range), testing::integer_point(rng, range)};
@@ -171,7 +163,7 @@ TEST(RayPatch, DenseDyadicInputsAgreeWithOracle) {
   for (int i = 0; i < 20000; ++i) {
     const BilinearPatch p = integer_patch(rng, 2);
     const Point3 o = testing::scaled(testing::integer_point(rng, 4), -1);
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     expect_matches_oracle(o, d, p);
     ++outcomes[ray_patch_parity(o, d, p)];
     ++shapes[classify_patch(p)];
@@ -192,7 +184,7 @@ TEST(RayPatch, FlatPatchesAgreeWithOracle) {
     p.p00[2] = p.p10[2] = p.p11[2] = p.p01[2] = 0;  // flat in z = 0
     Point3 o = testing::scaled(testing::integer_point(rng, 6), -1);
     if (i % 2 == 0) o[2] = 0;  // origin in the plane half of the time
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     expect_matches_oracle(o, d, p);
     ++shapes[classify_patch(p)];
   }
@@ -224,7 +216,7 @@ TEST(RayPatch, FoldRegionsOfTiltedFlatPatchesAgreeWithOracle) {
       o[k] = (1 - u) * (1 - v) * p.p00[k] + u * (1 - v) * p.p10[k] + u * v * p.p11[k] +
              (1 - u) * v * p.p01[k];  // exact: few bits
     }
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     expect_matches_oracle(o, d, p);
     ASSERT_EQ(ray_patch_parity(o, d, p), RayPatch::origin_on_patch) << describe(o, d, p);
     const PatchShape shape = classify_patch(p);
@@ -240,7 +232,7 @@ TEST(RayPatch, ScalingByPowersOfTwoChangesNothing) {
   for (int i = 0; i < 2000; ++i) {
     const BilinearPatch p = integer_patch(rng, 3);
     const Point3 o = testing::scaled(testing::integer_point(rng, 6), -1);
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     const RayPatch reference = ray_patch_parity(o, d, p);
     const int k = testing::uniform_int(rng, -1070, 1015);
     const BilinearPatch ps{testing::scaled(p.p00, k), testing::scaled(p.p10, k),
@@ -257,7 +249,7 @@ TEST(RayPatch, ReparametrizingThePatchChangesNothing) {
   for (int i = 0; i < 5000; ++i) {
     const BilinearPatch p = integer_patch(rng, 2);
     const Point3 o = testing::scaled(testing::integer_point(rng, 4), -1);
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     const RayPatch r = ray_patch_parity(o, d, p);
     EXPECT_EQ(ray_patch_parity(o, d, {p.p00, p.p01, p.p11, p.p10}), r);  // swap u, v
     EXPECT_EQ(ray_patch_parity(o, d, {p.p10, p.p00, p.p01, p.p11}), r);  // u -> 1 - u
@@ -271,7 +263,7 @@ TEST(RayPatch, TriangleAsDegeneratePatchMatchesRayTriangle) {
     const Point3 a = testing::integer_point(rng, 2), b = testing::integer_point(rng, 2),
                  c = testing::integer_point(rng, 2);
     const Point3 o = testing::integer_point(rng, 2);
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     const RayTriangle t = classify_ray_triangle(o, d, a, b, c).kind;
     const RayPatch r = ray_patch_parity(o, d, {a, b, c, c});
     switch (t) {

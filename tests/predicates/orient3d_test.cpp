@@ -61,11 +61,7 @@ TEST(Orient3d, NearCoplanarInputsAgreeWithOracle) {
   Rng rng = testing::seeded_engine("orient3d-near-coplanar");
   for (int i = 0; i < 20000; ++i) {
     const double scale = std::ldexp(1.0, testing::uniform_int(rng, -20, 20));
-    const Point3 a = testing::random_point(rng, scale);
-    const Point3 b = testing::random_point(rng, scale);
-    const Point3 c = testing::random_point(rng, scale);
-    const Point3 d = testing::rounded_affine(a, b, c, testing::uniform(rng, -3, 3),
-                                             testing::uniform(rng, -3, 3));
+    const auto [a, b, c, d] = testing::near_coplanar_points(rng, scale, 3);
     expect_exact(a, b, c, d);
   }
 }
@@ -148,13 +144,8 @@ TEST(Orient3d, MixedMagnitudes) {
 TEST(Orient3d, NearCoplanarAtExtremeScales) {
   Rng rng = testing::seeded_engine("orient3d-near-coplanar-extreme");
   for (int i = 0; i < 5000; ++i) {
-    const int exponent = testing::uniform_int(rng, -1070, 1015);
-    const double scale = std::ldexp(1.0, exponent);
-    const Point3 a = testing::random_point(rng, scale);
-    const Point3 b = testing::random_point(rng, scale);
-    const Point3 c = testing::random_point(rng, scale);
-    const Point3 d = testing::rounded_affine(a, b, c, testing::uniform(rng, -1, 1),
-                                             testing::uniform(rng, -1, 1));
+    const double scale = std::ldexp(1.0, testing::uniform_int(rng, -1070, 1015));
+    const auto [a, b, c, d] = testing::near_coplanar_points(rng, scale, 1);
     expect_exact(a, b, c, d);
   }
 }
@@ -183,10 +174,7 @@ TEST(Orient3d, PlainDoubleIsSometimesWrong) {
   Rng rng = testing::seeded_engine("orient3d-double-wrong");
   int wrong = 0;
   for (int i = 0; i < 5000; ++i) {
-    const Point3 a = testing::random_point(rng), b = testing::random_point(rng),
-                 c = testing::random_point(rng);
-    const Point3 d = testing::rounded_affine(a, b, c, testing::uniform(rng, -3, 3),
-                                             testing::uniform(rng, -3, 3));
+    const auto [a, b, c, d] = testing::near_coplanar_points(rng, 1, 3);
     wrong += orient3d(a, b, c, d, Arithmetic::plain_double) != orient3d_oracle(a, b, c, d);
   }
   EXPECT_GT(wrong, 50);

@@ -92,14 +92,6 @@ void expect_matches_oracle(const Point3& o, const Vector3& d, const Point3& a, c
   }
 }
 
-Vector3 nonzero_integer_direction(Rng& rng, int range) {
-  Vector3 d;
-  do {
-    d = testing::integer_point(rng, range);
-  } while (d[0] == 0 && d[1] == 0 && d[2] == 0);
-  return d;
-}
-
 TEST(RayTriangle, GenericInputsAgreeWithOracle) {
   Rng rng = testing::seeded_engine("ray-triangle-generic");
   for (int i = 0; i < 5000; ++i) {
@@ -116,7 +108,7 @@ TEST(RayTriangle, DenseDyadicInputsAgreeWithOracle) {
   int counts[6] = {};
   for (int i = 0; i < 60000; ++i) {
     const Point3 o = testing::integer_point(rng, 2);
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     const Point3 a = testing::integer_point(rng, 2), b = testing::integer_point(rng, 2),
                  c = testing::integer_point(rng, 2);
     expect_matches_oracle(o, d, a, b, c);
@@ -131,7 +123,7 @@ TEST(RayTriangle, ScalingByPowersOfTwoChangesNothing) {
   for (int i = 0; i < 3000; ++i) {
     const Point3 o = testing::integer_point(rng, 3), a = testing::integer_point(rng, 3),
                  b = testing::integer_point(rng, 3), c = testing::integer_point(rng, 3);
-    const Vector3 d = nonzero_integer_direction(rng, 3);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 3);
     const RayTriangleHit reference = classify_ray_triangle(o, d, a, b, c);
     const int k = testing::uniform_int(rng, -1070, 1018);
     const int kd = testing::uniform_int(rng, -1070, 1018);  // the direction scales freely
@@ -149,7 +141,7 @@ TEST(RayTriangle, RelabellingTheCornersRelabelsTheAnswer) {
   for (int i = 0; i < 5000; ++i) {
     const Point3 o = testing::integer_point(rng, 2), a = testing::integer_point(rng, 2),
                  b = testing::integer_point(rng, 2), c = testing::integer_point(rng, 2);
-    const Vector3 d = nonzero_integer_direction(rng, 2);
+    const Vector3 d = testing::nonzero_integer_direction(rng, 2);
     const RayTriangleHit h = classify_ray_triangle(o, d, a, b, c);
     // Cyclic shift (b, c, a): features shift by one, turn unchanged.
     const RayTriangleHit shifted = classify_ray_triangle(o, d, b, c, a);

@@ -8,7 +8,8 @@
 
 #include <cmath>
 
-#include "exactgeo/predicates/internal/sign_stages.hpp"
+#include "exactgeo/predicates/internal/exact_stages.hpp"
+#include "exactgeo/predicates/internal/filter.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
@@ -79,10 +80,7 @@ TEST(FilterConstant, Det3BoundHoldsOnNearDegenerateInputs) {
   const double epsilon = kFilterConstant<Det3Formula, Grouping::by_axis>.epsilon;
   double worst_ratio = 0;
   for (int i = 0; i < 20000; ++i) {
-    const Point3 a = testing::random_point(rng), b = testing::random_point(rng),
-                 c = testing::random_point(rng);
-    const Point3 d = testing::rounded_affine(a, b, c, testing::uniform(rng, -4, 4),
-                                             testing::uniform(rng, -4, 4));
+    const auto [a, b, c, d] = testing::near_coplanar_points(rng, 1, 4);
     const Offsets<3> in{Offset::between(a, b), Offset::between(a, c), Offset::between(a, d)};
     const auto x = rounded(in);
     double m[3] = {0, 0, 0};

@@ -40,6 +40,24 @@ inline Point3 rounded_affine(const Point3& a, const Point3& b, const Point3& c, 
   return p;
 }
 
+/// Four points, the last one computed as a + s (b - a) + t (c - a) in double with s, t
+/// uniform in [-spread, spread]: coplanar up to rounding, the hard case for orient3d.
+inline std::array<Point3, 4> near_coplanar_points(Rng& rng, double scale, double spread) {
+  const Point3 a = random_point(rng, scale), b = random_point(rng, scale),
+               c = random_point(rng, scale);
+  return {a, b, c,
+          rounded_affine(a, b, c, uniform(rng, -spread, spread), uniform(rng, -spread, spread))};
+}
+
+/// A nonzero vector with integer coordinates in [-range, range].
+inline Vector3 nonzero_integer_direction(Rng& rng, int range) {
+  Vector3 d;
+  do {
+    d = integer_point(rng, range);
+  } while (d[0] == 0 && d[1] == 0 && d[2] == 0);
+  return d;
+}
+
 /// x with its coordinate `axis` moved by `steps` ulps (nextafter, repeated).
 inline Point3 ulp_step(Point3 x, int axis, int steps) {
   for (int i = 0; i < std::abs(steps); ++i) {

@@ -7,11 +7,15 @@
 // so a formula must not be rewritten without re-deriving nothing: the constant follows.
 
 #include <array>
+#include <cstddef>
 
 namespace exactgeo::internal {
 
 template <class T>
 using Vec3 = std::array<T, 3>;
+
+template <class T, std::size_t N>
+using VectorArray = std::array<Vec3<T>, N>;
 
 /// det[a, b, c] = a . (b x c), expanded along a.
 template <class T>

@@ -17,7 +17,8 @@
 #include <utility>
 
 #include "exactgeo/predicates/arithmetic.hpp"
-#include "exactgeo/predicates/internal/sign_stages.hpp"
+#include "exactgeo/predicates/internal/exact_stages.hpp"
+#include "exactgeo/predicates/internal/filter.hpp"
 
 namespace exactgeo::internal {
 

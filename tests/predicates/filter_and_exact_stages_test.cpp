@@ -1,7 +1,8 @@
 // Soundness of each stage on its own: whenever the filter or the expansion stage answers,
 // it agrees with the independent oracle, and each answers where it should.
 
-#include "exactgeo/predicates/internal/sign_stages.hpp"
+#include "exactgeo/predicates/internal/exact_stages.hpp"
+#include "exactgeo/predicates/internal/filter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -63,10 +64,7 @@ TEST(SignStages, FilterIsSoundOnNearDegenerateInputsAndDefers) {
   StageAnswers answers;
   for (int i = 0; i < 20000; ++i) {
     const double scale = std::ldexp(1.0, testing::uniform_int(rng, -200, 200));
-    const Point3 a = testing::random_point(rng, scale), b = testing::random_point(rng, scale),
-                 c = testing::random_point(rng, scale);
-    const Point3 d = testing::rounded_affine(a, b, c, testing::uniform(rng, -2, 2),
-                                             testing::uniform(rng, -2, 2));
+    const auto [a, b, c, d] = testing::near_coplanar_points(rng, scale, 2);
     check_stages(a, b, c, d, answers);
   }
   // Most near-coplanar cases are beyond the filter: it must say "don't know", and the

@@ -1,0 +1,90 @@
+#pragma once
+
+// Stages 2 and 3 of every sign, both exact:
+//
+//   expansion_sign  stack-allocated floating-point expansions, after an exact power-of-two
+//                   rescaling if the inputs' exponents demand one (exponent_range.hpp);
+//                   "don't know" only when no rescaling makes expansion arithmetic safe or
+//                   a narrowing does not fit;
+//   rational_sign   GMP rationals; always answers.
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "exactgeo/predicates/internal/expansion.hpp"
+#include "exactgeo/predicates/internal/exponent_range.hpp"
+#include "exactgeo/predicates/internal/formula_descriptors.hpp"
+#include "exactgeo/predicates/internal/offset.hpp"
+#include "exactgeo/predicates/internal/rational.hpp"
+#include "exactgeo/predicates/sign.hpp"
+
+namespace exactgeo::internal {
+
+// The exact stages are kept out of line and marked cold: inlined, their kilobytes of
+// stack-allocated expansions would make every call pay for a frame (and stack probes) that
+// the filter almost never needs.
+template <class Formula, std::size_t N>
+[[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N> in,
+                                                                int parameter) noexcept {
+  ExponentRange range;
+  for (const Offset& o : in) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!Formula::reads(axis, parameter)) continue;
+      range.include(o.head(axis));
+      range.include(o.tail(axis));
+    }
+  }
+  const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
+  if (!scaling) return std::nullopt;
+  // Exact differences; when none of them needed a second component (dyadic grids, inputs
+  // already relative to one another) the whole evaluation runs on one-component inputs,
+  // with every product four times smaller.
+  VectorArray<Expansion<2>, N> e;
+  bool all_single = true;
+  for (std::size_t v = 0; v < N; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!Formula::reads(axis, parameter)) continue;  // left zero
+      const double head = in[v].head(axis);
+      const double tail = in[v].tail(axis);
+      e[v][axis] = *scaling == 0 ? Expansion<2>::difference(head, tail)
+                                 : Expansion<2>::difference(std::ldexp(head, *scaling),
+                                                            std::ldexp(tail, *scaling));
+      all_single &= e[v][axis].size() <= 1;
+    }
+  }
+  auto evaluate = [parameter](const auto& inputs) -> std::optional<Sign> {
+    if constexpr (requires { Formula::expansion_sign(inputs, parameter); }) {
+      return Formula::expansion_sign(inputs, parameter);
+    } else {
+      return Formula::evaluate(inputs, parameter).sign();
+    }
+  };
+  if (all_single) {
+    VectorArray<Expansion<1>, N> single;
+    for (std::size_t v = 0; v < N; ++v) {
+      for (int axis = 0; axis < 3; ++axis)
+        single[v][axis] = *e[v][axis].template narrow<1>();
+    }
+    return evaluate(single);
+  }
+  return evaluate(e);
+}
+
+template <std::size_t N>
+VectorArray<Rational, N> rational_vectors(const Offsets<N>& in) {
+  VectorArray<Rational, N> q;
+  for (std::size_t v = 0; v < N; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      q[v][axis] = Rational(in[v].head(axis)) - Rational(in[v].tail(axis));
+    }
+  }
+  return q;
+}
+
+template <class Formula, std::size_t N>
+[[gnu::noinline, gnu::cold]] Sign rational_sign(const Offsets<N> in, int parameter) noexcept {
+  return Formula::evaluate(rational_vectors(in), parameter).sign();
+}
+
+}  // namespace exactgeo::internal

@@ -1,0 +1,138 @@
+#pragma once
+
+// Stage 1 of every sign: the semi-static filter. Evaluate the formula in double on the
+// rounded inputs and compare with epsilon * prod_g m_g^deg_g, where epsilon is derived at
+// compile time from the formula itself (roundoff.hpp) and m_g are the largest inputs of
+// each group, measured at run time. Answers or says "don't know".
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <utility>
+
+#include "exactgeo/predicates/internal/formula_descriptors.hpp"
+#include "exactgeo/predicates/internal/offset.hpp"
+#include "exactgeo/predicates/internal/roundoff.hpp"
+#include "exactgeo/predicates/sign.hpp"
+
+namespace exactgeo::internal {
+
+/// How the filter normalises its inputs. The bound is epsilon * prod_g m_g^deg_g with m_g
+/// the largest |input| of group g; any grouping in which the formula is homogeneous is
+/// sound. By axis suits formulas on points (orient3d: one max per coordinate, as in FPG);
+/// by vector suits formulas with a direction whose scale is unrelated to the points'.
+enum class Grouping { by_axis, by_vector };
+
+template <class Formula, Grouping grouping>
+constexpr int kGroupCount = grouping == Grouping::by_axis ? 3 : Formula::kVectors;
+
+template <class Formula, Grouping grouping>
+inline constexpr auto kFilterConstant = [] {
+  constexpr int groups = kGroupCount<Formula, grouping>;
+  using R = Roundoff<groups>;
+  VectorArray<R, Formula::kVectors> inputs{};
+  for (int v = 0; v < Formula::kVectors; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      inputs[v][axis] =
+          R::input(grouping == Grouping::by_axis ? axis : v, R::InputError::one_rounding);
+    }
+  }
+  return derive_filter(Formula::evaluate(inputs, 0));
+}();
+
+/// x^k for a compile-time k.
+template <int k>
+constexpr double power(double x) noexcept {
+  if constexpr (k == 0) {
+    return 1.0;
+  } else {
+    return x * power<k - 1>(x);
+  }
+}
+
+/// The filter's test: every group maximum within the guard, and |value| above the
+/// certified error bound. Written with folds over the groups and non-short-circuit `&` so
+/// that the hot path has no loop and a single, predictable branch.
+template <const auto& constant, std::size_t G>
+inline bool filter_certifies(double value, const std::array<double, G>& maxima) noexcept {
+  return [&]<std::size_t... g>(std::index_sequence<g...>) {
+    const int in_guard = ((static_cast<int>(maxima[g] >= constant.guard_low) &
+                           static_cast<int>(maxima[g] <= constant.guard_high)) &
+                          ...);
+    const double bound = (constant.epsilon * ... * power<constant.degree[g]>(maxima[g]));
+    return (in_guard & static_cast<int>(std::fabs(value) > bound)) != 0;
+  }
+  (std::make_index_sequence<G>{});
+}
+
+/// A group whose inputs are all exactly zero makes every term vanish (every group appears
+/// in every term: derive_filter checks it).
+template <std::size_t G>
+inline bool some_group_is_zero(const std::array<double, G>& maxima) noexcept {
+  for (const double m : maxima) {
+    if (m == 0.0) return true;
+  }
+  return false;
+}
+
+/// max(a, b) for non-NaN operands, in the form compilers turn into one maxsd.
+inline double larger(double a, double b) noexcept {
+  return a < b ? b : a;
+}
+
+template <std::size_t N>
+inline VectorArray<double, N> rounded(const Offsets<N>& in) noexcept {
+  VectorArray<double, N> out;
+  for (std::size_t v = 0; v < N; ++v)
+    out[v] = in[v].rounded();
+  return out;
+}
+
+/// Per group, the largest |input|. Each maximum starts from an input, not from 0: a
+/// comparison with a known constant would compile to a data-dependent branch.
+template <Grouping grouping, std::size_t N>
+inline auto group_maxima(const VectorArray<double, N>& x) noexcept {
+  if constexpr (grouping == Grouping::by_axis) {
+    std::array<double, 3> m;
+    for (int axis = 0; axis < 3; ++axis) {
+      m[axis] = std::fabs(x[0][axis]);
+      for (std::size_t v = 1; v < N; ++v)
+        m[axis] = larger(m[axis], std::fabs(x[v][axis]));
+    }
+    return m;
+  } else {
+    std::array<double, N> m;
+    for (std::size_t v = 0; v < N; ++v) {
+      m[v] = larger(larger(std::fabs(x[v][0]), std::fabs(x[v][1])), std::fabs(x[v][2]));
+    }
+    return m;
+  }
+}
+
+/// The filter's approximation of the formula: rounded inputs, with the coordinates the
+/// formula ignores set to zero so that they do not inflate the maxima.
+template <class Formula, std::size_t N>
+inline VectorArray<double, N> filter_inputs(const Offsets<N>& in, int parameter) noexcept {
+  VectorArray<double, N> x = rounded(in);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (Formula::reads(axis, parameter)) continue;
+    for (std::size_t v = 0; v < N; ++v)
+      x[v][axis] = 0.0;
+  }
+  return x;
+}
+
+/// Stage 1 on its own: the certified sign, Sign::zero for a vanishing group, or nullopt.
+template <class Formula, Grouping grouping, std::size_t N>
+inline std::optional<Sign> filtered_sign(const Offsets<N>& in, int parameter) noexcept {
+  static_assert(N == Formula::kVectors);
+  const VectorArray<double, N> x = filter_inputs<Formula>(in, parameter);
+  const double value = Formula::evaluate(x, parameter);
+  const auto maxima = group_maxima<grouping>(x);
+  if (filter_certifies<kFilterConstant<Formula, grouping>>(value, maxima)) return sign_of(value);
+  if (some_group_is_zero(maxima)) return Sign::zero;
+  return std::nullopt;
+}
+
+}  // namespace exactgeo::internal
