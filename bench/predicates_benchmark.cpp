@@ -196,6 +196,25 @@ class RatioReporter : public benchmark::ConsoleReporter {
   std::map<std::string, double> ns_per_item;
 };
 
+/// How often the plain double answer differs from the exact one: the other side of the trade.
+int orient_double_errors(Kind kind) {
+  int wrong = 0;
+  for (const auto& c : orient_cases(kind)) {
+    wrong += exactgeo::orient3d(c.a, c.b, c.c, c.d, Arithmetic::plain_double) !=
+             exactgeo::orient3d(c.a, c.b, c.c, c.d);
+  }
+  return wrong;
+}
+
+int ray_patch_double_errors(Kind kind) {
+  int wrong = 0;
+  for (const auto& c : ray_patch_cases(kind)) {
+    wrong += exactgeo::ray_patch_parity(c.origin, c.direction, c.patch, Arithmetic::plain_double) !=
+             exactgeo::ray_patch_parity(c.origin, c.direction, c.patch);
+  }
+  return wrong;
+}
+
 void print_stages(const char* label, const exactgeo::internal::StageCounts& c) {
   const double total = double(c.total());
   std::printf("  %-28s signs %8llu  filter %6.2f%%  expansion %6.2f%%  rational %6.2f%%\n", label,
@@ -234,6 +253,11 @@ int main(int argc, char** argv) {
       std::printf("  %-10s %-11s double %8.2f ns  exact %8.2f ns  ratio %5.2f\n", predicate,
                   name(kind), plain->second, exact->second, exact->second / plain->second);
     }
+  }
+  std::printf("\nplain double answers that differ from the exact ones (of %zu cases):\n", kBatch);
+  for (const Kind kind : {Kind::random, Kind::near, Kind::degenerate}) {
+    std::printf("  %-11s orient3d %5d   ray_patch %5d\n", name(kind), orient_double_errors(kind),
+                ray_patch_double_errors(kind));
   }
   std::printf("\nwhich stage decided each sign:\n");
   for (const Kind kind : {Kind::random, Kind::near, Kind::degenerate}) {

@@ -34,7 +34,7 @@ class ExponentRange {
  public:
   static constexpr int kHeadroomBits = 16;
 
-  void include(double x) noexcept {
+  [[gnu::always_inline]] void include(double x) noexcept {
     if (x == 0.0) return;
     // The biased exponent field, read from the bits (std::ilogb is a library call).
     const auto field = static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
