@@ -65,8 +65,9 @@ class NamedSigns {
   const Policy& self() const noexcept { return static_cast<const Policy&>(*this); }
 };
 
-/// The stages after the filter, out of line: the inputs are passed by value so that the
-/// hot path never has to store them.
+/// The stages after the filter, out of line and cold, so that their stack of expansions
+/// never enlarges the hot path's frame. The inputs are views (a few pointers), passed by
+/// value.
 template <class Formula, std::size_t N>
 [[gnu::noinline, gnu::cold]] Sign exact_sign(const Offsets<N> in, int parameter, bool group_is_zero,
                                              StageCounts* counts) noexcept {
@@ -84,8 +85,6 @@ template <class Formula, std::size_t N>
 
 class ExactSigns : public NamedSigns<ExactSigns> {
  public:
-  using Number = Rational;  // for the few rare-path computations done outside formulas
-
   explicit ExactSigns(StageCounts* counts = nullptr) noexcept : counts_(counts) {}
 
   template <class Formula, Grouping grouping, std::size_t N>
@@ -113,8 +112,6 @@ class ExactSigns : public NamedSigns<ExactSigns> {
 
 class DoubleSigns : public NamedSigns<DoubleSigns> {
  public:
-  using Number = double;
-
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
     return sign_of(Formula::evaluate(rounded(in), parameter));
@@ -128,8 +125,6 @@ class DoubleSigns : public NamedSigns<DoubleSigns> {
 
 class RationalSigns : public NamedSigns<RationalSigns> {
  public:
-  using Number = Rational;
-
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
     return rational_sign<Formula>(in, parameter);
