@@ -18,7 +18,7 @@
 #error "exactgeo needs double operations rounded to double (FLT_EVAL_METHOD == 0, e.g. SSE2)"
 #endif
 #if defined(__FAST_MATH__)
-#error "exactgeo predicates must not be compiled with -ffast-math"
+#error "exactgeo predicates must not be compiled with fast-math optimizations"
 #endif
 
 namespace exactgeo::internal {
