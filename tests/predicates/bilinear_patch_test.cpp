@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include "exactgeo/predicates/internal/patch_frame.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
 #include "support/generators.hpp"
 #include "support/rational_oracle.hpp"
@@ -292,6 +293,31 @@ TEST(PatchShape, AgreesWithOracle) {
     if (i % 2 == 0) p.p00[1] = p.p10[1] = p.p11[1] = p.p01[1] = 1;  // flat half of the time
     ASSERT_EQ(classify_patch(p), testing::patch_shape_oracle(p))
         << describe({0, 0, 0}, {0, 0, 0}, p);
+  }
+}
+
+/// The frame of a patch known only through offsets from an origin (as in CCD) is the frame
+/// of the patch itself, wherever the origin is.
+TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
+  Rng rng = testing::seeded_engine("patch-frame-offsets");
+  for (int i = 0; i < 20000; ++i) {
+    BilinearPatch p = i % 3 == 0
+                          ? integer_patch(rng, 2)
+                          : BilinearPatch{testing::random_point(rng), testing::random_point(rng),
+                                          testing::random_point(rng), testing::random_point(rng)};
+    if (i % 3 == 1) p.p11 = testing::rounded_affine(p.p00, p.p10, p.p01, 1, 1);  // nearly flat
+    const auto x = internal::internal_corners(p);
+    const Point3 origin = i % 2 ? testing::random_point(rng, 4) : testing::integer_point(rng, 3);
+    const internal::ExactSigns signs;
+    const internal::PatchFrame expected = internal::patch_frame(signs, x);
+    const internal::PatchFrame got =
+        internal::patch_frame_from_offsets(signs, internal::offsets_from(origin, x));
+    ASSERT_EQ(got.kind, expected.kind) << describe(origin, {0, 0, 0}, p);
+    ASSERT_EQ(got.volume, expected.volume);
+    if (got.kind == internal::PatchFrame::Kind::planar) {
+      // Any non-collinear triple will do; it must really be one.
+      ASSERT_NE(testing::patch_shape_oracle(p), PatchShape::skew);
+    }
   }
 }
 

@@ -26,6 +26,11 @@ constexpr double u = 0x1p-53;
 ///   det3 (three such, summed)   B 6, E (12u + 12u + 4u) + 12u + 6u = 46u
 ///   dot3                        B 3, E (3u + 3u + 2u) + 3u + 3u = 14u
 ///   phi = g g - g g             B 72, E 2 (6*46u + 6*46u + 36u) + 72u = 1248u
+/// and for formulas that first subtract two rounded inputs (B 2, E u + u + 2u = 4u):
+///   product of two differences  B 4, E 2*4u + 2*4u + 4u = 20u
+///   2x2 minor                   B 8, E 20u + 20u + 8u = 48u   (= triangle_normal)
+///   difference * minor          B 16, E 2*48u + 8*4u + 16u = 144u
+///   tetrahedron_volume          B 48, E (144u + 144u + 32u) + 144u + 48u = 512u
 void expect_first_order(double epsilon, double coefficient) {
   EXPECT_GE(epsilon, coefficient * u);
   EXPECT_LE(epsilon, coefficient * u * (1 + 0x1p-30));
@@ -37,6 +42,9 @@ TEST(FilterConstant, MatchesHandDerivation) {
   expect_first_order(kFilterConstant<Cross2Formula, Grouping::by_vector>.epsilon, 8);
   expect_first_order(kFilterConstant<Dot3Formula, Grouping::by_vector>.epsilon, 14);
   expect_first_order(kFilterConstant<PhiFormula, Grouping::by_axis>.epsilon, 1248);
+  expect_first_order(kFilterConstant<TriangleNormalFormula, Grouping::by_projected_axis>.epsilon,
+                     48);
+  expect_first_order(kFilterConstant<TetrahedronVolumeFormula, Grouping::by_axis>.epsilon, 512);
 }
 
 TEST(FilterConstant, Orient3dAgreesWithPublishedFpgConstant) {

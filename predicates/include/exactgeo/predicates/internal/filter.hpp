@@ -21,11 +21,30 @@ namespace exactgeo::internal {
 /// How the filter normalises its inputs. The bound is epsilon * prod_g m_g^deg_g with m_g
 /// the largest |input| of group g; any grouping in which the formula is homogeneous is
 /// sound. By axis suits formulas on points (orient3d: one max per coordinate, as in FPG);
-/// by vector suits formulas with a direction whose scale is unrelated to the points'.
-enum class Grouping { by_axis, by_vector };
+/// by vector suits formulas with a direction whose scale is unrelated to the points';
+/// by projected axis is "by axis" for 2D formulas that drop the axis given as their
+/// parameter (two groups: the axes parameter + 1 and parameter + 2, mod 3).
+enum class Grouping { by_axis, by_vector, by_projected_axis };
 
 template <class Formula, Grouping grouping>
-constexpr int kGroupCount = grouping == Grouping::by_axis ? 3 : Formula::kVectors;
+constexpr int kGroupCount = grouping == Grouping::by_axis             ? 3
+                            : grouping == Grouping::by_projected_axis ? 2
+                                                                      : Formula::kVectors;
+
+/// The group of coordinate `axis` of input vector `vector` (for by_projected_axis, with
+/// the dropped axis given; it belongs to no group and is reported as group 0, unread).
+template <Grouping grouping>
+constexpr int group_of(int vector, int axis, int dropped_axis) {
+  switch (grouping) {
+    case Grouping::by_axis:
+      return axis;
+    case Grouping::by_vector:
+      return vector;
+    case Grouping::by_projected_axis:
+      return axis == dropped_axis ? 0 : (axis - dropped_axis + 2) % 3;
+  }
+  return 0;
+}
 
 template <class Formula, Grouping grouping>
 inline constexpr auto kFilterConstant = [] {
@@ -34,8 +53,8 @@ inline constexpr auto kFilterConstant = [] {
   VectorArray<R, Formula::kVectors> inputs{};
   for (int v = 0; v < Formula::kVectors; ++v) {
     for (int axis = 0; axis < 3; ++axis) {
-      inputs[v][axis] =
-          R::input(grouping == Grouping::by_axis ? axis : v, R::InputError::one_rounding);
+      // The analysis does not depend on the parameter: evaluate with parameter 0.
+      inputs[v][axis] = R::input(group_of<grouping>(v, axis, 0), R::InputError::one_rounding);
     }
   }
   return derive_filter(Formula::evaluate(inputs, 0));
@@ -92,8 +111,17 @@ inline VectorArray<double, N> rounded(const Offsets<N>& in) noexcept {
 /// Per group, the largest |input|. Each maximum starts from an input, not from 0: a
 /// comparison with a known constant would compile to a data-dependent branch.
 template <Grouping grouping, std::size_t N>
-inline auto group_maxima(const VectorArray<double, N>& x) noexcept {
-  if constexpr (grouping == Grouping::by_axis) {
+inline auto group_maxima(const VectorArray<double, N>& x, int parameter) noexcept {
+  if constexpr (grouping == Grouping::by_projected_axis) {
+    const int i = (parameter + 1) % 3;
+    const int j = (parameter + 2) % 3;
+    std::array<double, 2> m{std::fabs(x[0][i]), std::fabs(x[0][j])};
+    for (std::size_t v = 1; v < N; ++v) {
+      m[0] = larger(m[0], std::fabs(x[v][i]));
+      m[1] = larger(m[1], std::fabs(x[v][j]));
+    }
+    return m;
+  } else if constexpr (grouping == Grouping::by_axis) {
     std::array<double, 3> m;
     for (int axis = 0; axis < 3; ++axis) {
       m[axis] = std::fabs(x[0][axis]);
@@ -129,7 +157,7 @@ inline std::optional<Sign> filtered_sign(const Offsets<N>& in, int parameter) no
   static_assert(N == Formula::kVectors);
   const VectorArray<double, N> x = filter_inputs<Formula>(in, parameter);
   const double value = Formula::evaluate(x, parameter);
-  const auto maxima = group_maxima<grouping>(x);
+  const auto maxima = group_maxima<grouping>(x, parameter);
   if (filter_certifies<kFilterConstant<Formula, grouping>>(value, maxima)) return sign_of(value);
   if (some_group_is_zero(maxima)) return Sign::zero;
   return std::nullopt;

@@ -71,4 +71,26 @@ struct PhiFormula : ReadsAllCoordinates {
   }
 };
 
+/// The volume sign of four points given relative to an origin (tetrahedron_volume).
+struct TetrahedronVolumeFormula : ReadsAllCoordinates {
+  static constexpr int kVectors = 4;
+  static constexpr int kDegree = 3;
+  template <class T>
+  static constexpr auto evaluate(const VectorArray<T, 4>& v, int /*unused*/) {
+    return tetrahedron_volume(v[0], v[1], v[2], v[3]);
+  }
+};
+
+/// A normal component of a triangle given relative to an origin; the parameter is the
+/// axis, which the formula does not read.
+struct TriangleNormalFormula {
+  static constexpr int kVectors = 3;
+  static constexpr int kDegree = 2;
+  static constexpr bool reads(int axis, int normal_axis) { return axis != normal_axis; }
+  template <class T>
+  static constexpr auto evaluate(const VectorArray<T, 3>& v, int axis) {
+    return triangle_normal(axis, v[0], v[1], v[2]);
+  }
+};
+
 }  // namespace exactgeo::internal

@@ -38,6 +38,27 @@ constexpr auto dot3(const Vec3<T>& a, const Vec3<T>& b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+/// a - b, coordinate by coordinate.
+template <class T>
+constexpr auto difference(const Vec3<T>& a, const Vec3<T>& b) {
+  using R = decltype(a[0] - b[0]);
+  return Vec3<R>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+/// det[a1 - a0, a2 - a0, a3 - a0] = orient3d(x0, x1, x2, x3) for a_i = x_i - o, any o: the
+/// volume sign of four points known only relative to some origin.
+template <class T>
+constexpr auto tetrahedron_volume(const Vec3<T>& a0, const Vec3<T>& a1, const Vec3<T>& a2,
+                                  const Vec3<T>& a3) {
+  return det3(difference(a1, a0), difference(a2, a0), difference(a3, a0));
+}
+
+/// ((a1 - a0) x (a2 - a0))_axis: a component of the normal of the triangle (x0, x1, x2).
+template <class T>
+constexpr auto triangle_normal(int axis, const Vec3<T>& a0, const Vec3<T>& a1, const Vec3<T>& a2) {
+  return cross2(axis, difference(a1, a0), difference(a2, a0));
+}
+
 /// The bilinear patch's implicit function at the origin, for corners given relative to
 /// the origin (a_i = x_i - o) with x0 = p00, x1 = p10, x2 = p01, x3 = p11:
 ///   phi = g012 g132 - g013 g032,  g_pqr = orient3d(x_p, x_q, x_r, o) = -det[a_p, a_q, a_r].

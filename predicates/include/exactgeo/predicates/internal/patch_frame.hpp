@@ -51,4 +51,21 @@ PatchFrame patch_frame(const Signs& signs, const std::array<Point3, 4>& x) noexc
   return {PatchFrame::Kind::collinear, Sign::zero, {}};
 }
 
+/// The same frame for corners known only relative to some origin (a_i = x_i - o), as in
+/// continuous collision detection, where every corner is a difference of two inputs.
+/// Equal to patch_frame of the corners themselves; the filters are relative to |a_i|.
+template <class Signs>
+PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a) noexcept {
+  const Sign volume = signs.tetrahedron_volume(a);
+  if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
+  for (const auto& t : kFaceTriples) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (signs.triangle_normal(axis, a[t[0]], a[t[1]], a[t[2]]) != Sign::zero) {
+        return {PatchFrame::Kind::planar, Sign::zero, t};
+      }
+    }
+  }
+  return {PatchFrame::Kind::collinear, Sign::zero, {}};
+}
+
 }  // namespace exactgeo::internal

@@ -56,6 +56,16 @@ class NamedSigns {
   Sign dot3(const Offset& a, const Offset& b) const noexcept {
     return self().template sign<Dot3Formula, Grouping::by_vector>(Offsets<2>{a, b});
   }
+  /// orient3d(x0, x1, x2, x3) for a_i = x_i - o.
+  Sign tetrahedron_volume(const Offsets<4>& a) const noexcept {
+    return self().template sign<TetrahedronVolumeFormula, Grouping::by_axis>(a);
+  }
+  /// ((x1 - x0) x (x2 - x0))[axis] for a_i = x_i - o.
+  Sign triangle_normal(int axis, const Offset& a0, const Offset& a1,
+                       const Offset& a2) const noexcept {
+    return self().template sign<TriangleNormalFormula, Grouping::by_projected_axis>(
+        Offsets<3>{a0, a1, a2}, axis);
+  }
   /// sign of the bilinear patch's implicit function at the origin (formulas.hpp).
   Sign phi(const Offsets<4>& a) const noexcept {
     return self().template sign<PhiFormula, Grouping::by_axis>(a);
@@ -91,7 +101,7 @@ class ExactSigns : public NamedSigns<ExactSigns> {
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
     const VectorArray<double, N> x = filter_inputs<Formula>(in, parameter);
     const double value = Formula::evaluate(x, parameter);
-    const auto maxima = group_maxima<grouping>(x);
+    const auto maxima = group_maxima<grouping>(x, parameter);
     if (filter_certifies<kFilterConstant<Formula, grouping>>(value, maxima)) [[likely]] {
       if (counts_) ++counts_->filter;
       return sign_of(value);
