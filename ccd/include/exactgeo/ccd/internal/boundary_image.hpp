@@ -1,0 +1,70 @@
+#pragma once
+
+// The image under F of the boundary of the CCD domain, as corners and faces.
+//
+// Vertex-face, F(t, u, v) = v(t) - [(1-u-v) f0(t) + u f1(t) + v f2(t)], t in [0,1], (u, v)
+// in the unit triangle: the domain is a prism. Its corners map to c_tj = v(t) - fj(t)
+// (index 3t + j); the faces t = 0 and t = 1 map to triangles, the three side faces to
+// bilinear patches in (t, parameter along the triangle's edge).
+//
+// Edge-edge, F(t, u, v) = [(1-u) ea0(t) + u ea1(t)] - [(1-v) eb0(t) + v eb1(t)] on [0,1]^3:
+// a cube whose corners map to c_tij = eai(t) - ebj(t) (index 4t + 2i + j) and whose six
+// faces map to bilinear patches.
+//
+// F is affine in each parameter, so a face with two free parameters maps to the bilinear
+// patch through its four corner images. Every corner is a difference of two input points:
+// an Offset with the ray origin at 0.
+
+#include <array>
+#include <cstdint>
+
+#include "exactgeo/ccd/queries.hpp"
+#include "exactgeo/predicates/internal/offset.hpp"
+
+namespace exactgeo::ccd::internal {
+
+using exactgeo::internal::Offset;
+using exactgeo::internal::Offsets;
+
+struct Face {
+  enum class Kind : std::uint8_t { triangle, patch };
+  Kind kind;
+  /// triangle: three corner indices (the fourth unused); patch: p00, p10, p11, p01.
+  std::array<std::uint8_t, 4> corners;
+};
+
+template <std::size_t C, std::size_t F>
+struct BoundaryImage {
+  Offsets<C> corners;
+  std::array<Face, F> faces;
+};
+
+/// Views into the query's points: the query must outlive the result.
+inline BoundaryImage<6, 5> boundary_image(const VertexFaceQuery& q) noexcept {
+  using K = Face::Kind;
+  return {{Offset::between(q.f0_t0, q.v_t0), Offset::between(q.f1_t0, q.v_t0),
+           Offset::between(q.f2_t0, q.v_t0), Offset::between(q.f0_t1, q.v_t1),
+           Offset::between(q.f1_t1, q.v_t1), Offset::between(q.f2_t1, q.v_t1)},
+          {{{K::triangle, {0, 1, 2, 0}},  // t = 0
+            {K::triangle, {3, 4, 5, 3}},  // t = 1
+            {K::patch, {0, 3, 4, 1}},     // v = 0: edge f0 f1, parameters (t, u)
+            {K::patch, {1, 4, 5, 2}},     // u + v = 1: edge f1 f2
+            {K::patch, {0, 3, 5, 2}}}}};  // u = 0: edge f0 f2, parameters (t, v)
+}
+
+inline BoundaryImage<8, 6> boundary_image(const EdgeEdgeQuery& q) noexcept {
+  using K = Face::Kind;
+  // Corner 4t + 2i + j = eai(t) - ebj(t).
+  return {{Offset::between(q.eb0_t0, q.ea0_t0), Offset::between(q.eb1_t0, q.ea0_t0),
+           Offset::between(q.eb0_t0, q.ea1_t0), Offset::between(q.eb1_t0, q.ea1_t0),
+           Offset::between(q.eb0_t1, q.ea0_t1), Offset::between(q.eb1_t1, q.ea0_t1),
+           Offset::between(q.eb0_t1, q.ea1_t1), Offset::between(q.eb1_t1, q.ea1_t1)},
+          {{{K::patch, {0, 2, 3, 1}},     // t = 0, parameters (u, v)
+            {K::patch, {4, 6, 7, 5}},     // t = 1
+            {K::patch, {0, 4, 5, 1}},     // u = 0, parameters (t, v)
+            {K::patch, {2, 6, 7, 3}},     // u = 1
+            {K::patch, {0, 4, 6, 2}},     // v = 0, parameters (t, u)
+            {K::patch, {1, 5, 7, 3}}}}};  // v = 1
+}
+
+}  // namespace exactgeo::ccd::internal

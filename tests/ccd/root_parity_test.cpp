@@ -1,0 +1,324 @@
+// Root parity CCD: the small cases of DESIGN.md, symmetries that must not change any
+// answer, exact vs rational arithmetic, and the public benchmark data.
+
+#include "exactgeo/ccd/root_parity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "cli/ccd_queries.hpp"
+#include "support/generators.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::ccd {
+namespace {
+
+using testing::Rng;
+
+RootParity vf(const VertexFaceQuery& q) {
+  return vertex_face_root_parity(q).parity;
+}
+RootParity ee(const EdgeEdgeQuery& q) {
+  return edge_edge_root_parity(q).parity;
+}
+
+/// A vertex moving straight down from height 1 to height `end` over the unit triangle in
+/// z = 0, at (x, y).
+VertexFaceQuery vertex_falling_to(double x, double y, double end) {
+  return {{x, y, 1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {x, y, end}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+}
+
+TEST(RootParity, HourglassFromDesignIsACollision) {
+  // The vertex rests at (0.1, 0.1, 0.1); the triangle falls from z = 1 to z = 0 and flips
+  // its winding on the way (f1 and f2 swap places), so the side patch over the edge
+  // f1 f2 is a flat hourglass. The vertex is hit once.
+  const VertexFaceQuery q{{0.1, 0.1, 0.1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1},
+                          {0.1, 0.1, 0.1}, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
+  EXPECT_EQ(vf(q), RootParity::odd);
+}
+
+TEST(RootParity, VertexFaceBasics) {
+  EXPECT_EQ(vf(vertex_falling_to(0.2, 0.2, -1)), RootParity::odd);           // straight through
+  EXPECT_EQ(vf(vertex_falling_to(2, 2, -1)), RootParity::even);              // beside
+  EXPECT_EQ(vf(vertex_falling_to(0.2, 0.2, 0)), RootParity::boundary_root);  // lands on it
+  EXPECT_EQ(vf(vertex_falling_to(0.5, 0, -1)), RootParity::boundary_root);   // through an edge
+  EXPECT_EQ(vf(vertex_falling_to(0, 0, -1)), RootParity::boundary_root);     // through a corner
+  VertexFaceQuery at_rest_on = vertex_falling_to(0.2, 0.2, -1);
+  at_rest_on.v_t0 = {0.2, 0.2, 0};  // touching at t = 0
+  EXPECT_EQ(vf(at_rest_on), RootParity::boundary_root);
+}
+
+TEST(RootParity, ContactsOffsetByTwoToTheMinus23) {
+  const double e = 0x1p-23;
+  EXPECT_EQ(vf(vertex_falling_to(0.25, 0.25, e)), RootParity::even);
+  EXPECT_EQ(vf(vertex_falling_to(0.25, 0.25, 0)), RootParity::boundary_root);
+  EXPECT_EQ(vf(vertex_falling_to(0.25, 0.25, -e)), RootParity::odd);
+  // Just outside / inside the edge x + y = 1 (crossing the plane at t = 1/2, exactly).
+  EXPECT_EQ(vf(vertex_falling_to(0.5 + e, 0.5, -1)), RootParity::even);
+  EXPECT_EQ(vf(vertex_falling_to(0.5 - e, 0.5, -1)), RootParity::odd);
+}
+
+/// The same contacts around 3e7, where a float has no bits left for 2^-23 but a double does.
+TEST(RootParity, ContactsAroundThreeTimesTenToTheSeven) {
+  const double e = 0x1p-23;
+  const double big = 3e7;  // ulp(3e7) = 2^-28
+  auto shifted = [&](VertexFaceQuery q) {
+    for (Point3* p :
+         {&q.v_t0, &q.f0_t0, &q.f1_t0, &q.f2_t0, &q.v_t1, &q.f0_t1, &q.f1_t1, &q.f2_t1}) {
+      for (double& c : *p)
+        c += big;  // exact: every coordinate is a multiple of 2^-23
+    }
+    return q;
+  };
+  EXPECT_EQ(vf(shifted(vertex_falling_to(0.25, 0.25, e))), RootParity::even);
+  EXPECT_EQ(vf(shifted(vertex_falling_to(0.25, 0.25, 0))), RootParity::boundary_root);
+  EXPECT_EQ(vf(shifted(vertex_falling_to(0.25, 0.25, -e))), RootParity::odd);
+}
+
+TEST(RootParity, CoplanarSliding) {
+  // A vertex sliding in the triangle's plane into it: it enters through an edge.
+  EXPECT_EQ(vf({{-1, 0.25, 0},
+                {0, 0, 0},
+                {1, 0, 0},
+                {0, 1, 0},
+                {0.25, 0.25, 0},
+                {0, 0, 0},
+                {1, 0, 0},
+                {0, 1, 0}}),
+            RootParity::boundary_root);
+  // Sliding in the plane but staying outside.
+  EXPECT_EQ(vf({{-1, 0.25, 0},
+                {0, 0, 0},
+                {1, 0, 0},
+                {0, 1, 0},
+                {-1, 0.75, 0},
+                {0, 0, 0},
+                {1, 0, 0},
+                {0, 1, 0}}),
+            RootParity::even);
+  // Two edges in the plane z = 0: one sweeps across the other (they first touch at an
+  // endpoint: a boundary root), or slides along beside it.
+  EXPECT_EQ(ee({{0, -1, 0},
+                {0, 1, 0},
+                {1, -1, 0},
+                {1, 1, 0},
+                {2, -1, 0},
+                {2, 1, 0},
+                {1, -1, 0},
+                {1, 1, 0}}),
+            RootParity::boundary_root);
+  EXPECT_EQ(ee({{0, -1, 0},
+                {0, 1, 0},
+                {1, -1, 0},
+                {1, 1, 0},
+                {0, 5, 0},
+                {0, 7, 0},
+                {1, -1, 0},
+                {1, 1, 0}}),
+            RootParity::even);
+}
+
+TEST(RootParity, EdgeEdgeBasics) {
+  // Edge a falls through edge b, crossing it in its interior.
+  const EdgeEdgeQuery through{{0, 0, 1},  {1, 1, 1},  {1, 0, 0}, {0, 1, 0},
+                              {0, 0, -1}, {1, 1, -1}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_EQ(ee(through), RootParity::odd);
+  EdgeEdgeQuery beside = through;
+  beside.eb0_t0 = beside.eb0_t1 = {3, 0, 0};
+  beside.eb1_t0 = beside.eb1_t1 = {4, 1, 0};
+  EXPECT_EQ(ee(beside), RootParity::even);
+  EdgeEdgeQuery lands = through;
+  lands.ea0_t1 = {0, 0, 0};
+  lands.ea1_t1 = {1, 1, 0};
+  EXPECT_EQ(ee(lands), RootParity::boundary_root);
+  // Parallel edges that overlap at t = 1/2: the roots form a segment, which contains points
+  // with v = 0 (b's endpoint lies on a), so there are boundary roots.
+  EdgeEdgeQuery parallel_overlap = through;
+  parallel_overlap.eb0_t0 = parallel_overlap.eb0_t1 = {0.5, 0.5, 0};
+  parallel_overlap.eb1_t0 = parallel_overlap.eb1_t1 = {2, 2, 0};
+  EXPECT_EQ(ee(parallel_overlap), RootParity::boundary_root);
+}
+
+// --- symmetries -------------------------------------------------------------------------
+
+std::array<Point3*, 8> points(VertexFaceQuery& q) {
+  return {&q.v_t0, &q.f0_t0, &q.f1_t0, &q.f2_t0, &q.v_t1, &q.f0_t1, &q.f1_t1, &q.f2_t1};
+}
+std::array<Point3*, 8> points(EdgeEdgeQuery& q) {
+  return {&q.ea0_t0, &q.ea1_t0, &q.eb0_t0, &q.eb1_t0, &q.ea0_t1, &q.ea1_t1, &q.eb0_t1, &q.eb1_t1};
+}
+
+template <class Query>
+Query mapped(Query q, auto&& f) {
+  for (Point3* p : points(q))
+    *p = f(*p);
+  return q;
+}
+
+template <class Query>
+Query random_dyadic_query(Rng& rng) {
+  Query q;
+  for (Point3* p : points(q))
+    *p = testing::integer_point(rng, 2);
+  return q;
+}
+
+template <class Query>
+Query time_reversed(Query q) {
+  auto p = points(q);
+  for (int i = 0; i < 4; ++i)
+    std::swap(*p[i], *p[i + 4]);
+  return q;
+}
+
+template <class Query, class Evaluate>
+void check_symmetries(const char* stream, Evaluate evaluate) {
+  Rng rng = testing::seeded_engine(stream);
+  for (int i = 0; i < 2000; ++i) {
+    const Query q = random_dyadic_query<Query>(rng);
+    const RootParity r = evaluate(q);
+    const int k = testing::uniform_int(rng, -1000, 1000);
+    ASSERT_EQ(evaluate(mapped(q, [&](const Point3& p) { return testing::scaled(p, k); })), r)
+        << "scaled by 2^" << k;
+    ASSERT_EQ(evaluate(mapped(q,
+                              [](const Point3& p) {
+                                return Point3{-p[0], p[1], p[2]};
+                              })),
+              r)
+        << "mirrored";
+    ASSERT_EQ(evaluate(mapped(q,
+                              [](const Point3& p) {
+                                return Point3{p[2], p[0], p[1]};
+                              })),
+              r)
+        << "axes permuted";
+    ASSERT_EQ(evaluate(mapped(q,
+                              [](const Point3& p) {
+                                return Point3{p[0] + 5, p[1] - 3, p[2]};
+                              })),
+              r)
+        << "translated";
+    ASSERT_EQ(evaluate(time_reversed(q)), r) << "time reversed";
+  }
+}
+
+TEST(RootParity, VertexFaceSymmetries) {
+  check_symmetries<VertexFaceQuery>("ccd-vf-symmetries",
+                                    [](const VertexFaceQuery& q) { return vf(q); });
+  Rng rng = testing::seeded_engine("ccd-vf-relabel");
+  for (int i = 0; i < 2000; ++i) {
+    const auto q = random_dyadic_query<VertexFaceQuery>(rng);
+    const VertexFaceQuery rotated{q.v_t0, q.f1_t0, q.f2_t0, q.f0_t0,
+                                  q.v_t1, q.f1_t1, q.f2_t1, q.f0_t1};
+    const VertexFaceQuery flipped{q.v_t0, q.f0_t0, q.f2_t0, q.f1_t0,
+                                  q.v_t1, q.f0_t1, q.f2_t1, q.f1_t1};
+    ASSERT_EQ(vf(rotated), vf(q));
+    ASSERT_EQ(vf(flipped), vf(q));  // both windings
+  }
+}
+
+TEST(RootParity, EdgeEdgeSymmetries) {
+  check_symmetries<EdgeEdgeQuery>("ccd-ee-symmetries",
+                                  [](const EdgeEdgeQuery& q) { return ee(q); });
+  Rng rng = testing::seeded_engine("ccd-ee-relabel");
+  for (int i = 0; i < 2000; ++i) {
+    const auto q = random_dyadic_query<EdgeEdgeQuery>(rng);
+    const EdgeEdgeQuery swapped{q.eb0_t0, q.eb1_t0, q.ea0_t0, q.ea1_t0,
+                                q.eb0_t1, q.eb1_t1, q.ea0_t1, q.ea1_t1};
+    const EdgeEdgeQuery reversed{q.ea1_t0, q.ea0_t0, q.eb0_t0, q.eb1_t0,
+                                 q.ea1_t1, q.ea0_t1, q.eb0_t1, q.eb1_t1};
+    ASSERT_EQ(ee(swapped), ee(q));
+    ASSERT_EQ(ee(reversed), ee(q));
+  }
+}
+
+TEST(RootParity, RationalArithmeticAgrees) {
+  Rng rng = testing::seeded_engine("ccd-rational");
+  for (int i = 0; i < 300; ++i) {
+    const auto v = random_dyadic_query<VertexFaceQuery>(rng);
+    ASSERT_EQ(vertex_face_root_parity(v, Arithmetic::rational).parity, vf(v));
+    const auto e = random_dyadic_query<EdgeEdgeQuery>(rng);
+    ASSERT_EQ(edge_edge_root_parity(e, Arithmetic::rational).parity, ee(e));
+  }
+}
+
+// --- benchmark data ---------------------------------------------------------------------
+
+struct Tally {
+  int queries = 0, truth_positives = 0, false_positives = 0, false_negatives = 0;
+};
+
+/// Runs root parity on every query of one CSV file, with truth from the file or `truth`.
+Tally run_file(const std::filesystem::path& csv, bool edge_edge, const std::vector<bool>* truth,
+               bool check_rational) {
+  std::ifstream in(csv);
+  EXPECT_TRUE(in) << csv;
+  const auto records = cli::read_ccd_records(in, csv.string());
+  Tally t;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const bool expected = records[i].truth ? *records[i].truth : truth->at(i);
+    const RootParityResult r = edge_edge
+                                   ? edge_edge_root_parity(cli::edge_edge_query(records[i]))
+                                   : vertex_face_root_parity(cli::vertex_face_query(records[i]));
+    if (check_rational) {
+      const RootParityResult q =
+          edge_edge
+              ? edge_edge_root_parity(cli::edge_edge_query(records[i]), Arithmetic::rational)
+              : vertex_face_root_parity(cli::vertex_face_query(records[i]), Arithmetic::rational);
+      EXPECT_EQ(q.parity, r.parity) << csv << " query " << i;
+    }
+    ++t.queries;
+    t.truth_positives += expected;
+    t.false_positives += r.collision() && !expected;
+    t.false_negatives += !r.collision() && expected;
+    if (r.collision() && !expected) ADD_FAILURE() << "false positive: " << csv << " query " << i;
+  }
+  return t;
+}
+
+TEST(RootParityData, BundledSampleQueriesHaveNoFalsePositives) {
+  const std::filesystem::path root =
+      std::filesystem::path(EXACTGEO_TEST_DATA_DIR) / "ccd/sample-queries";
+  int false_negatives = 0, queries = 0;
+  for (const char* scene : {"unit-tests", "erleben-cube-cliff-edges"}) {
+    for (const char* type : {"vertex-face", "edge-edge"}) {
+      for (const char* file : {"data_0_0.csv", "data_0_1.csv"}) {
+        const Tally t = run_file(root / scene / type / file, std::string(type) == "edge-edge",
+                                 nullptr, /*check_rational=*/std::string(scene) == "unit-tests");
+        queries += t.queries;
+        EXPECT_EQ(t.false_positives, 0);
+        false_negatives += t.false_negatives;
+        // Root parity misses only queries with an even number of roots; DESIGN.md records
+        // five such two-root collisions in this sample, all edge-edge unit tests.
+        if (std::string(scene) != "unit-tests" || std::string(type) != "edge-edge") {
+          EXPECT_EQ(t.false_negatives, 0) << scene << " " << type << " " << file;
+        }
+      }
+    }
+  }
+  EXPECT_GT(queries, 800);
+  EXPECT_LE(false_negatives, 5);
+  std::printf("[ info     ] %d sample queries, %d missed by parity\n", queries, false_negatives);
+}
+
+TEST(RootParityData, BundledTimeOfImpactSampleHasNoFalsePositives) {
+  const std::filesystem::path root =
+      std::filesystem::path(EXACTGEO_TEST_DATA_DIR) / "ccd/scalable-ccd-data/cloth-funnel";
+  for (const char* stem : {"227vf", "227ee"}) {
+    std::ifstream json(root / "mma_bool" / (std::string(stem) + "_mma_bool.json"));
+    const std::vector<bool> truth = cli::read_truth_array(json, stem);
+    const Tally t = run_file(root / "queries" / (std::string(stem) + ".csv"),
+                             std::string(stem).ends_with("ee"), &truth, /*check_rational=*/false);
+    EXPECT_EQ(t.queries, static_cast<int>(truth.size()));
+    EXPECT_EQ(t.false_positives, 0) << stem;
+    std::printf("[ info     ] %s: %d queries, %d collisions, %d missed by parity\n", stem,
+                t.queries, t.truth_positives, t.false_negatives);
+  }
+}
+
+}  // namespace
+}  // namespace exactgeo::ccd
