@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include "cli/ccd_queries.hpp"
@@ -318,6 +319,48 @@ TEST(RootParityData, BundledTimeOfImpactSampleHasNoFalsePositives) {
     std::printf("[ info     ] %s: %d queries, %d collisions, %d missed by parity\n", stem,
                 t.queries, t.truth_positives, t.false_negatives);
   }
+}
+
+}  // namespace
+}  // namespace exactgeo::ccd
+
+namespace exactgeo::ccd {
+namespace {
+
+/// All shared queries (26,917), when ../shared/data/ccd sits next to the checkout.
+TEST(RootParityData, FullSharedSetsHaveNoFalsePositives) {
+  namespace fs = std::filesystem;
+  const fs::path root = fs::path(EXACTGEO_SHARED_DATA_DIR) / "ccd";
+  if (!fs::exists(root)) GTEST_SKIP() << root << " not present";
+  std::map<std::string, Tally> by_set;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".csv") continue;
+    const fs::path& csv = entry.path();
+    const std::string stem = csv.stem().string();
+    const bool sample = csv.string().find("sample-queries") != std::string::npos;
+    const bool edge_edge =
+        sample ? csv.parent_path().filename() == "edge-edge" : stem.ends_with("ee");
+    std::vector<bool> truth;
+    if (!sample) {
+      std::ifstream json(csv.parent_path().parent_path() / "mma_bool" / (stem + "_mma_bool.json"));
+      truth = cli::read_truth_array(json, stem);
+    }
+    const Tally t = run_file(csv, edge_edge, sample ? nullptr : &truth, false);
+    Tally& sum = by_set[std::string(sample ? "sample-queries " : "scalable-ccd-data ") +
+                        (edge_edge ? "edge-edge" : "vertex-face")];
+    sum.queries += t.queries;
+    sum.truth_positives += t.truth_positives;
+    sum.false_positives += t.false_positives;
+    sum.false_negatives += t.false_negatives;
+  }
+  int queries = 0;
+  for (const auto& [name, t] : by_set) {
+    std::printf("[ info     ] %-30s %6d queries %6d collisions  parity FP %d FN %d\n", name.c_str(),
+                t.queries, t.truth_positives, t.false_positives, t.false_negatives);
+    EXPECT_EQ(t.false_positives, 0) << name;
+    queries += t.queries;
+  }
+  EXPECT_EQ(queries, 26917);
 }
 
 }  // namespace
