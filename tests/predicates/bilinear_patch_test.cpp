@@ -5,6 +5,7 @@
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -319,6 +320,64 @@ TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
       ASSERT_NE(testing::patch_shape_oracle(p), PatchShape::skew);
     }
   }
+}
+
+/// CCD side patches: corners v(t) - f(t) sharing points, with static points making
+/// parallelograms and repeated corners (the frame's shortcuts). Checked exactly in mpq.
+TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
+  Rng rng = testing::seeded_engine("patch-frame-ccd");
+  using Q = std::array<mpq_class, 3>;
+  auto exact = [](const internal::Offset& o) {
+    return Q{mpq_class(o.head(0)) - o.tail(0), mpq_class(o.head(1)) - o.tail(1),
+             mpq_class(o.head(2)) - o.tail(2)};
+  };
+  auto sub = [](const Q& a, const Q& b) { return Q{a[0] - b[0], a[1] - b[1], a[2] - b[2]}; };
+  auto cross = [](const Q& a, const Q& b) {
+    return Q{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto is_zero = [](const Q& a) { return a[0] == 0 && a[1] == 0 && a[2] == 0; };
+  int kinds[3] = {};
+  for (int i = 0; i < 20000; ++i) {
+    auto point = [&] {
+      return i % 2 ? testing::integer_point(rng, 2) : testing::random_point(rng);
+    };
+    const Point3 v0 = point(), f0 = point(), g0 = point();
+    const Point3 v1 = i % 3 == 0 ? v0 : point();  // static vertex a third of the time
+    const Point3 f1 = i % 4 < 2 ? f0 : point();   // static edge half of the time
+    const Point3 g1 = i % 4 < 2 ? g0 : (i % 5 == 0 ? f1 : point());
+    // Side patch over the edge (f, g): p00 = v0 - f0, p10 = v1 - f1, p11 = v1 - g1, p01 = v0 - g0.
+    const internal::Offsets<4> a{
+        internal::Offset::between(f0, v0), internal::Offset::between(f1, v1),
+        internal::Offset::between(g0, v0), internal::Offset::between(g1, v1)};
+    const internal::PatchFrame frame =
+        internal::patch_frame_from_offsets(internal::ExactSigns{}, a);
+    ++kinds[static_cast<int>(frame.kind)];
+    std::array<Q, 4> c{exact(a[0]), exact(a[1]), exact(a[2]), exact(a[3])};
+    const Q n012 = cross(sub(c[1], c[0]), sub(c[2], c[0]));
+    const mpq_class volume = n012[0] * (c[3][0] - c[0][0]) + n012[1] * (c[3][1] - c[0][1]) +
+                             n012[2] * (c[3][2] - c[0][2]);
+    ASSERT_EQ(frame.volume, sign_of(sgn(volume)));
+    bool all_collinear = true;
+    for (const auto& t : internal::kFaceTriples) {
+      all_collinear &= is_zero(cross(sub(c[t[1]], c[t[0]]), sub(c[t[2]], c[t[0]])));
+    }
+    switch (frame.kind) {
+      case internal::PatchFrame::Kind::skew:
+        ASSERT_NE(volume, 0);
+        break;
+      case internal::PatchFrame::Kind::planar: {
+        ASSERT_EQ(volume, 0);
+        const auto& t = frame.plane_triple;
+        ASSERT_FALSE(is_zero(cross(sub(c[t[1]], c[t[0]]), sub(c[t[2]], c[t[0]]))));
+        break;
+      }
+      case internal::PatchFrame::Kind::collinear:
+        ASSERT_TRUE(all_collinear);
+        break;
+    }
+  }
+  for (const int k : kinds)
+    EXPECT_GT(k, 500);
 }
 
 TEST(PatchSide, AgreesWithOracleOnSkewPatches) {

@@ -32,6 +32,14 @@ class Offset {
   static constexpr Offset vector(const Vector3& v) noexcept { return Offset(&v, &kZeroPoint); }
   static Offset vector(Vector3&&) = delete;
 
+  /// Same head and tail values: then certainly the same vector (the converse need not
+  /// hold). An exact test, since it compares input doubles.
+  bool same_points_as(const Offset& other) const noexcept {
+    return *head_ == *other.head_ && *tail_ == *other.tail_;
+  }
+  const Point3& head_point() const noexcept { return *head_; }
+  const Point3& tail_point() const noexcept { return *tail_; }
+
   double head(int axis) const noexcept { return (*head_)[axis]; }
   double tail(int axis) const noexcept { return (*tail_)[axis]; }
 

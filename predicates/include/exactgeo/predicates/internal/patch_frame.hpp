@@ -51,12 +51,62 @@ PatchFrame patch_frame(const Signs& signs, const std::array<Point3, 4>& x) noexc
   return {PatchFrame::Kind::collinear, Sign::zero, {}};
 }
 
+/// (h1 - h0) == (h3 - h2) for certain, from equalities of the input points alone.
+inline bool same_displacement(const Point3& h0, const Point3& h1, const Point3& h2,
+                              const Point3& h3) noexcept {
+  return (h1 == h3 && h0 == h2) || (h1 == h0 && h3 == h2);
+}
+
+/// Certainly a parallelogram, x1 - x0 == x3 - x2 (corner order x0 = p00, x1 = p10, x2 = p01,
+/// x3 = p11), judged from the input points: each corner is head - tail, and equal head
+/// displacements with equal tail displacements give equal corner displacements. This is
+/// the common flat case in CCD, where a static primitive makes the side patches
+/// parallelograms; recognising it spares an exact evaluation of a volume that is zero.
+inline bool certainly_parallelogram(const Offsets<4>& a) noexcept {
+  const auto disp_equal = [&](int p, int q, int r, int s) {
+    return same_displacement(a[p].head_point(), a[q].head_point(), a[r].head_point(),
+                             a[s].head_point()) &&
+           same_displacement(a[p].tail_point(), a[q].tail_point(), a[r].tail_point(),
+                             a[s].tail_point());
+  };
+  return disp_equal(0, 1, 2, 3) || disp_equal(0, 2, 1, 3);  // along u, or along v
+}
+
 /// The same frame for corners known only relative to some origin (a_i = x_i - o), as in
 /// continuous collision detection, where every corner is a difference of two inputs.
 /// Equal to patch_frame of the corners themselves; the filters are relative to |a_i|.
 template <class Signs>
 PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a) noexcept {
-  const Sign volume = signs.tetrahedron_volume(a);
+  // Corners that are the same difference of the same points coincide: with at most two
+  // distinct ones the patch is a segment or a point (no evaluation needed).
+  int distinct = 0;
+  std::array<int, 4> representative{};
+  for (int i = 0; i < 4; ++i) {
+    representative[i] = i;
+    for (int j = 0; j < i; ++j) {
+      if (representative[j] == j && a[i].same_points_as(a[j])) {
+        representative[i] = j;
+        break;
+      }
+    }
+    distinct += representative[i] == i;
+  }
+  if (distinct <= 2) return {PatchFrame::Kind::collinear, Sign::zero, {}};
+  if (distinct == 3) {
+    // Flat; the three distinct corners are the only candidate non-collinear triple.
+    std::array<std::uint8_t, 3> triple{};
+    int n = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (representative[i] == i) triple[n++] = static_cast<std::uint8_t>(i);
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      if (signs.triangle_normal(axis, a[triple[0]], a[triple[1]], a[triple[2]]) != Sign::zero) {
+        return {PatchFrame::Kind::planar, Sign::zero, triple};
+      }
+    }
+    return {PatchFrame::Kind::collinear, Sign::zero, {}};
+  }
+  const Sign volume = certainly_parallelogram(a) ? Sign::zero : signs.tetrahedron_volume(a);
   if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
   for (const auto& t : kFaceTriples) {
     for (int axis = 0; axis < 3; ++axis) {
