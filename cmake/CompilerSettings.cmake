@@ -25,3 +25,17 @@ if(EXACTGEO_BUILD_FUZZERS)
   endif()
   add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
+
+# exactgeo_library(<folder> <sources...>): the library of one top-level folder, as target
+# exactgeo_<folder> with alias exactgeo::<folder>, public headers in <folder>/include.
+function(exactgeo_library folder)
+  set(target exactgeo_${folder})
+  add_library(${target} ${ARGN})
+  add_library(exactgeo::${folder} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${folder} OUTPUT_NAME ${target})
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:include>)
+  target_compile_features(${target} PUBLIC cxx_std_20)
+  target_link_libraries(${target} PRIVATE exactgeo_warnings)
+endfunction()
