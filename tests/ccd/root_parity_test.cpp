@@ -3,6 +3,8 @@
 
 #include "exactgeo/ccd/root_parity.hpp"
 
+#include "exactgeo/ccd/cubic.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -251,6 +253,7 @@ TEST(RootParity, RationalArithmeticAgrees) {
 
 struct Tally {
   int queries = 0, truth_positives = 0, false_positives = 0, false_negatives = 0;
+  int cubic_false_positives = 0, cubic_false_negatives = 0;  // the baseline, measured
 };
 
 /// Runs root parity on every query of one CSV file, with truth from the file or `truth`.
@@ -272,6 +275,10 @@ Tally run_file(const std::filesystem::path& csv, bool edge_edge, const std::vect
               : vertex_face_root_parity(cli::vertex_face_query(records[i]), Arithmetic::rational);
       EXPECT_EQ(q.parity, r.parity) << csv << " query " << i;
     }
+    const bool cubic = edge_edge ? edge_edge_cubic(cli::edge_edge_query(records[i]))
+                                 : vertex_face_cubic(cli::vertex_face_query(records[i]));
+    t.cubic_false_positives += cubic && !expected;
+    t.cubic_false_negatives += !cubic && expected;
     ++t.queries;
     t.truth_positives += expected;
     t.false_positives += r.collision() && !expected;
@@ -352,11 +359,15 @@ TEST(RootParityData, FullSharedSetsHaveNoFalsePositives) {
     sum.truth_positives += t.truth_positives;
     sum.false_positives += t.false_positives;
     sum.false_negatives += t.false_negatives;
+    sum.cubic_false_positives += t.cubic_false_positives;
+    sum.cubic_false_negatives += t.cubic_false_negatives;
   }
   int queries = 0;
   for (const auto& [name, t] : by_set) {
-    std::printf("[ info     ] %-30s %6d queries %6d collisions  parity FP %d FN %d\n", name.c_str(),
-                t.queries, t.truth_positives, t.false_positives, t.false_negatives);
+    std::printf(
+        "[ info     ] %-30s %6d queries %6d collisions  parity FP %d FN %d  cubic FP %d FN %d\n",
+        name.c_str(), t.queries, t.truth_positives, t.false_positives, t.false_negatives,
+        t.cubic_false_positives, t.cubic_false_negatives);
     EXPECT_EQ(t.false_positives, 0) << name;
     queries += t.queries;
   }
