@@ -21,9 +21,8 @@
 
 namespace exactgeo::internal {
 
-// The exact stages are kept out of line and marked cold: inlined, their kilobytes of
-// stack-allocated expansions would make every call pay for a frame (and stack probes) that
-// the filter almost never needs.
+// The exact stages are kept out of line and marked cold, so that their kilobytes of
+// stack-allocated expansions are not part of the frame of every (filtered) sign.
 template <class Formula, std::size_t N>
 [[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N> in,
                                                                 int parameter) noexcept {

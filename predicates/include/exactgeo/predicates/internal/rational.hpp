@@ -40,7 +40,6 @@ class Rational {
     mpq_neg(r.q_.get_mpq_t(), q_.get_mpq_t());
     return r;
   }
-  friend bool operator==(const Rational& a, const Rational& b) { return a.q_ == b.q_; }
 
  private:
   mpq_class q_;

@@ -71,8 +71,6 @@ class UnitRoundoffPolynomial {
     return p;
   }
 
-  constexpr double coefficient(int k) const { return c_[k]; }
-
   friend constexpr UnitRoundoffPolynomial operator+(const UnitRoundoffPolynomial& a,
                                                     const UnitRoundoffPolynomial& b) {
     UnitRoundoffPolynomial r;

@@ -29,12 +29,6 @@ struct StageCounts {
   std::uint64_t rational = 0;
 
   std::uint64_t total() const noexcept { return filter + expansion + rational; }
-  StageCounts& operator+=(const StageCounts& o) noexcept {
-    filter += o.filter;
-    expansion += o.expansion;
-    rational += o.rational;
-    return *this;
-  }
 };
 
 /// The named predicates every policy offers, in terms of the policy's generic sign().
