@@ -72,10 +72,10 @@ class NamedSigns {
 /// The stages after the filter, out of line and cold, so that their stack of expansions
 /// never enlarges the hot path's frame. The inputs are views (a few pointers), passed by
 /// value.
-template <class Formula, std::size_t N>
-[[gnu::noinline, gnu::cold]] Sign exact_sign(const Offsets<N> in, int parameter, bool group_is_zero,
+template <class Formula, Grouping grouping, std::size_t N>
+[[gnu::noinline, gnu::cold]] Sign exact_sign(const Offsets<N> in, int parameter,
                                              StageCounts* counts) noexcept {
-  if (group_is_zero) {  // the filter's exact-zero rule
+  if (vanishing_group<Formula, grouping>(in, parameter)) {  // still the filter's rule
     if (counts) ++counts->filter;
     return Sign::zero;
   }
@@ -93,14 +93,12 @@ class ExactSigns : public NamedSigns<ExactSigns> {
 
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
-    const VectorArray<double, N> x = filter_inputs<Formula>(in, parameter);
-    const double value = Formula::evaluate(x, parameter);
-    const auto maxima = group_maxima<grouping>(x, parameter);
-    if (filter_certifies<kFilterConstant<Formula, grouping>>(value, maxima)) [[likely]] {
+    if (const FilterResult f = apply_filter<Formula, grouping>(in, parameter); f.certified)
+        [[likely]] {
       if (counts_) ++counts_->filter;
-      return sign_of(value);
+      return sign_of(f.value);
     }
-    return exact_sign<Formula>(in, parameter, some_group_is_zero(maxima), counts_);
+    return exact_sign<Formula, grouping>(in, parameter, counts_);
   }
 
   /// Exact numbers for the few rare-path computations done outside sign() (the folded
