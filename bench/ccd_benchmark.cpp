@@ -13,6 +13,7 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "cli/ccd_queries.hpp"
@@ -55,24 +56,18 @@ const Queries& queries() {
   return q;
 }
 
-void BM_vertex_face(benchmark::State& state, Arithmetic arithmetic) {
-  const auto& qs = queries().vertex_face;
+template <class Query>
+void BM_parity(benchmark::State& state, const std::vector<Query>* queries, Arithmetic arithmetic) {
   for (auto _ : state) {
-    for (const auto& q : qs) {
-      benchmark::DoNotOptimize(exactgeo::ccd::vertex_face_root_parity(q, arithmetic));
+    for (const Query& q : *queries) {
+      if constexpr (std::is_same_v<Query, exactgeo::ccd::VertexFaceQuery>) {
+        benchmark::DoNotOptimize(exactgeo::ccd::vertex_face_root_parity(q, arithmetic));
+      } else {
+        benchmark::DoNotOptimize(exactgeo::ccd::edge_edge_root_parity(q, arithmetic));
+      }
     }
   }
-  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(qs.size()));
-}
-
-void BM_edge_edge(benchmark::State& state, Arithmetic arithmetic) {
-  const auto& qs = queries().edge_edge;
-  for (auto _ : state) {
-    for (const auto& q : qs) {
-      benchmark::DoNotOptimize(exactgeo::ccd::edge_edge_root_parity(q, arithmetic));
-    }
-  }
-  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(qs.size()));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(queries->size()));
 }
 
 class RatioReporter : public benchmark::ConsoleReporter {
@@ -97,8 +92,10 @@ int main(int argc, char** argv) {
   for (const auto& [name, arithmetic] :
        {std::pair{"double", Arithmetic::plain_double}, std::pair{"exact", Arithmetic::exact}}) {
     benchmark::RegisterBenchmark((std::string("parity/vertex_face/") + name).c_str(),
-                                 BM_vertex_face, arithmetic);
-    benchmark::RegisterBenchmark((std::string("parity/edge_edge/") + name).c_str(), BM_edge_edge,
+                                 BM_parity<exactgeo::ccd::VertexFaceQuery>, &queries().vertex_face,
+                                 arithmetic);
+    benchmark::RegisterBenchmark((std::string("parity/edge_edge/") + name).c_str(),
+                                 BM_parity<exactgeo::ccd::EdgeEdgeQuery>, &queries().edge_edge,
                                  arithmetic);
   }
   benchmark::Initialize(&argc, argv);

@@ -185,28 +185,33 @@ Times candidate_times(const Points& t0, const Points& t1, double tolerance) {
   return times;
 }
 
-}  // namespace
-
-bool vertex_face_cubic(const VertexFaceQuery& q, const CubicOptions& options) noexcept {
-  const std::array<V, 4> t0{q.v_t0, q.f0_t0, q.f1_t0, q.f2_t0};
-  const std::array<V, 4> t1{q.v_t1, q.f0_t1, q.f1_t1, q.f2_t1};
-  for (const double t : candidate_times(t0, t1, options.tolerance)) {
-    const double d = point_triangle_distance(at(q.v_t0, q.v_t1, t), at(q.f0_t0, q.f0_t1, t),
-                                             at(q.f1_t0, q.f1_t1, t), at(q.f2_t0, q.f2_t1, t));
-    if (d <= options.tolerance) return true;
+/// The method itself, for four points moving from t0 to t1 and a distance between the
+/// two primitives they form (first point vs triangle, or segment vs segment).
+template <class Distance>
+bool touches_at_a_coplanarity_time(const std::array<V, 4>& t0, const std::array<V, 4>& t1,
+                                   double tolerance, Distance distance) noexcept {
+  for (const double t : candidate_times(t0, t1, tolerance)) {
+    std::array<V, 4> p;
+    for (int i = 0; i < 4; ++i)
+      p[i] = at(t0[i], t1[i], t);
+    if (distance(p) <= tolerance) return true;
   }
   return false;
 }
 
+}  // namespace
+
+bool vertex_face_cubic(const VertexFaceQuery& q, const CubicOptions& options) noexcept {
+  return touches_at_a_coplanarity_time(
+      {q.v_t0, q.f0_t0, q.f1_t0, q.f2_t0}, {q.v_t1, q.f0_t1, q.f1_t1, q.f2_t1}, options.tolerance,
+      [](const std::array<V, 4>& p) { return point_triangle_distance(p[0], p[1], p[2], p[3]); });
+}
+
 bool edge_edge_cubic(const EdgeEdgeQuery& q, const CubicOptions& options) noexcept {
-  const std::array<V, 4> t0{q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0};
-  const std::array<V, 4> t1{q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1};
-  for (const double t : candidate_times(t0, t1, options.tolerance)) {
-    const double d = segment_segment_distance(at(q.ea0_t0, q.ea0_t1, t), at(q.ea1_t0, q.ea1_t1, t),
-                                              at(q.eb0_t0, q.eb0_t1, t), at(q.eb1_t0, q.eb1_t1, t));
-    if (d <= options.tolerance) return true;
-  }
-  return false;
+  return touches_at_a_coplanarity_time(
+      {q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0}, {q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1},
+      options.tolerance,
+      [](const std::array<V, 4>& p) { return segment_segment_distance(p[0], p[1], p[2], p[3]); });
 }
 
 }  // namespace exactgeo::ccd
