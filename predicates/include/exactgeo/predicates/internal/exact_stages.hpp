@@ -26,6 +26,11 @@ namespace exactgeo::internal {
 template <class Formula, std::size_t N>
 [[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N> in,
                                                                 int parameter) noexcept {
+  // Exact-vector inputs (exact_vector.hpp) are rare-path inputs of several components;
+  // their products would need far larger expansions, so rationals decide them.
+  for (const Offset& o : in) {
+    if (o.is_exact_vector()) return std::nullopt;
+  }
   ExponentRange range;
   for (const Offset& o : in) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -70,13 +75,24 @@ template <class Formula, std::size_t N>
   return evaluate(e);
 }
 
+/// The exact value of one coordinate of an input, as a rational.
+inline Rational rational_coordinate(const Offset& o, int axis) {
+  if (o.is_exact_vector()) {
+    const auto& e = o.exact_vector().exact[axis];
+    Rational sum;
+    for (int i = 0; i < e.size(); ++i)
+      sum = sum + Rational(e.data()[i]);
+    return sum;
+  }
+  return Rational(o.head(axis)) - Rational(o.tail(axis));
+}
+
 template <std::size_t N>
 VectorArray<Rational, N> rational_vectors(const Offsets<N>& in) {
   VectorArray<Rational, N> q;
   for (std::size_t v = 0; v < N; ++v) {
-    for (int axis = 0; axis < 3; ++axis) {
-      q[v][axis] = Rational(in[v].head(axis)) - Rational(in[v].tail(axis));
-    }
+    for (int axis = 0; axis < 3; ++axis)
+      q[v][axis] = rational_coordinate(in[v], axis);
   }
   return q;
 }

@@ -204,6 +204,12 @@ Expansion<N + M> operator-(const Expansion<N>& a, const Expansion<M>& b) noexcep
   return a + (-b);
 }
 
+/// Equal values (the exact difference of equal values is the empty expansion).
+template <int N, int M>
+bool operator==(const Expansion<N>& a, const Expansion<M>& b) noexcept {
+  return (a - b).is_zero();
+}
+
 /// Exact product of an expansion and a double.
 template <int N>
 Expansion<2 * N> scale(const Expansion<N>& a, double b) noexcept {

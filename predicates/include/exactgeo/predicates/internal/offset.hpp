@@ -7,16 +7,23 @@
 // An Offset refers to its two points (it does not copy them): it is a view, valid while
 // the points live, and cheap to pass around the predicates' hot path. Building one from a
 // temporary point does not compile.
+//
+// An Offset can also view an ExactVector (exact_vector.hpp): head = its rounded value,
+// tail = a zero point reserved for that purpose. The filter treats both kinds alike; the
+// exact stages and the exact equality tests below tell them apart.
 
 #include <array>
 #include <cstddef>
 
+#include "exactgeo/predicates/internal/exact_vector.hpp"
 #include "exactgeo/predicates/internal/formulas.hpp"
 #include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::internal {
 
 inline constexpr Point3 kZeroPoint{0.0, 0.0, 0.0};
+/// The tail of every Offset that views an ExactVector (its address marks the kind).
+inline constexpr Point3 kExactVectorTail{0.0, 0.0, 0.0};
 
 class Offset {
  public:
@@ -32,9 +39,23 @@ class Offset {
   static constexpr Offset vector(const Vector3& v) noexcept { return Offset(&v, &kZeroPoint); }
   static Offset vector(Vector3&&) = delete;
 
-  /// Same head and tail values: then certainly the same vector (the converse need not
-  /// hold). An exact test, since it compares input doubles.
+  /// The exact vector v (rounded - 0 to the filter).
+  static Offset exact(const ExactVector& v) noexcept { return Offset(&v.rounded, &kExactVectorTail); }
+  static Offset exact(ExactVector&&) = delete;
+
+  bool is_exact_vector() const noexcept { return tail_ == &kExactVectorTail; }
+  /// Precondition: is_exact_vector().
+  const ExactVector& exact_vector() const noexcept {
+    return *reinterpret_cast<const ExactVector*>(head_);
+  }
+
+  /// Certainly the same vector (the converse need not hold): the same head and tail
+  /// values, or two exact vectors with equal exact coordinates. An exact test.
   bool same_points_as(const Offset& other) const noexcept {
+    if (is_exact_vector() || other.is_exact_vector()) {
+      return is_exact_vector() && other.is_exact_vector() &&
+             exact_vector().exact == other.exact_vector().exact;
+    }
     return *head_ == *other.head_ && *tail_ == *other.tail_;
   }
   const Point3& head_point() const noexcept { return *head_; }

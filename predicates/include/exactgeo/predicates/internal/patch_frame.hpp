@@ -57,12 +57,31 @@ inline bool same_displacement(const Point3& h0, const Point3& h1, const Point3& 
   return (h1 == h3 && h0 == h2) || (h1 == h0 && h3 == h2);
 }
 
+/// x1 - x0 == x3 - x2 exactly, for corners that are all exact vectors (false otherwise).
+inline bool exact_parallelogram(const Offsets<4>& a) noexcept {
+  for (const Offset& o : a) {
+    if (!o.is_exact_vector()) return false;
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& x0 = a[0].exact_vector().exact[axis];
+    const auto& x1 = a[1].exact_vector().exact[axis];
+    const auto& x2 = a[2].exact_vector().exact[axis];
+    const auto& x3 = a[3].exact_vector().exact[axis];
+    if (!(x1 + x2 == x3 + x0)) return false;
+  }
+  return true;
+}
+
 /// Certainly a parallelogram, x1 - x0 == x3 - x2 (corner order x0 = p00, x1 = p10, x2 = p01,
 /// x3 = p11), judged from the input points: each corner is head - tail, and equal head
 /// displacements with equal tail displacements give equal corner displacements. This is
 /// the common flat case in CCD, where a static primitive makes the side patches
 /// parallelograms; recognising it spares an exact evaluation of a volume that is zero.
 inline bool certainly_parallelogram(const Offsets<4>& a) noexcept {
+  if (a[0].is_exact_vector() || a[1].is_exact_vector() || a[2].is_exact_vector() ||
+      a[3].is_exact_vector()) {
+    return exact_parallelogram(a);
+  }
   const auto disp_equal = [&](int p, int q, int r, int s) {
     return same_displacement(a[p].head_point(), a[q].head_point(), a[r].head_point(),
                              a[s].head_point()) &&

@@ -1,0 +1,153 @@
+// Exact-vector inputs (exact_vector.hpp): the rounded value honours the filter's input
+// model, and every predicate answers on them exactly as on the same vectors given as
+// differences of doubles, checked against the independent rational oracle.
+
+#include "exactgeo/predicates/internal/exact_vector.hpp"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/internal/ray_patch_core.hpp"
+#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "support/generators.hpp"
+#include "support/rational_oracle.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo {
+namespace {
+
+using internal::ExactVector;
+using internal::Offset;
+using testing::Rng;
+
+mpq_class exact_value(const ExactVector::Coordinate& e) {
+  mpq_class sum = 0;
+  for (int i = 0; i < e.size(); ++i)
+    sum += e.data()[i];
+  return sum;
+}
+
+/// The exact difference head - tail as an exact vector (two components per coordinate).
+ExactVector exact_difference(const Point3& head, const Point3& tail) {
+  std::array<ExactVector::Coordinate, 3> c;
+  for (int axis = 0; axis < 3; ++axis)
+    c[axis] = internal::Expansion<2>::difference(head[axis], tail[axis]);
+  return internal::make_exact_vector(c);
+}
+
+/// A double with a random exponent in [lo, hi] and a random sign.
+double random_magnitude(Rng& rng, int lo, int hi) {
+  const double m = testing::uniform(rng, 1, 2);
+  return std::ldexp(testing::uniform_int(rng, 0, 1) ? m : -m, testing::uniform_int(rng, lo, hi));
+}
+
+TEST(ExactVector, RoundedValueIsWithinTheFilterInputModel) {
+  Rng rng = testing::seeded_engine("exact-vector-rounding");
+  int multi_component = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Sums of up to four doubles whose exponents are spread over a random range: many
+    // exact values are not doubles, some cancel exactly, some are near binade edges.
+    ExactVector::Coordinate x;
+    const int terms = testing::uniform_int(rng, 1, 4);
+    const int spread = testing::uniform_int(rng, 0, 200);
+    for (int t = 0; t < terms; ++t) {
+      const double term = random_magnitude(rng, -spread, 0);
+      x = *(x + ExactVector::Coordinate(term)).compress().narrow<ExactVector::kCapacity>();
+    }
+    if (i % 7 == 0) x = *(x - ExactVector::Coordinate(x.head())).compress().narrow<8>();
+    const ExactVector v = internal::make_exact_vector({x, x, x});
+    const mpq_class exact = exact_value(x);
+    ASSERT_TRUE(v.filterable);
+    ASSERT_EQ(sgn(mpq_class(v.rounded[0])), sgn(exact));
+    // |rounded - exact| <= 2^-53 |rounded|
+    const mpq_class error = abs(mpq_class(v.rounded[0]) - exact);
+    ASSERT_LE(error, abs(mpq_class(std::ldexp(v.rounded[0], -53)))) << std::hexfloat << v.rounded[0];
+    multi_component += x.size() > 1;
+  }
+  EXPECT_GT(multi_component, 5000);
+}
+
+TEST(ExactVector, ExtremeValues) {
+  // Below 2^-1021 every sum of doubles is itself a double (all are multiples of 2^-1074):
+  // it compresses to one exact component.
+  const ExactVector::Coordinate tiny =
+      *(internal::Expansion<1>(0x1p-1074) + internal::Expansion<1>(-0x1p-1030)).narrow<8>();
+  // Near the top of the range: a quarter ulp below the largest double.
+  const ExactVector::Coordinate huge =
+      *(internal::Expansion<1>(0x1.fffffffffffffp1023) + internal::Expansion<1>(-0x1p969))
+           .narrow<8>();
+  const ExactVector v = internal::make_exact_vector({tiny, huge, {}});
+  EXPECT_EQ(v.exact[0].size(), 1);
+  EXPECT_EQ(v.rounded[0], -0x1p-1030 + 0x1p-1074);
+  EXPECT_EQ(v.exact[1].size(), 2);
+  EXPECT_TRUE(v.filterable);
+  EXPECT_EQ(v.rounded[1], 0x1.fffffffffffffp1023);
+  EXPECT_EQ(v.rounded[2], 0.0);
+}
+
+/// Ray vs patch with corners given relative to the ray origin as exact vectors (not
+/// rounded differences): the oracle on the original points decides.
+void expect_exact_vector_corners_match_oracle(const Point3& o, const Vector3& d,
+                                              const BilinearPatch& p) {
+  const auto x = internal::internal_corners(p);
+  const std::array<ExactVector, 4> e{exact_difference(x[0], o), exact_difference(x[1], o),
+                                     exact_difference(x[2], o), exact_difference(x[3], o)};
+  const internal::Offsets<4> a{Offset::exact(e[0]), Offset::exact(e[1]), Offset::exact(e[2]),
+                               Offset::exact(e[3])};
+  const Offset direction = Offset::vector(d);
+  const RayPatch expected = testing::ray_patch_oracle(o, d, p);
+  auto answer = [&](const auto& signs) {
+    return internal::ray_patch_parity_offsets(
+        signs, internal::patch_frame_from_offsets(signs, a), a, direction);
+  };
+  ASSERT_EQ(answer(internal::ExactSigns{}), expected);
+  ASSERT_EQ(answer(internal::RationalSigns{}), expected);
+}
+
+TEST(ExactVector, RayPatchOnExactVectorCornersAgreesWithOracle) {
+  Rng rng = testing::seeded_engine("exact-vector-ray-patch");
+  for (int i = 0; i < 6000; ++i) {
+    BilinearPatch p;
+    Point3 o;
+    Vector3 d;
+    if (i % 3 == 0) {  // generic, origins near the patch, differences not doubles
+      p = {testing::random_point(rng), testing::random_point(rng), testing::random_point(rng),
+           testing::random_point(rng)};
+      o = testing::random_point(rng, 1e-3);
+      d = testing::random_point(rng);
+    } else {  // dense dyadic: flat, collapsed, rays through edges and corners
+      p = {testing::integer_point(rng, 2), testing::integer_point(rng, 2),
+           testing::integer_point(rng, 2), testing::integer_point(rng, 2)};
+      if (i % 3 == 2) p.p00[2] = p.p10[2] = p.p11[2] = p.p01[2] = 0;
+      o = testing::scaled(testing::integer_point(rng, 4), -1);
+      d = testing::nonzero_integer_direction(rng, 2);
+    }
+    if (d == Vector3{0, 0, 0}) continue;
+    expect_exact_vector_corners_match_oracle(o, d, p);
+  }
+}
+
+TEST(ExactVector, ExactEqualityAndParallelograms) {
+  const ExactVector a = exact_difference({1, 2, 3}, {0.1, 0.2, 0.3});
+  const ExactVector b = exact_difference({1, 2, 3}, {0.1, 0.2, 0.3});
+  const ExactVector c = exact_difference({1, 2, 3}, {0.1, 0.2, 0x1.3333333333334p-2});
+  EXPECT_TRUE(Offset::exact(a).same_points_as(Offset::exact(b)));
+  EXPECT_FALSE(Offset::exact(a).same_points_as(Offset::exact(c)));
+  // x1 - x0 == x3 - x2 with x_i exact differences that are not doubles.
+  const ExactVector x0 = exact_difference({1, 0, 0}, {0.1, 0, 0});
+  const ExactVector x1 = exact_difference({1, 1, 0}, {0.1, 0, 0});
+  const ExactVector x2 = exact_difference({1, 0, 1}, {0.1, 0, 0});
+  const ExactVector x3 = exact_difference({1, 1, 1}, {0.1, 0, 0});
+  const internal::Offsets<4> square{Offset::exact(x0), Offset::exact(x1), Offset::exact(x2),
+                                    Offset::exact(x3)};
+  EXPECT_TRUE(internal::certainly_parallelogram(square));
+  const internal::Offsets<4> skewed{Offset::exact(x0), Offset::exact(x1), Offset::exact(x2),
+                                    Offset::exact(c)};
+  EXPECT_FALSE(internal::certainly_parallelogram(skewed));
+}
+
+}  // namespace
+}  // namespace exactgeo
