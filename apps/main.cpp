@@ -3,9 +3,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <unistd.h>
+
 #include <fstream>
 #include <iostream>
 
+#include "cli/ccd_command.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/predicate_command.hpp"
 #include "exactgeo/version.hpp"
@@ -38,6 +41,8 @@ int main(int argc, char** argv) {
 
   exactgeo::cli::PredicateOptions predicate;
   CLI::App& predicate_command = exactgeo::cli::add_predicate_command(app, predicate);
+  exactgeo::cli::CcdCommandOptions ccd;
+  CLI::App& ccd_command = exactgeo::cli::add_ccd_command(app, ccd);
 
   try {
     app.parse(argc, argv);
@@ -46,5 +51,9 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : to_int(ExitCode::input_error);
   }
   if (predicate_command.parsed()) return run_predicate_from(predicate);
+  if (ccd_command.parsed()) {
+    ccd.progress = isatty(STDERR_FILENO) != 0;
+    return to_int(exactgeo::cli::run_ccd(ccd, std::cout, std::cerr));
+  }
   return to_int(ExitCode::input_error);
 }

@@ -64,7 +64,8 @@ TEST(ExactVector, RoundedValueIsWithinTheFilterInputModel) {
     ASSERT_EQ(sgn(mpq_class(v.rounded[0])), sgn(exact));
     // |rounded - exact| <= 2^-53 |rounded|
     const mpq_class error = abs(mpq_class(v.rounded[0]) - exact);
-    ASSERT_LE(error, abs(mpq_class(std::ldexp(v.rounded[0], -53)))) << std::hexfloat << v.rounded[0];
+    ASSERT_LE(error, abs(mpq_class(std::ldexp(v.rounded[0], -53))))
+        << std::hexfloat << v.rounded[0];
     multi_component += x.size() > 1;
   }
   EXPECT_GT(multi_component, 5000);
@@ -100,8 +101,8 @@ void expect_exact_vector_corners_match_oracle(const Point3& o, const Vector3& d,
   const Offset direction = Offset::vector(d);
   const RayPatch expected = testing::ray_patch_oracle(o, d, p);
   auto answer = [&](const auto& signs) {
-    return internal::ray_patch_parity_offsets(
-        signs, internal::patch_frame_from_offsets(signs, a), a, direction);
+    return internal::ray_patch_parity_offsets(signs, internal::patch_frame_from_offsets(signs, a),
+                                              a, direction);
   };
   ASSERT_EQ(answer(internal::ExactSigns{}), expected);
   ASSERT_EQ(answer(internal::RationalSigns{}), expected);

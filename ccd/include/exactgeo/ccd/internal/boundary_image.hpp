@@ -39,32 +39,50 @@ struct BoundaryImage {
   std::array<Face, F> faces;
 };
 
+inline constexpr std::array<Face, 5> kPrismFaces{{
+    {Face::Kind::triangle, {0, 1, 2, 0}},  // t = 0
+    {Face::Kind::triangle, {3, 4, 5, 3}},  // t = 1
+    {Face::Kind::patch, {0, 3, 4, 1}},     // v = 0: edge f0 f1, parameters (t, u)
+    {Face::Kind::patch, {1, 4, 5, 2}},     // u + v = 1: edge f1 f2
+    {Face::Kind::patch, {0, 3, 5, 2}},     // u = 0: edge f0 f2, parameters (t, v)
+}};
+
+inline constexpr std::array<Face, 6> kHexahedronFaces{{
+    {Face::Kind::patch, {0, 2, 3, 1}},  // t = 0, parameters (u, v)
+    {Face::Kind::patch, {4, 6, 7, 5}},  // t = 1
+    {Face::Kind::patch, {0, 4, 5, 1}},  // u = 0, parameters (t, v)
+    {Face::Kind::patch, {2, 6, 7, 3}},  // u = 1
+    {Face::Kind::patch, {0, 4, 6, 2}},  // v = 0, parameters (t, u)
+    {Face::Kind::patch, {1, 5, 7, 3}},  // v = 1
+}};
+
+/// The faces of the domain with C corners: the prism (6) or the hexahedron (8). Corners
+/// 0 .. C/2 - 1 are at the start of the time interval, the others at its end.
+template <std::size_t C>
+inline constexpr auto kDomainFaces = [] {
+  static_assert(C == 6 || C == 8);
+  if constexpr (C == 6) {
+    return kPrismFaces;
+  } else {
+    return kHexahedronFaces;
+  }
+}();
+
 /// Views into the query's points: the query must outlive the result.
 inline BoundaryImage<6, 5> boundary_image(const VertexFaceQuery& q) noexcept {
-  using K = Face::Kind;
   return {{Offset::between(q.f0_t0, q.v_t0), Offset::between(q.f1_t0, q.v_t0),
            Offset::between(q.f2_t0, q.v_t0), Offset::between(q.f0_t1, q.v_t1),
            Offset::between(q.f1_t1, q.v_t1), Offset::between(q.f2_t1, q.v_t1)},
-          {{{K::triangle, {0, 1, 2, 0}},  // t = 0
-            {K::triangle, {3, 4, 5, 3}},  // t = 1
-            {K::patch, {0, 3, 4, 1}},     // v = 0: edge f0 f1, parameters (t, u)
-            {K::patch, {1, 4, 5, 2}},     // u + v = 1: edge f1 f2
-            {K::patch, {0, 3, 5, 2}}}}};  // u = 0: edge f0 f2, parameters (t, v)
+          kPrismFaces};
 }
 
 inline BoundaryImage<8, 6> boundary_image(const EdgeEdgeQuery& q) noexcept {
-  using K = Face::Kind;
   // Corner 4t + 2i + j = eai(t) - ebj(t).
   return {{Offset::between(q.eb0_t0, q.ea0_t0), Offset::between(q.eb1_t0, q.ea0_t0),
            Offset::between(q.eb0_t0, q.ea1_t0), Offset::between(q.eb1_t0, q.ea1_t0),
            Offset::between(q.eb0_t1, q.ea0_t1), Offset::between(q.eb1_t1, q.ea0_t1),
            Offset::between(q.eb0_t1, q.ea1_t1), Offset::between(q.eb1_t1, q.ea1_t1)},
-          {{{K::patch, {0, 2, 3, 1}},     // t = 0, parameters (u, v)
-            {K::patch, {4, 6, 7, 5}},     // t = 1
-            {K::patch, {0, 4, 5, 1}},     // u = 0, parameters (t, v)
-            {K::patch, {2, 6, 7, 3}},     // u = 1
-            {K::patch, {0, 4, 6, 2}},     // v = 0, parameters (t, u)
-            {K::patch, {1, 5, 7, 3}}}}};  // v = 1
+          kHexahedronFaces};
 }
 
 }  // namespace exactgeo::ccd::internal

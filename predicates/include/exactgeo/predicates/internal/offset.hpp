@@ -40,7 +40,9 @@ class Offset {
   static Offset vector(Vector3&&) = delete;
 
   /// The exact vector v (rounded - 0 to the filter).
-  static Offset exact(const ExactVector& v) noexcept { return Offset(&v.rounded, &kExactVectorTail); }
+  static Offset exact(const ExactVector& v) noexcept {
+    return Offset(&v.rounded, &kExactVectorTail);
+  }
   static Offset exact(ExactVector&&) = delete;
 
   bool is_exact_vector() const noexcept { return tail_ == &kExactVectorTail; }

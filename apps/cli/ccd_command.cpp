@@ -1,0 +1,335 @@
+#include "cli/ccd_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "cli/ccd_queries.hpp"
+#include "cli/input_error.hpp"
+#include "cli/json.hpp"
+
+namespace exactgeo::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// One input file, read and validated.
+struct QueryFile {
+  std::string path;
+  QueryType type;
+  std::vector<CcdRecord> records;  ///< truth filled from the file or its JSON, if any
+};
+
+/// Counts for one query type, or for all.
+struct Tally {
+  std::uint64_t queries = 0;
+  std::uint64_t positives = 0;
+  std::uint64_t with_truth = 0;
+  std::uint64_t truth_positives = 0;
+  std::uint64_t false_positives = 0;
+  std::uint64_t false_negatives = 0;
+  double seconds = 0.0;
+  std::array<std::uint64_t, 5> stages{};
+
+  void add(const Tally& o) {
+    queries += o.queries;
+    positives += o.positives;
+    with_truth += o.with_truth;
+    truth_positives += o.truth_positives;
+    false_positives += o.false_positives;
+    false_negatives += o.false_negatives;
+    seconds += o.seconds;
+    for (std::size_t s = 0; s < stages.size(); ++s)
+      stages[s] += o.stages[s];
+  }
+  double ns_per_query() const {
+    return queries == 0 ? 0.0 : seconds * 1e9 / static_cast<double>(queries);
+  }
+};
+
+constexpr std::array kStages{ccd::Stage::culled, ccd::Stage::parity, ccd::Stage::subdivision,
+                             ccd::Stage::depth_limit, ccd::Stage::cubic};
+
+std::string_view type_name(QueryType t) {
+  return t == QueryType::vertex_face ? "vf" : "ee";
+}
+
+std::vector<std::string> csv_files(const std::vector<std::string>& paths) {
+  std::vector<std::string> files;
+  for (const std::string& p : paths) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      std::vector<std::string> found;
+      for (const auto& entry : fs::recursive_directory_iterator(p, ec)) {
+        if (entry.is_regular_file() && entry.path().extension() == ".csv") {
+          found.push_back(entry.path().string());
+        }
+      }
+      if (ec) throw InputError("cannot read directory '" + p + "': " + ec.message());
+      std::sort(found.begin(), found.end());  // deterministic order
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (fs::is_regular_file(p, ec)) {
+      files.push_back(p);
+    } else {
+      throw InputError("'" + p + "' is neither a file nor a directory");
+    }
+  }
+  if (files.empty()) throw InputError("no *.csv query files under the given paths");
+  return files;
+}
+
+std::vector<bool> read_truth_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open ground truth '" + path + "'");
+  return read_truth_array(in, path);
+}
+
+QueryFile read_query_file(const std::string& path, const CcdCommandOptions& options) {
+  const std::optional<QueryType> type = options.type ? options.type : query_type_of(path);
+  if (!type) {
+    throw InputError("cannot tell the query type of '" + path +
+                     "' (no vertex-face/edge-edge folder, no vf/ee stem): use --type");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open '" + path + "'");
+  QueryFile file{path, *type, read_ccd_records(in, path)};
+  const bool inline_truth = !file.records.empty() && file.records.front().truth.has_value();
+  if (inline_truth || file.records.empty()) return file;
+  std::string truth_path = options.truth;
+  if (truth_path.empty()) {
+    const fs::path p(path);
+    const fs::path published =
+        p.parent_path() / ".." / "mma_bool" / (p.stem().string() + "_mma_bool.json");
+    std::error_code ec;
+    if (fs::is_regular_file(published, ec)) truth_path = published.string();
+  }
+  if (truth_path.empty()) return file;
+  const std::vector<bool> truth = read_truth_file(truth_path);
+  if (truth.size() != file.records.size()) {
+    throw InputError("'" + truth_path + "' has " + std::to_string(truth.size()) + " entries but '" +
+                     path + "' has " + std::to_string(file.records.size()) + " queries");
+  }
+  for (std::size_t i = 0; i < truth.size(); ++i)
+    file.records[i].truth = truth[i];
+  return file;
+}
+
+template <class Query, class Make, class Run>
+std::vector<ccd::Result> run_timed(const QueryFile& file, Make make, Run run, double& seconds) {
+  std::vector<Query> queries;
+  queries.reserve(file.records.size());
+  for (const CcdRecord& r : file.records)
+    queries.push_back(make(r));
+  std::vector<ccd::Result> results(queries.size());
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < queries.size(); ++i)
+    results[i] = run(queries[i]);
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return results;
+}
+
+std::vector<ccd::Result> run_file(const QueryFile& file, const ccd::Options& options,
+                                  double& seconds) {
+  if (file.type == QueryType::vertex_face) {
+    return run_timed<ccd::VertexFaceQuery>(
+        file, vertex_face_query,
+        [&](const ccd::VertexFaceQuery& q) { return ccd::vertex_face_ccd(q, options); }, seconds);
+  }
+  return run_timed<ccd::EdgeEdgeQuery>(
+      file, edge_edge_query,
+      [&](const ccd::EdgeEdgeQuery& q) { return ccd::edge_edge_ccd(q, options); }, seconds);
+}
+
+Tally tally(const QueryFile& file, const std::vector<ccd::Result>& results, double seconds) {
+  Tally t;
+  t.queries = results.size();
+  t.seconds = seconds;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const bool hit = results[i].collision;
+    t.positives += hit;
+    ++t.stages[static_cast<std::size_t>(results[i].decided_by)];
+    if (const auto truth = file.records[i].truth) {
+      ++t.with_truth;
+      t.truth_positives += *truth;
+      t.false_positives += hit && !*truth;
+      t.false_negatives += !hit && *truth;
+    }
+  }
+  return t;
+}
+
+void write_json_counts(std::ostream& out, const Tally& t) {
+  auto errors = [&](std::uint64_t n) {
+    return t.with_truth == 0 ? std::string("null") : std::to_string(n);
+  };
+  out << "\"queries\": " << t.queries << ", \"positives\": " << t.positives
+      << ", \"truth_positives\": " << errors(t.truth_positives)
+      << ", \"false_positives\": " << errors(t.false_positives)
+      << ", \"false_negatives\": " << errors(t.false_negatives)
+      << ", \"ns_per_query\": " << std::fixed << std::setprecision(1) << t.ns_per_query()
+      << std::defaultfloat << ", \"stages\": {";
+  for (std::size_t s = 0; s < kStages.size(); ++s) {
+    out << (s ? ", " : "") << json_string(ccd::to_string(kStages[s])) << ": " << t.stages[s];
+  }
+  out << "}";
+}
+
+void write_json(std::ostream& out, const ccd::Options& options, const Tally& vf, const Tally& ee,
+                const Tally& all) {
+  out << "{\"method\": " << json_string(ccd::to_string(options.method)) << ", ";
+  write_json_counts(out, all);
+  out << ", \"vertex_face\": {";
+  write_json_counts(out, vf);
+  out << "}, \"edge_edge\": {";
+  write_json_counts(out, ee);
+  out << "}}\n";
+}
+
+void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf, const Tally& ee,
+                 const Tally& all) {
+  out << "method " << ccd::to_string(options.method) << "\n";
+  out << std::left << std::setw(12) << "type" << std::right << std::setw(10) << "queries"
+      << std::setw(11) << "positives" << std::setw(11) << "truth_pos" << std::setw(11)
+      << "false_pos" << std::setw(11) << "false_neg" << std::setw(12) << "ns/query"
+      << "\n";
+  auto row = [&](std::string_view name, const Tally& t) {
+    auto n = [&](std::uint64_t x) {
+      return t.with_truth == 0 ? std::string("-") : std::to_string(x);
+    };
+    out << std::left << std::setw(12) << name << std::right << std::setw(10) << t.queries
+        << std::setw(11) << t.positives << std::setw(11) << n(t.truth_positives) << std::setw(11)
+        << n(t.false_positives) << std::setw(11) << n(t.false_negatives) << std::setw(12)
+        << std::fixed << std::setprecision(1) << t.ns_per_query() << std::defaultfloat << "\n";
+  };
+  row("vertex-face", vf);
+  row("edge-edge", ee);
+  row("total", all);
+  out << "decided by:";
+  for (std::size_t s = 0; s < kStages.size(); ++s) {
+    if (all.stages[s]) out << " " << ccd::to_string(kStages[s]) << " " << all.stages[s];
+  }
+  out << "\n";
+}
+
+void write_per_query(const std::string& path, const std::vector<QueryFile>& files,
+                     const std::vector<std::vector<ccd::Result>>& results) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw InputError("cannot write '" + path + "'");
+  out << "path,index,type,result,truth\n";
+  for (std::size_t f = 0; f < files.size(); ++f) {
+    for (std::size_t i = 0; i < results[f].size(); ++i) {
+      const auto truth = files[f].records[i].truth;
+      out << files[f].path << "," << i << "," << type_name(files[f].type) << ","
+          << results[f][i].collision << "," << (truth ? (*truth ? "1" : "0") : "") << "\n";
+    }
+  }
+  if (!out) throw InputError("error writing '" + path + "'");
+}
+
+}  // namespace
+
+std::optional<QueryType> query_type_of(const std::string& path) {
+  const fs::path p(path);
+  for (const auto& component : p.parent_path()) {
+    if (component == "vertex-face") return QueryType::vertex_face;
+    if (component == "edge-edge") return QueryType::edge_edge;
+  }
+  const std::string stem = p.stem().string();
+  auto ends_with = [&](std::string_view s) {
+    return stem.size() >= s.size() && stem.compare(stem.size() - s.size(), s.size(), s) == 0;
+  };
+  if (ends_with("vf")) return QueryType::vertex_face;
+  if (ends_with("ee")) return QueryType::edge_edge;
+  return std::nullopt;
+}
+
+ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err) {
+  std::vector<QueryFile> files;
+  try {
+    for (const std::string& path : csv_files(options.paths))
+      files.push_back(read_query_file(path, options));
+  } catch (const InputError& e) {
+    err << "exactgeo ccd: " << e.what() << "\n";
+    return ExitCode::input_error;
+  }
+  std::size_t total = 0;
+  for (const QueryFile& f : files)
+    total += f.records.size();
+
+  Tally vf;
+  Tally ee;
+  std::vector<std::vector<ccd::Result>> results;
+  std::size_t done = 0;
+  for (const QueryFile& file : files) {
+    double seconds = 0.0;
+    results.push_back(run_file(file, options.ccd, seconds));
+    (file.type == QueryType::vertex_face ? vf : ee).add(tally(file, results.back(), seconds));
+    done += file.records.size();
+    if (options.progress) err << "\r" << done << " / " << total << " queries" << std::flush;
+  }
+  if (options.progress) err << "\r\033[K" << std::flush;
+  if (!options.per_query.empty()) {
+    try {
+      write_per_query(options.per_query, files, results);
+    } catch (const InputError& e) {
+      err << "exactgeo ccd: " << e.what() << "\n";
+      return ExitCode::input_error;
+    }
+  }
+  Tally all;
+  all.add(vf);
+  all.add(ee);
+  if (options.json) {
+    write_json(out, options.ccd, vf, ee, all);
+  } else {
+    write_table(out, options.ccd, vf, ee, all);
+  }
+  return all.false_negatives > 0 ? ExitCode::found : ExitCode::success;
+}
+
+CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "ccd",
+      "Run CCD queries in the public benchmark CSV format (files, or directories searched "
+      "for *.csv) and report results, false positives/negatives against ground truth and "
+      "time per query. Exit code 1 when a false negative is found.");
+  sub->add_option("paths", options.paths, "query files or directories")->required();
+  sub->add_option_function<std::string>(
+         "--method",
+         [&options](const std::string& m) { options.ccd.method = *ccd::parse_method(m); },
+         "exact (default: any root, exactly), parity (the 2012 root parity algorithm), double "
+         "(parity in plain doubles), rational (parity in GMP rationals), cubic (coplanarity "
+         "cubic with --tolerance)")
+      ->check(CLI::IsMember({"exact", "parity", "double", "rational", "cubic"}));
+  sub->add_option_function<std::string>(
+         "--type",
+         [&options](const std::string& t) {
+           options.type = t == "vf" ? QueryType::vertex_face : QueryType::edge_edge;
+         },
+         "vf or ee: the query type of every file (default: from the path)")
+      ->check(CLI::IsMember({"vf", "ee"}));
+  sub->add_option("--truth", options.truth,
+                  "ground truth JSON array for 6-column files (default: "
+                  "<dir>/../mma_bool/<stem>_mma_bool.json when present)");
+  sub->add_option("--per-query", options.per_query,
+                  "write path,index,type,result,truth for every query to this CSV file");
+  sub->add_option("--tolerance", options.ccd.cubic_tolerance,
+                  "cubic only: distance tolerance (default 1e-6)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--max-depth", options.ccd.max_depth,
+                  "exact only: most halvings of the time step (default 64)")
+      ->check(CLI::Range(0, 200));
+  sub->add_flag("--json", options.json, "print one JSON object instead of the table");
+  return *sub;
+}
+
+}  // namespace exactgeo::cli

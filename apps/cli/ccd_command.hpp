@@ -1,0 +1,42 @@
+#pragma once
+
+// `exactgeo ccd`: runs CCD queries stored in the public benchmark's CSV format and
+// reports results, errors against ground truth and time per query (DESIGN.md section 4).
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/exit_code.hpp"
+#include "exactgeo/ccd/ccd.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace exactgeo::cli {
+
+enum class QueryType { vertex_face, edge_edge };
+
+struct CcdCommandOptions {
+  ccd::Options ccd;
+  std::optional<QueryType> type;  ///< overrides what the paths say
+  std::string truth;              ///< a `*_mma_bool.json` for 6-column files, or empty
+  std::string per_query;          ///< a CSV file to write, or empty
+  bool json = false;
+  bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
+  std::vector<std::string> paths;
+};
+
+/// The query type named by a path: a component `vertex-face` / `edge-edge`, else a file
+/// stem ending in `vf` / `ee`.
+std::optional<QueryType> query_type_of(const std::string& path);
+
+/// Reads every file first (an input error prints nothing on `out`), then runs and reports.
+ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err);
+
+/// Registers the subcommand on `app`; `options` must outlive the parse.
+CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options);
+
+}  // namespace exactgeo::cli

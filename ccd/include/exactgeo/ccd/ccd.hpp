@@ -1,0 +1,78 @@
+#pragma once
+
+// Continuous collision detection, one entry point per query type for every method.
+//
+//   exact        any root in the closed domain (the default). Culling, then root parity;
+//                when the parity is even and culling cannot exclude a root, dyadic time
+//                splitting decides (internal/root_search.hpp). Never misses a root; it
+//                reports a root without proof only where a piece cannot be culled at the
+//                depth limit (a tangential contact, or a near miss closer than 2^-max_depth
+//                of the step resolves): decided_by == depth_limit says so. It can also
+//                bracket the earliest root (time of impact).
+//   parity       the 2012 root parity algorithm: a boundary root or an odd number of
+//                interior roots (root_parity.hpp). Blind to two roots, by design.
+//   plain_double the same parity algorithm with plain double signs (no filter, no exact
+//                fallback): the non-exact baseline.
+//   rational     the parity algorithm with every sign in GMP rationals: the slow reference.
+//   cubic        coplanarity times plus a distance tolerance (cubic.hpp): what simulators
+//                used before exact methods.
+//
+// Preconditions: finite coordinates. Every function is noexcept, keeps no state and is
+// safe to call from many threads.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "exactgeo/ccd/queries.hpp"
+
+namespace exactgeo::ccd {
+
+enum class Method : std::uint8_t { exact, parity, plain_double, rational, cubic };
+
+std::string_view to_string(Method m) noexcept;
+/// Parses "exact", "parity", "double", "rational" or "cubic".
+std::optional<Method> parse_method(std::string_view name) noexcept;
+
+/// What decided a query.
+enum class Stage : std::uint8_t {
+  culled,       ///< exact: the corner images provably do not surround the origin
+  parity,       ///< the root parity count (for exact: a boundary root or odd parity)
+  subdivision,  ///< exact: even parity, decided by splitting time
+  depth_limit,  ///< exact: even parity, a piece left undecided at the depth limit (reported
+                ///< as a collision)
+  cubic,        ///< the cubic baseline
+};
+
+std::string_view to_string(Stage s) noexcept;
+
+/// A closed time interval within the step [0, 1].
+struct TimeInterval {
+  double start = 0.0;
+  double end = 1.0;
+};
+
+struct Options {
+  Method method = Method::exact;
+  /// exact only: also return an interval of at most this width that contains the earliest
+  /// root, with no root before its start. Unset: collision yes/no only.
+  std::optional<double> time_of_impact_width;
+  /// exact only: at most this many halvings of the step (a piece of width 2^-max_depth).
+  int max_depth = 64;
+  /// cubic only: the distance tolerance (cubic.hpp).
+  double cubic_tolerance = 1e-6;
+};
+
+struct Result {
+  bool collision = false;
+  Stage decided_by = Stage::parity;
+  /// exact: the deepest split visited (0 when no splitting was needed).
+  std::uint8_t depth = 0;
+  /// exact with time_of_impact_width set and a collision: the earliest root's interval.
+  std::optional<TimeInterval> time_of_impact;
+};
+
+Result vertex_face_ccd(const VertexFaceQuery& query, const Options& options = {}) noexcept;
+Result edge_edge_ccd(const EdgeEdgeQuery& query, const Options& options = {}) noexcept;
+
+}  // namespace exactgeo::ccd

@@ -1,0 +1,157 @@
+#pragma once
+
+// Conservative culling: proofs that the origin lies outside the convex hull of the corner
+// images, hence outside the image of the whole domain (F is affine in each parameter, so
+// every value of F is a convex combination of corner values) and there is no root.
+// "true" is a proof; "false" only means "no proof found".
+//
+// Two tests, cheapest first, each decided by certified signs only:
+//
+//  * bounding box: on some axis all corners are strictly positive (or all strictly
+//    negative). Coordinate signs are exact for every input kind.
+//  * slice planes: a plane through the origin with every corner strictly on one side,
+//    from a few candidate normals (separated_by_slice_planes).
+//
+// The second takes the filter's sign, and where it cannot certify one, an exact sign with
+// expansions (a dot product with a double normal: a few TwoProducts); when even that is
+// out of range the sign counts as "not strict".
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+
+#include "exactgeo/predicates/internal/expansion.hpp"
+#include "exactgeo/predicates/internal/filter.hpp"
+#include "exactgeo/predicates/internal/sign_policies.hpp"
+
+namespace exactgeo::ccd::internal {
+
+namespace in = exactgeo::internal;
+
+template <std::size_t C>
+bool outside_bounding_box(const in::Offsets<C>& a) noexcept {
+  for (int axis = 0; axis < 3; ++axis) {
+    int positive = 0;
+    int negative = 0;
+    for (const in::Offset& o : a) {
+      const Sign s = in::coordinate_sign(o, axis);
+      positive += s == Sign::positive;
+      negative += s == Sign::negative;
+    }
+    if (positive == static_cast<int>(C) || negative == static_cast<int>(C)) return true;
+  }
+  return false;
+}
+
+/// All signs certified, nonzero and equal.
+class StrictSide {
+ public:
+  void add(std::optional<Sign> s) noexcept {
+    if (!s || *s == Sign::zero || (side_ != Sign::zero && *s != side_)) {
+      strict_ = false;
+    } else {
+      side_ = *s;
+    }
+  }
+  bool holds() const noexcept { return strict_; }
+
+ private:
+  Sign side_ = Sign::zero;
+  bool strict_ = true;
+};
+
+/// The exact sign of n . p for a double vector n, with expansions: the exact coordinates
+/// of p times the doubles n_k (TwoProduct), summed. Don't know when a product could
+/// underflow or overflow (culling may always say "don't know").
+inline std::optional<Sign> exact_dot_sign(const in::Offset& p, const Vector3& n) noexcept {
+  using Coordinate = in::Expansion<8>;
+  std::array<in::Expansion<16>, 3> terms;
+  for (int axis = 0; axis < 3; ++axis) {
+    Coordinate x;
+    if (p.is_exact_vector()) {
+      x = p.exact_vector().exact[axis];
+    } else {
+      if (std::fabs(p.head(axis)) >= 0x1p1021 || std::fabs(p.tail(axis)) >= 0x1p1021) {
+        return std::nullopt;
+      }
+      x = in::Expansion<2>::difference(p.head(axis), p.tail(axis));
+    }
+    if (n[axis] != 0.0) {
+      const int e = std::ilogb(n[axis]);
+      for (int i = 0; i < x.size(); ++i) {
+        const int sum_of_exponents = std::ilogb(x.data()[i]) + e;
+        if (sum_of_exponents < -960 || sum_of_exponents > 1000) return std::nullopt;
+      }
+    }
+    terms[axis] = in::scale(x, n[axis]);
+  }
+  return (terms[0] + terms[1] + terms[2]).sign();
+}
+
+/// Every corner strictly on the positive side of the plane n . x = 0, or every corner on
+/// the negative side: dot products certified by the filter, else decided with expansions.
+template <std::size_t C>
+bool on_one_side(const in::Offsets<C>& a, const Vector3& n) noexcept {
+  StrictSide side;
+  const in::Offset normal = in::Offset::vector(n);
+  for (std::size_t k = 0; k < C && side.holds(); ++k) {
+    std::optional<Sign> s = in::filtered_sign<in::Dot3Formula, in::Grouping::by_vector>(
+        in::Offsets<2>{a[k], normal}, 0);
+    side.add(s ? s : exact_dot_sign(a[k], n));
+  }
+  return side.holds();
+}
+
+inline Vector3 cross(const Vector3& a, const Vector3& b) noexcept {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+inline bool usable(const Vector3& n) noexcept {
+  return std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) &&
+         (n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0);
+}
+
+/// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
+/// (edge-edge). Candidate separating planes through the origin: parallel to the slice's
+/// plane (the origin off that plane), or to a plane through one of its edges orthogonal
+/// to it (the origin beside the polygon). As a piece of the step shrinks, its corners
+/// approach one slice and one of these planes separates unless the origin is on the
+/// image. The normals are computed in plain doubles from the rounded corners: any normal
+/// will do, because the side of every corner is then certified.
+template <std::size_t C>
+bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
+  constexpr std::size_t H = C / 2;
+  // Corners of slice s in order around its polygon (the time faces of boundary_image.hpp).
+  constexpr std::array<std::size_t, H> kAround = [] {
+    if constexpr (H == 3) {
+      return std::array<std::size_t, 3>{0, 1, 2};
+    } else {
+      return std::array<std::size_t, 4>{0, 2, 3, 1};
+    }
+  }();
+  for (std::size_t slice = 0; slice < 2; ++slice) {
+    std::array<Vector3, H> x;
+    for (std::size_t k = 0; k < H; ++k)
+      x[k] = a[slice * H + kAround[k]].rounded();
+    const Vector3 normal = H == 3 ? cross(in::difference(x[1], x[0]), in::difference(x[2], x[0]))
+                                  : cross(in::difference(x[2], x[0]), in::difference(x[3], x[1]));
+    if (!usable(normal)) continue;
+    if (on_one_side(a, normal)) return true;
+    for (std::size_t k = 0; k < H; ++k) {
+      const Vector3 lateral = cross(in::difference(x[(k + 1) % H], x[k]), normal);
+      if (usable(lateral) && on_one_side(a, lateral)) return true;
+    }
+  }
+  return false;
+}
+
+/// Both tests; `filterable` false (a piece whose rounded corners are not within the
+/// filter's input model) leaves only the exact bounding-box test.
+template <std::size_t C>
+bool certainly_no_root(const in::Offsets<C>& a, bool filterable = true) noexcept {
+  if (outside_bounding_box(a)) return true;
+  return filterable && separated_by_slice_planes(a);
+}
+
+}  // namespace exactgeo::ccd::internal

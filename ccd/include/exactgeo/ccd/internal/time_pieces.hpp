@@ -1,0 +1,176 @@
+#pragma once
+
+// Pieces of the time step, for the exact (any-root) method.
+//
+// Restricted to [t_a, t_b], a CCD query is again a CCD query: its corner images are the
+// original ones at t_a and t_b, c(t) = (1 - t) c(0) + t c(1). At a dyadic split the new
+// corners are midpoints, c((t_a + t_b) / 2) = (c(t_a) + c(t_b)) / 2. Every predicate is a
+// homogeneous polynomial in the corners (the origin is 0), so the corners of one piece may
+// all be multiplied by the same positive number without changing any sign. A piece
+// therefore stores 2^s c(t) for its own s, and the children of (L, R) are
+//
+//   left = (2 L, L + R),   right = (L + R, 2 R),
+//
+// exact sums of expansions and doublings, never a division. Each child is then rescaled
+// by a power of two so that its largest component lies in [1, 2): exact as long as no
+// component leaves the double range, which only inputs spanning about 2000 binades
+// could force (then the split reports "cannot").
+//
+// Every coordinate is a dyadic combination of at most four input doubles, so it fits in
+// a few components; a coordinate that would need more than ExactVector::kCapacity also
+// makes the split report "cannot".
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <utility>
+
+#include "exactgeo/predicates/internal/exact_vector.hpp"
+#include "exactgeo/predicates/internal/offset.hpp"
+
+namespace exactgeo::ccd::internal {
+
+using exactgeo::internal::ExactVector;
+using exactgeo::internal::Offset;
+using exactgeo::internal::Offsets;
+using Coordinate = ExactVector::Coordinate;
+
+template <std::size_t C>
+using ExactCorners = std::array<std::array<Coordinate, 3>, C>;
+
+template <std::size_t C>
+struct TimePiece {
+  /// Corners 0 .. C/2 - 1 at t_start, the others at t_end, all scaled alike.
+  std::array<ExactVector, C> corners;
+  double t_start = 0.0;
+  double t_end = 1.0;
+  int depth = 0;
+
+  /// Views; the piece must outlive them.
+  Offsets<C> offsets() const noexcept {
+    return [&]<std::size_t... i>(std::index_sequence<i...>) {
+      return Offsets<C>{Offset::exact(corners[i])...};
+    }
+    (std::make_index_sequence<C>{});
+  }
+  /// The filter may be used on every corner (exact_vector.hpp).
+  bool filterable() const noexcept {
+    for (const ExactVector& v : corners) {
+      if (!v.filterable) return false;
+    }
+    return true;
+  }
+};
+
+namespace time_piece_detail {
+
+/// The exponent range of the components: the largest exponent and the lowest possible
+/// last bit (conservative for normal numbers: ilogb - 52).
+struct ComponentRange {
+  int top = -2000;
+  int grain = 2000;
+  void include(double c) noexcept {
+    const int e = std::ilogb(c);
+    top = std::max(top, e);
+    grain = std::min(grain, std::max(e - 52, -1074));
+  }
+};
+
+inline Coordinate scaled(const Coordinate& x, int s) noexcept {
+  Coordinate r = x;
+  for (int i = 0; i < r.size(); ++i)
+    r.mutable_data()[i] = std::ldexp(r.data()[i], s);
+  return r;
+}
+
+}  // namespace time_piece_detail
+
+/// Rescales every component by the same power of two so that the largest lies in [1, 2)
+/// (or as close as exactness allows), then builds the piece's exact vectors.
+template <std::size_t C>
+std::optional<std::array<ExactVector, C>> normalized(const ExactCorners<C>& x) noexcept {
+  time_piece_detail::ComponentRange range;
+  for (const auto& corner : x) {
+    for (const Coordinate& c : corner) {
+      for (int i = 0; i < c.size(); ++i)
+        range.include(c.data()[i]);
+    }
+  }
+  std::array<ExactVector, C> out;
+  if (range.top == -2000) {  // every corner is the origin
+    for (std::size_t k = 0; k < C; ++k)
+      out[k] = exactgeo::internal::make_exact_vector(x[k]);
+    return out;
+  }
+  // Largest component into [1, 2), unless a last bit would fall below 2^-1074.
+  const int s = std::max(-range.top, -1074 - range.grain);
+  if (range.top + s > 1000) return std::nullopt;
+  for (std::size_t k = 0; k < C; ++k) {
+    out[k] = exactgeo::internal::make_exact_vector({time_piece_detail::scaled(x[k][0], s),
+                                                    time_piece_detail::scaled(x[k][1], s),
+                                                    time_piece_detail::scaled(x[k][2], s)});
+  }
+  return out;
+}
+
+/// The whole step [0, 1] as a piece, from the query's corners (differences of doubles).
+template <std::size_t C>
+std::optional<TimePiece<C>> whole_step(const Offsets<C>& corners) noexcept {
+  // head - tail is exact unless it overflows; below 2^1022 it cannot. Larger inputs are
+  // first scaled by 1/4, exact when no nonzero input is below 2^-1020.
+  double largest = 0.0;
+  double smallest = INFINITY;
+  for (const Offset& o : corners) {
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double x : {std::fabs(o.head(axis)), std::fabs(o.tail(axis))}) {
+        largest = std::max(largest, x);
+        if (x != 0.0) smallest = std::min(smallest, x);
+      }
+    }
+  }
+  int s = 0;
+  if (largest >= 0x1p1022) {
+    if (smallest < 0x1p-1020) return std::nullopt;
+    s = -2;
+  }
+  ExactCorners<C> x;
+  for (std::size_t k = 0; k < C; ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      x[k][axis] = exactgeo::internal::Expansion<2>::difference(
+          std::ldexp(corners[k].head(axis), s), std::ldexp(corners[k].tail(axis), s));
+    }
+  }
+  const auto vectors = normalized(x);
+  if (!vectors) return std::nullopt;
+  return TimePiece<C>{*vectors, 0.0, 1.0, 0};
+}
+
+/// The two halves of a piece at its midpoint time, or nullopt when the midpoint corners
+/// cannot be stored exactly (see above).
+template <std::size_t C>
+std::optional<std::pair<TimePiece<C>, TimePiece<C>>> split(const TimePiece<C>& p) noexcept {
+  constexpr std::size_t H = C / 2;
+  ExactCorners<C> left;
+  ExactCorners<C> right;
+  for (std::size_t k = 0; k < H; ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const Coordinate& start = p.corners[k].exact[axis];
+      const Coordinate& end = p.corners[H + k].exact[axis];
+      auto mid = (start + end).compress().template narrow<ExactVector::kCapacity>();
+      if (!mid) return std::nullopt;
+      left[k][axis] = time_piece_detail::scaled(start, 1);
+      left[H + k][axis] = *mid;
+      right[k][axis] = *mid;
+      right[H + k][axis] = time_piece_detail::scaled(end, 1);
+    }
+  }
+  const auto l = normalized(left);
+  const auto r = normalized(right);
+  if (!l || !r) return std::nullopt;
+  const double t_mid = 0.5 * (p.t_start + p.t_end);  // exact: dyadic, depth < 1000
+  return std::pair{TimePiece<C>{*l, p.t_start, t_mid, p.depth + 1},
+                   TimePiece<C>{*r, t_mid, p.t_end, p.depth + 1}};
+}
+
+}  // namespace exactgeo::ccd::internal

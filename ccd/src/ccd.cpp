@@ -1,0 +1,126 @@
+#include "exactgeo/ccd/ccd.hpp"
+
+#include <algorithm>
+#include <tuple>
+
+#include "exactgeo/ccd/cubic.hpp"
+#include "exactgeo/ccd/internal/boundary_image.hpp"
+#include "exactgeo/ccd/internal/culling.hpp"
+#include "exactgeo/ccd/internal/root_parity_core.hpp"
+#include "exactgeo/ccd/internal/root_search.hpp"
+#include "exactgeo/ccd/internal/time_pieces.hpp"
+#include "exactgeo/ccd/root_parity.hpp"
+#include "exactgeo/predicates/internal/sign_policies.hpp"
+
+namespace exactgeo::ccd {
+
+namespace {
+
+Arithmetic parity_arithmetic(Method m) noexcept {
+  switch (m) {
+    case Method::plain_double:
+      return Arithmetic::plain_double;
+    case Method::rational:
+      return Arithmetic::rational;
+    default:
+      return Arithmetic::exact;
+  }
+}
+
+template <class Query>
+Result exact_ccd(const Query& query, const Options& options) noexcept {
+  const auto image = internal::boundary_image(query);
+  // The cheap cull first: exact coordinate signs, a few nanoseconds.
+  if (internal::outside_bounding_box(image.corners)) return {false, Stage::culled, 0, {}};
+  const RootParity parity = internal::root_parity(exactgeo::internal::ExactSigns{}, image).parity;
+  const bool toi = options.time_of_impact_width.has_value();
+  if (parity != RootParity::even && (!toi || *options.time_of_impact_width >= 1.0)) {
+    return {true, Stage::parity, 0,
+            toi ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt};
+  }
+  if (parity == RootParity::even && internal::certainly_no_root(image.corners)) {
+    return {false, Stage::culled, 0, {}};
+  }
+  constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
+  const auto piece = internal::whole_step<C>(image.corners);
+  const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
+  if (!piece) {  // corners beyond exact storage: report the step, unproven if even
+    return {true, parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0,
+            toi ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt};
+  }
+  internal::RootSearch<C> search(std::clamp(options.max_depth, 0, 200),
+                                 toi ? *options.time_of_impact_width : 1.0);
+  const auto found = search.earliest(*piece, parity);
+  const auto depth = static_cast<std::uint8_t>(search.deepest());
+  if (!found) return {false, searched, depth, {}};
+  return {true, found->conservative ? Stage::depth_limit : searched, depth,
+          toi ? std::optional<TimeInterval>(TimeInterval{found->start, found->end}) : std::nullopt};
+}
+
+template <class Query, class ParityFn, class CubicFn>
+Result dispatch(const Query& query, const Options& options, ParityFn parity_fn,
+                CubicFn cubic_fn) noexcept {
+  switch (options.method) {
+    case Method::exact:
+      return exact_ccd(query, options);
+    case Method::cubic:
+      return {cubic_fn(query, CubicOptions{options.cubic_tolerance}), Stage::cubic, 0, {}};
+    case Method::parity:
+    case Method::plain_double:
+    case Method::rational:
+      break;
+  }
+  return {parity_fn(query, parity_arithmetic(options.method)).collision(), Stage::parity, 0, {}};
+}
+
+}  // namespace
+
+Result vertex_face_ccd(const VertexFaceQuery& query, const Options& options) noexcept {
+  return dispatch(query, options, vertex_face_root_parity, vertex_face_cubic);
+}
+
+Result edge_edge_ccd(const EdgeEdgeQuery& query, const Options& options) noexcept {
+  return dispatch(query, options, edge_edge_root_parity, edge_edge_cubic);
+}
+
+std::string_view to_string(Method m) noexcept {
+  switch (m) {
+    case Method::exact:
+      return "exact";
+    case Method::parity:
+      return "parity";
+    case Method::plain_double:
+      return "double";
+    case Method::rational:
+      return "rational";
+    case Method::cubic:
+      return "cubic";
+  }
+  return "?";
+}
+
+std::optional<Method> parse_method(std::string_view name) noexcept {
+  for (const Method m :
+       {Method::exact, Method::parity, Method::plain_double, Method::rational, Method::cubic}) {
+    if (name == to_string(m)) return m;
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(Stage s) noexcept {
+  switch (s) {
+    case Stage::culled:
+      return "culled";
+    case Stage::parity:
+      return "parity";
+    case Stage::subdivision:
+      return "subdivision";
+    case Stage::depth_limit:
+      return "depth_limit";
+    case Stage::cubic:
+      return "cubic";
+  }
+  return "?";
+}
+
+}  // namespace exactgeo::ccd
