@@ -16,6 +16,7 @@
 // expansions (a dot product with a double normal: a few TwoProducts); when even that is
 // out of range the sign counts as "not strict".
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -112,10 +113,47 @@ inline bool usable(const Vector3& n) noexcept {
          (n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0);
 }
 
+inline double dot(const Vector3& a, const Vector3& b) noexcept {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// The point of segment [p, q] closest to the origin, in plain doubles.
+inline Vector3 closest_on_segment(const Vector3& p, const Vector3& q) noexcept {
+  const Vector3 d = in::difference(q, p);
+  const double dd = dot(d, d);
+  const double s = dd > 0.0 ? std::clamp(-dot(p, d) / dd, 0.0, 1.0) : 0.0;
+  return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
+}
+
+/// The point of triangle (a, b, c) closest to the origin, in plain doubles (an estimate:
+/// it only proposes a normal, which on_one_side then certifies).
+inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vector3& c) noexcept {
+  const Vector3 e1 = in::difference(b, a);
+  const Vector3 e2 = in::difference(c, a);
+  // Minimise |a + s e1 + t e2|^2: the normal equations.
+  const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
+  const double r1 = -dot(a, e1), r2 = -dot(a, e2);
+  const double det = d11 * d22 - d12 * d12;
+  if (det > 0.0) {
+    const double s = (r1 * d22 - r2 * d12) / det;
+    const double t = (r2 * d11 - r1 * d12) / det;
+    if (s >= 0.0 && t >= 0.0 && s + t <= 1.0) {
+      return {a[0] + s * e1[0] + t * e2[0], a[1] + s * e1[1] + t * e2[1],
+              a[2] + s * e1[2] + t * e2[2]};
+    }
+  }
+  Vector3 best = closest_on_segment(a, b);
+  for (const Vector3& candidate : {closest_on_segment(b, c), closest_on_segment(c, a)}) {
+    if (dot(candidate, candidate) < dot(best, best)) best = candidate;
+  }
+  return best;
+}
+
 /// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
-/// (edge-edge). Candidate separating planes through the origin: parallel to the slice's
-/// plane (the origin off that plane), or to a plane through one of its edges orthogonal
-/// to it (the origin beside the polygon). As a piece of the step shrinks, its corners
+/// (edge-edge). Candidate separating planes through the origin: orthogonal to the
+/// direction of the slice's point closest to the origin, parallel to the slice's plane
+/// (the origin off that plane), or parallel to a plane through one of its edges
+/// orthogonal to it (the origin beside the polygon). As a piece of the step shrinks, its corners
 /// approach one slice and one of these planes separates unless the origin is on the
 /// image. The normals are computed in plain doubles from the rounded corners: any normal
 /// will do, because the side of every corner is then certified.
@@ -134,6 +172,14 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
     std::array<Vector3, H> x;
     for (std::size_t k = 0; k < H; ++k)
       x[k] = a[slice * H + kAround[k]].rounded();
+    // The direction to the slice's closest point: stable when the primitives stay close
+    // and nearly parallel, where the slice's own plane turns quickly with time.
+    Vector3 closest = closest_on_triangle(x[0], x[1], x[2]);
+    if constexpr (H == 4) {
+      const Vector3 other = closest_on_triangle(x[0], x[2], x[3]);
+      if (dot(other, other) < dot(closest, closest)) closest = other;
+    }
+    if (usable(closest) && on_one_side(a, closest)) return true;
     const Vector3 normal = H == 3 ? cross(in::difference(x[1], x[0]), in::difference(x[2], x[0]))
                                   : cross(in::difference(x[2], x[0]), in::difference(x[3], x[1]));
     if (!usable(normal)) continue;

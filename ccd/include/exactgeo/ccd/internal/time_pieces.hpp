@@ -11,8 +11,9 @@
 //
 //   left = (2 L, L + R),   right = (L + R, 2 R),
 //
-// exact sums of expansions and doublings, never a division. Each child is then rescaled
-// by a power of two so that its largest component lies in [1, 2): exact as long as no
+// exact sums of expansions and doublings, never a division. A child whose components
+// drift out of [2^-32, 2^32] is rescaled by a power of two so that its largest component
+// lies in [1, 2) (well inside every filter's guard): exact as long as no
 // component leaves the double range, which only inputs spanning about 2000 binades
 // could force (then the split reports "cannot").
 //
@@ -103,7 +104,14 @@ std::optional<std::array<ExactVector, C>> normalized(const ExactCorners<C>& x) n
       out[k] = exactgeo::internal::make_exact_vector(x[k]);
     return out;
   }
-  // Largest component into [1, 2), unless a last bit would fall below 2^-1074.
+  // Largest component into [1, 2), unless a last bit would fall below 2^-1074. Pieces
+  // whose largest component is already within [2^-32, 2^32] are left as they are (each
+  // split doubles the scale; rescaling every time would cost more than it saves).
+  if (range.top >= -32 && range.top <= 32 && range.grain >= -900) {
+    for (std::size_t k = 0; k < C; ++k)
+      out[k] = exactgeo::internal::make_exact_vector(x[k]);
+    return out;
+  }
   const int s = std::max(-range.top, -1074 - range.grain);
   if (range.top + s > 1000) return std::nullopt;
   for (std::size_t k = 0; k < C; ++k) {

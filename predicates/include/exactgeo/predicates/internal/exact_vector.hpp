@@ -51,6 +51,12 @@ inline double half_ulp(double s) noexcept {
 /// steps toward e until an exact comparison confirms the half-ulp bound.
 template <int K>
 std::optional<double> within_half_ulp(const Expansion<K>& e) noexcept {
+  if (e.size() == 2) {
+    // x = h + l exactly; if fl(h + l) == h, h is the double nearest to x.
+    const double l = e.data()[0];
+    const double h = e.data()[1];
+    if (h + l == h && std::isfinite(h) && std::fabs(h) >= 0x1p-1021) return h;
+  }
   double s = 0.0;
   for (int i = 0; i < e.size(); ++i)
     s += e.data()[i];
