@@ -3,6 +3,7 @@
 set -u
 exe="$1"
 examples="$2"
+data="$3"
 failures=0
 
 expect() {  # expect <code> <description> <stdin> <args...>
@@ -40,4 +41,41 @@ if [ "$(printf '0 0 0 1 0 0 0 1 0 0 0 1\n' | "$exe" predicate orient3d)" != "1" 
   echo "FAIL: orient3d answer"
   failures=$((failures + 1))
 fi
+# ccd: exit 1 exactly when a false negative is found; 2 for bad paths, types and truth.
+unit="$data/ccd/sample-queries/unit-tests"
+expect 0 "ccd exact on bundled data" "" ccd "$data/ccd"
+expect 1 "ccd parity misses two-root cases" "" ccd --method parity "$unit"
+expect 0 "ccd help" "" ccd --help
+expect 2 "ccd missing path" "" ccd /nonexistent/queries
+expect 2 "ccd unknown method" "" ccd --method bogus "$unit"
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+head -n 8 "$unit/vertex-face/data_0_0.csv" >"$scratch/queries.csv"
+expect 2 "ccd type unknown" "" ccd "$scratch/queries.csv"
+expect 0 "ccd type given" "" ccd --type vf "$scratch/queries.csv"
+cut -d, -f1-6 "$scratch/queries.csv" >"$scratch/six.csv"
+echo "[true, false]" >"$scratch/two.json"
+expect 2 "ccd truth length mismatch" "" ccd --type vf --truth "$scratch/two.json" "$scratch/six.csv"
+echo "1,2,3,4,5,6,7" >"$scratch/bad.csv"
+expect 2 "ccd malformed row" "" ccd --type ee "$scratch/bad.csv"
+
+json=$("$exe" ccd --json --per-query "$scratch/per-query.csv" "$unit")
+for key in '"method": "exact"' '"false_negatives": 0' '"false_positives": 0' '"vertex_face": {' \
+           '"edge_edge": {' '"ns_per_query": '; do
+  case "$json" in
+    *"$key"*) ;;
+    *) echo "FAIL: ccd --json lacks $key: $json"; failures=$((failures + 1)) ;;
+  esac
+done
+queries=$(printf '%s' "$json" | sed -n 's/^{"method": "exact", "queries": \([0-9]*\).*/\1/p')
+lines=$(($(wc -l <"$scratch/per-query.csv") - 1))
+if [ -z "$queries" ] || [ "$lines" != "$queries" ]; then
+  echo "FAIL: --per-query wrote $lines lines for $queries queries"
+  failures=$((failures + 1))
+fi
+if ! grep -q ',vf,1,1$' "$scratch/per-query.csv"; then
+  echo "FAIL: --per-query lacks a vertex-face true positive line"
+  failures=$((failures + 1))
+fi
+
 exit $((failures > 0))

@@ -1,0 +1,248 @@
+// The exact (any-root) method: the cases parity cannot see, time of impact against exact
+// root times, symmetries, agreement with parity where parity decides, and the public data.
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "ccd/query_transforms.hpp"
+#include "cli/ccd_queries.hpp"
+#include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/root_parity.hpp"
+#include "support/generators.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::ccd {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::Rng;
+
+Result exact(const VertexFaceQuery& q, const Options& o = {}) {
+  return vertex_face_ccd(q, o);
+}
+Result exact(const EdgeEdgeQuery& q, const Options& o = {}) {
+  return edge_edge_ccd(q, o);
+}
+RootParity parity(const VertexFaceQuery& q) {
+  return vertex_face_root_parity(q).parity;
+}
+RootParity parity(const EdgeEdgeQuery& q) {
+  return edge_edge_root_parity(q).parity;
+}
+
+TEST(ExactCcd, HourglassFromDesignIsACollision) {
+  const VertexFaceQuery q{{0.1, 0.1, 0.1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1},
+                          {0.1, 0.1, 0.1}, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
+  EXPECT_TRUE(exact(q).collision);
+}
+
+/// Queries from the bundled data files.
+struct DataQuery {
+  std::string where;
+  bool edge_edge;
+  cli::CcdRecord record;
+};
+
+std::vector<DataQuery> bundled_queries() {
+  std::vector<DataQuery> out;
+  const fs::path root = fs::path(EXACTGEO_TEST_DATA_DIR) / "ccd";
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() == ".csv") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const fs::path& csv : files) {
+    std::ifstream in(csv);
+    std::vector<cli::CcdRecord> records = cli::read_ccd_records(in, csv.string());
+    const std::string stem = csv.stem().string();
+    const bool edge_edge = csv.parent_path().filename() == "edge-edge" || stem.ends_with("ee");
+    if (!records.empty() && !records.front().truth) {
+      std::ifstream json(csv.parent_path().parent_path() / "mma_bool" / (stem + "_mma_bool.json"));
+      const std::vector<bool> truth = cli::read_truth_array(json, stem);
+      for (std::size_t i = 0; i < records.size(); ++i)
+        records[i].truth = truth.at(i);
+    }
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      out.push_back({csv.string() + " #" + std::to_string(i), edge_edge, records[i]});
+    }
+  }
+  return out;
+}
+
+template <class F>
+auto on_query(const DataQuery& d, F&& f) {
+  return d.edge_edge ? f(cli::edge_edge_query(d.record)) : f(cli::vertex_face_query(d.record));
+}
+
+TEST(ExactCcdData, BundledDataHasNoErrorsAndSeesWhatParityMisses) {
+  int queries = 0, two_root_cases = 0, subdivided = 0;
+  for (const DataQuery& d : bundled_queries()) {
+    const Result r = on_query(d, [](const auto& q) { return exact(q); });
+    const RootParity p = on_query(d, [](const auto& q) { return parity(q); });
+    ASSERT_EQ(r.collision, *d.record.truth) << d.where;
+    ASSERT_NE(r.decided_by, Stage::depth_limit) << d.where;
+    if (p != RootParity::even) {
+      ASSERT_TRUE(r.collision) << d.where;  // exact never contradicts parity
+    } else if (r.collision) {
+      // Parity missed it: an even number of interior roots, found by splitting time.
+      ASSERT_EQ(r.decided_by, Stage::subdivision) << d.where;
+      ++two_root_cases;
+    }
+    subdivided += r.decided_by == Stage::subdivision;
+    ++queries;
+  }
+  std::printf("[ info     ] %d bundled queries, %d two-root collisions, %d decided by splitting\n",
+              queries, two_root_cases, subdivided);
+  EXPECT_GT(two_root_cases, 0);
+}
+
+template <class Query>
+Query scaled_query(const Query& q, int k) {
+  return mapped(q, [&](const Point3& p) { return testing::scaled(p, k); });
+}
+
+TEST(ExactCcdData, SymmetriesChangeNothing) {
+  Rng rng = testing::seeded_engine("exact-ccd-symmetries");
+  const std::vector<DataQuery> data = bundled_queries();
+  for (std::size_t i = 0; i < data.size(); i += 7) {
+    const DataQuery& d = data[i];
+    const bool expected = *d.record.truth;
+    on_query(d, [&](const auto& q) {
+      // Scaling by 2^k keeps every coordinate exact for these magnitudes (|x| in
+      // [2^-30, 2^4]) when k is in [-1000, 1000].
+      const int k = testing::uniform_int(rng, -1000, 1000);
+      EXPECT_EQ(exact(scaled_query(q, k)).collision, expected) << d.where << " scaled 2^" << k;
+      EXPECT_EQ(exact(mapped(q,
+                             [](const Point3& p) {
+                               return Point3{-p[0], p[1], p[2]};
+                             }))
+                    .collision,
+                expected)
+          << d.where << " mirrored";
+      EXPECT_EQ(exact(mapped(q,
+                             [](const Point3& p) {
+                               return Point3{p[2], p[0], p[1]};
+                             }))
+                    .collision,
+                expected)
+          << d.where << " axes permuted";
+      EXPECT_EQ(exact(time_reversed(q)).collision, expected) << d.where << " time reversed";
+      return 0;
+    });
+  }
+}
+
+TEST(ExactCcd, RandomDyadicQueriesAgreeWithParityWhereParityDecides) {
+  Rng rng = testing::seeded_engine("exact-ccd-dyadic");
+  int even = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const auto vfq = random_dyadic_query<VertexFaceQuery>(rng);
+    const auto eeq = random_dyadic_query<EdgeEdgeQuery>(rng);
+    for (const auto& [r, p] :
+         {std::pair{exact(vfq), parity(vfq)}, std::pair{exact(eeq), parity(eeq)}}) {
+      if (p != RootParity::even) {
+        ASSERT_TRUE(r.collision);
+      } else {
+        ++even;
+      }
+    }
+    // Relabelled and mirrored queries give the same exact answer.
+    const VertexFaceQuery flipped{vfq.v_t0, vfq.f0_t0, vfq.f2_t0, vfq.f1_t0,
+                                  vfq.v_t1, vfq.f0_t1, vfq.f2_t1, vfq.f1_t1};
+    ASSERT_EQ(exact(flipped).collision, exact(vfq).collision);
+    const EdgeEdgeQuery swapped{eeq.eb0_t0, eeq.eb1_t0, eeq.ea0_t0, eeq.ea1_t0,
+                                eeq.eb0_t1, eeq.eb1_t1, eeq.ea0_t1, eeq.ea1_t1};
+    ASSERT_EQ(exact(swapped).collision, exact(eeq).collision);
+  }
+  EXPECT_GT(even, 1000);
+}
+
+/// A vertex falling straight through the triangle from height h0 > 0 to h1 < 0 hits it at
+/// t* = h0 / (h0 - h1). The interval must contain t*, be at most the requested width, and
+/// (since t* is the only root) start no later than t*.
+TEST(ExactCcd, TimeOfImpactBracketsTheExactRootTime) {
+  Rng rng = testing::seeded_engine("exact-ccd-toi");
+  for (int i = 0; i < 500; ++i) {
+    const double h0 = testing::uniform(rng, 1e-3, 2);
+    const double h1 = -testing::uniform(rng, 1e-3, 2);
+    const double width = std::ldexp(1.0, -testing::uniform_int(rng, 1, 40));
+    const VertexFaceQuery q{{0.25, 0.25, h0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                            {0.25, 0.25, h1}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    Options o;
+    o.time_of_impact_width = width;
+    const Result r = exact(q, o);
+    ASSERT_TRUE(r.collision);
+    ASSERT_TRUE(r.time_of_impact.has_value());
+    const mpq_class t_star = mpq_class(h0) / (mpq_class(h0) - mpq_class(h1));
+    ASSERT_LE(mpq_class(r.time_of_impact->start), t_star);
+    ASSERT_GE(mpq_class(r.time_of_impact->end), t_star);
+    ASSERT_LE(r.time_of_impact->end - r.time_of_impact->start, width);
+  }
+}
+
+/// On every bundled two-root collision (parity even) the interval is as narrow as asked,
+/// and a coarser request returns an interval containing the finer one: both searches find
+/// the same earliest root.
+TEST(ExactCcd, TimeOfImpactOnTwoRootCasesIsNestedAcrossWidths) {
+  int checked = 0;
+  for (const DataQuery& d : bundled_queries()) {
+    const RootParity p = on_query(d, [](const auto& q) { return parity(q); });
+    if (p != RootParity::even || !*d.record.truth) continue;
+    Options o;
+    o.time_of_impact_width = 0x1p-20;
+    const Result r = on_query(d, [&](const auto& q) { return exact(q, o); });
+    ASSERT_TRUE(r.collision) << d.where;
+    ASSERT_TRUE(r.time_of_impact) << d.where;
+    ASSERT_LE(r.time_of_impact->end - r.time_of_impact->start, 0x1p-20) << d.where;
+    Options coarse = o;
+    coarse.time_of_impact_width = 0x1p-10;
+    const Result c = on_query(d, [&](const auto& q) { return exact(q, coarse); });
+    ASSERT_LE(c.time_of_impact->start, r.time_of_impact->start) << d.where;
+    ASSERT_GE(c.time_of_impact->end, r.time_of_impact->end) << d.where;
+    ++checked;
+  }
+  EXPECT_GT(checked, 0);
+}
+
+TEST(ExactCcdData, FullSharedSetsHaveNoErrors) {
+  const fs::path root = fs::path(EXACTGEO_SHARED_DATA_DIR) / "ccd";
+  if (!fs::exists(root)) GTEST_SKIP() << root << " not present";
+  int queries = 0, false_positives = 0, false_negatives = 0;
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (entry.path().extension() == ".csv") files.push_back(entry.path());
+  }
+  for (const fs::path& csv : files) {
+    std::ifstream in(csv);
+    std::vector<cli::CcdRecord> records = cli::read_ccd_records(in, csv.string());
+    const std::string stem = csv.stem().string();
+    const bool edge_edge = csv.parent_path().filename() == "edge-edge" || stem.ends_with("ee");
+    std::vector<bool> truth;
+    if (!records.empty() && !records.front().truth) {
+      std::ifstream json(csv.parent_path().parent_path() / "mma_bool" / (stem + "_mma_bool.json"));
+      truth = cli::read_truth_array(json, stem);
+    }
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      const bool t = records[i].truth ? *records[i].truth : truth.at(i);
+      const bool r = edge_edge ? exact(cli::edge_edge_query(records[i])).collision
+                               : exact(cli::vertex_face_query(records[i])).collision;
+      false_positives += r && !t;
+      false_negatives += !r && t;
+      ++queries;
+    }
+  }
+  std::printf("[ info     ] exact on %d shared queries: %d false positives, %d false negatives\n",
+              queries, false_positives, false_negatives);
+  EXPECT_EQ(false_positives, 0);
+  EXPECT_EQ(false_negatives, 0);
+  EXPECT_EQ(queries, 26917);
+}
+
+}  // namespace
+}  // namespace exactgeo::ccd
