@@ -10,7 +10,8 @@
 //  * bounding box: on some axis all corners are strictly positive (or all strictly
 //    negative). Coordinate signs are exact for every input kind.
 //  * slice planes: a plane through the origin with every corner strictly on one side,
-//    from a few candidate normals (separated_by_slice_planes).
+//    from a few candidate normals, then a plane turning with time
+//    (separated_by_slice_planes, separated_by_turning_plane).
 //
 // The second takes the filter's sign, and where it cannot certify one, an exact sign with
 // expansions (a dot product with a double normal: a few TwoProducts); when even that is
@@ -62,14 +63,13 @@ class StrictSide {
   bool strict_ = true;
 };
 
-/// The exact sign of n . p for a double vector n, with expansions: the exact coordinates
-/// of p times the doubles n_k (TwoProduct), summed. Don't know when a product could
-/// underflow or overflow (culling may always say "don't know").
-inline std::optional<Sign> exact_dot_sign(const in::Offset& p, const Vector3& n) noexcept {
-  using Coordinate = in::Expansion<8>;
+/// n . p exactly, with expansions: the exact coordinates of p times the doubles n_k
+/// (TwoProduct), summed. nullopt when a product could underflow or overflow (culling may
+/// always say "don't know").
+inline std::optional<in::Expansion<48>> exact_dot(const in::Offset& p, const Vector3& n) noexcept {
   std::array<in::Expansion<16>, 3> terms;
   for (int axis = 0; axis < 3; ++axis) {
-    Coordinate x;
+    in::Expansion<8> x;
     if (p.is_exact_vector()) {
       x = p.exact_vector().exact[axis];
     } else {
@@ -87,7 +87,18 @@ inline std::optional<Sign> exact_dot_sign(const in::Offset& p, const Vector3& n)
     }
     terms[axis] = in::scale(x, n[axis]);
   }
-  return (terms[0] + terms[1] + terms[2]).sign();
+  return terms[0] + terms[1] + terms[2];
+}
+
+/// The sign of n . p: the filter's, else the exact one, else don't know.
+inline std::optional<Sign> dot_sign(const in::Offset& p, const Vector3& n) noexcept {
+  const in::Offset normal = in::Offset::vector(n);
+  if (const auto s = in::filtered_sign<in::Dot3Formula, in::Grouping::by_vector>(
+          in::Offsets<2>{p, normal}, 0)) {
+    return s;
+  }
+  if (const auto d = exact_dot(p, n)) return d->sign();
+  return std::nullopt;
 }
 
 /// Every corner strictly on the positive side of the plane n . x = 0, or every corner on
@@ -95,11 +106,30 @@ inline std::optional<Sign> exact_dot_sign(const in::Offset& p, const Vector3& n)
 template <std::size_t C>
 bool on_one_side(const in::Offsets<C>& a, const Vector3& n) noexcept {
   StrictSide side;
-  const in::Offset normal = in::Offset::vector(n);
-  for (std::size_t k = 0; k < C && side.holds(); ++k) {
-    std::optional<Sign> s = in::filtered_sign<in::Dot3Formula, in::Grouping::by_vector>(
-        in::Offsets<2>{a[k], normal}, 0);
-    side.add(s ? s : exact_dot_sign(a[k], n));
+  for (std::size_t k = 0; k < C && side.holds(); ++k)
+    side.add(dot_sign(a[k], n));
+  return side.holds();
+}
+
+/// A plane that turns with time: normal n(s) = (1 - s) n0 + s n1 over the piece (s its
+/// local time). With F(s, .) = sum_k w_k ((1 - s) L_k + s R_k) (w_k >= 0, L_k and R_k the
+/// corners at its start and end), n(s) . F is, for each k, the degree-2 Bernstein
+/// polynomial with coefficients n0 . L_k, (n0 . R_k + n1 . L_k) / 2, n1 . R_k. All of them
+/// strictly of one sign prove n(s) . F != 0 everywhere: no root. The middle coefficient
+/// differs from the mean of the outer two by (n0 - n1) . (R_k - L_k) / 2, quadratic in the
+/// piece's length, where a fixed plane's error is linear: pieces can be far longer.
+template <std::size_t C>
+bool separated_by_turning_plane(const in::Offsets<C>& a, const Vector3& n0,
+                                const Vector3& n1) noexcept {
+  constexpr std::size_t H = C / 2;
+  StrictSide side;
+  for (std::size_t k = 0; k < H && side.holds(); ++k) {
+    side.add(dot_sign(a[k], n0));
+    side.add(dot_sign(a[H + k], n1));
+    const auto cross_start = exact_dot(a[k], n1);
+    const auto cross_end = exact_dot(a[H + k], n0);
+    side.add(cross_start && cross_end ? std::optional<Sign>((*cross_start + *cross_end).sign())
+                                      : std::nullopt);
   }
   return side.holds();
 }
@@ -168,6 +198,7 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
       return std::array<std::size_t, 4>{0, 2, 3, 1};
     }
   }();
+  std::array<Vector3, 2> closest_of_slice{};
   for (std::size_t slice = 0; slice < 2; ++slice) {
     std::array<Vector3, H> x;
     for (std::size_t k = 0; k < H; ++k)
@@ -179,6 +210,7 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
       const Vector3 other = closest_on_triangle(x[0], x[2], x[3]);
       if (dot(other, other) < dot(closest, closest)) closest = other;
     }
+    closest_of_slice[slice] = closest;
     if (usable(closest) && on_one_side(a, closest)) return true;
     const Vector3 normal = H == 3 ? cross(in::difference(x[1], x[0]), in::difference(x[2], x[0]))
                                   : cross(in::difference(x[2], x[0]), in::difference(x[3], x[1]));
@@ -189,7 +221,8 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
       if (usable(lateral) && on_one_side(a, lateral)) return true;
     }
   }
-  return false;
+  return usable(closest_of_slice[0]) && usable(closest_of_slice[1]) &&
+         separated_by_turning_plane(a, closest_of_slice[0], closest_of_slice[1]);
 }
 
 /// Both tests; `filterable` false (a piece whose rounded corners are not within the
