@@ -182,8 +182,9 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
 /// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
 /// (edge-edge). Candidate separating planes through the origin: orthogonal to the
 /// direction of the slice's point closest to the origin, parallel to the slice's plane
-/// (the origin off that plane), or parallel to a plane through one of its edges
-/// orthogonal to it (the origin beside the polygon). As a piece of the step shrinks, its corners
+/// (the origin off that plane), or parallel to a plane through one of its edges and
+/// orthogonal to it (the origin beside the polygon); last, the plane turning from one
+/// slice's closest direction to the other's. As a piece of the step shrinks, its corners
 /// approach one slice and one of these planes separates unless the origin is on the
 /// image. The normals are computed in plain doubles from the rounded corners: any normal
 /// will do, because the side of every corner is then certified.
