@@ -6,7 +6,6 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -18,16 +17,7 @@
 
 namespace exactgeo::cli {
 
-namespace fs = std::filesystem;
-
 namespace {
-
-/// One input file, read and validated.
-struct QueryFile {
-  std::string path;
-  QueryType type;
-  std::vector<CcdRecord> records;  ///< truth filled from the file or its JSON, if any
-};
 
 /// Counts for one query type, or for all.
 struct Tally {
@@ -61,66 +51,6 @@ constexpr std::array kStages{ccd::Stage::culled, ccd::Stage::parity, ccd::Stage:
 
 std::string_view type_name(QueryType t) {
   return t == QueryType::vertex_face ? "vf" : "ee";
-}
-
-std::vector<std::string> csv_files(const std::vector<std::string>& paths) {
-  std::vector<std::string> files;
-  for (const std::string& p : paths) {
-    std::error_code ec;
-    if (fs::is_directory(p, ec)) {
-      std::vector<std::string> found;
-      for (const auto& entry : fs::recursive_directory_iterator(p, ec)) {
-        if (entry.is_regular_file() && entry.path().extension() == ".csv") {
-          found.push_back(entry.path().string());
-        }
-      }
-      if (ec) throw InputError("cannot read directory '" + p + "': " + ec.message());
-      std::sort(found.begin(), found.end());  // deterministic order
-      files.insert(files.end(), found.begin(), found.end());
-    } else if (fs::is_regular_file(p, ec)) {
-      files.push_back(p);
-    } else {
-      throw InputError("'" + p + "' is neither a file nor a directory");
-    }
-  }
-  if (files.empty()) throw InputError("no *.csv query files under the given paths");
-  return files;
-}
-
-std::vector<bool> read_truth_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open ground truth '" + path + "'");
-  return read_truth_array(in, path);
-}
-
-QueryFile read_query_file(const std::string& path, const CcdCommandOptions& options) {
-  const std::optional<QueryType> type = options.type ? options.type : query_type_of(path);
-  if (!type) {
-    throw InputError("cannot tell the query type of '" + path +
-                     "' (no vertex-face/edge-edge folder, no vf/ee stem): use --type");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot open '" + path + "'");
-  QueryFile file{path, *type, read_ccd_records(in, path)};
-  const bool inline_truth = !file.records.empty() && file.records.front().truth.has_value();
-  if (inline_truth || file.records.empty()) return file;
-  std::string truth_path = options.truth;
-  if (truth_path.empty()) {
-    const fs::path p(path);
-    const fs::path published =
-        p.parent_path() / ".." / "mma_bool" / (p.stem().string() + "_mma_bool.json");
-    std::error_code ec;
-    if (fs::is_regular_file(published, ec)) truth_path = published.string();
-  }
-  if (truth_path.empty()) return file;
-  const std::vector<bool> truth = read_truth_file(truth_path);
-  if (truth.size() != file.records.size()) {
-    throw InputError("'" + truth_path + "' has " + std::to_string(truth.size()) + " entries but '" +
-                     path + "' has " + std::to_string(file.records.size()) + " queries");
-  }
-  for (std::size_t i = 0; i < truth.size(); ++i)
-    file.records[i].truth = truth[i];
-  return file;
 }
 
 template <class Query, class Make, class Run>
@@ -237,26 +167,10 @@ void write_per_query(const std::string& path, const std::vector<QueryFile>& file
 
 }  // namespace
 
-std::optional<QueryType> query_type_of(const std::string& path) {
-  const fs::path p(path);
-  for (const auto& component : p.parent_path()) {
-    if (component == "vertex-face") return QueryType::vertex_face;
-    if (component == "edge-edge") return QueryType::edge_edge;
-  }
-  const std::string stem = p.stem().string();
-  auto ends_with = [&](std::string_view s) {
-    return stem.size() >= s.size() && stem.compare(stem.size() - s.size(), s.size(), s) == 0;
-  };
-  if (ends_with("vf")) return QueryType::vertex_face;
-  if (ends_with("ee")) return QueryType::edge_edge;
-  return std::nullopt;
-}
-
 ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err) {
   std::vector<QueryFile> files;
   try {
-    for (const std::string& path : csv_files(options.paths))
-      files.push_back(read_query_file(path, options));
+    files = read_query_files(options.paths, options.type, options.truth);
   } catch (const InputError& e) {
     err << "exactgeo ccd: " << e.what() << "\n";
     return ExitCode::input_error;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/ccd_queries.hpp"
 #include "cli/exit_code.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 
@@ -16,8 +17,6 @@ class App;
 }
 
 namespace exactgeo::cli {
-
-enum class QueryType { vertex_face, edge_edge };
 
 struct CcdCommandOptions {
   ccd::Options ccd;
@@ -28,10 +27,6 @@ struct CcdCommandOptions {
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   std::vector<std::string> paths;
 };
-
-/// The query type named by a path: a component `vertex-face` / `edge-edge`, else a file
-/// stem ending in `vf` / `ee`.
-std::optional<QueryType> query_type_of(const std::string& path);
 
 /// Reads every file first (an input error prints nothing on `out`), then runs and reports.
 ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err);

@@ -2,8 +2,11 @@
 
 #include <gmpxx.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "cli/input_error.hpp"
@@ -170,6 +173,97 @@ std::vector<bool> read_truth_array(std::istream& in, const std::string& source) 
   skip_space();
   if (i != text.size()) fail("unexpected text after the array");
   return truth;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> csv_files(const std::vector<std::string>& paths) {
+  std::vector<std::string> files;
+  for (const std::string& p : paths) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      std::vector<std::string> found;
+      for (const auto& entry : fs::recursive_directory_iterator(p, ec)) {
+        if (entry.is_regular_file() && entry.path().extension() == ".csv") {
+          found.push_back(entry.path().string());
+        }
+      }
+      if (ec) throw InputError("cannot read directory '" + p + "': " + ec.message());
+      std::sort(found.begin(), found.end());  // deterministic order
+      files.insert(files.end(), found.begin(), found.end());
+    } else if (fs::is_regular_file(p, ec)) {
+      files.push_back(p);
+    } else {
+      throw InputError("'" + p + "' is neither a file nor a directory");
+    }
+  }
+  if (files.empty()) throw InputError("no *.csv query files under the given paths");
+  return files;
+}
+
+std::vector<bool> read_truth_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open ground truth '" + path + "'");
+  return read_truth_array(in, path);
+}
+
+QueryFile read_query_file(const std::string& path, std::optional<QueryType> forced_type,
+                          const std::string& truth_file) {
+  const std::optional<QueryType> type = forced_type ? forced_type : query_type_of(path);
+  if (!type) {
+    throw InputError("cannot tell the query type of '" + path +
+                     "' (no vertex-face/edge-edge folder, no vf/ee stem): use --type");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot open '" + path + "'");
+  QueryFile file{path, *type, read_ccd_records(in, path)};
+  const bool inline_truth = !file.records.empty() && file.records.front().truth.has_value();
+  if (inline_truth || file.records.empty()) return file;
+  std::string truth_path = truth_file;
+  if (truth_path.empty()) {
+    const fs::path p(path);
+    const fs::path published =
+        p.parent_path() / ".." / "mma_bool" / (p.stem().string() + "_mma_bool.json");
+    std::error_code ec;
+    if (fs::is_regular_file(published, ec)) truth_path = published.string();
+  }
+  if (truth_path.empty()) return file;
+  const std::vector<bool> truth = read_truth_file(truth_path);
+  if (truth.size() != file.records.size()) {
+    throw InputError("'" + truth_path + "' has " + std::to_string(truth.size()) + " entries but '" +
+                     path + "' has " + std::to_string(file.records.size()) + " queries");
+  }
+  for (std::size_t i = 0; i < truth.size(); ++i)
+    file.records[i].truth = truth[i];
+  return file;
+}
+
+}  // namespace
+
+std::optional<QueryType> query_type_of(const std::string& path) {
+  const fs::path p(path);
+  for (const auto& component : p.parent_path()) {
+    if (component == "vertex-face") return QueryType::vertex_face;
+    if (component == "edge-edge") return QueryType::edge_edge;
+  }
+  const std::string stem = p.stem().string();
+  auto ends_with = [&](std::string_view s) {
+    return stem.size() >= s.size() && stem.compare(stem.size() - s.size(), s.size(), s) == 0;
+  };
+  if (ends_with("vf")) return QueryType::vertex_face;
+  if (ends_with("ee")) return QueryType::edge_edge;
+  return std::nullopt;
+}
+
+std::vector<QueryFile> read_query_files(const std::vector<std::string>& paths,
+                                        std::optional<QueryType> type,
+                                        const std::string& truth_file) {
+  std::vector<QueryFile> files;
+  for (const std::string& path : csv_files(paths))
+    files.push_back(read_query_file(path, type, truth_file));
+  return files;
 }
 
 ccd::VertexFaceQuery vertex_face_query(const CcdRecord& r) noexcept {

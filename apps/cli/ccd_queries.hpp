@@ -37,6 +37,27 @@ std::vector<CcdRecord> read_ccd_records(std::istream& in, const std::string& sou
 /// A `[true, false, ...]` ground-truth array. Throws InputError.
 std::vector<bool> read_truth_array(std::istream& in, const std::string& source);
 
+enum class QueryType { vertex_face, edge_edge };
+
+/// The query type named by a path: a component `vertex-face` / `edge-edge`, else a file
+/// stem ending in `vf` / `ee`.
+std::optional<QueryType> query_type_of(const std::string& path);
+
+/// One query file, read and validated, with ground truth when any is known.
+struct QueryFile {
+  std::string path;
+  QueryType type;
+  std::vector<CcdRecord> records;
+};
+
+/// Every file of `paths`, and every `*.csv` under its directories (sorted), in order. The
+/// type is `type` when given, else what the path says. Ground truth is the 7th column,
+/// else `truth_file` when given, else the published layout
+/// `<dir>/../mma_bool/<stem>_mma_bool.json` when it exists. Throws InputError.
+std::vector<QueryFile> read_query_files(const std::vector<std::string>& paths,
+                                        std::optional<QueryType> type = std::nullopt,
+                                        const std::string& truth_file = {});
+
 ccd::VertexFaceQuery vertex_face_query(const CcdRecord& record) noexcept;
 ccd::EdgeEdgeQuery edge_edge_query(const CcdRecord& record) noexcept;
 

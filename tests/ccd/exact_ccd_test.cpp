@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -43,37 +42,26 @@ TEST(ExactCcd, HourglassFromDesignIsACollision) {
   EXPECT_TRUE(exact(q).collision);
 }
 
-/// Queries from the bundled data files.
+/// One query of a data file.
 struct DataQuery {
   std::string where;
   bool edge_edge;
   cli::CcdRecord record;
 };
 
-std::vector<DataQuery> bundled_queries() {
+std::vector<DataQuery> queries_under(const fs::path& root) {
   std::vector<DataQuery> out;
-  const fs::path root = fs::path(EXACTGEO_TEST_DATA_DIR) / "ccd";
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    if (entry.path().extension() == ".csv") files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  for (const fs::path& csv : files) {
-    std::ifstream in(csv);
-    std::vector<cli::CcdRecord> records = cli::read_ccd_records(in, csv.string());
-    const std::string stem = csv.stem().string();
-    const bool edge_edge = csv.parent_path().filename() == "edge-edge" || stem.ends_with("ee");
-    if (!records.empty() && !records.front().truth) {
-      std::ifstream json(csv.parent_path().parent_path() / "mma_bool" / (stem + "_mma_bool.json"));
-      const std::vector<bool> truth = cli::read_truth_array(json, stem);
-      for (std::size_t i = 0; i < records.size(); ++i)
-        records[i].truth = truth.at(i);
-    }
-    for (std::size_t i = 0; i < records.size(); ++i) {
-      out.push_back({csv.string() + " #" + std::to_string(i), edge_edge, records[i]});
+  for (const cli::QueryFile& file : cli::read_query_files({root.string()})) {
+    for (std::size_t i = 0; i < file.records.size(); ++i) {
+      out.push_back({file.path + " #" + std::to_string(i), file.type == cli::QueryType::edge_edge,
+                     file.records[i]});
     }
   }
   return out;
+}
+
+std::vector<DataQuery> bundled_queries() {
+  return queries_under(fs::path(EXACTGEO_TEST_DATA_DIR) / "ccd");
 }
 
 template <class F>
@@ -232,28 +220,11 @@ TEST(ExactCcdData, FullSharedSetsHaveNoErrors) {
   const fs::path root = fs::path(EXACTGEO_SHARED_DATA_DIR) / "ccd";
   if (!fs::exists(root)) GTEST_SKIP() << root << " not present";
   int queries = 0, false_positives = 0, false_negatives = 0;
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::recursive_directory_iterator(root)) {
-    if (entry.path().extension() == ".csv") files.push_back(entry.path());
-  }
-  for (const fs::path& csv : files) {
-    std::ifstream in(csv);
-    std::vector<cli::CcdRecord> records = cli::read_ccd_records(in, csv.string());
-    const std::string stem = csv.stem().string();
-    const bool edge_edge = csv.parent_path().filename() == "edge-edge" || stem.ends_with("ee");
-    std::vector<bool> truth;
-    if (!records.empty() && !records.front().truth) {
-      std::ifstream json(csv.parent_path().parent_path() / "mma_bool" / (stem + "_mma_bool.json"));
-      truth = cli::read_truth_array(json, stem);
-    }
-    for (std::size_t i = 0; i < records.size(); ++i) {
-      const bool t = records[i].truth ? *records[i].truth : truth.at(i);
-      const bool r = edge_edge ? exact(cli::edge_edge_query(records[i])).collision
-                               : exact(cli::vertex_face_query(records[i])).collision;
-      false_positives += r && !t;
-      false_negatives += !r && t;
-      ++queries;
-    }
+  for (const DataQuery& d : queries_under(root)) {
+    const bool r = on_query(d, [](const auto& q) { return exact(q).collision; });
+    false_positives += r && !*d.record.truth;
+    false_negatives += !r && *d.record.truth;
+    ++queries;
   }
   std::printf("[ info     ] exact on %d shared queries: %d false positives, %d false negatives\n",
               queries, false_positives, false_negatives);
