@@ -34,27 +34,26 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   if (internal::outside_bounding_box(image.corners)) return {false, Stage::culled, 0, {}};
   const RootParity parity = internal::root_parity(exactgeo::internal::ExactSigns{}, image).parity;
   const bool toi = options.time_of_impact_width.has_value();
-  if (parity != RootParity::even && (!toi || *options.time_of_impact_width >= 1.0)) {
-    return {true, Stage::parity, 0,
-            toi ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt};
-  }
+  const double width = toi ? *options.time_of_impact_width : 1.0;
+  auto collision = [toi](Stage stage, int depth, TimeInterval when) {
+    return Result{true, stage, static_cast<std::uint8_t>(depth),
+                  toi ? std::optional<TimeInterval>(when) : std::nullopt};
+  };
+  if (parity != RootParity::even && width >= 1.0) return collision(Stage::parity, 0, {});
   if (parity == RootParity::even && internal::certainly_no_root(image.corners)) {
     return {false, Stage::culled, 0, {}};
   }
+  const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
   constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
   const auto piece = internal::whole_step<C>(image.corners);
-  const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
   if (!piece) {  // corners beyond exact storage: report the step, unproven if even
-    return {true, parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0,
-            toi ? std::optional<TimeInterval>(TimeInterval{}) : std::nullopt};
+    return collision(parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0, {});
   }
-  internal::RootSearch<C> search(std::clamp(options.max_depth, 0, 200),
-                                 toi ? *options.time_of_impact_width : 1.0);
+  internal::RootSearch<C> search(std::clamp(options.max_depth, 0, 200), width);
   const auto found = search.earliest(*piece, parity);
-  const auto depth = static_cast<std::uint8_t>(search.deepest());
-  if (!found) return {false, searched, depth, {}};
-  return {true, found->conservative ? Stage::depth_limit : searched, depth,
-          toi ? std::optional<TimeInterval>(TimeInterval{found->start, found->end}) : std::nullopt};
+  if (!found) return {false, searched, static_cast<std::uint8_t>(search.deepest()), {}};
+  return collision(found->conservative ? Stage::depth_limit : searched, search.deepest(),
+                   {found->start, found->end});
 }
 
 template <class Query, class ParityFn, class CubicFn>

@@ -47,7 +47,6 @@ class RootSearch {
 
   std::optional<FoundRoot> earliest(const TimePiece<C>& piece, RootParity parity) noexcept {
     deepest_ = std::max(deepest_, piece.depth);
-    ++pieces_;
     const bool some_root = parity != RootParity::even;
     if (some_root && piece.t_end - piece.t_start <= width_) {
       return FoundRoot{piece.t_start, piece.t_end, false};
@@ -65,8 +64,6 @@ class RootSearch {
   }
 
   int deepest() const noexcept { return deepest_; }
-  /// Pieces entered (the whole step counts as one).
-  int pieces() const noexcept { return pieces_; }
 
  private:
   static bool culled(const TimePiece<C>& piece) noexcept {
@@ -82,7 +79,6 @@ class RootSearch {
   int max_depth_;
   double width_;
   int deepest_ = 0;
-  int pieces_ = 0;
 };
 
 }  // namespace exactgeo::ccd::internal

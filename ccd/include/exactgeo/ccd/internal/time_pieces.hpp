@@ -107,7 +107,7 @@ std::optional<std::array<ExactVector, C>> normalized(const ExactCorners<C>& x) n
   // Largest component into [1, 2), unless a last bit would fall below 2^-1074. Pieces
   // whose largest component is already within [2^-32, 2^32] are left as they are (each
   // split doubles the scale; rescaling every time would cost more than it saves).
-  if (range.top >= -32 && range.top <= 32 && range.grain >= -900) {
+  if (range.top >= -32 && range.top <= 32) {
     for (std::size_t k = 0; k < C; ++k)
       out[k] = exactgeo::internal::make_exact_vector(x[k]);
     return out;
