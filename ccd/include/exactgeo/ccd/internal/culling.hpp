@@ -135,7 +135,7 @@ bool separated_by_turning_plane(const in::Offsets<C>& a, const Vector3& n0,
 }
 
 inline Vector3 cross(const Vector3& a, const Vector3& b) noexcept {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  return {in::cross2(0, a, b), in::cross2(1, a, b), in::cross2(2, a, b)};
 }
 
 inline bool usable(const Vector3& n) noexcept {
@@ -143,15 +143,11 @@ inline bool usable(const Vector3& n) noexcept {
          (n[0] != 0.0 || n[1] != 0.0 || n[2] != 0.0);
 }
 
-inline double dot(const Vector3& a, const Vector3& b) noexcept {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 /// The point of segment [p, q] closest to the origin, in plain doubles.
 inline Vector3 closest_on_segment(const Vector3& p, const Vector3& q) noexcept {
   const Vector3 d = in::difference(q, p);
-  const double dd = dot(d, d);
-  const double s = dd > 0.0 ? std::clamp(-dot(p, d) / dd, 0.0, 1.0) : 0.0;
+  const double dd = in::dot3(d, d);
+  const double s = dd > 0.0 ? std::clamp(-in::dot3(p, d) / dd, 0.0, 1.0) : 0.0;
   return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
 }
 
@@ -161,8 +157,8 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
   const Vector3 e1 = in::difference(b, a);
   const Vector3 e2 = in::difference(c, a);
   // Minimise |a + s e1 + t e2|^2: the normal equations.
-  const double d11 = dot(e1, e1), d12 = dot(e1, e2), d22 = dot(e2, e2);
-  const double r1 = -dot(a, e1), r2 = -dot(a, e2);
+  const double d11 = in::dot3(e1, e1), d12 = in::dot3(e1, e2), d22 = in::dot3(e2, e2);
+  const double r1 = -in::dot3(a, e1), r2 = -in::dot3(a, e2);
   const double det = d11 * d22 - d12 * d12;
   if (det > 0.0) {
     const double s = (r1 * d22 - r2 * d12) / det;
@@ -174,7 +170,7 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
   }
   Vector3 best = closest_on_segment(a, b);
   for (const Vector3& candidate : {closest_on_segment(b, c), closest_on_segment(c, a)}) {
-    if (dot(candidate, candidate) < dot(best, best)) best = candidate;
+    if (in::dot3(candidate, candidate) < in::dot3(best, best)) best = candidate;
   }
   return best;
 }
@@ -209,7 +205,7 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
     Vector3 closest = closest_on_triangle(x[0], x[1], x[2]);
     if constexpr (H == 4) {
       const Vector3 other = closest_on_triangle(x[0], x[2], x[3]);
-      if (dot(other, other) < dot(closest, closest)) closest = other;
+      if (in::dot3(other, other) < in::dot3(closest, closest)) closest = other;
     }
     closest_of_slice[slice] = closest;
     if (usable(closest) && on_one_side(a, closest)) return true;
