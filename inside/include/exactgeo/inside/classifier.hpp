@@ -1,0 +1,69 @@
+#pragma once
+
+// Exact point-in-volume classification against a closed mesh of bilinear patches and
+// triangles (DESIGN.md section 2, "Inside semantics").
+//
+// A point is `boundary` if it lies exactly on a face, else `inside` or `outside` by the
+// parity of the crossings of a ray from it with the faces. Rays follow the fixed sequence
+// of exactgeo/predicates/ray_directions.hpp; a ray that meets a face's edge or vertex,
+// or lies in the plane of a flat face, is discarded for the next one, which the sequence
+// guarantees ends. Embree proposes candidate faces along each ray; the exact predicates
+// (ray_patch_parity, classify_ray_triangle) decide every one.
+
+#include <cstdint>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "exactgeo/inside/mesh.hpp"
+#include "exactgeo/predicates/arithmetic.hpp"
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo::inside {
+
+enum class Location : std::uint8_t { outside, inside, boundary };
+std::string_view to_string(Location location) noexcept;
+
+/// Where candidate faces come from.
+enum class CandidateSearch : std::uint8_t {
+  embree,       ///< a BVH over conservative float boxes (the default)
+  brute_force,  ///< every face for every ray: the reference the BVH is tested against
+};
+
+struct ClassifierOptions {
+  CandidateSearch candidates = CandidateSearch::embree;
+  /// Accept edges shared by four, six, ... faces (parity is still well defined when every
+  /// edge has an even number of faces); by default only closed manifold meshes are accepted.
+  bool allow_non_manifold = false;
+};
+
+/// Scratch memory for one thread's queries (the candidate list), reused between calls.
+struct ClassifierScratch {
+  std::vector<std::uint32_t> candidates;
+};
+
+class Classifier {
+ public:
+  /// Checks the mesh (check_mesh, classification_problem) and builds the candidate search.
+  /// Throws std::invalid_argument with the problem's description if the mesh cannot be
+  /// classified against, std::runtime_error if Embree fails.
+  explicit Classifier(Mesh mesh, ClassifierOptions options = {});
+  ~Classifier();
+  Classifier(Classifier&&) noexcept;
+  Classifier& operator=(Classifier&&) noexcept;
+
+  /// The location of `point` (finite coordinates). With Arithmetic::exact the answer is
+  /// exact; plain_double runs the same traversal with plain double signs (fast, can be
+  /// wrong, gives up after 64 rays and counts what it has); rational is a slow reference.
+  /// Thread-safe: concurrent calls need their own scratch.
+  Location classify(const Point3& point, Arithmetic arithmetic, ClassifierScratch& scratch) const;
+  Location classify(const Point3& point, Arithmetic arithmetic = Arithmetic::exact) const;
+
+  const Mesh& mesh() const noexcept;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace exactgeo::inside
