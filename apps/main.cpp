@@ -10,6 +10,8 @@
 
 #include "cli/ccd_command.hpp"
 #include "cli/exit_code.hpp"
+#include "cli/info_command.hpp"
+#include "cli/inside_command.hpp"
 #include "cli/predicate_command.hpp"
 #include "exactgeo/version.hpp"
 
@@ -17,16 +19,16 @@ namespace {
 
 using exactgeo::cli::ExitCode;
 
-int run_predicate_from(const exactgeo::cli::PredicateOptions& options) {
-  if (options.input == "-") {
-    return to_int(exactgeo::cli::run_predicate(options, std::cin, "<stdin>", std::cout, std::cerr));
-  }
-  std::ifstream file(options.input, std::ios::binary);
+/// Runs `run(stream, source name)` on standard input for "-", else on the named file.
+template <class Run>
+int with_input(const std::string& path, const char* command, Run run) {
+  if (path == "-") return to_int(run(std::cin, "<stdin>"));
+  std::ifstream file(path, std::ios::binary);
   if (!file) {
-    std::cerr << "exactgeo predicate: cannot open '" << options.input << "'\n";
+    std::cerr << "exactgeo " << command << ": cannot open '" << path << "'\n";
     return to_int(ExitCode::input_error);
   }
-  return to_int(exactgeo::cli::run_predicate(options, file, options.input, std::cout, std::cerr));
+  return to_int(run(file, path));
 }
 
 }  // namespace
@@ -43,6 +45,10 @@ int main(int argc, char** argv) {
   CLI::App& predicate_command = exactgeo::cli::add_predicate_command(app, predicate);
   exactgeo::cli::CcdCommandOptions ccd;
   CLI::App& ccd_command = exactgeo::cli::add_ccd_command(app, ccd);
+  exactgeo::cli::InfoOptions info;
+  CLI::App& info_command = exactgeo::cli::add_info_command(app, info);
+  exactgeo::cli::InsideCommandOptions inside;
+  CLI::App& inside_command = exactgeo::cli::add_inside_command(app, inside);
 
   try {
     app.parse(argc, argv);
@@ -50,10 +56,22 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);  // prints help, version or the error
     return code == 0 ? 0 : to_int(ExitCode::input_error);
   }
-  if (predicate_command.parsed()) return run_predicate_from(predicate);
+  if (predicate_command.parsed()) {
+    return with_input(
+        predicate.input, "predicate", [&](std::istream& in, const std::string& source) {
+          return exactgeo::cli::run_predicate(predicate, in, source, std::cout, std::cerr);
+        });
+  }
   if (ccd_command.parsed()) {
     ccd.progress = isatty(STDERR_FILENO) != 0;
     return to_int(exactgeo::cli::run_ccd(ccd, std::cout, std::cerr));
   }
+  if (inside_command.parsed()) {
+    inside.progress = isatty(STDERR_FILENO) != 0;
+    return with_input(inside.points, "inside", [&](std::istream& in, const std::string& source) {
+      return exactgeo::cli::run_inside(inside, in, source, std::cout, std::cerr);
+    });
+  }
+  if (info_command.parsed()) return to_int(exactgeo::cli::run_info(info, std::cout, std::cerr));
   return to_int(ExitCode::input_error);
 }

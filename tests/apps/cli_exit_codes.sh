@@ -78,4 +78,91 @@ if ! grep -q ',vf,1,1$' "$scratch/per-query.csv"; then
   failures=$((failures + 1))
 fi
 
+# info: exit 0 whenever the mesh loads (an open mesh is a fact to report), 2 when it does not.
+meshes="$data/meshes"
+expect 0 "info closed mesh" "" info "$meshes/cgal/cube_quad.off"
+expect 0 "info open mesh" "" info "$meshes/negative/corner_with_hole.off"
+expect 0 "info help" "" info --help
+expect 2 "info no mesh" "" info
+expect 2 "info missing file" "" info /nonexistent/mesh.off
+expect 2 "info missing file, json" "" info --json /nonexistent/mesh.off
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1\n3 0 1 2\n' >"$scratch/short-vertex.off"
+expect 2 "info malformed file" "" info "$scratch/short-vertex.off"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$scratch/bad-index.off"
+expect 2 "info index out of range" "" info --json "$scratch/bad-index.off"
+printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n5 0 1 2 3 4\n' >"$scratch/pentagon.off"
+expect 2 "info pentagon" "" info "$scratch/pentagon.off"
+expect 0 "info pentagon split" "" info --split-polygons "$scratch/pentagon.off"
+
+expect_in() {  # expect_in <description> <text> <substrings...>
+  local what="$1" text="$2"
+  shift 2
+  local key
+  for key in "$@"; do
+    case "$text" in
+      *"$key"*) ;;
+      *) echo "FAIL: $what lacks $key: $text"; failures=$((failures + 1)) ;;
+    esac
+  done
+}
+info_keys=('"file": ' '"format": "off"' '"coordinates_via_float": false' '"vertices": '
+           '"welded_vertices": 0' '"faces": ' '"quads": ' '"triangles": ' '"bounding_box": '
+           '"closed": ' '"boundary_edges": ' '"manifold": true' '"non_manifold_edges": 0'
+           '"consistently_oriented": ' '"degenerate_faces": 0' '"non_planar_quads": '
+           '"unreferenced_vertices": 0' '"components": 1' '"problem": ')
+json=$("$exe" info --json "$meshes/cgal/cube_quad.off")
+expect_in "info --json (closed)" "$json" "${info_keys[@]}" '"closed": true' \
+  '"boundary_edges": 0' '"consistently_oriented": true' '"problem": null' '"lower": ['
+json=$("$exe" info --json "$meshes/negative/corner_with_hole.off")
+expect_in "info --json (open)" "$json" "${info_keys[@]}" '"closed": false' \
+  '"consistently_oriented": null' '"problem": "mesh is not closed: '
+boundary=$(printf '%s' "$json" | sed -n 's/.*"boundary_edges": \([0-9]*\).*/\1/p')
+if [ -z "$boundary" ] || [ "$boundary" -le 0 ]; then
+  echo "FAIL: info --json on an open mesh: boundary_edges '$boundary'"
+  failures=$((failures + 1))
+fi
+table=$("$exe" info "$meshes/cgal/cube_quad.off")
+expect_in "info table (closed)" "$table" 'closed              yes' 'usable for `exactgeo inside`: yes'
+table=$("$exe" info "$meshes/negative/corner_with_hole.off")
+expect_in "info table (open)" "$table" 'closed              no: ' \
+  'usable for `exactgeo inside`: no: mesh is not closed: '
+json=$("$exe" info --json --split-polygons "$scratch/pentagon.off")
+expect_in "info --json (split pentagon)" "$json" '"faces": 3' '"triangles": 3' '"closed": false' \
+  '"boundary_edges": 5' '"bounding_box": {"lower": [0, 0, 0], "upper": [2, 2, 0]}'
+
+# inside: labels in input order; 2 for open meshes, bad points, bad options.
+cube="$meshes/cgal/cube_quad.off"
+read -r lo hi < <("$exe" info --json "$cube" | sed -n 's/.*"lower": \[\([^,]*\),.*"upper": \[\([^,]*\),.*/\1 \2/p')
+mid=$(awk -v a="$lo" -v b="$hi" 'BEGIN { printf "%.17g", (a + b) / 2 }')
+far=$(awk -v a="$lo" -v b="$hi" 'BEGIN { printf "%.17g", b + (b - a) }')
+points="$mid $mid $mid\n# a comment\n\n$far,$far,$far\n$lo $mid $mid\n"
+labels=$(printf '%b' "$points" | "$exe" inside "$cube" | tr '\n' ' ')
+if [ "$labels" != "inside outside boundary " ]; then
+  echo "FAIL: inside labels on the cube: '$labels'"
+  failures=$((failures + 1))
+fi
+labels=$(printf '%b' "$points" | "$exe" inside --method double --threads 1 "$cube" - | tr '\n' ' ')
+if [ "$labels" != "inside outside boundary " ]; then
+  echo "FAIL: inside --method double labels on the cube: '$labels'"
+  failures=$((failures + 1))
+fi
+json=$(printf '%b' "$points" | "$exe" inside --json "$cube")
+expect_in "inside --json" "$json" '"points": 3' '"inside": 1' '"outside": 1' '"boundary": 1' \
+  '"build_seconds": ' '"seconds": '
+expect 0 "inside help" "" inside --help
+expect 0 "inside no points" "" inside "$cube"
+expect 2 "inside no mesh" "" inside
+expect 2 "inside open mesh" "0 0 0\n" inside "$meshes/negative/corner_with_hole.off"
+expect 2 "inside missing mesh" "0 0 0\n" inside /nonexistent/mesh.off
+expect 2 "inside missing points" "" inside "$cube" /nonexistent/points.txt
+expect 2 "inside two coordinates" "1 2\n" inside "$cube"
+expect 2 "inside NaN" "0 0 nan\n" inside "$cube"
+expect 2 "inside unknown method" "0 0 0\n" inside --method rational "$cube"
+expect 2 "inside zero threads" "0 0 0\n" inside --threads 0 "$cube"
+expect 2 "inside pentagon" "0 0 0\n" inside "$scratch/pentagon.off"
+message=$(printf '1 2\n' | "$exe" inside "$cube" 2>&1 >/dev/null)
+expect_in "inside error names the line" "$message" '<stdin>:1: expected 3 coordinates, found 2'
+message=$(printf '0 0 0\n' | "$exe" inside "$meshes/negative/corner_with_hole.off" 2>&1 >/dev/null)
+expect_in "inside open mesh message" "$message" 'corner_with_hole.off: mesh is not closed: '
+
 exit $((failures > 0))

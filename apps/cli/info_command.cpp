@@ -1,0 +1,192 @@
+#include "cli/info_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <exception>
+#include <iomanip>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string_view>
+
+#include "cli/input_error.hpp"
+#include "cli/json.hpp"
+#include "exactgeo/inside/mesh_check.hpp"
+
+namespace exactgeo::cli {
+
+namespace {
+
+using inside::MeshCheck;
+
+/// The shortest decimal that reads back as exactly x.
+std::string shortest(double x) {
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, result.ptr);
+}
+
+/// "[x, y, z]" (the same text is a JSON array).
+std::string point_text(const Point3& p) {
+  std::string s = "[";
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (k > 0) s.append(", ");
+    s.append(shortest(p[k]));
+  }
+  s.append("]");
+  return s;
+}
+
+std::string yes_no(bool b) {
+  return b ? "yes" : "no";
+}
+
+std::string plural(std::size_t count, std::string_view singular, std::string_view many) {
+  std::string s = std::to_string(count);
+  s.append(" ");
+  s.append(count == 1 ? singular : many);
+  return s;
+}
+
+void write_json(std::ostream& out, const InfoOptions& options, const LoadedMesh& loaded,
+                const MeshCheck& c, const std::optional<std::string>& problem) {
+  out << "{\"file\": " << json_string(options.mesh)
+      << ", \"format\": " << json_string(loaded.format)
+      << ", \"coordinates_via_float\": " << (loaded.coordinates_via_float ? "true" : "false")
+      << ", \"vertices\": " << c.vertices << ", \"welded_vertices\": " << loaded.welded_vertices
+      << ", \"split_polygons\": " << loaded.split_polygons << ", \"faces\": " << c.faces
+      << ", \"quads\": " << c.quads << ", \"triangles\": " << c.triangles << ", \"bounding_box\": ";
+  if (c.bounding_box) {
+    out << "{\"lower\": " << point_text(c.bounding_box->lower)
+        << ", \"upper\": " << point_text(c.bounding_box->upper) << "}";
+  } else {
+    out << "null";
+  }
+  out << ", \"closed\": " << (c.closed() ? "true" : "false")
+      << ", \"boundary_edges\": " << c.boundary_edges.count
+      << ", \"manifold\": " << (c.manifold() ? "true" : "false")
+      << ", \"non_manifold_edges\": " << c.non_manifold_edges.count
+      << ", \"consistently_oriented\": "
+      << (c.consistently_oriented ? (*c.consistently_oriented ? "true" : "false") : "null")
+      << ", \"degenerate_faces\": " << c.degenerate_faces.count
+      << ", \"non_planar_quads\": " << c.non_planar_quads.count
+      << ", \"unreferenced_vertices\": " << c.unreferenced_vertices
+      << ", \"components\": " << c.components
+      << ", \"problem\": " << (problem ? json_string(*problem) : std::string("null")) << "}\n";
+}
+
+void write_table(std::ostream& out, const InfoOptions& options, const LoadedMesh& loaded,
+                 const MeshCheck& c, const std::optional<std::string>& problem) {
+  auto row = [&out](std::string_view label, const std::string& value) {
+    out << std::left << std::setw(20) << label << value << "\n";
+  };
+  row("file", options.mesh);
+  row("format", loaded.format);
+  if (loaded.coordinates_via_float) {
+    out << "warning: coordinates came through 32-bit floats (assimp): not the file's exact "
+           "values\n";
+  }
+
+  std::string vertices = std::to_string(c.vertices);
+  if (loaded.welded_vertices > 0) {
+    vertices.append(" (");
+    vertices.append(plural(loaded.welded_vertices, "duplicate", "duplicates"));
+    vertices.append(" welded)");
+  }
+  row("vertices", vertices);
+
+  std::string faces = std::to_string(c.faces);
+  faces.append(" (");
+  faces.append(plural(c.quads, "quad", "quads"));
+  faces.append(", ");
+  faces.append(plural(c.triangles, "triangle", "triangles"));
+  if (loaded.split_polygons > 0) {
+    faces.append("; ");
+    faces.append(plural(loaded.split_polygons, "polygon", "polygons"));
+    faces.append(" split into triangles");
+  }
+  faces.append(")");
+  row("faces", faces);
+
+  if (c.bounding_box) {
+    std::string box = point_text(c.bounding_box->lower);
+    box.append(" to ");
+    box.append(point_text(c.bounding_box->upper));
+    row("bounding box", box);
+  } else {
+    row("bounding box", "none");
+  }
+
+  std::string closed = yes_no(c.closed());
+  if (!c.closed()) {
+    closed.append(": ");
+    closed.append(plural(c.boundary_edges.count, "boundary edge", "boundary edges"));
+    // An edge used 3, 5, ... times also leaves the surface open.
+    if (const std::size_t odd = c.odd_edges.count - c.boundary_edges.count; odd > 0) {
+      closed.append(", ");
+      closed.append(plural(odd, "edge", "edges"));
+      closed.append(" used by an odd number of faces");
+    }
+  }
+  row("closed", closed);
+
+  std::string manifold = yes_no(c.manifold());
+  if (!c.manifold()) {
+    manifold.append(": ");
+    manifold.append(plural(c.non_manifold_edges.count, "non-manifold edge", "non-manifold edges"));
+  }
+  row("manifold", manifold);
+
+  row("orientation", !c.consistently_oriented   ? "n/a (not every edge shared by two faces)"
+                     : *c.consistently_oriented ? "consistent"
+                                                : "inconsistent");
+  row("degenerate faces", std::to_string(c.degenerate_faces.count));
+  row("non-planar quads", std::to_string(c.non_planar_quads.count));
+  row("unreferenced", std::to_string(c.unreferenced_vertices) + " vertices");
+  row("components", std::to_string(c.components));
+  out << "usable for `exactgeo inside`: " << (problem ? "no: " + *problem : "yes") << "\n";
+}
+
+}  // namespace
+
+ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
+  LoadedMesh loaded;
+  try {
+    loaded = load_mesh(options.mesh, options.load);
+  } catch (const std::exception& e) {  // InputError, or a failure inside a reader
+    err << "exactgeo info: " << e.what() << "\n";
+    return ExitCode::input_error;
+  }
+  const MeshCheck check = inside::check_mesh(loaded.mesh);
+  const std::optional<std::string> problem = inside::classification_problem(check);
+  std::ostringstream text;
+  if (options.json) {
+    write_json(text, options, loaded, check, problem);
+  } else {
+    write_table(text, options, loaded, check, problem);
+  }
+  out << text.str();
+  out.flush();
+  return ExitCode::success;
+}
+
+CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
+  CLI::App* sub = app.add_subcommand(
+      "info",
+      "Report what a mesh file holds: vertices, faces (quads, triangles), bounding box, "
+      "closed or not (boundary edges), non-manifold edges, orientation, degenerate faces and "
+      "non-planar quads (both decided exactly), components, and whether `exactgeo inside` "
+      "can use it. Exit code 0 whenever the file loads.");
+  sub->add_option("mesh", options.mesh, "mesh file (OBJ, OFF, PLY exactly; others via assimp)")
+      ->required();
+  sub->add_flag("--weld", options.load.weld,
+                "merge vertices with exactly equal coordinates first (for face soups, STL)");
+  sub->add_flag("--split-polygons", options.load.split_polygons,
+                "split faces with more than four corners into triangle fans instead of "
+                "refusing the file");
+  sub->add_flag("--json", options.json, "print one JSON object instead of the table");
+  return *sub;
+}
+
+}  // namespace exactgeo::cli

@@ -1,0 +1,33 @@
+#pragma once
+
+// `exactgeo info MESH`: what a mesh file holds and whether `exactgeo inside` can use it
+// (counts, bounding box, closed/manifold/oriented, exact degenerate faces and non-planar
+// quads, components; DESIGN.md section 4).
+
+#include <iosfwd>
+#include <string>
+
+#include "cli/exit_code.hpp"
+#include "mesh_io/load_mesh.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace exactgeo::cli {
+
+struct InfoOptions {
+  std::string mesh;  ///< the mesh file
+  LoadOptions load;
+  bool json = false;
+};
+
+/// Loads and checks the mesh, then reports on `out`. An open, non-manifold or otherwise
+/// unusable mesh is a fact to report (ExitCode::success); only a file that cannot be loaded
+/// is an error (nothing on `out`, the reason on `err`, ExitCode::input_error).
+ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& err);
+
+/// Registers the subcommand on `app`; `options` must outlive the parse.
+CLI::App& add_info_command(CLI::App& app, InfoOptions& options);
+
+}  // namespace exactgeo::cli

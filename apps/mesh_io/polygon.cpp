@@ -1,0 +1,44 @@
+#include "mesh_io/polygon.hpp"
+
+#include "cli/input_error.hpp"
+
+namespace exactgeo::cli {
+
+std::optional<std::string> add_polygon(std::span<const inside::VertexIndex> corners,
+                                       bool split_polygons, LoadedMesh& out) {
+  const std::size_t n = corners.size();
+  auto& faces = out.mesh.faces;
+  if (n < 3) {
+    std::string why = "a face needs at least 3 corners, this one has ";
+    why.append(std::to_string(n));
+    return why;
+  }
+  if (n == 3) {
+    faces.push_back(inside::make_triangle(corners[0], corners[1], corners[2]));
+  } else if (n == 4) {
+    faces.push_back(inside::make_quad(corners[0], corners[1], corners[2], corners[3]));
+  } else if (split_polygons) {
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+      faces.push_back(inside::make_triangle(corners[0], corners[i], corners[i + 1]));
+    }
+    ++out.split_polygons;
+  } else {
+    std::string why = "a face with ";
+    why.append(std::to_string(n));
+    why.append(
+        " corners: only triangles and quads are supported (--split-polygons splits larger "
+        "polygons into triangle fans)");
+    return why;
+  }
+  return std::nullopt;
+}
+
+void require_faces(const LoadedMesh& loaded, const std::string& source) {
+  if (loaded.mesh.faces.empty()) {
+    std::string what = source;
+    what.append(": the mesh has no faces");
+    throw InputError(what);
+  }
+}
+
+}  // namespace exactgeo::cli

@@ -1,0 +1,30 @@
+#pragma once
+
+// Turning a file's polygons into exactgeo faces: triangles and quads are kept as they are,
+// larger polygons are refused or (on request) split into a triangle fan.
+
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "exactgeo/inside/mesh.hpp"
+#include "mesh_io/load_mesh.hpp"
+
+namespace exactgeo::cli {
+
+/// The most vertices a mesh can index: every index is below kNoVertex.
+inline constexpr std::size_t kMaxVertices = inside::kNoVertex;
+
+/// Appends the polygon with these corners (indices already checked to be in range) to
+/// out.mesh: one face for 3 or 4 corners; for more, a fan of triangles from the first
+/// corner when `split_polygons` (counted in out.split_polygons). Returns nullopt, or the
+/// reason the polygon was refused (fewer than 3 corners, or more than 4 without
+/// `split_polygons`) for the caller to report with its place.
+std::optional<std::string> add_polygon(std::span<const inside::VertexIndex> corners,
+                                       bool split_polygons, LoadedMesh& out);
+
+/// Throws InputError("<source>: ... no faces") when the mesh has no face.
+void require_faces(const LoadedMesh& loaded, const std::string& source);
+
+}  // namespace exactgeo::cli
