@@ -51,6 +51,20 @@ class OffParser {
     return false;
   }
 
+  // Most writers put a face on one line (its indices, then optional colour values);
+  // some wrap long faces over several lines. Appends the following records' tokens
+  // until there are `needed`. A wrapped face must end exactly at the end of a line: a
+  // face line that is merely short would otherwise swallow the next face as its colour.
+  bool gather(std::size_t needed) {
+    if (tokens_.size() >= needed) return true;
+    while (tokens_.size() < needed) {
+      const std::vector<std::string_view> so_far = tokens_;
+      if (!next_record()) return false;
+      tokens_.insert(tokens_.begin(), so_far.begin(), so_far.end());
+    }
+    return tokens_.size() == needed;
+  }
+
   void require_record(const char* expected) {
     if (!next_record()) {
       std::string what = "the file ends where ";
@@ -172,12 +186,13 @@ class OffParser {
       std::string error;
       const std::optional<std::int64_t> n = parse_integer(tokens_[0], error);
       if (!n) fail_face(f, "the corner count: " + error);
-      if (*n < 0 || static_cast<std::uint64_t>(*n) > tokens_.size() - 1) {
-        std::string what = "the line gives ";
+      if (*n < 0) fail_face(f, "the corner count is negative");
+      if (*n > 1 << 20 || !gather(1 + static_cast<std::size_t>(*n))) {
+        std::string what = "the corner count is ";
         what.append(std::to_string(*n));
-        what.append(" as the corner count but lists ");
+        what.append(", but the indices do not fill the line and whole following lines (");
         what.append(std::to_string(tokens_.size() - 1));
-        what.append(" values");
+        what.append(" values)");
         fail_face(f, what);
       }
       corners_.clear();

@@ -542,6 +542,17 @@ TEST_F(mesh_io, OffHeaderVariantsExtraColumnsAndColours) {
   }
 }
 
+TEST_F(mesh_io, OffFacesWrappedOverLines) {
+  // Some writers wrap a face's indices over several lines (the shared data set's
+  // inspired_mesh_quads_Conjugate.off does): accepted when the indices end a line.
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  const LoadedMesh m = load("wrap.off", cat("OFF\n4 2 0\n", vertices, "4 0\n1\n2\n3\n3 0 1 2\n"));
+  EXPECT_TRUE(m.mesh.faces == (std::vector<Face>{make_quad(0, 1, 2, 3), make_triangle(0, 1, 2)}));
+  // A face line that is merely short must not swallow the next face as its colour.
+  EXPECT_MESSAGE_HAS(load_error("short.off", cat("OFF\n4 2 0\n", vertices, "3 0 1\n3 0 2 3\n")),
+                     "short.off:", "face 0: the corner count is 3");
+}
+
 TEST_F(mesh_io, OffErrorsNameFileAndLine) {
   const std::string cube_vertices =
       "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";  // lines 3-10
