@@ -1,0 +1,152 @@
+// Real meshes (tests/data/meshes, and the shared data set when present): the Embree
+// candidate search gives exactly the labels of the brute-force oracle (every face for
+// every ray) on random points and on adversarial ones (vertices, edge midpoints, points on
+// patches, points one ulp off them); the meshes in negative/ are refused with the right
+// reasons.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "cli/input_error.hpp"
+#include "exactgeo/inside/batch.hpp"
+#include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/mesh_check.hpp"
+#include "mesh_io/load_mesh.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::inside {
+namespace {
+
+const std::string kMeshes = std::string(EXACTGEO_TEST_DATA_DIR) + "/meshes/";
+const std::string kSharedMeshes = std::string(EXACTGEO_SHARED_DATA_DIR) + "/meshes/";
+
+/// Random points in the box, and for random faces: a corner, an edge midpoint, the patch
+/// point at (1/2, 1/2) (rounded: near, maybe not on, the patch) and that point moved one
+/// ulp each way along x.
+std::vector<Point3> test_points(const Mesh& mesh, const Box& box, std::mt19937_64& rng,
+                                std::size_t count) {
+  std::vector<Point3> points;
+  std::uniform_real_distribution<double> unit(-0.05, 1.05);
+  std::uniform_int_distribution<std::size_t> face(0, mesh.faces.size() - 1);
+  std::uniform_int_distribution<std::size_t> corner(0, 3);
+  while (points.size() < count) {
+    Point3 p;
+    for (int i = 0; i < 3; ++i)
+      p[i] = box.lower[i] + unit(rng) * (box.upper[i] - box.lower[i]);
+    points.push_back(p);
+    const Face& f = mesh.faces[face(rng)];
+    const std::size_t k = corner(rng) % f.size();
+    const Point3& a = mesh.vertices[f.corner(k)];
+    const Point3& b = mesh.vertices[f.corner(k + 1)];
+    points.push_back(a);
+    points.push_back({a[0] / 2 + b[0] / 2, a[1] / 2 + b[1] / 2, a[2] / 2 + b[2] / 2});
+    const BilinearPatch q = patch_of(mesh, f);
+    Point3 centre;
+    for (int i = 0; i < 3; ++i)
+      centre[i] = (q.p00[i] + q.p10[i] + q.p11[i] + q.p01[i]) / 4;
+    points.push_back(centre);
+    for (const double toward : {-INFINITY, INFINITY}) {
+      Point3 moved = centre;
+      moved[0] = std::nextafter(moved[0], toward);
+      points.push_back(moved);
+    }
+  }
+  return points;
+}
+
+void expect_embree_matches_brute_force(const std::string& path, std::size_t count,
+                                       const cli::LoadOptions& load = {}) {
+  SCOPED_TRACE(path);
+  const Mesh mesh = cli::load_mesh(path, load).mesh;
+  const Classifier embree(mesh);
+  const Classifier brute(mesh, {CandidateSearch::brute_force, false});
+  auto rng =
+      testing::seeded_engine("inside.real_meshes." + std::filesystem::path(path).stem().string());
+  const std::vector<Point3> points = test_points(mesh, *check_mesh(mesh).bounding_box, rng, count);
+
+  std::vector<Location> fast(points.size());
+  classify_batch(embree, points, fast, Arithmetic::exact, 2);
+  std::size_t by_location[3] = {};
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ++by_location[static_cast<int>(fast[i])];
+    ASSERT_EQ(fast[i], brute.classify(points[i]))
+        << "point " << i << ": " << std::hexfloat << points[i][0] << " " << points[i][1] << " "
+        << points[i][2];
+  }
+  // The points exercise all three answers (vertices and midpoints are on the surface).
+  EXPECT_GT(by_location[static_cast<int>(Location::inside)], 0u);
+  EXPECT_GT(by_location[static_cast<int>(Location::outside)], 0u);
+  EXPECT_GT(by_location[static_cast<int>(Location::boundary)], count / 8);
+}
+
+TEST(RealMeshes, EmbreeAgreesWithBruteForceOnBundledMeshes) {
+  for (const char* name :
+       {"cgal/cube_quad.off", "cgal/torus_quad.off", "cgal/3torus.off", "cgal/cross_quad.off",
+        "cgal/corner.off", "negative/cube4-shuffled.off"}) {
+    expect_embree_matches_brute_force(kMeshes + name, 600);
+  }
+  expect_embree_matches_brute_force(kMeshes + "spot/spot_quadrangulated.obj", 1500);
+  // Pentagons split into fans: a closed mesh of quads and triangles.
+  cli::LoadOptions split;
+  split.split_polygons = true;
+  expect_embree_matches_brute_force(kMeshes + "spot/spot_control_mesh.obj", 600, split);
+  expect_embree_matches_brute_force(kMeshes + "cgal/double-torus-example.off", 600, split);
+}
+
+TEST(RealMeshes, EmbreeAgreesWithBruteForceOnSharedMeshes) {
+  if (!std::filesystem::exists(kSharedMeshes)) GTEST_SKIP() << "no " << kSharedMeshes;
+  for (const char* name :
+       {"libigl/horse_quad.obj", "quadwild/mnf07HeadFem_rem_rem_p_quadrangulation.obj",
+        "spot/spot_quad_cc1.ply"}) {
+    expect_embree_matches_brute_force(kSharedMeshes + name, 300);
+  }
+}
+
+/// The reason `exactgeo inside` gives for refusing a mesh.
+std::string refusal(const std::string& path) {
+  cli::LoadOptions split;
+  split.split_polygons = true;
+  const MeshCheck check = check_mesh(cli::load_mesh(path, split).mesh);
+  return classification_problem(check).value_or("");
+}
+
+TEST(RealMeshes, NegativeMeshesAreRefusedForTheRightReason) {
+  EXPECT_NE(refusal(kMeshes + "negative/corner_with_hole.off").find("not closed"),
+            std::string::npos);
+  EXPECT_NE(refusal(kMeshes + "negative/double-torus-3-holes.off").find("not closed"),
+            std::string::npos);
+  // Orientation does not matter for the inside semantics: inconsistent is accepted.
+  EXPECT_EQ(refusal(kMeshes + "negative/cube4-shuffled.off"), "");
+  EXPECT_FALSE(check_mesh(cli::load_mesh(kMeshes + "negative/cube4-shuffled.off").mesh)
+                   .consistently_oriented.value_or(true));
+  // Faces with more than four corners are refused by the loader.
+  EXPECT_THROW(cli::load_mesh(kMeshes + "spot/spot_control_mesh.obj"), cli::InputError);
+}
+
+TEST(RealMeshes, SharedNegativeMeshesAreRefusedForTheRightReason) {
+  if (!std::filesystem::exists(kSharedMeshes)) GTEST_SKIP() << "no " << kSharedMeshes;
+  const std::string negative = kSharedMeshes + "negative/";
+  EXPECT_NE(refusal(negative + "inspired_mesh_quads_Conjugate.off").find("not closed"),
+            std::string::npos);
+  EXPECT_NE(refusal(negative + "suzanne.obj").find("not closed"), std::string::npos);
+  EXPECT_NE(refusal(negative + "cube_40k_voxel_faces.obj").find("38400 non-manifold edges"),
+            std::string::npos);
+  // A quad soup: every edge is a boundary edge until vertices are welded by exact
+  // position. Welding joins most of them; 16 edges stay open because their corners differ
+  // in the last printed digit, and welding never uses a tolerance.
+  const std::string soup = negative + "tref_quad_soup.off";
+  EXPECT_EQ(check_mesh(cli::load_mesh(soup).mesh).boundary_edges.count, 4u * 320u);
+  cli::LoadOptions weld;
+  weld.weld = true;
+  const cli::LoadedMesh welded = cli::load_mesh(soup, weld);
+  EXPECT_EQ(welded.welded_vertices, 952u);
+  EXPECT_EQ(check_mesh(welded.mesh).boundary_edges.count, 16u);
+}
+
+}  // namespace
+}  // namespace exactgeo::inside
