@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "cli/input_error.hpp"
@@ -42,49 +43,46 @@ T load(const char* bytes, bool swap) {
   return std::bit_cast<T>(raw);
 }
 
-// Every PLY scalar converts to double exactly (float32 widens, integers have <= 32 bits).
-double load_double(PlyType type, const char* bytes, bool swap) {
+// Calls f(T{}) with T the C++ type of a PLY scalar type.
+template <class F>
+auto with_scalar_type(PlyType type, F f) {
   switch (type) {
     case PlyType::int8:
-      return load<std::int8_t>(bytes, swap);
+      return f(std::int8_t{});
     case PlyType::uint8:
-      return load<std::uint8_t>(bytes, swap);
+      return f(std::uint8_t{});
     case PlyType::int16:
-      return load<std::int16_t>(bytes, swap);
+      return f(std::int16_t{});
     case PlyType::uint16:
-      return load<std::uint16_t>(bytes, swap);
+      return f(std::uint16_t{});
     case PlyType::int32:
-      return load<std::int32_t>(bytes, swap);
+      return f(std::int32_t{});
     case PlyType::uint32:
-      return load<std::uint32_t>(bytes, swap);
+      return f(std::uint32_t{});
     case PlyType::float32:
-      return static_cast<double>(load<float>(bytes, swap));
+      return f(float{});
     case PlyType::float64:
-      return load<double>(bytes, swap);
+      return f(double{});
   }
-  return 0;
+  return f(double{});
+}
+
+// Every PLY scalar converts to double exactly (float32 widens, integers have <= 32 bits).
+double load_double(PlyType type, const char* bytes, bool swap) {
+  return with_scalar_type(
+      type, [&](auto tag) { return static_cast<double>(load<decltype(tag)>(bytes, swap)); });
 }
 
 // Precondition: ply_type_is_integer(type).
 std::int64_t load_integer(PlyType type, const char* bytes, bool swap) {
-  switch (type) {
-    case PlyType::int8:
-      return load<std::int8_t>(bytes, swap);
-    case PlyType::uint8:
-      return load<std::uint8_t>(bytes, swap);
-    case PlyType::int16:
-      return load<std::int16_t>(bytes, swap);
-    case PlyType::uint16:
-      return load<std::uint16_t>(bytes, swap);
-    case PlyType::int32:
-      return load<std::int32_t>(bytes, swap);
-    case PlyType::uint32:
-      return load<std::uint32_t>(bytes, swap);
-    case PlyType::float32:
-    case PlyType::float64:
-      break;
-  }
-  return 0;
+  return with_scalar_type(type, [&](auto tag) -> std::int64_t {
+    using T = decltype(tag);
+    if constexpr (std::is_integral_v<T>) {
+      return load<T>(bytes, swap);
+    } else {
+      return 0;
+    }
+  });
 }
 
 std::string instance_name(const PlyElement& element, std::uint64_t index) {
