@@ -22,7 +22,8 @@ inline constexpr std::size_t kRayDirectionCount = 64;
 
 constexpr std::array<Vector3, kRayDirectionCount> make_ray_directions() {
   std::array<Vector3, kRayDirectionCount> d{};
-  for (std::size_t k = 0; k < kRayDirectionCount; ++k) d[k] = ray_direction(k);
+  for (std::size_t k = 0; k < kRayDirectionCount; ++k)
+    d[k] = ray_direction(k);
   return d;
 }
 
