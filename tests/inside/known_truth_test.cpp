@@ -36,6 +36,7 @@
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
+#include "inside/hexahedron.hpp"
 #include "inside/polycube.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
@@ -812,23 +813,7 @@ TEST(KnownTruthPolycube, ExactLinearMapsForceRecastsAndKeepLabels) {
 // ---------------------------------------------------------------------------------------
 // 5. Hand-made solids
 
-/// Corner (i, j, k) of a box is vertex i + 2j + 4k; faces counter-clockwise from outside.
-constexpr std::array<std::array<VertexIndex, 4>, 6> kBoxFaces{{
-    {0, 2, 3, 1},  // z = lower
-    {4, 5, 7, 6},  // z = upper
-    {0, 1, 5, 4},  // y = lower
-    {2, 6, 7, 3},  // y = upper
-    {0, 4, 6, 2},  // x = lower
-    {1, 3, 7, 5},  // x = upper
-}};
-
-Mesh hexahedron(const std::array<Point3, 8>& corners) {
-  Mesh mesh;
-  mesh.vertices.assign(corners.begin(), corners.end());
-  for (const auto& f : kBoxFaces)
-    mesh.faces.push_back(make_quad(f[0], f[1], f[2], f[3]));
-  return mesh;
-}
+using test_meshes::hexahedron;
 
 std::array<Point3, 8> unit_box_corners() {
   std::array<Point3, 8> c{};
@@ -885,6 +870,24 @@ std::vector<Point3> grid(const Point3& lo, const std::array<double, 3>& step,
   return out;
 }
 
+/// Probes at the grid points and, around every boundary one, one ulp off along each axis
+/// both ways; every `rational_every`-th of those is also checked with rationals.
+template <class Truth>
+std::vector<Probe> grid_probes(const std::vector<Point3>& points, const Truth& truth,
+                               std::size_t rational_every) {
+  std::vector<Probe> probes;
+  for (const Point3& p : points) {
+    probes.push_back({p, truth(p), false});
+    if (*probes.back().truth != Location::boundary) continue;
+    for (std::size_t a = 0; a < 3; ++a)
+      for (const double towards : {kInf, -kInf}) {
+        const Point3 q = nudged(p, a, towards);
+        probes.push_back({q, truth(q), probes.size() % rational_every == 0});
+      }
+  }
+  return probes;
+}
+
 Location box_truth(const Point3& p) {
   bool closed = true, open = true;
   for (const double x : p) {
@@ -897,17 +900,9 @@ Location box_truth(const Point3& p) {
 TEST(KnownTruthSolid, UnitCubeAsQuadsTrianglesAndFlippedFaces) {
   auto rng = testing::seeded_engine("KnownTruthSolid.UnitCubeAsQuadsTrianglesAndFlippedFaces");
   const Mesh cube = hexahedron(unit_box_corners());
-  std::vector<Probe> probes;
-  for (const Point3& p : grid({-0.5, -0.5, -0.5}, {0.25, 0.25, 0.25}, {9, 9, 9})) {
-    probes.push_back({p, box_truth(p), false});
-    // Points just off each face, edge and corner, by one ulp in every direction.
-    if (box_truth(p) != Location::boundary) continue;
-    for (std::size_t a = 0; a < 3; ++a)
-      for (const double towards : {kInf, -kInf}) {
-        const Point3 q = nudged(p, a, towards);
-        probes.push_back({q, box_truth(q), probes.size() % 2 == 0});
-      }
-  }
+  // Grid points, and points one ulp off each face, edge and corner in every direction.
+  std::vector<Probe> probes =
+      grid_probes(grid({-0.5, -0.5, -0.5}, {0.25, 0.25, 0.25}, {9, 9, 9}), box_truth, 2);
   std::size_t inexact = 0;
   add_surface_probes(probes, cube, box_truth, inexact);
   EXPECT_EQ(inexact, 0u);
@@ -961,16 +956,8 @@ TEST(KnownTruthSolid, BoxWithSkewTopAndBottom) {
     if (x == 0 || x == 1 || y == 0 || y == 1 || z == lo || z == hi) return Location::boundary;
     return Location::inside;
   };
-  std::vector<Probe> probes;
-  for (const Point3& p : grid({-0.125, -0.125, -0.5}, {0.125, 0.125, 0.0625}, {11, 11, 33})) {
-    probes.push_back({p, truth(p), false});
-    if (*probes.back().truth != Location::boundary) continue;
-    for (std::size_t a = 0; a < 3; ++a)
-      for (const double towards : {kInf, -kInf}) {
-        const Point3 q = nudged(p, a, towards);
-        probes.push_back({q, truth(q), probes.size() % 5 == 0});
-      }
-  }
+  std::vector<Probe> probes =
+      grid_probes(grid({-0.125, -0.125, -0.5}, {0.125, 0.125, 0.0625}, {11, 11, 33}), truth, 5);
   std::size_t inexact = 0;
   add_surface_probes(probes, solid, truth, inexact);
   EXPECT_EQ(inexact, 0u);

@@ -4,6 +4,7 @@
 // faces, bad indices and coordinates, and the same facts at scales 2^±1000 and subnormal.
 
 #include "exactgeo/inside/mesh_check.hpp"
+#include "inside/hexahedron.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,16 +19,7 @@
 namespace exactgeo::inside {
 namespace {
 
-// Corner (i, j, k) of a box is vertex i + 2j + 4k. Faces are counter-clockwise seen from
-// outside, so every edge is used once in each direction.
-constexpr std::array<std::array<VertexIndex, 4>, 6> kCubeFaces{{
-    {0, 2, 3, 1},  // z = lower
-    {4, 5, 7, 6},  // z = upper
-    {0, 1, 5, 4},  // y = lower
-    {2, 6, 7, 3},  // y = upper
-    {0, 4, 6, 2},  // x = lower
-    {1, 3, 7, 5},  // x = upper
-}};
+using test_meshes::kHexahedronFaces;
 
 /// Appends the box [lower, upper] as six quads, reusing existing vertices with exactly the
 /// same coordinates (so two boxes can share an edge).
@@ -40,7 +32,7 @@ void add_box(Mesh& mesh, const Point3& lower, const Point3& upper) {
     index[c] = static_cast<VertexIndex>(it - mesh.vertices.begin());
     if (it == mesh.vertices.end()) mesh.vertices.push_back(p);
   }
-  for (const auto& f : kCubeFaces)
+  for (const auto& f : kHexahedronFaces)
     mesh.faces.push_back(make_quad(index[f[0]], index[f[1]], index[f[2]], index[f[3]]));
 }
 
