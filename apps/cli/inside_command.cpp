@@ -67,6 +67,10 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   } catch (const std::invalid_argument& e) {
     err << "exactgeo inside: " << options.mesh << ": " << e.what() << "\n";
     return ExitCode::input_error;
+  } catch (const std::exception& e) {  // Embree failing, or memory running out
+    err << "exactgeo inside: " << options.mesh
+        << ": cannot build the search structure: " << e.what() << "\n";
+    return ExitCode::input_error;
   }
 
   Tally tally;
