@@ -6,6 +6,7 @@
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/mesh_check.hpp"
 #include "exactgeo/predicates/bilinear_patch.hpp"
+#include "exactgeo/predicates/crossing.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
 
@@ -20,39 +21,15 @@ constexpr std::size_t kExactDirections = std::size_t{1} << 25;
 /// Plain double signs can call every ray degenerate; after this many it counts anyway.
 constexpr std::size_t kPlainDoubleDirections = 64;
 
-enum class Crossing : std::uint8_t { none, crossed, origin_on, degenerate };
-
 Crossing cross(const Mesh& mesh, const Face& face, const Point3& origin, const Vector3& direction,
                Arithmetic arithmetic) noexcept {
   if (face.is_triangle()) {
     const auto& v = mesh.vertices;
-    const RayTriangleHit hit = classify_ray_triangle(
-        origin, direction, v[face.corners[0]], v[face.corners[1]], v[face.corners[2]], arithmetic);
-    switch (hit.kind) {
-      case RayTriangle::miss:
-        return Crossing::none;
-      case RayTriangle::interior:
-        return Crossing::crossed;
-      case RayTriangle::origin_on:
-        return Crossing::origin_on;
-      case RayTriangle::edge:
-      case RayTriangle::vertex:
-      case RayTriangle::coplanar:
-        return Crossing::degenerate;
-    }
-    return Crossing::degenerate;
+    return crossing_of(classify_ray_triangle(origin, direction, v[face.corners[0]],
+                                             v[face.corners[1]], v[face.corners[2]], arithmetic)
+                           .kind);
   }
-  switch (ray_patch_parity(origin, direction, patch_of(mesh, face), arithmetic)) {
-    case RayPatch::even:
-      return Crossing::none;
-    case RayPatch::odd:
-      return Crossing::crossed;
-    case RayPatch::origin_on_patch:
-      return Crossing::origin_on;
-    case RayPatch::degenerate:
-      return Crossing::degenerate;
-  }
-  return Crossing::degenerate;
+  return crossing_of(ray_patch_parity(origin, direction, patch_of(mesh, face), arithmetic));
 }
 
 bool strictly_outside(const Box& box, const Point3& p) noexcept {
@@ -126,7 +103,7 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
     for (const internal::FaceIndex f : scratch.candidates) {
       const Crossing c = cross(mesh, mesh.faces[f], point, direction, arithmetic);
       if (c == Crossing::origin_on) return Location::boundary;
-      if (c == Crossing::degenerate) {
+      if (c == Crossing::ambiguous) {
         clean = false;
         if (exact) break;  // plain double may keep counting: it may never see a clean ray
       }

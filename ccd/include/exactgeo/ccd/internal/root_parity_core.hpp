@@ -9,6 +9,7 @@
 #include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/ray_directions.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
+#include "exactgeo/predicates/crossing.hpp"
 #include "exactgeo/predicates/internal/patch_frame.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
 #include "exactgeo/predicates/internal/ray_triangle_core.hpp"
@@ -24,37 +25,17 @@ Offsets<4> patch_corners(const Offsets<C>& corners, const Face& face) noexcept {
           corners[face.corners[2]]};
 }
 
-enum class FaceCrossing { none, crossed, origin_on, degenerate };
-
 template <class Signs, std::size_t C>
-FaceCrossing cross_face(const Signs& signs, const Offsets<C>& corners, const Face& face,
-                        const in::PatchFrame& frame, const Offset& direction) noexcept {
+Crossing cross_face(const Signs& signs, const Offsets<C>& corners, const Face& face,
+                    const in::PatchFrame& frame, const Offset& direction) noexcept {
   if (face.kind == Face::Kind::triangle) {
-    switch (in::classify_ray_triangle_offsets(signs, corners[face.corners[0]],
-                                              corners[face.corners[1]], corners[face.corners[2]],
-                                              direction)
-                .kind) {
-      case RayTriangle::miss:
-        return FaceCrossing::none;
-      case RayTriangle::interior:
-        return FaceCrossing::crossed;
-      case RayTriangle::origin_on:
-        return FaceCrossing::origin_on;
-      default:
-        return FaceCrossing::degenerate;
-    }
+    return crossing_of(in::classify_ray_triangle_offsets(signs, corners[face.corners[0]],
+                                                         corners[face.corners[1]],
+                                                         corners[face.corners[2]], direction)
+                           .kind);
   }
-  switch (in::ray_patch_parity_offsets(signs, frame, patch_corners(corners, face), direction)) {
-    case RayPatch::even:
-      return FaceCrossing::none;
-    case RayPatch::odd:
-      return FaceCrossing::crossed;
-    case RayPatch::origin_on_patch:
-      return FaceCrossing::origin_on;
-    case RayPatch::degenerate:
-      break;
-  }
-  return FaceCrossing::degenerate;
+  return crossing_of(
+      in::ray_patch_parity_offsets(signs, frame, patch_corners(corners, face), direction));
 }
 
 template <class Signs, std::size_t C, std::size_t F>
@@ -72,14 +53,14 @@ RootParityResult root_parity(const Signs& signs, const BoundaryImage<C, F>& imag
     bool clean = true;
     for (std::size_t f = 0; f < F && clean; ++f) {
       switch (cross_face(signs, image.corners, image.faces[f], frames[f], direction)) {
-        case FaceCrossing::none:
+        case Crossing::none:
           break;
-        case FaceCrossing::crossed:
+        case Crossing::crossed:
           ++crossings;
           break;
-        case FaceCrossing::origin_on:
+        case Crossing::origin_on:
           return {RootParity::boundary_root, rays};
-        case FaceCrossing::degenerate:
+        case Crossing::ambiguous:
           clean = false;
           break;
       }
