@@ -520,14 +520,19 @@ std::size_t degenerate_first_rays(const Mesh& mesh, const std::vector<Probe>& pr
 // ---------------------------------------------------------------------------------------
 // 1, 2. Polycubes on the integer lattice, as quads and as triangles
 
+/// A random voxel set in an n^3 grid, with a random density in [0.3, 0.7].
+Voxels random_density_voxels(std::mt19937_64& rng, int n) {
+  const double density = std::uniform_real_distribution<double>(0.3, 0.7)(rng);
+  return polycube::random_voxels(rng, n, density);
+}
+
 void lattice_points_test(std::string_view stream, bool triangles) {
   auto rng = testing::seeded_engine(stream);
   std::size_t non_manifold_total = 0;
   const std::array<int, 4> sizes{4, 5, 6, 4};
   for (std::size_t trial = 0; trial < sizes.size(); ++trial) {
     const int n = sizes[trial];
-    const double density = std::uniform_real_distribution<double>(0.3, 0.7)(rng);
-    const Voxels voxels = polycube::random_voxels(rng, n, density);
+    const Voxels voxels = random_density_voxels(rng, n);
     const Variant variant{triangles, false, rng()};
     const Polycube p = make(voxels, variant);
     SCOPED_TRACE(cat(describe(voxels), "; ", variant.describe()));
@@ -601,8 +606,7 @@ void moved_test(std::string_view stream, bool triangles) {
   const std::array<int, 3> sizes{4, 5, 4};
   for (std::size_t trial = 0; trial < sizes.size(); ++trial) {
     const int n = sizes[trial];
-    const double density = std::uniform_real_distribution<double>(0.3, 0.7)(rng);
-    const Voxels voxels = polycube::random_voxels(rng, n, density);
+    const Voxels voxels = random_density_voxels(rng, n);
     const Variant variant{triangles, true, rng()};
     const Polycube p = make(voxels, variant);
     SCOPED_TRACE(cat(describe(voxels), "; ", variant.describe()));
@@ -636,8 +640,7 @@ TEST(KnownTruthPolycube, ShearedSkewPatchesForceRecasts) {
   auto rng = testing::seeded_engine("KnownTruthPolycube.ShearedSkewPatchesForceRecasts");
   for (const bool triangles : {false, true}) {
     const int n = 5;
-    const double density = std::uniform_real_distribution<double>(0.3, 0.7)(rng);
-    const Voxels voxels = polycube::random_voxels(rng, n, density);
+    const Voxels voxels = random_density_voxels(rng, n);
     Variant variant{triangles, false, rng()};
     variant.shear = true;
     const Polycube p = make(voxels, variant);
