@@ -6,7 +6,6 @@
 #include "cli/input_error.hpp"
 #include "cli/numbers.hpp"
 #include "mesh_io/polygon.hpp"
-#include "mesh_io/read_bytes.hpp"
 #include "mesh_io/text_scan.hpp"
 
 namespace exactgeo::cli {
@@ -152,11 +151,6 @@ class ObjParser {
 
 LoadedMesh read_obj(std::string_view text, const std::string& source, const LoadOptions& options) {
   return ObjParser(text, source, options).parse();
-}
-
-LoadedMesh read_obj(std::istream& in, const std::string& source, const LoadOptions& options) {
-  const std::string text = read_stream(in, source);
-  return read_obj(std::string_view(text), source, options);
 }
 
 }  // namespace exactgeo::cli

@@ -7,7 +7,6 @@
 // g, s, usemtl, mtllib, l, p, free-form geometry, ...) is ignored, as are comments and
 // blank lines; CRLF line ends are fine.
 
-#include <istream>
 #include <string>
 #include <string_view>
 
@@ -18,6 +17,5 @@ namespace exactgeo::cli {
 /// Parses OBJ text; `source` names it in errors ("<source>:<line>: ..."). Applies
 /// options.split_polygons (not options.weld). Throws InputError.
 LoadedMesh read_obj(std::string_view text, const std::string& source, const LoadOptions& options);
-LoadedMesh read_obj(std::istream& in, const std::string& source, const LoadOptions& options);
 
 }  // namespace exactgeo::cli

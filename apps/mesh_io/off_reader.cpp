@@ -8,7 +8,6 @@
 #include "cli/input_error.hpp"
 #include "cli/numbers.hpp"
 #include "mesh_io/polygon.hpp"
-#include "mesh_io/read_bytes.hpp"
 #include "mesh_io/text_scan.hpp"
 
 namespace exactgeo::cli {
@@ -232,11 +231,6 @@ class OffParser {
 
 LoadedMesh read_off(std::string_view text, const std::string& source, const LoadOptions& options) {
   return OffParser(text, source, options).parse();
-}
-
-LoadedMesh read_off(std::istream& in, const std::string& source, const LoadOptions& options) {
-  const std::string text = read_stream(in, source);
-  return read_off(std::string_view(text), source, options);
 }
 
 }  // namespace exactgeo::cli

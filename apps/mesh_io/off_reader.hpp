@@ -8,7 +8,6 @@
 // `n i0 ... i(n-1)` with 0-based indices, optionally followed by a colour. `#` starts a
 // comment anywhere; blank lines are skipped. `4OFF`, `nOFF` and binary OFF are refused.
 
-#include <istream>
 #include <string>
 #include <string_view>
 
@@ -19,6 +18,5 @@ namespace exactgeo::cli {
 /// Parses OFF text; `source` names it in errors ("<source>:<line>: ..."). Applies
 /// options.split_polygons (not options.weld). Throws InputError.
 LoadedMesh read_off(std::string_view text, const std::string& source, const LoadOptions& options);
-LoadedMesh read_off(std::istream& in, const std::string& source, const LoadOptions& options);
 
 }  // namespace exactgeo::cli

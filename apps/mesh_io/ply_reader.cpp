@@ -13,7 +13,6 @@
 #include "cli/numbers.hpp"
 #include "mesh_io/ply_header.hpp"
 #include "mesh_io/polygon.hpp"
-#include "mesh_io/read_bytes.hpp"
 #include "mesh_io/text_scan.hpp"
 
 namespace exactgeo::cli {
@@ -428,11 +427,6 @@ class PlyReader {
 
 LoadedMesh read_ply(std::string_view data, const std::string& source, const LoadOptions& options) {
   return PlyReader(data, source, options).read();
-}
-
-LoadedMesh read_ply(std::istream& in, const std::string& source, const LoadOptions& options) {
-  const std::string data = read_stream(in, source);
-  return read_ply(std::string_view(data), source, options);
 }
 
 }  // namespace exactgeo::cli

@@ -7,7 +7,6 @@
 // `vertex_index` with integer count and index types; other properties are skipped). Any
 // other element is skipped, list properties included.
 
-#include <istream>
 #include <string>
 #include <string_view>
 
@@ -20,6 +19,5 @@ namespace exactgeo::cli {
 /// header is checked against the bytes present before anything is allocated for it.
 /// Applies options.split_polygons (not options.weld). Throws InputError.
 LoadedMesh read_ply(std::string_view data, const std::string& source, const LoadOptions& options);
-LoadedMesh read_ply(std::istream& in, const std::string& source, const LoadOptions& options);
 
 }  // namespace exactgeo::cli

@@ -29,6 +29,7 @@
 #include "mesh_io/obj_reader.hpp"
 #include "mesh_io/off_reader.hpp"
 #include "mesh_io/ply_reader.hpp"
+#include "mesh_io/read_bytes.hpp"
 #include "mesh_io/weld.hpp"
 #include "support/seed.hpp"
 
@@ -317,9 +318,9 @@ TEST_F(mesh_io, ExtensionIsCaseInsensitive) {
 TEST(mesh_io_streams, ReadersTakeStreamsAndMemory) {
   const Mesh expected = quad_and_triangle();
   std::istringstream obj(to_obj(expected));
-  expect_same_mesh(read_obj(obj, "<obj>", {}).mesh, expected);
+  expect_same_mesh(read_obj(read_stream(obj, "<obj>"), "<obj>", {}).mesh, expected);
   std::istringstream off(to_off(expected));
-  expect_same_mesh(read_off(off, "<off>", {}).mesh, expected);
+  expect_same_mesh(read_off(read_stream(off, "<off>"), "<off>", {}).mesh, expected);
   const std::string ply = to_ply(expected, {"binary_little_endian"});
   expect_same_mesh(read_ply(std::string_view(ply), "<ply>", {}).mesh, expected);
   EXPECT_MESSAGE_HAS(error_of([] { (void)read_obj(std::string_view("v 1 2 x\n"), "<mem>", {}); }),
