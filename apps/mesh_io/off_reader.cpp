@@ -198,18 +198,7 @@ class OffParser {
       for (std::size_t i = 1; i <= static_cast<std::size_t>(*n); ++i) {
         const std::optional<std::int64_t> index = parse_integer(tokens_[i], error);
         if (!index) fail_face(f, error);
-        if (*index < 0 || static_cast<std::uint64_t>(*index) >= vertex_count_) {
-          std::string what = "vertex index ";
-          what.append(std::to_string(*index));
-          what.append(" is out of range: ");
-          if (vertex_count_ == 0) {
-            what.append("the file has no vertices");
-          } else {
-            what.append("valid: 0..");
-            what.append(std::to_string(vertex_count_ - 1));
-          }
-          fail_face(f, what);
-        }
+        if (auto why = zero_based_index_problem(*index, vertex_count_)) fail_face(f, *why);
         corners_.push_back(static_cast<inside::VertexIndex>(*index));
       }
       // Values after the corners are the face's colour: not read.

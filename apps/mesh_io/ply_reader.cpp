@@ -183,21 +183,6 @@ class PlyReader {
     p.roles[static_cast<std::size_t>(it - props.begin())] = Role::corners;
   }
 
-  // nullopt when the index names a vertex, else the reason it does not.
-  std::optional<std::string> check_index(std::int64_t index) const {
-    if (index >= 0 && static_cast<std::uint64_t>(index) < vertex_count_) return std::nullopt;
-    std::string what = "vertex index ";
-    what.append(std::to_string(index));
-    what.append(" is out of range: ");
-    if (vertex_count_ == 0) {
-      what.append("the file has no vertices");
-    } else {
-      what.append("valid: 0..");
-      what.append(std::to_string(vertex_count_ - 1));
-    }
-    return what;
-  }
-
   // Reserves room for the element's instances, at most `bound` of them: a declared count is
   // trusted only as far as the bytes present could hold it.
   void reserve(const ElementPlan& p, std::uint64_t bound) {
@@ -291,7 +276,7 @@ class PlyReader {
         for (std::size_t j = 0; j < static_cast<std::size_t>(*n); ++j) {
           const std::optional<std::int64_t> index = parse_integer(tokens_[t + j], error);
           if (!index) fail(error);
-          if (auto why = check_index(*index)) fail(*why);
+          if (auto why = zero_based_index_problem(*index, vertex_count_)) fail(*why);
           corners_.push_back(static_cast<inside::VertexIndex>(*index));
         }
         if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);
@@ -400,7 +385,7 @@ class PlyReader {
         for (std::int64_t j = 0; j < n; ++j) {
           const std::int64_t index = load_integer(property.type, data_.data() + pos, swap);
           pos += size;
-          if (auto why = check_index(index)) fail(*why);
+          if (auto why = zero_based_index_problem(index, vertex_count_)) fail(*why);
           corners_.push_back(static_cast<inside::VertexIndex>(index));
         }
         if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);

@@ -4,6 +4,21 @@
 
 namespace exactgeo::cli {
 
+std::optional<std::string> zero_based_index_problem(std::int64_t index,
+                                                    std::uint64_t vertex_count) {
+  if (index >= 0 && static_cast<std::uint64_t>(index) < vertex_count) return std::nullopt;
+  std::string what = "vertex index ";
+  what.append(std::to_string(index));
+  what.append(" is out of range: ");
+  if (vertex_count == 0) {
+    what.append("the file has no vertices");
+  } else {
+    what.append("valid: 0..");
+    what.append(std::to_string(vertex_count - 1));
+  }
+  return what;
+}
+
 std::optional<std::string> add_polygon(std::span<const inside::VertexIndex> corners,
                                        bool split_polygons, LoadedMesh& out) {
   const std::size_t n = corners.size();

@@ -4,6 +4,7 @@
 // larger polygons are refused or (on request) split into a triangle fan.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,10 @@ inline constexpr std::size_t kMaxVertices = inside::kNoVertex;
 /// `split_polygons`) for the caller to report with its place.
 std::optional<std::string> add_polygon(std::span<const inside::VertexIndex> corners,
                                        bool split_polygons, LoadedMesh& out);
+
+/// nullopt when a 0-based vertex index (OFF, PLY) names one of `vertex_count` vertices,
+/// else the reason it does not, for the caller to report with its place.
+std::optional<std::string> zero_based_index_problem(std::int64_t index, std::uint64_t vertex_count);
 
 /// Throws InputError("<source>: ... no faces") when the mesh has no face.
 void require_faces(const LoadedMesh& loaded, const std::string& source);
