@@ -1,0 +1,123 @@
+#pragma once
+
+// Mesh-level continuous collision detection: every colliding vertex-face and edge-edge
+// pair of a triangle mesh over one time step, and optionally the earliest time of impact.
+//
+// A simulator hands over the positions at the start (t0) and the end (t1) of a step; each
+// vertex moves on the straight line between them. The connectivity is fixed when the
+// MeshCcd is made, so the edge list and the adjacency are built once.
+//
+//   broad phase   swept boxes (the box of a primitive's corners at t0 and t1 contains the
+//                 primitive at every time in between, because each corner moves on a
+//                 segment and a box is convex), rounded outward to float; sweep and prune
+//                 along one axis (docs/ccd.md says why this structure). Pairs sharing a
+//                 vertex are skipped, and so are pairs whose primitives both stand still
+//                 (every corner has p_t0 == p_t1): their distance is constant over the step.
+//                 The boxes of standing primitives are sorted once and kept while they
+//                 stay where they are.
+//   narrow phase  vertex_face_ccd / edge_edge_ccd (ccd.hpp) on every candidate, in
+//                 parallel. The output is sorted, so it is the same for every thread count.
+//
+// The broad phase never drops a pair that the narrow phase would report (tests compare
+// with exhaustive pairwise CCD on every non-adjacent pair).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "exactgeo/ccd/ccd.hpp"
+
+namespace exactgeo::ccd {
+
+using VertexIndex = std::uint32_t;
+using FaceIndex = std::uint32_t;
+using Triangle = std::array<VertexIndex, 3>;
+/// An edge with its smaller vertex first.
+using Edge = std::array<VertexIndex, 2>;
+
+struct VertexFacePair {
+  VertexIndex vertex = 0;
+  FaceIndex face = 0;
+  friend auto operator<=>(const VertexFacePair&, const VertexFacePair&) = default;
+};
+
+/// Two edges, each with its smaller vertex first, the smaller edge first.
+struct EdgeEdgePair {
+  Edge a{};
+  Edge b{};
+  friend auto operator<=>(const EdgeEdgePair&, const EdgeEdgePair&) = default;
+};
+
+/// Positions at both ends of the step: x, y, z of vertex 0, then of vertex 1, ...
+/// (3 * vertex_count doubles each, finite).
+struct MeshFrames {
+  std::span<const double> positions_t0;
+  std::span<const double> positions_t1;
+};
+
+struct MeshCcdOptions {
+  /// exact (every root) or parity (odd root counts and boundary roots); the other methods
+  /// are accepted for measuring the trade.
+  Method method = Method::exact;
+  /// exact only: also bracket the mesh's earliest root to at most this width.
+  std::optional<double> time_of_impact_width;
+  /// Worker threads for the sweep and the narrow phase; 0: one per hardware thread.
+  unsigned threads = 0;
+};
+
+struct MeshCcdResult {
+  std::vector<VertexFacePair> vertex_face;  ///< sorted, each pair once
+  std::vector<EdgeEdgePair> edge_edge;      ///< sorted, each pair once
+  std::size_t vertex_face_candidates = 0;   ///< broad-phase pairs given to the narrow phase
+  std::size_t edge_edge_candidates = 0;
+  /// With time_of_impact_width and a collision: no root before start, a root by end.
+  std::optional<TimeInterval> time_of_impact;
+  /// True when the boxes of standing primitives were re-sorted in this step.
+  bool static_boxes_rebuilt = false;
+  double broad_phase_seconds = 0.0;
+  double narrow_phase_seconds = 0.0;
+
+  std::size_t candidates() const noexcept { return vertex_face_candidates + edge_edge_candidates; }
+  bool collision() const noexcept { return !vertex_face.empty() || !edge_edge.empty(); }
+};
+
+class MeshCcd {
+ public:
+  /// Throws std::invalid_argument when a face has a corner index >= vertex_count or a
+  /// repeated corner.
+  MeshCcd(std::size_t vertex_count, std::span<const Triangle> faces);
+  MeshCcd(MeshCcd&&) noexcept;
+  MeshCcd& operator=(MeshCcd&&) noexcept;
+  ~MeshCcd();
+
+  /// Every colliding pair over the step. Throws std::invalid_argument when a frame does not
+  /// hold 3 * vertex_count() values or holds a non-finite one (naming the vertex).
+  /// Not const: it keeps the sorted boxes of standing primitives for the next step. One
+  /// MeshCcd per thread; different MeshCcd objects are independent.
+  MeshCcdResult step(const MeshFrames& frames, const MeshCcdOptions& options = {});
+
+  std::size_t vertex_count() const noexcept;
+  std::span<const Triangle> faces() const noexcept;
+  /// The unique edges of the faces, sorted, each with its smaller vertex first.
+  std::span<const Edge> edges() const noexcept;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+/// One step without keeping anything: MeshCcd(vertex_count, faces).step(frames, options).
+MeshCcdResult find_collisions(std::span<const Triangle> faces, const MeshFrames& frames,
+                              const MeshCcdOptions& options = {});
+
+/// The per-pair queries of a mesh, for simulators that run their own broad phase.
+/// Preconditions: indices in range, frames as for MeshCcd::step.
+VertexFaceQuery vertex_face_query(const MeshFrames& frames, std::span<const Triangle> faces,
+                                  VertexFacePair pair) noexcept;
+EdgeEdgeQuery edge_edge_query(const MeshFrames& frames, const EdgeEdgePair& pair) noexcept;
+
+}  // namespace exactgeo::ccd
