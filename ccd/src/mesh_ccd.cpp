@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "exactgeo/ccd/internal/sweep_and_prune.hpp"
+#include "exactgeo/ccd/internal/box_tree.hpp"
 #include "exactgeo/ccd/internal/swept_box.hpp"
 #include "exactgeo/predicates/internal/parallel_blocks.hpp"
 
@@ -16,25 +16,19 @@ namespace exactgeo::ccd {
 
 namespace {
 
-using internal::Scan;
+using internal::BoxTree;
 using internal::SweptBox;
 
 using Boxes = std::vector<SweptBox>;
 
-/// Boxes of one kind of primitive, split by whether any corner moves.
-struct SplitBoxes {
-  Boxes moving;
-  Boxes standing;
-};
+enum class PairKind { vertex_face, edge_edge };
 
-enum class PairKind { vertex_face, face_vertex, edge_edge };
-
-/// One pass of the sweep (sweep_and_prune.hpp): outer boxes against inner boxes.
-struct SweepPass {
-  const Boxes* outer;
-  const Boxes* inner;
-  Scan scan;
+/// One pass of the broad phase: every query box against a tree.
+struct TreePass {
+  const Boxes* queries;
+  const BoxTree* tree;
   PairKind kind;
+  bool same_set;  ///< queries and tree hold the same primitives: keep each pair once
 };
 
 struct EdgeIndexPair {
@@ -54,7 +48,7 @@ struct BlockCollisions {
   std::optional<TimeInterval> earliest;
 };
 
-constexpr std::size_t kSweepBlock = 1024;  // outer boxes per sweep job
+constexpr std::size_t kQueryBlock = 1024;  // query boxes per broad-phase job
 constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
 
 std::string vertex_name(std::size_t v) {
@@ -104,24 +98,6 @@ Point3 position(std::span<const double> positions, VertexIndex v) noexcept {
   return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
 }
 
-/// The axis along which the vertices spread the most: the sweep prunes best there.
-int widest_axis(const MeshFrames& frames) noexcept {
-  std::array<double, 3> lo{}, hi{};
-  lo.fill(std::numeric_limits<double>::infinity());
-  hi.fill(-std::numeric_limits<double>::infinity());
-  for (const auto positions : {frames.positions_t0, frames.positions_t1}) {
-    for (std::size_t i = 0; i < positions.size(); ++i) {
-      lo[i % 3] = std::min(lo[i % 3], positions[i]);
-      hi[i % 3] = std::max(hi[i % 3], positions[i]);
-    }
-  }
-  int axis = 0;
-  for (int k = 1; k < 3; ++k) {
-    if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-  }
-  return axis;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -145,10 +121,10 @@ struct MeshCcd::State {
 
   // The boxes of standing primitives, kept while the same vertices stand at the same place.
   bool standing_valid = false;
-  int axis = 0;
   std::vector<std::uint8_t> moving;        // per vertex, when the standing boxes were built
   std::vector<double> standing_positions;  // t0 positions then (only standing ones compared)
-  Boxes standing_vertices, standing_edges, standing_faces;
+  Boxes standing_vertices;
+  BoxTree standing_edges, standing_faces;
 
   bool standing_unchanged(const std::vector<std::uint8_t>& now, const MeshFrames& frames) const;
   void rebuild_standing(std::vector<std::uint8_t> now, const MeshFrames& frames);
@@ -194,7 +170,6 @@ Boxes MeshCcd::State::moving_boxes(std::span<const std::array<VertexIndex, N>> p
     boxes.push_back(internal::swept_box(primitives[i], static_cast<std::uint32_t>(i),
                                         frames.positions_t0.data(), frames.positions_t1.data()));
   }
-  internal::sort_for_sweep(boxes, axis);
   return boxes;
 }
 
@@ -207,7 +182,6 @@ Boxes MeshCcd::State::standing_boxes(std::span<const std::array<VertexIndex, N>>
     boxes.push_back(internal::swept_box(primitives[i], static_cast<std::uint32_t>(i),
                                         frames.positions_t0.data(), frames.positions_t0.data()));
   }
-  internal::sort_for_sweep(boxes, axis);
   return boxes;
 }
 
@@ -223,11 +197,10 @@ bool MeshCcd::State::standing_unchanged(const std::vector<std::uint8_t>& now,
 void MeshCcd::State::rebuild_standing(std::vector<std::uint8_t> now, const MeshFrames& frames) {
   moving = std::move(now);
   standing_positions.assign(frames.positions_t0.begin(), frames.positions_t0.end());
-  axis = widest_axis(frames);
   const auto vertices = vertex_list(vertex_count);
   standing_vertices = standing_boxes(std::span<const std::array<VertexIndex, 1>>(vertices), frames);
-  standing_edges = standing_boxes(std::span<const Edge>(edges), frames);
-  standing_faces = standing_boxes(std::span<const Triangle>(faces), frames);
+  standing_edges = BoxTree(standing_boxes(std::span<const Edge>(edges), frames));
+  standing_faces = BoxTree(standing_boxes(std::span<const Triangle>(faces), frames));
   standing_valid = true;
 }
 
@@ -284,50 +257,46 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   const Boxes moving_vertices_boxes =
       s.moving_boxes(std::span<const std::array<VertexIndex, 1>>(vertices), now, frames);
   const Boxes moving_edges = s.moving_boxes(std::span<const Edge>(s.edges), now, frames);
-  const Boxes moving_faces = s.moving_boxes(std::span<const Triangle>(s.faces), now, frames);
+  const BoxTree moving_edge_tree(moving_edges);
+  const BoxTree moving_face_tree(s.moving_boxes(std::span<const Triangle>(s.faces), now, frames));
 
-  // Every pair with at least one moving primitive, each once (sweep_and_prune.hpp).
-  const SweepPass passes[] = {
-      {&moving_vertices_boxes, &moving_faces, Scan::from_equal, PairKind::vertex_face},
-      {&moving_faces, &moving_vertices_boxes, Scan::from_above, PairKind::face_vertex},
-      {&moving_vertices_boxes, &s.standing_faces, Scan::from_equal, PairKind::vertex_face},
-      {&s.standing_faces, &moving_vertices_boxes, Scan::from_above, PairKind::face_vertex},
-      {&s.standing_vertices, &moving_faces, Scan::from_equal, PairKind::vertex_face},
-      {&moving_faces, &s.standing_vertices, Scan::from_above, PairKind::face_vertex},
-      {&moving_edges, &moving_edges, Scan::after_self, PairKind::edge_edge},
-      {&moving_edges, &s.standing_edges, Scan::from_equal, PairKind::edge_edge},
-      {&s.standing_edges, &moving_edges, Scan::from_above, PairKind::edge_edge},
+  // Every pair with at least one moving primitive, each once.
+  const TreePass passes[] = {
+      {&moving_vertices_boxes, &moving_face_tree, PairKind::vertex_face, false},
+      {&moving_vertices_boxes, &s.standing_faces, PairKind::vertex_face, false},
+      {&s.standing_vertices, &moving_face_tree, PairKind::vertex_face, false},
+      {&moving_edges, &moving_edge_tree, PairKind::edge_edge, true},
+      {&moving_edges, &s.standing_edges, PairKind::edge_edge, false},
   };
-  struct SweepJob {
-    const SweepPass* pass;
+  struct QueryJob {
+    const TreePass* pass;
     std::size_t begin, end;
   };
-  std::vector<SweepJob> jobs;
-  for (const SweepPass& pass : passes) {
-    if (pass.inner->empty()) continue;
-    for (std::size_t b = 0; b < pass.outer->size(); b += kSweepBlock)
-      jobs.push_back({&pass, b, std::min(pass.outer->size(), b + kSweepBlock)});
+  std::vector<QueryJob> jobs;
+  for (const TreePass& pass : passes) {
+    if (pass.tree->empty()) continue;
+    for (std::size_t b = 0; b < pass.queries->size(); b += kQueryBlock)
+      jobs.push_back({&pass, b, std::min(pass.queries->size(), b + kQueryBlock)});
   }
   std::vector<Candidates> found(jobs.size());
   exactgeo::internal::for_each_block(jobs.size(), options.threads, [&](std::size_t j) {
-    const SweepJob& job = jobs[j];
+    const QueryJob& job = jobs[j];
     Candidates& out = found[j];
-    const auto visit = [&](std::uint32_t outer, std::uint32_t inner) {
-      switch (job.pass->kind) {
-        case PairKind::vertex_face:
-          if (!is_corner(outer, s.faces[inner])) out.vertex_face.push_back({outer, inner});
-          break;
-        case PairKind::face_vertex:
-          if (!is_corner(inner, s.faces[outer])) out.vertex_face.push_back({inner, outer});
-          break;
-        case PairKind::edge_edge:
-          if (!shares_vertex(s.edges[outer], s.edges[inner]))
-            out.edge_edge.push_back({std::min(outer, inner), std::max(outer, inner)});
-          break;
+    for (std::size_t q = job.begin; q < job.end; ++q) {
+      const SweptBox& box = (*job.pass->queries)[q];
+      const std::uint32_t mine = box.id;
+      if (job.pass->kind == PairKind::vertex_face) {
+        job.pass->tree->query(box, [&](std::uint32_t face) {
+          if (!is_corner(mine, s.faces[face])) out.vertex_face.push_back({mine, face});
+        });
+      } else {
+        job.pass->tree->query(box, [&](std::uint32_t other) {
+          if (job.pass->same_set && other <= mine) return;
+          if (!shares_vertex(s.edges[mine], s.edges[other]))
+            out.edge_edge.push_back({std::min(mine, other), std::max(mine, other)});
+        });
       }
-    };
-    internal::sweep(std::span<const SweptBox>(*job.pass->outer), job.begin, job.end,
-                    std::span<const SweptBox>(*job.pass->inner), job.pass->scan, s.axis, visit);
+    }
   });
   Candidates candidates;
   for (Candidates& c : found) {

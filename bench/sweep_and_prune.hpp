@@ -23,7 +23,10 @@
 
 #include "exactgeo/ccd/internal/swept_box.hpp"
 
-namespace exactgeo::ccd::internal {
+namespace exactgeo::ccd::bench {
+
+using internal::overlap;
+using internal::SweptBox;
 
 enum class Scan { after_self, from_equal, from_above };
 
@@ -64,4 +67,4 @@ void sweep(std::span<const SweptBox> outer, std::size_t begin, std::size_t end,
   }
 }
 
-}  // namespace exactgeo::ccd::internal
+}  // namespace exactgeo::ccd::bench

@@ -1,0 +1,276 @@
+// Step-time benchmark of mesh-level CCD (docs/ccd.md, scripts/ccd-mesh-bench.py).
+//
+//   ccd_mesh_bench FRAME0 [FRAME1] [--motion A] [--seed S] [--threads T]
+//                  [--method exact|parity] [--repeat R] [--standing F] [--compare]
+//
+// Without FRAME1, every vertex of FRAME0 moves by A times the mean edge length in each
+// coordinate (uniform, seeded); with --standing F, the fraction F of vertices lowest on the
+// widest axis stands still. Quads are split into two triangles. Prints one JSON object: the
+// best of R runs of a fresh MeshCcd's first step, then the same MeshCcd's second step on the
+// same frames (standing boxes kept). With --compare, the broad-phase structures on the same
+// boxes in the same run: testing every pair (small meshes only), sweep and prune along x
+// (sweep_and_prune.hpp), and the tree MeshCcd uses (box_tree.hpp).
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exactgeo/ccd/internal/box_tree.hpp"
+#include "exactgeo/ccd/internal/swept_box.hpp"
+#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "mesh_io/load_mesh.hpp"
+#include "sweep_and_prune.hpp"
+
+namespace {
+
+using namespace exactgeo;
+using ccd::Triangle;
+
+struct Frames {
+  std::vector<double> t0, t1;
+  std::vector<Triangle> faces;
+};
+
+std::vector<double> flat(const inside::Mesh& mesh) {
+  std::vector<double> xyz;
+  xyz.reserve(3 * mesh.vertices.size());
+  for (const Point3& p : mesh.vertices)
+    xyz.insert(xyz.end(), p.begin(), p.end());
+  return xyz;
+}
+
+std::vector<Triangle> triangles(const inside::Mesh& mesh) {
+  std::vector<Triangle> faces;
+  for (const inside::Face& f : mesh.faces) {
+    faces.push_back({f.corners[0], f.corners[1], f.corners[2]});
+    if (!f.is_triangle()) faces.push_back({f.corners[0], f.corners[2], f.corners[3]});
+  }
+  return faces;
+}
+
+double mean_edge_length(const Frames& frames) {
+  double sum = 0.0;
+  for (const Triangle& f : frames.faces) {
+    for (int i = 0; i < 3; ++i) {
+      double d2 = 0.0;
+      for (int k = 0; k < 3; ++k) {
+        const double d = frames.t0[3 * f[i] + k] - frames.t0[3 * f[(i + 1) % 3] + k];
+        d2 += d * d;
+      }
+      sum += std::sqrt(d2);
+    }
+  }
+  return sum / (3.0 * static_cast<double>(frames.faces.size()));
+}
+
+void random_motion(Frames& frames, double amplitude, double standing, std::uint64_t seed) {
+  const std::size_t n = frames.t0.size() / 3;
+  int axis = 0;
+  std::array<double, 3> extent{};
+  for (int k = 0; k < 3; ++k) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t v = 0; v < n; ++v) {
+      lo = std::min(lo, frames.t0[3 * v + k]);
+      hi = std::max(hi, frames.t0[3 * v + k]);
+    }
+    extent[k] = hi - lo;
+    if (extent[k] > extent[axis]) axis = k;
+  }
+  std::vector<double> heights(n);
+  for (std::size_t v = 0; v < n; ++v)
+    heights[v] = frames.t0[3 * v + axis];
+  std::vector<double> sorted = heights;
+  std::sort(sorted.begin(), sorted.end());
+  const double cut =
+      standing > 0
+          ? sorted[std::min(n - 1, static_cast<std::size_t>(standing * static_cast<double>(n)))]
+          : -INFINITY;
+  std::mt19937_64 rng(seed);
+  const double step = amplitude * mean_edge_length(frames);
+  std::uniform_real_distribution<double> d(-step, step);
+  frames.t1 = frames.t0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (heights[v] < cut) continue;
+    for (int k = 0; k < 3; ++k)
+      frames.t1[3 * v + k] += d(rng);
+  }
+}
+
+double seconds(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct StructureTime {
+  std::size_t overlaps = 0;
+  double seconds = 0.0;
+};
+
+/// The broad-phase structures on the same boxes (every primitive counted as moving, no
+/// adjacency filter): vertex-face and edge-edge box overlaps, and the time to find them.
+struct StructureComparison {
+  std::optional<StructureTime> all_pairs;  // only for small meshes: it is quadratic
+  StructureTime sweep_and_prune;
+  StructureTime tree;
+};
+
+StructureComparison compare_structures(const ccd::MeshCcd& mesh, const Frames& frames) {
+  using ccd::internal::swept_box;
+  using ccd::internal::SweptBox;
+  std::vector<SweptBox> vertices, edges, faces;
+  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
+    vertices.push_back(
+        swept_box(std::array<std::uint32_t, 1>{v}, v, frames.t0.data(), frames.t1.data()));
+  for (std::uint32_t e = 0; e < mesh.edges().size(); ++e)
+    edges.push_back(swept_box(mesh.edges()[e], e, frames.t0.data(), frames.t1.data()));
+  for (std::uint32_t f = 0; f < mesh.faces().size(); ++f)
+    faces.push_back(swept_box(mesh.faces()[f], f, frames.t0.data(), frames.t1.data()));
+
+  StructureComparison c;
+  if (edges.size() <= 40000) {
+    const auto start = std::chrono::steady_clock::now();
+    StructureTime t;
+    for (const auto& v : vertices)
+      for (const auto& f : faces)
+        t.overlaps += ccd::internal::overlap(v, f) ? 1 : 0;
+    for (std::size_t a = 0; a < edges.size(); ++a)
+      for (std::size_t b = a + 1; b < edges.size(); ++b)
+        t.overlaps += ccd::internal::overlap(edges[a], edges[b]) ? 1 : 0;
+    t.seconds = seconds(start);
+    c.all_pairs = t;
+  }
+  {
+    const auto start = std::chrono::steady_clock::now();
+    auto v = vertices, e = edges, f = faces;
+    const int axis = 0;
+    for (auto* list : {&v, &e, &f})
+      ccd::bench::sort_for_sweep(*list, axis);
+    std::size_t n = 0;
+    const auto count = [&n](std::uint32_t, std::uint32_t) { ++n; };
+    using ccd::bench::Scan;
+    ccd::bench::sweep(v, 0, v.size(), f, Scan::from_equal, axis, count);
+    ccd::bench::sweep(f, 0, f.size(), v, Scan::from_above, axis, count);
+    ccd::bench::sweep(e, 0, e.size(), e, Scan::after_self, axis, count);
+    c.sweep_and_prune = {n, seconds(start)};
+  }
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const ccd::internal::BoxTree face_tree(faces), edge_tree(edges);
+    std::size_t n = 0;
+    for (const auto& v : vertices)
+      face_tree.query(v, [&n](std::uint32_t) { ++n; });
+    for (const auto& e : edges)
+      edge_tree.query(e, [&n, &e](std::uint32_t other) { n += other > e.id ? 1 : 0; });
+    c.tree = {n, seconds(start)};
+  }
+  return c;
+}
+
+[[noreturn]] void usage(const std::string& why) {
+  std::cerr << "ccd_mesh_bench: " << why << "\n";
+  std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> paths;
+  double motion = 0.5, standing = 0.0;
+  std::uint64_t seed = 1;
+  unsigned threads = 1;
+  int repeat = 3;
+  bool compare = false;
+  ccd::Method method = ccd::Method::exact;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto value = [&] {
+      if (i + 1 >= argc) usage(a + " needs a value");
+      return std::string(argv[++i]);
+    };
+    if (a == "--motion")
+      motion = std::stod(value());
+    else if (a == "--seed")
+      seed = std::stoull(value());
+    else if (a == "--threads")
+      threads = static_cast<unsigned>(std::stoul(value()));
+    else if (a == "--repeat")
+      repeat = std::stoi(value());
+    else if (a == "--standing")
+      standing = std::stod(value());
+    else if (a == "--compare")
+      compare = true;
+
+    else if (a == "--method") {
+      const auto m = ccd::parse_method(value());
+      if (!m) usage("unknown method");
+      method = *m;
+    } else if (!a.empty() && a[0] == '-')
+      usage("unknown option " + a);
+    else
+      paths.push_back(a);
+  }
+  if (paths.empty() || paths.size() > 2) usage("one or two mesh files expected");
+
+  Frames frames;
+  const auto first = cli::load_mesh(paths[0]);
+  frames.t0 = flat(first.mesh);
+  frames.faces = triangles(first.mesh);
+  if (paths.size() == 2) {
+    frames.t1 = flat(cli::load_mesh(paths[1]).mesh);
+    if (frames.t1.size() != frames.t0.size()) usage("frames differ in vertex count");
+  } else {
+    random_motion(frames, motion, standing, seed);
+  }
+
+  const ccd::MeshFrames view{frames.t0, frames.t1};
+  const ccd::MeshCcdOptions options{method, std::nullopt, threads};
+  ccd::MeshCcdResult best, second;
+  double best_total = INFINITY;
+  for (int r = 0; r < repeat; ++r) {
+    ccd::MeshCcd mesh(frames.t0.size() / 3, frames.faces);
+    const ccd::MeshCcdResult result = mesh.step(view, options);
+    const double total = result.broad_phase_seconds + result.narrow_phase_seconds;
+    if (total < best_total) {
+      best_total = total;
+      best = result;
+      second = mesh.step(view, options);
+    }
+  }
+  std::optional<StructureComparison> structures;
+  if (compare)
+    structures = compare_structures(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), frames);
+
+  const std::size_t collisions = best.vertex_face.size() + best.edge_edge.size();
+  std::printf(
+      "{\"mesh\": \"%s\", \"triangles\": %zu, \"vertices\": %zu, \"method\": \"%s\", "
+      "\"threads\": %u, \"motion\": %g, \"standing\": %g, \"vertex_face_candidates\": %zu, "
+      "\"edge_edge_candidates\": %zu, \"vertex_face\": %zu, \"edge_edge\": %zu, "
+      "\"broad_phase_seconds\": %.6g, \"narrow_phase_seconds\": %.6g, "
+      "\"ns_per_candidate\": %.6g, \"candidates_per_collision\": %.6g, "
+      "\"second_step_broad_phase_seconds\": %.6g, \"second_step_rebuilt\": %s",
+      paths[0].c_str(), frames.faces.size(), frames.t0.size() / 3,
+      std::string(ccd::to_string(method)).c_str(), threads, motion, standing,
+      best.vertex_face_candidates, best.edge_edge_candidates, best.vertex_face.size(),
+      best.edge_edge.size(), best.broad_phase_seconds, best.narrow_phase_seconds,
+      best.candidates() ? 1e9 * best.narrow_phase_seconds / static_cast<double>(best.candidates())
+                        : 0.0,
+      collisions ? static_cast<double>(best.candidates()) / static_cast<double>(collisions) : 0.0,
+      second.broad_phase_seconds, second.static_boxes_rebuilt ? "true" : "false");
+  if (structures) {
+    const auto print = [](const char* name, const StructureTime& t) {
+      std::printf(", \"%s_overlaps\": %zu, \"%s_seconds\": %.6g", name, t.overlaps, name,
+                  t.seconds);
+    };
+    if (structures->all_pairs) print("all_pairs", *structures->all_pairs);
+    print("sweep_and_prune", structures->sweep_and_prune);
+    print("tree", structures->tree);
+  }
+  std::printf("}\n");
+  return 0;
+}
