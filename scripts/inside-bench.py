@@ -14,12 +14,13 @@ printed as shortest round-trip decimals, seeded. Times come from the tools' own 
 (classification only, loading and parsing excluded); memory is each process's peak
 resident set (wait4). Standard library only."""
 import json
-import math
 import os
 import random
 import subprocess
 import sys
 import tempfile
+
+from loglog_svg import loglog_svg
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXACTGEO = os.path.join(HERE, "build", "bin", "exactgeo")
@@ -98,52 +99,12 @@ def report(jsonl, svg_path):
               f"{r['peak_mib']:.0f} |")
 
     # The plot: Mpoints/s against faces (both log scale), one line per tool/method/threads.
-    width, height, left, bottom, top, right = 640, 360, 70, 50, 20, 190
     series = {}
     for r in rows:
         series.setdefault(f"{r['tool']} {r['method']} ({r['threads']} thr)", []).append(
             (r["faces"], r["points"] / r["seconds"] / 1e6))
-    xs = [math.log10(f) for s in series.values() for f, _ in s]
-    ys = [math.log10(v) for s in series.values() for _, v in s]
-    x_lo, x_hi = math.floor(min(xs)), math.ceil(max(xs))
-    y_lo, y_hi = math.floor(min(ys)), math.ceil(max(ys))
-    pw, ph = width - left - right, height - top - bottom
-
-    def sx(v):
-        return left + (math.log10(v) - x_lo) / (x_hi - x_lo) * pw
-
-    def sy(v):
-        return top + ph - (math.log10(v) - y_lo) / (y_hi - y_lo) * ph
-
-    out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-           f'font-family="sans-serif" font-size="11">',
-           f'<rect width="{width}" height="{height}" fill="white"/>',
-           f'<rect x="{left}" y="{top}" width="{pw}" height="{ph}" fill="none" stroke="#888"/>']
-    for e in range(x_lo, x_hi + 1):
-        x = left + (e - x_lo) / (x_hi - x_lo) * pw
-        out.append(f'<text x="{x}" y="{top + ph + 15}" text-anchor="middle">1e{e}</text>')
-    for e in range(y_lo, y_hi + 1):
-        y = top + ph - (e - y_lo) / (y_hi - y_lo) * ph
-        out.append(f'<text x="{left - 6}" y="{y + 4}" text-anchor="end">1e{e}</text>')
-    out.append(f'<text x="{left + pw / 2}" y="{height - 12}" text-anchor="middle">faces</text>')
-    out.append(f'<text x="16" y="{top + ph / 2}" transform="rotate(-90 16 {top + ph / 2})" '
-               f'text-anchor="middle">million points per second</text>')
-    palette = ["#1b7837", "#b2182b", "#5aae61", "#ef8a62", "#762a83", "#2166ac"]
-    for i, (name, points) in enumerate(sorted(series.items())):
-        colour = palette[i % len(palette)]
-        points.sort()
-        path = " ".join(f"{sx(f):.1f},{sy(v):.1f}" for f, v in points)
-        out.append(f'<polyline points="{path}" fill="none" stroke="{colour}" stroke-width="2"/>')
-        for f, v in points:
-            out.append(f'<circle cx="{sx(f):.1f}" cy="{sy(v):.1f}" r="3" fill="{colour}"/>')
-        y = top + 10 + 16 * i
-        out.append(f'<line x1="{width - right + 10}" y1="{y}" x2="{width - right + 30}" y2="{y}" '
-                   f'stroke="{colour}" stroke-width="2"/>')
-        out.append(f'<text x="{width - right + 35}" y="{y + 4}">{name}</text>')
-    out.append("</svg>")
     with open(svg_path, "w") as f:
-        f.write("\n".join(out) + "\n")
-
+        f.write(loglog_svg(series, "faces", "million points per second"))
 
 if __name__ == "__main__":
     if len(sys.argv) >= 2 and sys.argv[1] == "run":

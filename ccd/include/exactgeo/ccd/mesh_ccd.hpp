@@ -9,12 +9,12 @@
 //
 //   broad phase   swept boxes (the box of a primitive's corners at t0 and t1 contains the
 //                 primitive at every time in between, because each corner moves on a
-//                 segment and a box is convex), rounded outward to float; sweep and prune
-//                 along one axis (docs/ccd.md says why this structure). Pairs sharing a
-//                 vertex are skipped, and so are pairs whose primitives both stand still
-//                 (every corner has p_t0 == p_t1): their distance is constant over the step.
-//                 The boxes of standing primitives are sorted once and kept while they
-//                 stay where they are.
+//                 segment and a box is convex), rounded outward to float, in a box tree
+//                 (internal/box_tree.hpp; docs/ccd.md says why this structure). Pairs
+//                 sharing a vertex are skipped, and so are pairs whose primitives both
+//                 stand still (every corner has p_t0 == p_t1): their distance is constant
+//                 over the step. The tree of standing primitives is built once and kept
+//                 while they stay where they are.
 //   narrow phase  vertex_face_ccd / edge_edge_ccd (ccd.hpp) on every candidate, in
 //                 parallel. The output is sorted, so it is the same for every thread count.
 //
@@ -76,7 +76,7 @@ struct MeshCcdResult {
   std::size_t edge_edge_candidates = 0;
   /// With time_of_impact_width and a collision: no root before start, a root by end.
   std::optional<TimeInterval> time_of_impact;
-  /// True when the boxes of standing primitives were re-sorted in this step.
+  /// True when the tree of standing primitives was rebuilt in this step.
   bool static_boxes_rebuilt = false;
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
@@ -96,7 +96,7 @@ class MeshCcd {
 
   /// Every colliding pair over the step. Throws std::invalid_argument when a frame does not
   /// hold 3 * vertex_count() values or holds a non-finite one (naming the vertex).
-  /// Not const: it keeps the sorted boxes of standing primitives for the next step. One
+  /// Not const: it keeps the tree of standing primitives for the next step. One
   /// MeshCcd per thread; different MeshCcd objects are independent.
   MeshCcdResult step(const MeshFrames& frames, const MeshCcdOptions& options = {});
 
