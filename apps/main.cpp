@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "cli/ccd_command.hpp"
+#include "cli/ccd_mesh_command.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/info_command.hpp"
 #include "cli/inside_command.hpp"
@@ -45,6 +46,8 @@ int main(int argc, char** argv) {
   CLI::App& predicate_command = exactgeo::cli::add_predicate_command(app, predicate);
   exactgeo::cli::CcdCommandOptions ccd;
   CLI::App& ccd_command = exactgeo::cli::add_ccd_command(app, ccd);
+  exactgeo::cli::CcdMeshOptions ccd_mesh;
+  CLI::App& ccd_mesh_command = exactgeo::cli::add_ccd_mesh_command(app, ccd_mesh);
   exactgeo::cli::InfoOptions info;
   CLI::App& info_command = exactgeo::cli::add_info_command(app, info);
   exactgeo::cli::InsideCommandOptions inside;
@@ -65,6 +68,9 @@ int main(int argc, char** argv) {
   if (ccd_command.parsed()) {
     ccd.progress = isatty(STDERR_FILENO) != 0;
     return to_int(exactgeo::cli::run_ccd(ccd, std::cout, std::cerr));
+  }
+  if (ccd_mesh_command.parsed()) {
+    return to_int(exactgeo::cli::run_ccd_mesh(ccd_mesh, std::cout, std::cerr));
   }
   if (inside_command.parsed()) {
     inside.progress = isatty(STDERR_FILENO) != 0;

@@ -2,7 +2,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <charconv>
 #include <exception>
 #include <iomanip>
 #include <optional>
@@ -19,13 +18,6 @@ namespace exactgeo::cli {
 namespace {
 
 using inside::MeshCheck;
-
-/// The shortest decimal that reads back as exactly x.
-std::string shortest(double x) {
-  char buf[32];
-  const auto result = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, result.ptr);
-}
 
 /// "[x, y, z]" (the same text is a JSON array).
 std::string point_text(const Point3& p) {

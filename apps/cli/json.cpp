@@ -1,5 +1,6 @@
 #include "cli/json.hpp"
 
+#include <charconv>
 #include <cstdio>
 
 namespace exactgeo::cli {
@@ -31,6 +32,12 @@ std::string json_string(std::string_view text) {
     }
   }
   return out + "\"";
+}
+
+std::string shortest(double x) {
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, result.ptr);
 }
 
 }  // namespace exactgeo::cli

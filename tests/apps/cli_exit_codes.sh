@@ -165,4 +165,128 @@ expect_in "inside error names the line" "$message" '<stdin>:1: expected 3 coordi
 message=$(printf '0 0 0\n' | "$exe" inside "$meshes/negative/corner_with_hole.off" 2>&1 >/dev/null)
 expect_in "inside open mesh message" "$message" 'corner_with_hole.off: mesh is not closed: '
 
+# ccd-mesh: two frames of one triangle mesh (the start and the end of a step); sorted pairs,
+# 0-based; 2 for anything that is not the same triangle mesh twice.
+# Face 0 stands on z = 0. vf: vertex 3 falls through it at t = 1/2 (its triangle's other
+# corners stay above). ee: face 1 slides along y, its edge 3-4 crossing edge 0-1 at t = 1/2.
+# still: vertex 3 stops above face 0.
+tri='v 0 0 0\nv 1 0 0\nv 0 1 0\n'
+printf "${tri}v 0.25 0.25 1\nv 0.3 0.25 5\nv 0.25 0.3 5\nf 1 2 3\nf 4 5 6\n" >"$scratch/vf0.obj"
+printf "${tri}v 0.25 0.25 -1\nv 0.3 0.25 3\nv 0.25 0.3 3\nf 1 2 3\nf 4 5 6\n" >"$scratch/vf1.obj"
+printf "${tri}v 0.25 0.25 0.5\nv 0.3 0.25 4.5\nv 0.25 0.3 4.5\nf 1 2 3\nf 4 5 6\n" \
+  >"$scratch/still1.obj"
+printf "${tri}v 0.5 -0.25 -1\nv 0.5 -0.25 1\nv 0.5 -1 0.5\nf 1 2 3\nf 4 5 6\n" >"$scratch/ee0.obj"
+printf "${tri}v 0.5 0.25 -1\nv 0.5 0.25 1\nv 0.5 -0.5 0.5\nf 1 2 3\nf 4 5 6\n" >"$scratch/ee1.obj"
+vf0="$scratch/vf0.obj"
+vf1="$scratch/vf1.obj"
+mesh_keys=('"method": "exact"' '"candidates": ' '"vertex_face_candidates": '
+           '"edge_edge_candidates": ' '"seconds": ' '"broad_phase_seconds": '
+           '"narrow_phase_seconds": ')
+json=$("$exe" ccd-mesh --json "$vf0" "$vf1")
+expect_in "ccd-mesh --json (vertex falls through)" "$json" "${mesh_keys[@]}" \
+  '"vertex_face": [[3, 0]], "edge_edge": []'
+case "$json" in
+  *time_of_impact*) echo "FAIL: ccd-mesh --json without --toi has time_of_impact: $json"
+                    failures=$((failures + 1)) ;;
+esac
+if [ "$(printf '%s\n' "$json" | wc -l)" != 1 ]; then
+  echo "FAIL: ccd-mesh --json is not one line: $json"
+  failures=$((failures + 1))
+fi
+expect_toi() {  # expect_toi <description> <json> <width>: the interval holds t = 1/2
+  local start end
+  read -r start end < <(printf '%s' "$2" |
+    sed -n 's/.*"time_of_impact": \[\([^,]*\), \([^]]*\)\].*/\1 \2/p')
+  if ! awk -v s="${start:-x}" -v e="${end:-x}" -v w="$3" \
+       'BEGIN { exit !(s + 0 == s && e + 0 == e && s <= 0.5 && 0.5 <= e && e - s <= w) }'; then
+    echo "FAIL: $1: [$start, $end] should hold 0.5 and be at most $3 wide: $2"
+    failures=$((failures + 1))
+  fi
+}
+json=$("$exe" ccd-mesh --json --toi "$vf0" "$vf1")
+expect_toi "ccd-mesh --toi" "$json" 1e-6
+json=$("$exe" ccd-mesh --json --toi-width 0.25 --threads 1 "$scratch/ee0.obj" "$scratch/ee1.obj")
+expect_in "ccd-mesh --json (edge crosses edge)" "$json" "${mesh_keys[@]}" \
+  '"vertex_face": [], "edge_edge": [[0, 1, 3, 4]]' '"time_of_impact": ['
+expect_toi "ccd-mesh --toi-width 0.25" "$json" 0.25
+json=$("$exe" ccd-mesh --json --toi "$vf0" "$scratch/still1.obj")
+expect_in "ccd-mesh --json (no collision)" "$json" "${mesh_keys[@]}" \
+  '"vertex_face": [], "edge_edge": []' '"time_of_impact": null'
+json=$("$exe" ccd-mesh --json --method parity "$vf0" "$vf1")
+expect_in "ccd-mesh --json --method parity" "$json" '"method": "parity"' \
+  '"vertex_face": [[3, 0]], "edge_edge": []'
+table=$("$exe" ccd-mesh --toi "$vf0" "$vf1")
+expect_in "ccd-mesh report (vertex falls through)" "$table" \
+  'mesh                6 vertices, 2 faces, 6 edges' 'method              exact' \
+  'vertex-face pairs   1' 'edge-edge pairs     0' 'candidates          ' \
+  'time of impact      [' 'broad phase         ' 'narrow phase        '
+if [ "$(printf '%s\n' "$table" | tail -n 1)" != "vertex-face 3 0" ]; then
+  echo "FAIL: ccd-mesh report should end with 'vertex-face 3 0': $table"
+  failures=$((failures + 1))
+fi
+table=$("$exe" ccd-mesh "$scratch/ee0.obj" "$scratch/ee1.obj")
+pairs=$(printf '%s\n' "$table" | grep -E '^(vertex-face|edge-edge) [0-9]')
+if [ "$pairs" != "edge-edge 0 1 3 4" ]; then
+  echo "FAIL: ccd-mesh report should list exactly 'edge-edge 0 1 3 4': $table"
+  failures=$((failures + 1))
+fi
+table=$("$exe" ccd-mesh --toi "$vf0" "$scratch/still1.obj")
+expect_in "ccd-mesh report (no collision)" "$table" 'vertex-face pairs   0' \
+  'edge-edge pairs     0' 'time of impact      none'
+expect 0 "ccd-mesh help" "" ccd-mesh --help
+expect 0 "ccd-mesh no collision" "" ccd-mesh "$vf0" "$scratch/still1.obj"
+expect 0 "ccd-mesh collision" "" ccd-mesh "$vf0" "$vf1"
+
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' >"$scratch/quad.obj"
+printf "${tri}v 0.25 0.25 -1\nv 0.3 0.25 3\nv 0.25 0.3 3\nf 1 2 3\nf 4 6 5\n" \
+  >"$scratch/flipped1.obj"
+printf "${tri}v 0.25 0.25 -1\nv 0.3 0.25 3\nv 0.25 0.3 3\nv 9 9 9\nf 1 2 3\nf 4 5 6\n" \
+  >"$scratch/extra1.obj"
+printf "${tri}v 0.25 0.25 -1\nv 0.3 0.25 3\nv 0.25 0.3 3\nf 1 2 3\n" >"$scratch/oneface1.obj"
+printf "${tri}v 0.25 0.25 nan\nv 0.3 0.25 3\nv 0.25 0.3 3\nf 1 2 3\nf 4 5 6\n" \
+  >"$scratch/nan1.obj"
+printf "${tri}v 0.25 0.25 1\nv 0.3 0.25 5\nv 0.25 0.3 5\nf 1 2 3\nf 4 4 6\n" \
+  >"$scratch/repeat0.obj"
+printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n%b\n' \
+  'endloop\nendfacet\nendsolid t' >"$scratch/tri.stl"
+expect 2 "ccd-mesh no frames" "" ccd-mesh
+expect 2 "ccd-mesh one frame" "" ccd-mesh "$vf0"
+expect 2 "ccd-mesh quads" "" ccd-mesh "$scratch/quad.obj" "$scratch/quad.obj"
+expect 2 "ccd-mesh quads, json" "" ccd-mesh --json "$vf0" "$scratch/quad.obj"
+expect 2 "ccd-mesh different face" "" ccd-mesh --json "$vf0" "$scratch/flipped1.obj"
+expect 2 "ccd-mesh different vertex count" "" ccd-mesh --json "$vf0" "$scratch/extra1.obj"
+expect 2 "ccd-mesh different face count" "" ccd-mesh --json "$vf0" "$scratch/oneface1.obj"
+expect 2 "ccd-mesh NaN coordinate" "" ccd-mesh --json "$vf0" "$scratch/nan1.obj"
+expect 2 "ccd-mesh repeated corner" "" ccd-mesh --json "$scratch/repeat0.obj" \
+  "$scratch/repeat0.obj"
+expect 2 "ccd-mesh missing frame0" "" ccd-mesh --json /nonexistent/frame0.obj "$vf1"
+expect 2 "ccd-mesh missing frame1" "" ccd-mesh --json "$vf0" /nonexistent/frame1.obj
+expect 2 "ccd-mesh assimp format" "" ccd-mesh --json "$scratch/tri.stl" "$scratch/tri.stl"
+expect 2 "ccd-mesh method double" "" ccd-mesh --method double "$vf0" "$vf1"
+expect 2 "ccd-mesh unknown method" "" ccd-mesh --method bogus "$vf0" "$vf1"
+expect 2 "ccd-mesh --toi with parity" "" ccd-mesh --toi --method parity "$vf0" "$vf1"
+expect 2 "ccd-mesh zero --toi-width" "" ccd-mesh --toi-width 0 "$vf0" "$vf1"
+expect 2 "ccd-mesh NaN --toi-width" "" ccd-mesh --toi-width nan "$vf0" "$vf1"
+expect 2 "ccd-mesh zero threads" "" ccd-mesh --threads 0 "$vf0" "$vf1"
+message=$("$exe" ccd-mesh "$vf0" "$scratch/quad.obj" 2>&1 >/dev/null)
+expect_in "ccd-mesh quads message" "$message" \
+  'triangle meshes are needed: '"$scratch"'/quad.obj has 1 quad (first: face 0)'
+message=$("$exe" ccd-mesh "$vf0" "$scratch/flipped1.obj" 2>&1 >/dev/null)
+expect_in "ccd-mesh different face message" "$message" \
+  "face 1 is [3, 4, 5] in $vf0 and [3, 5, 4] in $scratch/flipped1.obj"
+message=$("$exe" ccd-mesh "$vf0" "$scratch/extra1.obj" 2>&1 >/dev/null)
+expect_in "ccd-mesh vertex count message" "$message" \
+  "$vf0 has 6 vertices, $scratch/extra1.obj has 7"
+message=$("$exe" ccd-mesh "$vf0" "$scratch/nan1.obj" 2>&1 >/dev/null)
+expect_in "ccd-mesh NaN message" "$message" "$scratch/nan1.obj:4: "
+message=$("$exe" ccd-mesh "$scratch/repeat0.obj" "$scratch/repeat0.obj" 2>&1 >/dev/null)
+expect_in "ccd-mesh repeated corner message" "$message" "$scratch/repeat0.obj: " 'face 1: '
+message=$("$exe" ccd-mesh "$vf0" /nonexistent/frame1.obj 2>&1 >/dev/null)
+expect_in "ccd-mesh missing file message" "$message" '/nonexistent/frame1.obj: cannot open file'
+message=$("$exe" ccd-mesh "$scratch/tri.stl" "$scratch/tri.stl" 2>&1 >/dev/null)
+expect_in "ccd-mesh assimp format message" "$message" \
+  "$scratch/tri.stl: ccd-mesh reads OBJ, OFF and PLY files only"
+message=$("$exe" ccd-mesh "$vf0" "$scratch/oneface1.obj" 2>&1 >/dev/null)
+expect_in "ccd-mesh face count message" "$message" "$vf0 has 2 faces, $scratch/oneface1.obj has 1"
+
 exit $((failures > 0))

@@ -1,0 +1,39 @@
+#pragma once
+
+// `exactgeo ccd-mesh FRAME0 FRAME1`: every colliding vertex-face and edge-edge pair of a
+// triangle mesh over one time step, from two files holding the same mesh at the start and
+// at the end of the step (DESIGN.md section 4; exactgeo/ccd/mesh_ccd.hpp does the work).
+
+#include <iosfwd>
+#include <string>
+
+#include "cli/exit_code.hpp"
+#include "exactgeo/ccd/ccd.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace exactgeo::cli {
+
+struct CcdMeshOptions {
+  std::string frame0;  ///< positions at the start of the step
+  std::string frame1;  ///< positions at the end; the same vertices and faces
+  ccd::Method method = ccd::Method::exact;
+  bool time_of_impact = false;         ///< also bracket the earliest time of impact
+  double time_of_impact_width = 1e-6;  ///< the widest bracket accepted
+  unsigned threads = 0;                ///< 0: one per hardware thread
+  bool split_polygons = false;
+  bool json = false;
+};
+
+/// Loads both frames exactly (OBJ, OFF or PLY, no welding) and checks that they hold the
+/// same triangles over the same vertex count, then runs one step and reports on `out`.
+/// Collisions or not, ExitCode::success; any usage or input error prints nothing on `out`,
+/// the reason (naming the file) on `err`, and returns ExitCode::input_error.
+ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ostream& err);
+
+/// Registers the subcommand on `app`; `options` must outlive the parse.
+CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options);
+
+}  // namespace exactgeo::cli
