@@ -45,8 +45,13 @@ struct Candidates {
 struct BlockCollisions {
   std::vector<VertexFacePair> vertex_face;
   std::vector<EdgeIndexPair> edge_edge;
-  std::optional<TimeInterval> earliest;
+  /// With a time of impact asked for: each colliding pair's bracket, vertex-face first.
+  std::vector<TimeInterval> brackets;
 };
+
+/// The first round of the mesh's time of impact brackets every colliding pair to this
+/// width; only the pairs that can still hold the earliest root are refined further.
+constexpr double kCoarseWidth = 1.0 / 64;
 
 constexpr std::size_t kQueryBlock = 1024;  // query boxes per broad-phase job
 constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
@@ -241,6 +246,42 @@ std::span<const Edge> MeshCcd::edges() const noexcept {
   return state_->edges;
 }
 
+namespace {
+
+/// The mesh's earliest root, bracketed to `width`, from every colliding pair's coarse
+/// bracket (result's pairs, in order: vertex-face, then edge-edge). Some pair has a root
+/// by E, the smallest bracket end, so a pair whose bracket starts after E has no root
+/// before E and cannot hold the earliest one: only the others are refined.
+TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeInterval> brackets,
+                             const MeshFrames& frames, std::span<const Triangle> faces,
+                             double width, const MeshCcdOptions& options) {
+  std::optional<TimeInterval> coarse;
+  for (const TimeInterval& t : brackets)
+    keep_earliest(coarse, t);
+  if (width >= kCoarseWidth) return *coarse;
+  std::vector<std::size_t> open;
+  for (std::size_t i = 0; i < brackets.size(); ++i) {
+    if (brackets[i].start <= coarse->end) open.push_back(i);
+  }
+  const Options fine{options.method, width};
+  std::vector<TimeInterval> refined(open.size());
+  exactgeo::internal::for_each_block(open.size(), options.threads, [&](std::size_t k) {
+    const std::size_t i = open[k];
+    const Result r =
+        i < result.vertex_face.size()
+            ? vertex_face_ccd(vertex_face_query(frames, faces, result.vertex_face[i]), fine)
+            : edge_edge_ccd(
+                  edge_edge_query(frames, result.edge_edge[i - result.vertex_face.size()]), fine);
+    refined[k] = r.time_of_impact.value_or(brackets[i]);
+  });
+  std::optional<TimeInterval> earliest;
+  for (const TimeInterval& t : refined)
+    keep_earliest(earliest, t);
+  return *earliest;
+}
+
+}  // namespace
+
 MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& options) {
   State& s = *state_;
   check_frame(frames.positions_t0, s.vertex_count, "positions_t0");
@@ -311,14 +352,16 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
 
   // Narrow phase: blocks of candidates, vertex-face first, then edge-edge.
   const auto narrow_start = std::chrono::steady_clock::now();
-  const Options pair_options{options.method, options.time_of_impact_width};
+  const std::optional<double> width = options.time_of_impact_width;
+  const Options pair_options{options.method,
+                             width ? std::optional(std::max(*width, kCoarseWidth)) : std::nullopt};
   const std::size_t vf_blocks = (candidates.vertex_face.size() + kNarrowBlock - 1) / kNarrowBlock;
   const std::size_t ee_blocks = (candidates.edge_edge.size() + kNarrowBlock - 1) / kNarrowBlock;
   std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);
   exactgeo::internal::for_each_block(collisions.size(), options.threads, [&](std::size_t b) {
     BlockCollisions& out = collisions[b];
     const auto note = [&](const Result& r) {
-      if (r.time_of_impact) keep_earliest(out.earliest, *r.time_of_impact);
+      if (r.collision && r.time_of_impact) out.brackets.push_back(*r.time_of_impact);
       return r.collision;
     };
     if (b < vf_blocks) {
@@ -339,11 +382,17 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
         out.edge_edge.push_back(pair);
     }
   });
+  // Blocks of vertex-face candidates come first, so this is the order of the pairs in
+  // result (vertex-face, then edge-edge), which is also the order of the brackets.
+  std::vector<TimeInterval> brackets;
   for (const BlockCollisions& c : collisions) {
     result.vertex_face.insert(result.vertex_face.end(), c.vertex_face.begin(), c.vertex_face.end());
     for (const EdgeIndexPair& pair : c.edge_edge)
       result.edge_edge.push_back({s.edges[pair.a], s.edges[pair.b]});
-    if (c.earliest) keep_earliest(result.time_of_impact, *c.earliest);
+    brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
+  }
+  if (width && !brackets.empty()) {
+    result.time_of_impact = refine_earliest(result, brackets, frames, s.faces, *width, options);
   }
   std::sort(result.vertex_face.begin(), result.vertex_face.end());
   std::sort(result.edge_edge.begin(), result.edge_edge.end());
