@@ -37,5 +37,6 @@ function(exactgeo_library folder)
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:include>)
   target_compile_features(${target} PUBLIC cxx_std_20)
-  target_link_libraries(${target} PRIVATE exactgeo_warnings)
+  # Build-only: the warnings (and -Werror) are ours, not an installed consumer's.
+  target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:exactgeo_warnings>)
 endfunction()

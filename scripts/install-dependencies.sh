@@ -4,7 +4,7 @@
 set -eu
 
 packages="g++ cmake make pkg-config libgmp-dev libgtest-dev libgmock-dev libbenchmark-dev
-libcli11-dev libembree-dev libassimp-dev"
+libcli11-dev libembree-dev libassimp-dev libeigen3-dev"
 
 missing=""
 for p in $packages; do

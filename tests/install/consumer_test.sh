@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# consumer_test.sh BUILD_DIR SOURCE_DIR WORK_DIR: installs the build tree BUILD_DIR into
+# WORK_DIR/prefix, then configures, builds and runs the consumer project SOURCE_DIR
+# against that prefix only, with the build's compiler, build type and sanitizers. Any
+# failure fails the test (ctest install.consumer).
+set -eu
+build_dir=$1
+source_dir=$2
+work_dir=$3
+
+# A value from the exactgeo build's cache (NAME:TYPE=value), empty if unset.
+cache() { sed -n "s/^$1:[A-Z]*=//p" "$build_dir/CMakeCache.txt"; }
+build_type=$(cache CMAKE_BUILD_TYPE)
+compiler=$(cache CMAKE_CXX_COMPILER)
+flags=""
+if [ "$(cache EXACTGEO_SANITIZE)" = ON ]; then
+  # The installed static libraries are instrumented; the consumer must link the runtimes.
+  flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+fi
+
+rm -rf "$work_dir/prefix" "$work_dir/build"
+cmake --install "$build_dir" --prefix "$work_dir/prefix" ${build_type:+--config "$build_type"}
+
+# Only the install prefix is searched, and the dependencies a consumer need not have
+# (test and CLI packages) are switched off: find_package(exactgeo) must not want them.
+cmake -S "$source_dir" -B "$work_dir/build" --no-warn-unused-cli \
+  -DCMAKE_PREFIX_PATH="$work_dir/prefix" \
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF \
+  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON \
+  -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON \
+  -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON \
+  -DCMAKE_BUILD_TYPE="$build_type" \
+  -DCMAKE_CXX_COMPILER="$compiler" \
+  -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="$flags"
+
+found=$(sed -n 's/^exactgeo_DIR:[A-Z]*=//p' "$work_dir/build/CMakeCache.txt")
+case "$found" in
+  "$work_dir/prefix/"*) ;;
+  *) echo "consumer found exactgeo in '$found', not under $work_dir/prefix" >&2; exit 1 ;;
+esac
+
+cmake --build "$work_dir/build" ${build_type:+--config "$build_type"}
+"$work_dir/build/consumer"
