@@ -8,43 +8,17 @@
 #include <string>
 #include <utility>
 
-#include "exactgeo/ccd/internal/box_tree.hpp"
-#include "exactgeo/ccd/internal/swept_box.hpp"
+#include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
 #include "exactgeo/predicates/internal/parallel_blocks.hpp"
 
 namespace exactgeo::ccd {
 
 namespace {
 
-using internal::BoxTree;
-using internal::SweptBox;
-
-using Boxes = std::vector<SweptBox>;
-
-enum class PairKind { vertex_face, edge_edge };
-
-/// One pass of the broad phase: every query box against a tree.
-struct TreePass {
-  const Boxes* queries;
-  const BoxTree* tree;
-  PairKind kind;
-  bool same_set;  ///< queries and tree hold the same primitives: keep each pair once
-};
-
-struct EdgeIndexPair {
-  std::uint32_t a;
-  std::uint32_t b;  ///< a < b
-};
-
-struct Candidates {
-  std::vector<VertexFacePair> vertex_face;
-  std::vector<EdgeIndexPair> edge_edge;
-};
-
 /// Narrow-phase answers of one block of candidates.
 struct BlockCollisions {
   std::vector<VertexFacePair> vertex_face;
-  std::vector<EdgeIndexPair> edge_edge;
+  std::vector<internal::EdgeIndexPair> edge_edge;
   /// With a time of impact asked for: each colliding pair's bracket, vertex-face first.
   std::vector<TimeInterval> brackets;
 };
@@ -53,7 +27,6 @@ struct BlockCollisions {
 /// width; only the pairs that can still hold the earliest root are refined further.
 constexpr double kCoarseWidth = 1.0 / 64;
 
-constexpr std::size_t kQueryBlock = 1024;  // query boxes per broad-phase job
 constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
 
 std::string vertex_name(std::size_t v) {
@@ -91,14 +64,6 @@ std::vector<Edge> unique_edges(std::span<const Triangle> faces) {
   return edges;
 }
 
-bool shares_vertex(const Edge& a, const Edge& b) noexcept {
-  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
-}
-
-bool is_corner(VertexIndex v, const Triangle& f) noexcept {
-  return v == f[0] || v == f[1] || v == f[2];
-}
-
 Point3 position(std::span<const double> positions, VertexIndex v) noexcept {
   return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
 }
@@ -120,97 +85,21 @@ void keep_earliest(std::optional<TimeInterval>& earliest, const TimeInterval& t)
 }  // namespace
 
 struct MeshCcd::State {
-  std::size_t vertex_count = 0;
+  State(std::size_t count, std::span<const Triangle> triangles)
+      : vertex_count(count),
+        faces(triangles.begin(), triangles.end()),
+        edges(unique_edges(faces)),
+        broad_phase(vertex_count, faces, edges) {}
+
+  std::size_t vertex_count;
   std::vector<Triangle> faces;
   std::vector<Edge> edges;
-
-  // The boxes of standing primitives, kept while the same vertices stand at the same place.
-  bool standing_valid = false;
-  std::vector<std::uint8_t> moving;        // per vertex, when the standing boxes were built
-  std::vector<double> standing_positions;  // t0 positions then (only standing ones compared)
-  Boxes standing_vertices;
-  BoxTree standing_edges, standing_faces;
-
-  bool standing_unchanged(const std::vector<std::uint8_t>& now, const MeshFrames& frames) const;
-  void rebuild_standing(std::vector<std::uint8_t> now, const MeshFrames& frames);
-  template <std::size_t N>
-  Boxes moving_boxes(std::span<const std::array<VertexIndex, N>> primitives,
-                     const std::vector<std::uint8_t>& now, const MeshFrames& frames) const;
-  template <std::size_t N>
-  Boxes standing_boxes(std::span<const std::array<VertexIndex, N>> primitives,
-                       const MeshFrames& frames) const;
+  internal::MeshBroadPhase broad_phase;  // views faces and edges: State never moves
+  State(const State&) = delete;
+  State& operator=(const State&) = delete;
 };
 
-namespace {
-
-template <std::size_t N>
-bool any_moves(const std::array<VertexIndex, N>& corners, const std::vector<std::uint8_t>& moving) {
-  return std::any_of(corners.begin(), corners.end(), [&](VertexIndex v) { return moving[v] != 0; });
-}
-
-std::vector<std::uint8_t> moving_vertices(const MeshFrames& frames, std::size_t vertex_count) {
-  std::vector<std::uint8_t> moving(vertex_count, 0);
-  for (std::size_t i = 0; i < 3 * vertex_count; ++i) {
-    if (frames.positions_t0[i] != frames.positions_t1[i]) moving[i / 3] = 1;
-  }
-  return moving;
-}
-
-std::vector<std::array<VertexIndex, 1>> vertex_list(std::size_t vertex_count) {
-  std::vector<std::array<VertexIndex, 1>> vertices(vertex_count);
-  for (std::size_t v = 0; v < vertex_count; ++v)
-    vertices[v] = {static_cast<VertexIndex>(v)};
-  return vertices;
-}
-
-}  // namespace
-
-template <std::size_t N>
-Boxes MeshCcd::State::moving_boxes(std::span<const std::array<VertexIndex, N>> primitives,
-                                   const std::vector<std::uint8_t>& now,
-                                   const MeshFrames& frames) const {
-  Boxes boxes;
-  for (std::size_t i = 0; i < primitives.size(); ++i) {
-    if (!any_moves(primitives[i], now)) continue;
-    boxes.push_back(internal::swept_box(primitives[i], static_cast<std::uint32_t>(i),
-                                        frames.positions_t0.data(), frames.positions_t1.data()));
-  }
-  return boxes;
-}
-
-template <std::size_t N>
-Boxes MeshCcd::State::standing_boxes(std::span<const std::array<VertexIndex, N>> primitives,
-                                     const MeshFrames& frames) const {
-  Boxes boxes;
-  for (std::size_t i = 0; i < primitives.size(); ++i) {
-    if (any_moves(primitives[i], moving)) continue;
-    boxes.push_back(internal::swept_box(primitives[i], static_cast<std::uint32_t>(i),
-                                        frames.positions_t0.data(), frames.positions_t0.data()));
-  }
-  return boxes;
-}
-
-bool MeshCcd::State::standing_unchanged(const std::vector<std::uint8_t>& now,
-                                        const MeshFrames& frames) const {
-  if (!standing_valid || now != moving) return false;
-  for (std::size_t i = 0; i < 3 * vertex_count; ++i) {
-    if (moving[i / 3] == 0 && frames.positions_t0[i] != standing_positions[i]) return false;
-  }
-  return true;
-}
-
-void MeshCcd::State::rebuild_standing(std::vector<std::uint8_t> now, const MeshFrames& frames) {
-  moving = std::move(now);
-  standing_positions.assign(frames.positions_t0.begin(), frames.positions_t0.end());
-  const auto vertices = vertex_list(vertex_count);
-  standing_vertices = standing_boxes(std::span<const std::array<VertexIndex, 1>>(vertices), frames);
-  standing_edges = BoxTree(standing_boxes(std::span<const Edge>(edges), frames));
-  standing_faces = BoxTree(standing_boxes(std::span<const Triangle>(faces), frames));
-  standing_valid = true;
-}
-
-MeshCcd::MeshCcd(std::size_t vertex_count, std::span<const Triangle> faces)
-    : state_(std::make_unique<State>()) {
+MeshCcd::MeshCcd(std::size_t vertex_count, std::span<const Triangle> faces) {
   if (vertex_count > std::numeric_limits<VertexIndex>::max()) {
     throw std::invalid_argument("MeshCcd: more than 2^32 - 1 vertices");
   }
@@ -227,9 +116,7 @@ MeshCcd::MeshCcd(std::size_t vertex_count, std::span<const Triangle> faces)
       if (t[i] == t[(i + 1) % 3]) throw problem("repeated corner " + std::to_string(t[i]));
     }
   }
-  state_->vertex_count = vertex_count;
-  state_->faces.assign(faces.begin(), faces.end());
-  state_->edges = unique_edges(faces);
+  state_ = std::make_unique<State>(vertex_count, faces);
 }
 
 MeshCcd::MeshCcd(MeshCcd&&) noexcept = default;
@@ -289,63 +176,8 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
 
-  auto now = moving_vertices(frames, s.vertex_count);
-  if (!s.standing_unchanged(now, frames)) {
-    s.rebuild_standing(now, frames);
-    result.static_boxes_rebuilt = true;
-  }
-  const auto vertices = vertex_list(s.vertex_count);
-  const Boxes moving_vertices_boxes =
-      s.moving_boxes(std::span<const std::array<VertexIndex, 1>>(vertices), now, frames);
-  const Boxes moving_edges = s.moving_boxes(std::span<const Edge>(s.edges), now, frames);
-  const BoxTree moving_edge_tree(moving_edges);
-  const BoxTree moving_face_tree(s.moving_boxes(std::span<const Triangle>(s.faces), now, frames));
-
-  // Every pair with at least one moving primitive, each once.
-  const TreePass passes[] = {
-      {&moving_vertices_boxes, &moving_face_tree, PairKind::vertex_face, false},
-      {&moving_vertices_boxes, &s.standing_faces, PairKind::vertex_face, false},
-      {&s.standing_vertices, &moving_face_tree, PairKind::vertex_face, false},
-      {&moving_edges, &moving_edge_tree, PairKind::edge_edge, true},
-      {&moving_edges, &s.standing_edges, PairKind::edge_edge, false},
-  };
-  struct QueryJob {
-    const TreePass* pass;
-    std::size_t begin, end;
-  };
-  std::vector<QueryJob> jobs;
-  for (const TreePass& pass : passes) {
-    if (pass.tree->empty()) continue;
-    for (std::size_t b = 0; b < pass.queries->size(); b += kQueryBlock)
-      jobs.push_back({&pass, b, std::min(pass.queries->size(), b + kQueryBlock)});
-  }
-  std::vector<Candidates> found(jobs.size());
-  exactgeo::internal::for_each_block(jobs.size(), options.threads, [&](std::size_t j) {
-    const QueryJob& job = jobs[j];
-    Candidates& out = found[j];
-    for (std::size_t q = job.begin; q < job.end; ++q) {
-      const SweptBox& box = (*job.pass->queries)[q];
-      const std::uint32_t mine = box.id;
-      if (job.pass->kind == PairKind::vertex_face) {
-        job.pass->tree->query(box, [&](std::uint32_t face) {
-          if (!is_corner(mine, s.faces[face])) out.vertex_face.push_back({mine, face});
-        });
-      } else {
-        job.pass->tree->query(box, [&](std::uint32_t other) {
-          if (job.pass->same_set && other <= mine) return;
-          if (!shares_vertex(s.edges[mine], s.edges[other]))
-            out.edge_edge.push_back({std::min(mine, other), std::max(mine, other)});
-        });
-      }
-    }
-  });
-  Candidates candidates;
-  for (Candidates& c : found) {
-    candidates.vertex_face.insert(candidates.vertex_face.end(), c.vertex_face.begin(),
-                                  c.vertex_face.end());
-    candidates.edge_edge.insert(candidates.edge_edge.end(), c.edge_edge.begin(), c.edge_edge.end());
-    c = {};
-  }
+  const internal::MeshCandidates candidates = s.broad_phase.candidates(frames, options.threads);
+  result.static_boxes_rebuilt = candidates.standing_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();
   result.broad_phase_seconds = seconds_since(broad_start);
@@ -376,7 +208,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
     const std::size_t first = (b - vf_blocks) * kNarrowBlock;
     const std::size_t end = std::min(candidates.edge_edge.size(), first + kNarrowBlock);
     for (std::size_t i = first; i < end; ++i) {
-      const EdgeIndexPair pair = candidates.edge_edge[i];
+      const internal::EdgeIndexPair pair = candidates.edge_edge[i];
       const EdgeEdgePair edges{s.edges[pair.a], s.edges[pair.b]};
       if (note(edge_edge_ccd(edge_edge_query(frames, edges), pair_options)))
         out.edge_edge.push_back(pair);
@@ -387,7 +219,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   std::vector<TimeInterval> brackets;
   for (const BlockCollisions& c : collisions) {
     result.vertex_face.insert(result.vertex_face.end(), c.vertex_face.begin(), c.vertex_face.end());
-    for (const EdgeIndexPair& pair : c.edge_edge)
+    for (const internal::EdgeIndexPair& pair : c.edge_edge)
       result.edge_edge.push_back({s.edges[pair.a], s.edges[pair.b]});
     brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
   }

@@ -1,0 +1,59 @@
+#pragma once
+
+// The broad phase of mesh-level CCD (mesh_ccd.hpp): the vertex-face and edge-edge pairs
+// whose swept boxes overlap, without pairs sharing a vertex and without pairs whose
+// corners all stand still. Standing primitives live in their own trees, kept from step to
+// step while the same vertices stand at the same place.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "exactgeo/ccd/internal/box_tree.hpp"
+#include "exactgeo/ccd/internal/swept_box.hpp"
+#include "exactgeo/ccd/mesh_ccd.hpp"
+
+namespace exactgeo::ccd::internal {
+
+/// Two edges by their index in the mesh's sorted edge list, a < b.
+struct EdgeIndexPair {
+  std::uint32_t a;
+  std::uint32_t b;
+};
+
+struct MeshCandidates {
+  std::vector<VertexFacePair> vertex_face;
+  std::vector<EdgeIndexPair> edge_edge;
+  bool standing_rebuilt = false;  ///< the standing trees were (re)built in this call
+};
+
+class MeshBroadPhase {
+ public:
+  /// `faces` and `edges` (sorted, unique) must outlive this object and stay unchanged.
+  MeshBroadPhase(std::size_t vertex_count, std::span<const Triangle> faces,
+                 std::span<const Edge> edges)
+      : vertex_count_(vertex_count), faces_(faces), edges_(edges) {}
+
+  /// Every candidate pair of the step, in an order that depends only on the input.
+  /// Precondition: frames hold 3 * vertex_count finite values each.
+  MeshCandidates candidates(const MeshFrames& frames, unsigned threads);
+
+ private:
+  using Boxes = std::vector<SweptBox>;
+
+  bool standing_unchanged(const std::vector<std::uint8_t>& moving, const MeshFrames& frames) const;
+  void rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames);
+
+  std::size_t vertex_count_;
+  std::span<const Triangle> faces_;
+  std::span<const Edge> edges_;
+
+  bool standing_valid_ = false;
+  std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
+  std::vector<double> standing_positions_;  // t0 positions then (standing ones compared)
+  Boxes standing_vertices_;
+  BoxTree standing_edges_, standing_faces_;
+};
+
+}  // namespace exactgeo::ccd::internal

@@ -1,0 +1,154 @@
+#include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
+
+#include <algorithm>
+
+#include "exactgeo/predicates/internal/parallel_blocks.hpp"
+
+namespace exactgeo::ccd::internal {
+
+namespace {
+
+using Boxes = std::vector<SweptBox>;
+
+enum class PairKind { vertex_face, edge_edge };
+
+/// One pass of the broad phase: every query box against a tree.
+struct TreePass {
+  const Boxes* queries;
+  const BoxTree* tree;
+  PairKind kind;
+  bool same_set;  ///< queries and tree hold the same primitives: keep each pair once
+};
+
+constexpr std::size_t kQueryBlock = 1024;  // query boxes per job
+
+bool shares_vertex(const Edge& a, const Edge& b) noexcept {
+  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
+}
+
+bool is_corner(VertexIndex v, const Triangle& f) noexcept {
+  return v == f[0] || v == f[1] || v == f[2];
+}
+
+template <std::size_t N>
+bool any_moves(const std::array<VertexIndex, N>& corners, const std::vector<std::uint8_t>& moving) {
+  return std::any_of(corners.begin(), corners.end(), [&](VertexIndex v) { return moving[v] != 0; });
+}
+
+std::vector<std::uint8_t> moving_vertices(const MeshFrames& frames, std::size_t vertex_count) {
+  std::vector<std::uint8_t> moving(vertex_count, 0);
+  for (std::size_t i = 0; i < 3 * vertex_count; ++i) {
+    if (frames.positions_t0[i] != frames.positions_t1[i]) moving[i / 3] = 1;
+  }
+  return moving;
+}
+
+std::vector<std::array<VertexIndex, 1>> vertex_list(std::size_t vertex_count) {
+  std::vector<std::array<VertexIndex, 1>> vertices(vertex_count);
+  for (std::size_t v = 0; v < vertex_count; ++v)
+    vertices[v] = {static_cast<VertexIndex>(v)};
+  return vertices;
+}
+
+/// The swept boxes of the primitives whose corners move (`moving` true) or all stand
+/// still (`moving` false).
+template <std::size_t N>
+Boxes boxes_of(std::span<const std::array<VertexIndex, N>> primitives,
+               const std::vector<std::uint8_t>& moving_vertex, bool moving,
+               const MeshFrames& frames) {
+  Boxes boxes;
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    if (any_moves(primitives[i], moving_vertex) != moving) continue;
+    boxes.push_back(swept_box(primitives[i], static_cast<std::uint32_t>(i),
+                              frames.positions_t0.data(), frames.positions_t1.data()));
+  }
+  return boxes;
+}
+
+}  // namespace
+
+bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
+                                        const MeshFrames& frames) const {
+  if (!standing_valid_ || moving != moving_) return false;
+  for (std::size_t i = 0; i < 3 * vertex_count_; ++i) {
+    if (moving_[i / 3] == 0 && frames.positions_t0[i] != standing_positions_[i]) return false;
+  }
+  return true;
+}
+
+void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames) {
+  moving_ = std::move(moving);
+  standing_positions_.assign(frames.positions_t0.begin(), frames.positions_t0.end());
+  const auto vertices = vertex_list(vertex_count_);
+  standing_vertices_ =
+      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices), moving_, false, frames);
+  standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames));
+  standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames));
+  standing_valid_ = true;
+}
+
+MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
+  MeshCandidates result;
+  auto moving = moving_vertices(frames, vertex_count_);
+  if (!standing_unchanged(moving, frames)) {
+    rebuild_standing(moving, frames);
+    result.standing_rebuilt = true;
+  }
+  const auto vertices = vertex_list(vertex_count_);
+  const Boxes moving_vertex_boxes =
+      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices), moving, true, frames);
+  const Boxes moving_edges = boxes_of(edges_, moving, true, frames);
+  const BoxTree moving_edge_tree(moving_edges);
+  const BoxTree moving_face_tree(boxes_of(faces_, moving, true, frames));
+
+  // Every pair with at least one moving primitive, each once.
+  const TreePass passes[] = {
+      {&moving_vertex_boxes, &moving_face_tree, PairKind::vertex_face, false},
+      {&moving_vertex_boxes, &standing_faces_, PairKind::vertex_face, false},
+      {&standing_vertices_, &moving_face_tree, PairKind::vertex_face, false},
+      {&moving_edges, &moving_edge_tree, PairKind::edge_edge, true},
+      {&moving_edges, &standing_edges_, PairKind::edge_edge, false},
+  };
+  struct Candidates {
+    std::vector<VertexFacePair> vertex_face;
+    std::vector<EdgeIndexPair> edge_edge;
+  };
+  struct QueryJob {
+    const TreePass* pass;
+    std::size_t begin, end;
+  };
+  std::vector<QueryJob> jobs;
+  for (const TreePass& pass : passes) {
+    if (pass.tree->empty()) continue;
+    for (std::size_t b = 0; b < pass.queries->size(); b += kQueryBlock)
+      jobs.push_back({&pass, b, std::min(pass.queries->size(), b + kQueryBlock)});
+  }
+  std::vector<Candidates> found(jobs.size());
+  exactgeo::internal::for_each_block(jobs.size(), threads, [&](std::size_t j) {
+    const QueryJob& job = jobs[j];
+    Candidates& out = found[j];
+    for (std::size_t q = job.begin; q < job.end; ++q) {
+      const SweptBox& box = (*job.pass->queries)[q];
+      const std::uint32_t mine = box.id;
+      if (job.pass->kind == PairKind::vertex_face) {
+        job.pass->tree->query(box, [&](std::uint32_t face) {
+          if (!is_corner(mine, faces_[face])) out.vertex_face.push_back({mine, face});
+        });
+      } else {
+        job.pass->tree->query(box, [&](std::uint32_t other) {
+          if (job.pass->same_set && other <= mine) return;
+          if (!shares_vertex(edges_[mine], edges_[other]))
+            out.edge_edge.push_back({std::min(mine, other), std::max(mine, other)});
+        });
+      }
+    }
+  });
+  for (Candidates& c : found) {
+    result.vertex_face.insert(result.vertex_face.end(), c.vertex_face.begin(), c.vertex_face.end());
+    result.edge_edge.insert(result.edge_edge.end(), c.edge_edge.begin(), c.edge_edge.end());
+    c = {};
+  }
+  return result;
+}
+
+}  // namespace exactgeo::ccd::internal
