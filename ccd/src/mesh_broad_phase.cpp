@@ -1,7 +1,9 @@
 #include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "exactgeo/predicates/internal/error_free.hpp"
 #include "exactgeo/predicates/internal/parallel_blocks.hpp"
 
 namespace exactgeo::ccd::internal {
@@ -42,6 +44,37 @@ std::vector<std::uint8_t> moving_vertices(const MeshFrames& frames, std::size_t 
   }
   return moving;
 }
+
+/// Each vertex's displacement p_t1 - p_t0 when every coordinate of it is exactly a
+/// double, and whether it is.
+struct Displacements {
+  std::vector<Vector3> d;
+  std::vector<std::uint8_t> exact;
+
+  explicit Displacements(const MeshFrames& frames) {
+    const std::size_t n = frames.positions_t0.size() / 3;
+    d.resize(n);
+    exact.assign(n, 1);
+    for (std::size_t i = 0; i < 3 * n; ++i) {
+      const auto diff =
+          exactgeo::internal::two_diff(frames.positions_t1[i], frames.positions_t0[i]);
+      d[i / 3][i % 3] = diff.head;
+      if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[i / 3] = 0;
+    }
+  }
+
+  /// True when all `vertices` move by one and the same vector (standing still included):
+  /// their relative positions, hence all their distances, stay the same during the step.
+  template <std::size_t N>
+  bool rigid(const std::array<VertexIndex, N>& vertices) const noexcept {
+    const VertexIndex first = vertices[0];
+    if (exact[first] == 0) return false;
+    for (const VertexIndex v : vertices) {
+      if (exact[v] == 0 || d[v] != d[first]) return false;
+    }
+    return true;
+  }
+};
 
 std::vector<std::array<VertexIndex, 1>> vertex_list(std::size_t vertex_count) {
   std::vector<std::array<VertexIndex, 1>> vertices(vertex_count);
@@ -101,7 +134,8 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   const BoxTree moving_edge_tree(moving_edges);
   const BoxTree moving_face_tree(boxes_of(faces_, moving, true, frames));
 
-  // Every pair with at least one moving primitive, each once.
+  // Every pair with at least one moving primitive, each once, except pairs moving rigidly.
+  const Displacements motion(frames);
   const TreePass passes[] = {
       {&moving_vertex_boxes, &moving_face_tree, PairKind::vertex_face, false},
       {&moving_vertex_boxes, &standing_faces_, PairKind::vertex_face, false},
@@ -132,13 +166,16 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
       const std::uint32_t mine = box.id;
       if (job.pass->kind == PairKind::vertex_face) {
         job.pass->tree->query(box, [&](std::uint32_t face) {
-          if (!is_corner(mine, faces_[face])) out.vertex_face.push_back({mine, face});
+          const Triangle& f = faces_[face];
+          if (is_corner(mine, f) || motion.rigid(std::array{mine, f[0], f[1], f[2]})) return;
+          out.vertex_face.push_back({mine, face});
         });
       } else {
         job.pass->tree->query(box, [&](std::uint32_t other) {
           if (job.pass->same_set && other <= mine) return;
-          if (!shares_vertex(edges_[mine], edges_[other]))
-            out.edge_edge.push_back({std::min(mine, other), std::max(mine, other)});
+          const Edge &a = edges_[mine], &b = edges_[other];
+          if (shares_vertex(a, b) || motion.rigid(std::array{a[0], a[1], b[0], b[1]})) return;
+          out.edge_edge.push_back({std::min(mine, other), std::max(mine, other)});
         });
       }
     }

@@ -11,10 +11,11 @@
 //                 primitive at every time in between, because each corner moves on a
 //                 segment and a box is convex), rounded outward to float, in a box tree
 //                 (internal/box_tree.hpp; docs/ccd.md says why this structure). Pairs
-//                 sharing a vertex are skipped, and so are pairs whose primitives both
-//                 stand still (every corner has p_t0 == p_t1): their distance is constant
-//                 over the step. The tree of standing primitives is built once and kept
-//                 while they stay where they are.
+//                 sharing a vertex are skipped, and so are rigid pairs: all four corners
+//                 move by exactly the same vector p_t1 - p_t0 (standing still, the zero
+//                 vector, included), so their distance is constant over the step and a
+//                 contact between them is not a collision of this step. The tree of
+//                 standing primitives is built once and kept while they stay where they are.
 //   narrow phase  vertex_face_ccd / edge_edge_ccd (ccd.hpp) on every candidate, in
 //                 parallel. The output is sorted, so it is the same for every thread count.
 //

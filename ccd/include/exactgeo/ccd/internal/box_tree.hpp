@@ -31,7 +31,7 @@ class BoxTree {
   explicit BoxTree(std::vector<SweptBox> boxes) : boxes_(std::move(boxes)) {
     if (boxes_.empty()) return;
     nodes_.reserve(2 * boxes_.size() / kLeafSize + 1);
-    build(0, boxes_.size());
+    build_all();
   }
 
   bool empty() const noexcept { return boxes_.empty(); }
@@ -69,27 +69,41 @@ class BoxTree {
     std::uint32_t count = 0;  ///< boxes in a leaf; 0 for an inner node
   };
 
-  /// A box's centre on `axis`, finite even for boxes reaching infinity (so the median
-  /// split always sees a strict weak order).
-  static double centre(const SweptBox& b, int axis) noexcept {
-    constexpr double kMax = std::numeric_limits<float>::max();
-    return std::clamp(static_cast<double>(b.lo[axis]), -kMax, kMax) +
-           std::clamp(static_cast<double>(b.hi[axis]), -kMax, kMax);
+  /// A box with its centre (twice the centre, finite even for boxes reaching infinity,
+  /// so the median split always sees a strict weak order).
+  struct Item {
+    SweptBox box;
+    std::array<float, 3> centre;
+  };
+
+  static Item item(const SweptBox& b) noexcept {
+    constexpr float kMax = std::numeric_limits<float>::max() / 2;
+    Item it{b, {}};
+    for (int k = 0; k < 3; ++k)
+      it.centre[k] = std::clamp(b.lo[k], -kMax, kMax) + std::clamp(b.hi[k], -kMax, kMax);
+    return it;
   }
 
-  std::uint32_t build(std::size_t begin, std::size_t end) {
+  void build_all() {
+    std::vector<Item> items(boxes_.size());
+    for (std::size_t i = 0; i < boxes_.size(); ++i)
+      items[i] = item(boxes_[i]);
+    build(items, 0, items.size());
+    for (std::size_t i = 0; i < items.size(); ++i)
+      boxes_[i] = items[i].box;
+  }
+
+  std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({});
-    SweptBox bounds = boxes_[begin];
-    std::array<double, 3> lo{}, hi{};
-    for (int k = 0; k < 3; ++k)
-      lo[k] = hi[k] = centre(boxes_[begin], k);
+    SweptBox bounds = items[begin].box;
+    std::array<float, 3> lo = items[begin].centre, hi = lo;
     for (std::size_t i = begin; i < end; ++i) {
       for (int k = 0; k < 3; ++k) {
-        bounds.lo[k] = std::min(bounds.lo[k], boxes_[i].lo[k]);
-        bounds.hi[k] = std::max(bounds.hi[k], boxes_[i].hi[k]);
-        lo[k] = std::min(lo[k], centre(boxes_[i], k));
-        hi[k] = std::max(hi[k], centre(boxes_[i], k));
+        bounds.lo[k] = std::min(bounds.lo[k], items[i].box.lo[k]);
+        bounds.hi[k] = std::max(bounds.hi[k], items[i].box.hi[k]);
+        lo[k] = std::min(lo[k], items[i].centre[k]);
+        hi[k] = std::max(hi[k], items[i].centre[k]);
       }
     }
     nodes_[index].bounds = bounds;
@@ -103,15 +117,15 @@ class BoxTree {
       if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
     }
     const std::size_t middle = begin + (end - begin) / 2;
-    const auto by_centre = [axis](const SweptBox& a, const SweptBox& b) {
-      const double ca = centre(a, axis), cb = centre(b, axis);
-      return ca != cb ? ca < cb : a.id < b.id;
+    const auto by_centre = [axis](const Item& a, const Item& b) {
+      return a.centre[axis] != b.centre[axis] ? a.centre[axis] < b.centre[axis]
+                                              : a.box.id < b.box.id;
     };
-    std::nth_element(boxes_.begin() + static_cast<std::ptrdiff_t>(begin),
-                     boxes_.begin() + static_cast<std::ptrdiff_t>(middle),
-                     boxes_.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
-    build(begin, middle);  // the left child is index + 1
-    nodes_[index].first = build(middle, end);
+    std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin),
+                     items.begin() + static_cast<std::ptrdiff_t>(middle),
+                     items.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
+    build(items, begin, middle);  // the left child is index + 1
+    nodes_[index].first = build(items, middle, end);
     return index;
   }
 
