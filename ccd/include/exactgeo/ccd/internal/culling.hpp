@@ -184,10 +184,11 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
 /// approach one slice and one of these planes separates unless the origin is on the
 /// image. The normals are computed in plain doubles from the rounded corners: any normal
 /// will do, because the side of every corner is then certified.
+/// Corners of time slice `slice` (0: t0, 1: t1) in order around its polygon (the time
+/// faces of boundary_image.hpp), rounded to doubles.
 template <std::size_t C>
-bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
+std::array<Vector3, C / 2> slice_corners(const in::Offsets<C>& a, std::size_t slice) noexcept {
   constexpr std::size_t H = C / 2;
-  // Corners of slice s in order around its polygon (the time faces of boundary_image.hpp).
   constexpr std::array<std::size_t, H> kAround = [] {
     if constexpr (H == 3) {
       return std::array<std::size_t, 3>{0, 1, 2};
@@ -195,18 +196,50 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
       return std::array<std::size_t, 4>{0, 2, 3, 1};
     }
   }();
+  std::array<Vector3, H> x;
+  for (std::size_t k = 0; k < H; ++k)
+    x[k] = a[slice * H + kAround[k]].rounded();
+  return x;
+}
+
+/// The direction to the slice's point closest to the origin: stable when the primitives
+/// stay close and nearly parallel, where the slice's own plane turns quickly with time.
+template <std::size_t H>
+Vector3 closest_direction(const std::array<Vector3, H>& x) noexcept {
+  Vector3 closest = closest_on_triangle(x[0], x[1], x[2]);
+  if constexpr (H == 4) {
+    const Vector3 other = closest_on_triangle(x[0], x[2], x[3]);
+    if (in::dot3(other, other) < in::dot3(closest, closest)) closest = other;
+  }
+  return closest;
+}
+
+/// The cheapest slice plane alone: orthogonal to the direction of the t0 slice's closest
+/// point. It settles most near misses (primitives that stay apart side by side) for
+/// about one certified dot product per corner, so it runs before root parity; the other
+/// planes wait until parity is even.
+template <std::size_t C>
+bool separated_by_closest_direction(const in::Offsets<C>& a) noexcept {
+  const Vector3 closest = closest_direction(slice_corners(a, 0));
+  return usable(closest) && on_one_side(a, closest);
+}
+
+/// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
+/// (edge-edge). Candidate separating planes through the origin: orthogonal to the
+/// direction of the slice's point closest to the origin, parallel to the slice's plane
+/// (the origin off that plane), or parallel to a plane through one of its edges and
+/// orthogonal to it (the origin beside the polygon); last, the plane turning from one
+/// slice's closest direction to the other's. As a piece of the step shrinks, its corners
+/// approach one slice and one of these planes separates unless the origin is on the
+/// image. The normals are computed in plain doubles from the rounded corners: any normal
+/// will do, because the side of every corner is then certified.
+template <std::size_t C>
+bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
+  constexpr std::size_t H = C / 2;
   std::array<Vector3, 2> closest_of_slice{};
   for (std::size_t slice = 0; slice < 2; ++slice) {
-    std::array<Vector3, H> x;
-    for (std::size_t k = 0; k < H; ++k)
-      x[k] = a[slice * H + kAround[k]].rounded();
-    // The direction to the slice's closest point: stable when the primitives stay close
-    // and nearly parallel, where the slice's own plane turns quickly with time.
-    Vector3 closest = closest_on_triangle(x[0], x[1], x[2]);
-    if constexpr (H == 4) {
-      const Vector3 other = closest_on_triangle(x[0], x[2], x[3]);
-      if (in::dot3(other, other) < in::dot3(closest, closest)) closest = other;
-    }
+    const std::array<Vector3, H> x = slice_corners(a, slice);
+    const Vector3 closest = closest_direction(x);
     closest_of_slice[slice] = closest;
     if (usable(closest) && on_one_side(a, closest)) return true;
     const Vector3 normal = H == 3 ? cross(in::difference(x[1], x[0]), in::difference(x[2], x[0]))
