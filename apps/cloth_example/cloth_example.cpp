@@ -78,18 +78,7 @@ struct Totals {
   double verify_seconds = 0.0;
 
   void add(const FilterStats& s) {
-    filter.rounds += s.rounds;
-    filter.candidates += s.candidates;
-    filter.vertex_face += s.vertex_face;
-    filter.edge_edge += s.edge_edge;
-    filter.self_pairs += s.self_pairs;
-    filter.obstacle_pairs += s.obstacle_pairs;
-    filter.frozen += s.frozen;
-    filter.scaled += s.scaled;
-    filter.standing_rebuilt += s.standing_rebuilt;
-    filter.seconds += s.seconds;
-    filter.broad_phase_seconds += s.broad_phase_seconds;
-    filter.narrow_phase_seconds += s.narrow_phase_seconds;
+    filter += s;
     if (s.collisions() > 0) ++steps_with_collisions;
     if (s.rounds > max_rounds) max_rounds = s.rounds;
   }
@@ -132,7 +121,7 @@ void print_summary(const Options& o, const exactgeo::cloth::Scene& scene, const 
               scene.positions.size() / 3, scene.cloth_vertices, scene.faces.size(),
               scene.cloth_faces);
   std::printf(
-      "ccd: %zu rounds (at most %zu in a step; %zu re-sorted the standing boxes), %.3f s "
+      "ccd: %zu rounds (at most %zu in a step; %zu rebuilt the standing tree), %.3f s "
       "(broad phase %.3f s, narrow phase %.3f s), %.3f ms per step\n",
       f.rounds, t.max_rounds, f.standing_rebuilt, f.seconds, f.broad_phase_seconds,
       f.narrow_phase_seconds, steps > 0 ? 1e3 * f.seconds / static_cast<double>(steps) : 0.0);

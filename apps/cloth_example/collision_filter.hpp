@@ -62,12 +62,28 @@ struct FilterStats {
   std::size_t obstacle_pairs = 0;  ///< ... some corner an obstacle vertex
   std::size_t frozen = 0;          ///< sheet vertices of colliding pairs: frozen, or (TOI) stopped
   std::size_t scaled = 0;          ///< TOI rounds that scaled the step
-  std::size_t standing_rebuilt = 0;  ///< rounds that re-sorted the standing primitives' boxes
+  std::size_t standing_rebuilt = 0;  ///< rounds that rebuilt the standing primitives' tree
   double seconds = 0.0;              ///< wall time in MeshCcd::step
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
 
   std::size_t collisions() const noexcept { return vertex_face + edge_edge; }
+
+  FilterStats& operator+=(const FilterStats& s) noexcept {
+    rounds += s.rounds;
+    candidates += s.candidates;
+    vertex_face += s.vertex_face;
+    edge_edge += s.edge_edge;
+    self_pairs += s.self_pairs;
+    obstacle_pairs += s.obstacle_pairs;
+    frozen += s.frozen;
+    scaled += s.scaled;
+    standing_rebuilt += s.standing_rebuilt;
+    seconds += s.seconds;
+    broad_phase_seconds += s.broad_phase_seconds;
+    narrow_phase_seconds += s.narrow_phase_seconds;
+    return *this;
+  }
 };
 
 class CollisionFilter {

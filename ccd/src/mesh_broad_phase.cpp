@@ -16,7 +16,7 @@ enum class PairKind { vertex_face, edge_edge };
 
 /// One pass of the broad phase: every query box against a tree.
 struct TreePass {
-  const Boxes* queries;
+  std::span<const SweptBox> queries;
   const BoxTree* tree;
   PairKind kind;
   bool same_set;  ///< queries and tree hold the same primitives: keep each pair once
@@ -113,8 +113,8 @@ void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const Me
   moving_ = std::move(moving);
   standing_positions_.assign(frames.positions_t0.begin(), frames.positions_t0.end());
   const auto vertices = vertex_list(vertex_count_);
-  standing_vertices_ =
-      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices), moving_, false, frames);
+  standing_vertices_ = BoxTree(
+      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices), moving_, false, frames));
   standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames));
   standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames));
   standing_valid_ = true;
@@ -128,20 +128,30 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
     result.standing_rebuilt = true;
   }
   const auto vertices = vertex_list(vertex_count_);
-  const Boxes moving_vertex_boxes =
-      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices), moving, true, frames);
-  const Boxes moving_edges = boxes_of(edges_, moving, true, frames);
-  const BoxTree moving_edge_tree(moving_edges);
-  const BoxTree moving_face_tree(boxes_of(faces_, moving, true, frames));
+  // The three trees of moving primitives are built side by side. Queries run in tree
+  // order (BoxTree::boxes), which keeps them spatially coherent.
+  std::array<BoxTree, 3> trees;
+  exactgeo::internal::for_each_block(3, threads, [&](std::size_t k) {
+    if (k == 0) {
+      const std::span<const std::array<VertexIndex, 1>> all(vertices);
+      trees[0] = BoxTree(boxes_of(all, moving, true, frames));
+    }
+    if (k == 1) trees[1] = BoxTree(boxes_of(edges_, moving, true, frames));
+    if (k == 2) trees[2] = BoxTree(boxes_of(faces_, moving, true, frames));
+  });
+  const BoxTree &moving_vertex_tree = trees[0], &moving_edge_tree = trees[1],
+                &moving_face_tree = trees[2];
+  const auto moving_vertices = moving_vertex_tree.boxes();
+  const auto moving_edges = moving_edge_tree.boxes();
 
   // Every pair with at least one moving primitive, each once, except pairs moving rigidly.
   const Displacements motion(frames);
   const TreePass passes[] = {
-      {&moving_vertex_boxes, &moving_face_tree, PairKind::vertex_face, false},
-      {&moving_vertex_boxes, &standing_faces_, PairKind::vertex_face, false},
-      {&standing_vertices_, &moving_face_tree, PairKind::vertex_face, false},
-      {&moving_edges, &moving_edge_tree, PairKind::edge_edge, true},
-      {&moving_edges, &standing_edges_, PairKind::edge_edge, false},
+      {moving_vertices, &moving_face_tree, PairKind::vertex_face, false},
+      {moving_vertices, &standing_faces_, PairKind::vertex_face, false},
+      {standing_vertices_.boxes(), &moving_face_tree, PairKind::vertex_face, false},
+      {moving_edges, &moving_edge_tree, PairKind::edge_edge, true},
+      {moving_edges, &standing_edges_, PairKind::edge_edge, false},
   };
   struct Candidates {
     std::vector<VertexFacePair> vertex_face;
@@ -154,15 +164,15 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   std::vector<QueryJob> jobs;
   for (const TreePass& pass : passes) {
     if (pass.tree->empty()) continue;
-    for (std::size_t b = 0; b < pass.queries->size(); b += kQueryBlock)
-      jobs.push_back({&pass, b, std::min(pass.queries->size(), b + kQueryBlock)});
+    for (std::size_t b = 0; b < pass.queries.size(); b += kQueryBlock)
+      jobs.push_back({&pass, b, std::min(pass.queries.size(), b + kQueryBlock)});
   }
   std::vector<Candidates> found(jobs.size());
   exactgeo::internal::for_each_block(jobs.size(), threads, [&](std::size_t j) {
     const QueryJob& job = jobs[j];
     Candidates& out = found[j];
     for (std::size_t q = job.begin; q < job.end; ++q) {
-      const SweptBox& box = (*job.pass->queries)[q];
+      const SweptBox& box = job.pass->queries[q];
       const std::uint32_t mine = box.id;
       if (job.pass->kind == PairKind::vertex_face) {
         job.pass->tree->query(box, [&](std::uint32_t face) {

@@ -36,6 +36,9 @@ class BoxTree {
 
   bool empty() const noexcept { return boxes_.empty(); }
   std::size_t size() const noexcept { return boxes_.size(); }
+  /// The stored boxes in the tree's leaf order: neighbours in space are mostly neighbours
+  /// here, so querying in this order keeps the nodes a query visits in cache for the next.
+  std::span<const SweptBox> boxes() const noexcept { return boxes_; }
 
   /// Calls visit(id) for every stored box overlapping `query`.
   template <class Visit>

@@ -90,24 +90,31 @@ inline std::optional<in::Expansion<48>> exact_dot(const in::Offset& p, const Vec
   return terms[0] + terms[1] + terms[2];
 }
 
-/// The sign of n . p: the filter's, else the exact one, else don't know.
-inline std::optional<Sign> dot_sign(const in::Offset& p, const Vector3& n) noexcept {
+/// How a side is certified: by the filter alone (cheap, may say "don't know"), or by the
+/// filter and then, where it cannot decide, expansions.
+enum class Certify { filter_only, filter_then_exact };
+
+/// The sign of n . p: the filter's, else (filter_then_exact) the exact one, else don't know.
+inline std::optional<Sign> dot_sign(const in::Offset& p, const Vector3& n,
+                                    Certify how = Certify::filter_then_exact) noexcept {
   const in::Offset normal = in::Offset::vector(n);
   if (const auto s = in::filtered_sign<in::Dot3Formula, in::Grouping::by_vector>(
           in::Offsets<2>{p, normal}, 0)) {
     return s;
   }
+  if (how == Certify::filter_only) return std::nullopt;
   if (const auto d = exact_dot(p, n)) return d->sign();
   return std::nullopt;
 }
 
 /// Every corner strictly on the positive side of the plane n . x = 0, or every corner on
-/// the negative side: dot products certified by the filter, else decided with expansions.
+/// the negative side, each side certified as `how` says.
 template <std::size_t C>
-bool on_one_side(const in::Offsets<C>& a, const Vector3& n) noexcept {
+bool on_one_side(const in::Offsets<C>& a, const Vector3& n,
+                 Certify how = Certify::filter_then_exact) noexcept {
   StrictSide side;
   for (std::size_t k = 0; k < C && side.holds(); ++k)
-    side.add(dot_sign(a[k], n));
+    side.add(dot_sign(a[k], n, how));
   return side.holds();
 }
 
@@ -215,13 +222,14 @@ Vector3 closest_direction(const std::array<Vector3, H>& x) noexcept {
 }
 
 /// The cheapest slice plane alone: orthogonal to the direction of the t0 slice's closest
-/// point. It settles most near misses (primitives that stay apart side by side) for
-/// about one certified dot product per corner, so it runs before root parity; the other
-/// planes wait until parity is even.
+/// point, each side certified by the filter only. It settles most near misses
+/// (primitives that stay apart side by side) for one filtered dot product per corner, so
+/// it runs before root parity; where the filter cannot decide (a collision, a touch) it
+/// gives up at once. The other planes, with exact fallbacks, wait for an even parity.
 template <std::size_t C>
 bool separated_by_closest_direction(const in::Offsets<C>& a) noexcept {
   const Vector3 closest = closest_direction(slice_corners(a, 0));
-  return usable(closest) && on_one_side(a, closest);
+  return usable(closest) && on_one_side(a, closest, Certify::filter_only);
 }
 
 /// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram

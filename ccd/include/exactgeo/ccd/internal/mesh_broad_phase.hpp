@@ -52,7 +52,7 @@ class MeshBroadPhase {
   bool standing_valid_ = false;
   std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
   std::vector<double> standing_positions_;  // t0 positions then (standing ones compared)
-  Boxes standing_vertices_;
+  BoxTree standing_vertices_;               // a tree only for its spatial order of queries
   BoxTree standing_edges_, standing_faces_;
 };
 
