@@ -2,7 +2,8 @@
 figures in docs/)."""
 import math
 
-PALETTE = ["#1b7837", "#b2182b", "#5aae61", "#ef8a62", "#762a83", "#2166ac", "#999999"]
+PALETTE = ["#1b7837", "#b2182b", "#5aae61", "#ef8a62", "#762a83", "#2166ac", "#999999",
+           "#e08214"]
 
 
 def loglog_svg(series, x_label, y_label):
