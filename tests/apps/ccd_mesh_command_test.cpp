@@ -1,0 +1,158 @@
+// `exactgeo ccd-mesh` end to end (run_ccd_mesh: loading, checks, the JSON report) against
+// exhaustive pairwise CCD written here: random moving meshes go to OBJ files, and the
+// pairs the command prints must be exactly the non-adjacent pairs that vertex_face_ccd /
+// edge_edge_ccd report.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/ccd_mesh_command.hpp"
+#include "exactgeo/ccd/ccd.hpp"
+#include "support/generators.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Corners = std::array<std::size_t, 3>;
+using Pair = std::vector<std::size_t>;  // [v, f] or [a0, a1, b0, b1]
+
+struct Frames {
+  std::vector<Point3> t0, t1;
+  std::vector<Corners> faces;
+};
+
+/// An n x n grid of unit quads in z = 0, split into triangles; every vertex moves by up to
+/// 1.5 in each coordinate, so the sheet crumples through itself.
+Frames crumpling_sheet(int n, testing::Rng& rng) {
+  Frames f;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const Point3 p{double(i), double(j), 0.0};
+      const Point3 d = testing::random_point(rng, 1.5);
+      f.t0.push_back(p);
+      f.t1.push_back({p[0] + d[0], p[1] + d[1], p[2] + d[2]});
+    }
+  }
+  const auto at = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      f.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      f.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return f;
+}
+
+void write_obj(const fs::path& path, const std::vector<Point3>& vertices,
+               const std::vector<Corners>& faces) {
+  std::ofstream out(path);
+  char line[128];
+  for (const Point3& p : vertices) {
+    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    out << line;
+  }
+  for (const Corners& c : faces)
+    out << "f " << c[0] + 1 << ' ' << c[1] + 1 << ' ' << c[2] + 1 << '\n';
+}
+
+/// The integer arrays of `key` in a JSON report: "key": [[1, 2], [3, 4]].
+std::vector<Pair> pairs_in(const std::string& json, const std::string& key) {
+  std::vector<Pair> pairs;
+  std::size_t at = json.find("\"" + key + "\": [");
+  if (at == std::string::npos) return pairs;
+  at = json.find('[', at);
+  if (json.compare(at, 2, "[]") == 0) return pairs;
+  const std::size_t end = json.find("]]", at);
+  if (end == std::string::npos) return {{}};  // malformed: fails every comparison
+  std::istringstream in(json.substr(at + 1, end + 1 - (at + 1)));
+  char c = 0;
+  while (in >> c && c == '[') {
+    Pair p;
+    std::size_t value = 0;
+    while (in >> value) {
+      p.push_back(value);
+      in >> c;
+      if (c == ']') break;
+    }
+    pairs.push_back(p);
+    in >> c;  // ',' or the end
+  }
+  return pairs;
+}
+
+/// Every non-adjacent pair through the per-pair CCD, in the report's canonical order.
+std::pair<std::vector<Pair>, std::vector<Pair>> exhaustive(const Frames& f, ccd::Method method) {
+  std::vector<Pair> vertex_face, edge_edge;
+  ccd::Options options;
+  options.method = method;
+  for (std::size_t v = 0; v < f.t0.size(); ++v) {
+    for (std::size_t i = 0; i < f.faces.size(); ++i) {
+      const Corners& c = f.faces[i];
+      if (v == c[0] || v == c[1] || v == c[2]) continue;
+      const ccd::VertexFaceQuery q{f.t0[v], f.t0[c[0]], f.t0[c[1]], f.t0[c[2]],
+                                   f.t1[v], f.t1[c[0]], f.t1[c[1]], f.t1[c[2]]};
+      if (ccd::vertex_face_ccd(q, options).collision) vertex_face.push_back({v, i});
+    }
+  }
+  std::vector<std::array<std::size_t, 2>> edges;
+  for (const Corners& c : f.faces) {
+    for (int k = 0; k < 3; ++k)
+      edges.push_back({std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3])});
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const auto &a = edges[i], &b = edges[j];
+      if (a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1]) continue;
+      const ccd::EdgeEdgeQuery q{f.t0[a[0]], f.t0[a[1]], f.t0[b[0]], f.t0[b[1]],
+                                 f.t1[a[0]], f.t1[a[1]], f.t1[b[0]], f.t1[b[1]]};
+      if (ccd::edge_edge_ccd(q, options).collision) edge_edge.push_back({a[0], a[1], b[0], b[1]});
+    }
+  }
+  std::sort(vertex_face.begin(), vertex_face.end());
+  return {vertex_face, edge_edge};
+}
+
+TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
+  auto rng = testing::seeded_engine("CcdMeshCommand.random");
+  const fs::path dir =
+      fs::temp_directory_path() / ("exactgeo_ccd_mesh_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  for (const int n : {4, 7, 10}) {
+    const Frames frames = crumpling_sheet(n, rng);
+    write_obj(dir / "t0.obj", frames.t0, frames.faces);
+    write_obj(dir / "t1.obj", frames.t1, frames.faces);
+    for (const ccd::Method method : {ccd::Method::exact, ccd::Method::parity}) {
+      CcdMeshOptions options;
+      options.frame0 = (dir / "t0.obj").string();
+      options.frame1 = (dir / "t1.obj").string();
+      options.method = method;
+      options.threads = 2;
+      options.json = true;
+      std::ostringstream out, err;
+      ASSERT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
+      const auto [vertex_face, edge_edge] = exhaustive(frames, method);
+      const std::string what = "n = " + std::to_string(n) + ", " +
+                               std::string(ccd::to_string(method)) + ": " + out.str();
+      EXPECT_FALSE(vertex_face.empty() && edge_edge.empty()) << "the sheet should collide";
+      EXPECT_EQ(pairs_in(out.str(), "vertex_face"), vertex_face) << what;
+      EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << what;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace exactgeo::cli
