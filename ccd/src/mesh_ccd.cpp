@@ -192,8 +192,10 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);
   exactgeo::internal::for_each_block(collisions.size(), options.threads, [&](std::size_t b) {
     BlockCollisions& out = collisions[b];
+    // One bracket per colliding pair, so brackets and pairs stay aligned; a method
+    // without a time of impact brackets the whole step.
     const auto note = [&](const Result& r) {
-      if (r.collision && r.time_of_impact) out.brackets.push_back(*r.time_of_impact);
+      if (r.collision && width) out.brackets.push_back(r.time_of_impact.value_or(TimeInterval{}));
       return r.collision;
     };
     if (b < vf_blocks) {
@@ -223,7 +225,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
       result.edge_edge.push_back({s.edges[pair.a], s.edges[pair.b]});
     brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
   }
-  if (width && !brackets.empty()) {
+  if (!brackets.empty()) {
     result.time_of_impact = refine_earliest(result, brackets, frames, s.faces, *width, options);
   }
   std::sort(result.vertex_face.begin(), result.vertex_face.end());

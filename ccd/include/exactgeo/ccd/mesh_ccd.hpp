@@ -64,7 +64,8 @@ struct MeshCcdOptions {
   /// exact (every root) or parity (odd root counts and boundary roots); the other methods
   /// are accepted for measuring the trade.
   Method method = Method::exact;
-  /// exact only: also bracket the mesh's earliest root to at most this width.
+  /// Also bracket the mesh's earliest root to at most this width (exact; the other
+  /// methods have no time of impact and bracket the whole step, [0, 1]).
   std::optional<double> time_of_impact_width;
   /// Worker threads for the sweep and the narrow phase; 0: one per hardware thread.
   unsigned threads = 0;
