@@ -261,7 +261,7 @@ int main(int argc, char** argv) {
       best.candidates() ? 1e9 * best.narrow_phase_seconds / static_cast<double>(best.candidates())
                         : 0.0,
       collisions ? static_cast<double>(best.candidates()) / static_cast<double>(collisions) : 0.0,
-      second.broad_phase_seconds, second.static_boxes_rebuilt ? "true" : "false");
+      second.broad_phase_seconds, second.standing_tree_rebuilt ? "true" : "false");
   if (structures) {
     const auto print = [](const char* name, const StructureTime& t) {
       std::printf(", \"%s_overlaps\": %zu, \"%s_seconds\": %.6g", name, t.overlaps, name,

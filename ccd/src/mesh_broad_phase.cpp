@@ -37,16 +37,9 @@ bool any_moves(const std::array<VertexIndex, N>& corners, const std::vector<std:
   return std::any_of(corners.begin(), corners.end(), [&](VertexIndex v) { return moving[v] != 0; });
 }
 
-std::vector<std::uint8_t> moving_vertices(const MeshFrames& frames, std::size_t vertex_count) {
-  std::vector<std::uint8_t> moving(vertex_count, 0);
-  for (std::size_t i = 0; i < 3 * vertex_count; ++i) {
-    if (frames.positions_t0[i] != frames.positions_t1[i]) moving[i / 3] = 1;
-  }
-  return moving;
-}
-
-/// Each vertex's displacement p_t1 - p_t0 when every coordinate of it is exactly a
-/// double, and whether it is.
+/// Each vertex's displacement p_t1 - p_t0, whether every coordinate of it is exactly a
+/// double, and whether the vertex moves at all (the rounded difference of two finite
+/// doubles is zero only when they are equal).
 struct Displacements {
   std::vector<Vector3> d;
   std::vector<std::uint8_t> exact;
@@ -63,6 +56,13 @@ struct Displacements {
     }
   }
 
+  std::vector<std::uint8_t> moving() const {
+    std::vector<std::uint8_t> m(d.size());
+    for (std::size_t v = 0; v < d.size(); ++v)
+      m[v] = d[v] != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
+    return m;
+  }
+
   /// True when all `vertices` move by one and the same vector (standing still included):
   /// their relative positions, hence all their distances, stay the same during the step.
   template <std::size_t N>
@@ -75,13 +75,6 @@ struct Displacements {
     return true;
   }
 };
-
-std::vector<std::array<VertexIndex, 1>> vertex_list(std::size_t vertex_count) {
-  std::vector<std::array<VertexIndex, 1>> vertices(vertex_count);
-  for (std::size_t v = 0; v < vertex_count; ++v)
-    vertices[v] = {static_cast<VertexIndex>(v)};
-  return vertices;
-}
 
 /// The swept boxes of the primitives whose corners move (`moving` true) or all stand
 /// still (`moving` false).
@@ -100,6 +93,13 @@ Boxes boxes_of(std::span<const std::array<VertexIndex, N>> primitives,
 
 }  // namespace
 
+MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangle> faces,
+                               std::span<const Edge> edges)
+    : vertex_count_(vertex_count), faces_(faces), edges_(edges), vertices_(vertex_count) {
+  for (std::size_t v = 0; v < vertex_count; ++v)
+    vertices_[v] = {static_cast<VertexIndex>(v)};
+}
+
 bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
                                         const MeshFrames& frames) const {
   if (!standing_valid_ || moving != moving_) return false;
@@ -112,9 +112,8 @@ bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
 void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames) {
   moving_ = std::move(moving);
   standing_positions_.assign(frames.positions_t0.begin(), frames.positions_t0.end());
-  const auto vertices = vertex_list(vertex_count_);
   standing_vertices_ = BoxTree(
-      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices), moving_, false, frames));
+      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving_, false, frames));
   standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames));
   standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames));
   standing_valid_ = true;
@@ -122,20 +121,19 @@ void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const Me
 
 MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
   MeshCandidates result;
-  auto moving = moving_vertices(frames, vertex_count_);
+  const Displacements motion(frames);
+  const std::vector<std::uint8_t> moving = motion.moving();
   if (!standing_unchanged(moving, frames)) {
     rebuild_standing(moving, frames);
     result.standing_rebuilt = true;
   }
-  const auto vertices = vertex_list(vertex_count_);
   // The three trees of moving primitives are built side by side. Queries run in tree
   // order (BoxTree::boxes), which keeps them spatially coherent.
   std::array<BoxTree, 3> trees;
   exactgeo::internal::for_each_block(3, threads, [&](std::size_t k) {
-    if (k == 0) {
-      const std::span<const std::array<VertexIndex, 1>> all(vertices);
-      trees[0] = BoxTree(boxes_of(all, moving, true, frames));
-    }
+    if (k == 0)
+      trees[0] = BoxTree(
+          boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving, true, frames));
     if (k == 1) trees[1] = BoxTree(boxes_of(edges_, moving, true, frames));
     if (k == 2) trees[2] = BoxTree(boxes_of(faces_, moving, true, frames));
   });
@@ -145,7 +143,6 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   const auto moving_edges = moving_edge_tree.boxes();
 
   // Every pair with at least one moving primitive, each once, except pairs moving rigidly.
-  const Displacements motion(frames);
   const TreePass passes[] = {
       {moving_vertices, &moving_face_tree, PairKind::vertex_face, false},
       {moving_vertices, &standing_faces_, PairKind::vertex_face, false},

@@ -177,7 +177,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   const auto broad_start = std::chrono::steady_clock::now();
 
   const internal::MeshCandidates candidates = s.broad_phase.candidates(frames, options.threads);
-  result.static_boxes_rebuilt = candidates.standing_rebuilt;
+  result.standing_tree_rebuilt = candidates.standing_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();
   result.broad_phase_seconds = seconds_since(broad_start);

@@ -943,7 +943,7 @@ MovingMesh with_new_fall(MovingMesh m, Rng& rng) {
   return m;
 }
 
-/// One step of `ccd` against a fresh MeshCcd and the oracle; returns static_boxes_rebuilt.
+/// One step of `ccd` against a fresh MeshCcd and the oracle; returns standing_tree_rebuilt.
 /// (The time of impact only on some steps: it costs more than the rest of the step.)
 bool step_and_compare(MeshCcd& ccd, const MovingMesh& m, const std::string& what,
                       std::optional<double> time_of_impact_width = std::nullopt) {
@@ -952,7 +952,7 @@ bool step_and_compare(MeshCcd& ccd, const MovingMesh& m, const std::string& what
   const MeshCcdResult fresh = MeshCcd(m.vertex_count(), m.faces).step(m.frames(), o);
   expect_same_result(r, fresh, what + " vs a fresh MeshCcd");
   expect_same_pairs(r, exhaustive(m, Method::exact), what);
-  return r.static_boxes_rebuilt;
+  return r.standing_tree_rebuilt;
 }
 
 TEST(MeshCcdStaticCache, StandingBoxesAreKeptWhileTheyStandStill) {

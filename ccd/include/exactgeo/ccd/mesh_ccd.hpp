@@ -79,7 +79,7 @@ struct MeshCcdResult {
   /// With time_of_impact_width and a collision: no root before start, a root by end.
   std::optional<TimeInterval> time_of_impact;
   /// True when the tree of standing primitives was rebuilt in this step.
-  bool static_boxes_rebuilt = false;
+  bool standing_tree_rebuilt = false;
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
 

@@ -5,6 +5,7 @@
 // corners all stand still. Standing primitives live in their own trees, kept from step to
 // step while the same vertices stand at the same place.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -32,8 +33,7 @@ class MeshBroadPhase {
  public:
   /// `faces` and `edges` (sorted, unique) must outlive this object and stay unchanged.
   MeshBroadPhase(std::size_t vertex_count, std::span<const Triangle> faces,
-                 std::span<const Edge> edges)
-      : vertex_count_(vertex_count), faces_(faces), edges_(edges) {}
+                 std::span<const Edge> edges);
 
   /// Every candidate pair of the step, in an order that depends only on the input.
   /// Precondition: frames hold 3 * vertex_count finite values each.
@@ -48,6 +48,7 @@ class MeshBroadPhase {
   std::size_t vertex_count_;
   std::span<const Triangle> faces_;
   std::span<const Edge> edges_;
+  std::vector<std::array<VertexIndex, 1>> vertices_;  // {0}, {1}, ...: vertices as primitives
 
   bool standing_valid_ = false;
   std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
