@@ -100,14 +100,6 @@ std::vector<double> flat_positions(const std::vector<Point3>& vertices) {
   return flat;
 }
 
-std::optional<std::size_t> first_non_finite(const std::vector<Point3>& vertices) {
-  const auto v = std::find_if(vertices.begin(), vertices.end(), [](const Point3& p) {
-    return !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]);
-  });
-  if (v == vertices.end()) return std::nullopt;
-  return static_cast<std::size_t>(v - vertices.begin());
-}
-
 std::string interval_text(const ccd::TimeInterval& t) {
   return "[" + shortest(t.start) + ", " + shortest(t.end) + "]";
 }
@@ -226,14 +218,9 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
   ccd::MeshCcdResult result;
   try {
     result = mesh_ccd->step({positions0, positions1}, ccd_options);
-  } catch (const std::invalid_argument& e) {  // a non-finite coordinate
-    for (std::size_t k = 0; k < 2; ++k) {
-      if (const auto v = first_non_finite(frames[k].mesh.vertices)) {
-        return fail(*paths[k] + ": vertex " + std::to_string(*v) + " has a non-finite coordinate");
-      }
-    }
-    return fail(options.frame0 + ", " + options.frame1 + ": " + e.what());
-  } catch (const std::exception& e) {  // threads or memory running out
+  } catch (const std::exception& e) {
+    // The loaders refuse non-finite numbers and the frames were checked above, so this
+    // is threads or memory running out.
     return fail("cannot run the step: " + std::string(e.what()));
   }
 

@@ -29,10 +29,6 @@ constexpr double kCoarseWidth = 1.0 / 64;
 
 constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
 
-std::string vertex_name(std::size_t v) {
-  return "vertex " + std::to_string(v);
-}
-
 void check_frame(std::span<const double> positions, std::size_t vertex_count, const char* name) {
   if (positions.size() != 3 * vertex_count) {
     std::string message(name);
@@ -43,7 +39,9 @@ void check_frame(std::span<const double> positions, std::size_t vertex_count, co
   for (std::size_t i = 0; i < positions.size(); ++i) {
     if (!std::isfinite(positions[i])) {
       std::string message(name);
-      message.append(": ").append(vertex_name(i / 3)).append(" has a non-finite coordinate");
+      message.append(": vertex ")
+          .append(std::to_string(i / 3))
+          .append(" has a non-finite coordinate");
       throw std::invalid_argument(message);
     }
   }
