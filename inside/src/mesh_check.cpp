@@ -110,6 +110,14 @@ std::string first_list(const Examples<T>& examples, Format format) {
   return s;
 }
 
+/// "head (before first: a, b, ...)": a problem with its first examples.
+template <class T, class Format>
+std::string with_examples(std::string head, const Examples<T>& examples, Format format,
+                          std::string_view before = {}) {
+  head.append(" (").append(before).append(first_list(examples, format)).append(")");
+  return head;
+}
+
 std::string index_text(std::size_t i) {
   return std::to_string(i);
 }
@@ -228,46 +236,33 @@ std::optional<std::string> classification_problem(const MeshCheck& check, bool a
   }
 
   if (const auto& bad = check.non_finite_vertices; bad.count > 0) {
-    std::string s = counted(bad.count, "vertex has", "vertices have");
-    s.append(" non-finite coordinates (");
-    s.append(first_list(bad, index_text));
-    s.append(")");
-    problems.push_back(std::move(s));
+    std::string head = counted(bad.count, "vertex has", "vertices have");
+    head.append(" non-finite coordinates");
+    problems.push_back(with_examples(std::move(head), bad, index_text));
   }
 
   // With allow_non_manifold the rule is "every edge used an even number of times", so the
   // odd edges are the ones to name when some of them are not boundary edges.
   const bool odd_beyond_boundary = check.odd_edges.count > check.boundary_edges.count;
   if (allow_non_manifold && odd_beyond_boundary) {
-    std::string s = "mesh is not closed: ";
-    s.append(counted(check.odd_edges.count, "edge", "edges"));
-    s.append(" used by an odd number of faces (");
-    s.append(first_list(check.odd_edges, edge_text));
-    s.append(")");
-    problems.push_back(std::move(s));
+    std::string head = "mesh is not closed: ";
+    head.append(counted(check.odd_edges.count, "edge", "edges"));
+    head.append(" used by an odd number of faces");
+    problems.push_back(with_examples(std::move(head), check.odd_edges, edge_text));
   } else if (check.boundary_edges.count > 0) {
-    std::string s = "mesh is not closed: ";
-    s.append(counted(check.boundary_edges.count, "boundary edge", "boundary edges"));
-    s.append(" (");
-    s.append(first_list(check.boundary_edges, edge_text));
-    s.append(")");
-    problems.push_back(std::move(s));
+    std::string head = "mesh is not closed: ";
+    head.append(counted(check.boundary_edges.count, "boundary edge", "boundary edges"));
+    problems.push_back(with_examples(std::move(head), check.boundary_edges, edge_text));
   }
   if (!allow_non_manifold && check.non_manifold_edges.count > 0) {
-    std::string s =
-        counted(check.non_manifold_edges.count, "non-manifold edge", "non-manifold edges");
-    s.append(" (used by more than two faces; ");
-    s.append(first_list(check.non_manifold_edges, edge_text));
-    s.append(")");
-    problems.push_back(std::move(s));
+    problems.push_back(with_examples(
+        counted(check.non_manifold_edges.count, "non-manifold edge", "non-manifold edges"),
+        check.non_manifold_edges, edge_text, "used by more than two faces; "));
   }
 
   if (const auto& bad = check.degenerate_faces; bad.count > 0) {
-    std::string s = counted(bad.count, "degenerate face", "degenerate faces");
-    s.append(" (");
-    s.append(first_list(bad, index_text));
-    s.append(")");
-    problems.push_back(std::move(s));
+    problems.push_back(
+        with_examples(counted(bad.count, "degenerate face", "degenerate faces"), bad, index_text));
   }
 
   if (problems.empty()) return std::nullopt;
