@@ -70,7 +70,7 @@ void write_obj(const fs::path& path, const std::vector<Point3>& vertices,
 std::vector<Pair> pairs_in(const std::string& json, const std::string& key) {
   std::vector<Pair> pairs;
   std::size_t at = json.find("\"" + key + "\": [");
-  if (at == std::string::npos) return pairs;
+  if (at == std::string::npos) return {{}};  // missing: fails every comparison
   at = json.find('[', at);
   if (json.compare(at, 2, "[]") == 0) return pairs;
   const std::size_t end = json.find("]]", at);
