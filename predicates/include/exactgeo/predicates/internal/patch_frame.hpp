@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
+#include "exactgeo/predicates/internal/error_free.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
 
 namespace exactgeo::internal {
@@ -51,10 +52,21 @@ PatchFrame patch_frame(const Signs& signs, const std::array<Point3, 4>& x) noexc
   return {PatchFrame::Kind::collinear, Sign::zero, {}};
 }
 
-/// (h1 - h0) == (h3 - h2) for certain, from equalities of the input points alone.
+/// (h1 - h0) == (h3 - h2) for certain: the same pairs of points, or the same exact
+/// difference. Each difference is compared as its TwoDiff pair (rounded difference, exact
+/// rounding error): for finite differences the pairs are equal iff the differences are,
+/// since equal differences round alike. An overflowing difference gives an infinite head
+/// and a NaN tail, which compares unequal: "not certain", never a wrong "equal". This
+/// sees a primitive's rigid translation as well as standing points.
 inline bool same_displacement(const Point3& h0, const Point3& h1, const Point3& h2,
                               const Point3& h3) noexcept {
-  return (h1 == h3 && h0 == h2) || (h1 == h0 && h3 == h2);
+  if (h1 == h3 && h0 == h2) return true;
+  for (int axis = 0; axis < 3; ++axis) {
+    const TwoTerm a = two_diff(h1[axis], h0[axis]);
+    const TwoTerm b = two_diff(h3[axis], h2[axis]);
+    if (a.head != b.head || a.tail != b.tail) return false;
+  }
+  return true;
 }
 
 /// x1 - x0 == x3 - x2 exactly, for corners that are all exact vectors (false otherwise).
@@ -75,7 +87,7 @@ inline bool exact_parallelogram(const Offsets<4>& a) noexcept {
 /// Certainly a parallelogram, x1 - x0 == x3 - x2 (corner order x0 = p00, x1 = p10, x2 = p01,
 /// x3 = p11), judged from the input points: each corner is head - tail, and equal head
 /// displacements with equal tail displacements give equal corner displacements. This is
-/// the common flat case in CCD, where a static primitive makes the side patches
+/// the common flat case in CCD, where a standing or translating primitive makes the side patches
 /// parallelograms; recognising it spares an exact evaluation of a volume that is zero.
 inline bool certainly_parallelogram(const Offsets<4>& a) noexcept {
   if (a[0].is_exact_vector() || a[1].is_exact_vector() || a[2].is_exact_vector() ||
