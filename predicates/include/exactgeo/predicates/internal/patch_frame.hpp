@@ -137,7 +137,7 @@ PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a) noe
     }
     return {PatchFrame::Kind::collinear, Sign::zero, {}};
   }
-  const Sign volume = certainly_parallelogram(a) ? Sign::zero : signs.tetrahedron_volume(a);
+  const Sign volume = signs.tetrahedron_volume(a, [&] { return certainly_parallelogram(a); });
   if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
   for (const auto& t : kFaceTriples) {
     for (int axis = 0; axis < 3; ++axis) {

@@ -54,6 +54,14 @@ class NamedSigns {
   Sign tetrahedron_volume(const Offsets<4>& a) const noexcept {
     return self().template sign<TetrahedronVolumeFormula, Grouping::by_axis>(a);
   }
+  /// The same, given a cheap exact test that proves the volume zero (false: no proof). The
+  /// exact policy consults it only where its filter cannot decide, so a volume that is
+  /// clearly nonzero never pays for it; the others consult it first.
+  template <class ZeroProof>
+  Sign tetrahedron_volume(const Offsets<4>& a, ZeroProof proves_zero) const noexcept {
+    return self().template sign_unless_zero<TetrahedronVolumeFormula, Grouping::by_axis>(
+        a, proves_zero);
+  }
   /// ((x1 - x0) x (x2 - x0))[axis] for a_i = x_i - o.
   Sign triangle_normal(int axis, const Offset& a0, const Offset& a1,
                        const Offset& a2) const noexcept {
@@ -101,6 +109,19 @@ class ExactSigns : public NamedSigns<ExactSigns> {
     return exact_sign<Formula, grouping>(in, parameter, counts_);
   }
 
+  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
+  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
+    if (const FilterResult f = apply_filter<Formula, grouping>(in, 0); f.certified) [[likely]] {
+      if (counts_) ++counts_->filter;
+      return sign_of(f.value);
+    }
+    if (proves_zero()) {
+      if (counts_) ++counts_->filter;
+      return Sign::zero;
+    }
+    return exact_sign<Formula, grouping>(in, 0, counts_);
+  }
+
   /// Exact numbers for the few rare-path computations done outside sign() (the folded
   /// flat patch test).
   template <std::size_t N>
@@ -119,6 +140,11 @@ class DoubleSigns : public NamedSigns<DoubleSigns> {
     return sign_of(Formula::evaluate(rounded(in), parameter));
   }
 
+  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
+  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
+    return proves_zero() ? Sign::zero : sign<Formula, grouping>(in);
+  }
+
   template <std::size_t N>
   static VectorArray<double, N> numbers(const Offsets<N>& in) noexcept {
     return rounded(in);
@@ -130,6 +156,11 @@ class RationalSigns : public NamedSigns<RationalSigns> {
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
     return rational_sign<Formula>(in, parameter);
+  }
+
+  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
+  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
+    return proves_zero() ? Sign::zero : sign<Formula, grouping>(in);
   }
 
   template <std::size_t N>
