@@ -5,6 +5,7 @@
 
 #include "exactgeo/ccd/cubic.hpp"
 #include "exactgeo/ccd/internal/boundary_image.hpp"
+#include "exactgeo/ccd/internal/coplanarity.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/root_search.hpp"
@@ -46,8 +47,18 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
                   toi ? std::optional<TimeInterval>(when) : std::nullopt};
   };
   if (parity != RootParity::even && width >= 1.0) return collision(Stage::parity, 0, {});
-  if (parity == RootParity::even && internal::certainly_no_root(image.corners)) {
-    return {false, Stage::culled, 0, {}};
+  const auto coplanarity = internal::Coplanarity::of(image.corners);
+  if (parity == RootParity::even) {
+    // A coplanarity cubic without a zero proves that there is no root, for a few double
+    // operations. One that has the same sign at both ends of the step but may vanish in
+    // between (a pass through and back, or a near miss) is rarely separated by a plane
+    // of the whole step: the search splits first. The planes are tried on the whole
+    // step otherwise (typically one coplanar moment, beside the face).
+    if (coplanarity && coplanarity->nonzero(coplanarity->whole_step())) {
+      return {false, Stage::culled, 0, {}};
+    }
+    const bool dips = coplanarity && coplanarity->same_sign_ends(coplanarity->whole_step());
+    if (!dips && internal::certainly_no_root(image.corners)) return {false, Stage::culled, 0, {}};
   }
   const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
   constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
@@ -55,7 +66,7 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   if (!piece) {  // corners beyond exact storage: report the step, unproven if even
     return collision(parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0, {});
   }
-  internal::RootSearch<C> search(std::clamp(options.max_depth, 0, 200), width);
+  internal::RootSearch<C> search(std::max(options.max_depth, 0), width, coplanarity);
   const auto found = search.earliest(*piece, parity);
   if (!found) return {false, searched, static_cast<std::uint8_t>(search.deepest()), {}};
   return collision(found->conservative ? Stage::depth_limit : searched, search.deepest(),

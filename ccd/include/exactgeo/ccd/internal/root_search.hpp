@@ -4,14 +4,21 @@
 //
 // Invariant: the search enters a piece only when no root lies before its start time, and
 // knows the piece's root parity (boundary_root and odd mean "some root"; even means none
-// or an even number). It splits the piece at its midpoint and visits the left half first:
+// or an even number). It splits the piece at its midpoint and visits the left half first.
+// A half is settled, cheapest first:
 //
-//  * a half whose corner images provably do not surround the origin (culling.hpp) holds
-//    no root;
-//  * otherwise the left half's parity is computed; the right half's parity then follows
-//    without work (the two add up to the parent's when neither has a boundary root: a
-//    root on the shared middle slice makes the left half's parity boundary_root), except
-//    after a parent boundary root, where it is computed.
+//  * it holds no root if the coplanarity cubic has no zero on it (coplanarity.hpp: a few
+//    double operations, no corners needed);
+//  * where that cubic changes sign, a crossing is likely: the half's parity is computed
+//    first, and an odd one is searched at once;
+//  * a half with "some root" parity is searched without trying to cull it;
+//  * otherwise it holds no root if its corner images provably do not surround the origin
+//    (culling.hpp), else its parity is computed (for the right half it follows without
+//    work: the two add up to the parent's when neither has a boundary root, and a root on
+//    the shared middle slice makes the left half's parity boundary_root; after a parent
+//    boundary root it is computed).
+//
+// Only halves that survive the coplanarity test get exact corners (time_pieces.hpp).
 //
 // A piece with some root and width at most the requested one is the answer: no root
 // before its start, a root within it. With no width requested (collision only) the first
@@ -26,6 +33,7 @@
 #include <optional>
 
 #include "exactgeo/ccd/internal/boundary_image.hpp"
+#include "exactgeo/ccd/internal/coplanarity.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/time_pieces.hpp"
@@ -43,31 +51,58 @@ template <std::size_t C>
 class RootSearch {
  public:
   /// width: stop at a piece with a root at most this wide (>= 1: the first one found).
-  RootSearch(int max_depth, double width) noexcept : max_depth_(max_depth), width_(width) {}
+  /// max_depth: at most kMaxSearchDepth. coplanarity: the step's certificate, if any.
+  RootSearch(int max_depth, double width, std::optional<Coplanarity> coplanarity) noexcept
+      : max_depth_(std::min(max_depth, kMaxSearchDepth)),
+        width_(width),
+        coplanarity_(coplanarity) {}
 
-  std::optional<FoundRoot> earliest(const TimePiece<C>& piece, RootParity parity) noexcept {
+  /// The whole step's search, its parity known.
+  std::optional<FoundRoot> earliest(const TimePiece<C>& step, RootParity parity) noexcept {
+    return earliest(step, parity, coplanarity_ ? coplanarity_->whole_step() : Coefficients{});
+  }
+
+  int deepest() const noexcept { return deepest_; }
+
+ private:
+  using Coefficients = CoplanarityCoefficients;
+
+  std::optional<FoundRoot> earliest(const TimePiece<C>& piece, RootParity parity,
+                                    const Coefficients& p) noexcept {
     deepest_ = std::max(deepest_, piece.depth);
     const bool some_root = parity != RootParity::even;
     if (some_root && piece.t_end - piece.t_start <= width_) {
       return FoundRoot{piece.t_start, piece.t_end, false};
     }
     if (piece.depth >= max_depth_) return FoundRoot{piece.t_start, piece.t_end, !some_root};
-    const auto halves = split(piece);
-    if (!halves) return FoundRoot{piece.t_start, piece.t_end, !some_root};
-    const auto& [left, right] = *halves;
-    if (!culled(left)) {
-      if (auto found = earliest(left, parity_of(left))) return found;
+    const auto [p_left, p_right] = split_coefficients(p);
+    bool unsplittable = false;
+    auto found = visit(piece, Half::left, p_left, std::nullopt, unsplittable);
+    if (!found && !unsplittable) {
+      // No root in the closed left half.
+      const auto right_parity =
+          parity == RootParity::boundary_root ? std::nullopt : std::optional<RootParity>(parity);
+      found = visit(piece, Half::right, p_right, right_parity, unsplittable);
     }
-    // No root in the left half, on its boundary either.
-    if (culled(right)) return std::nullopt;
-    return earliest(right, parity == RootParity::boundary_root ? parity_of(right) : parity);
+    if (unsplittable) return FoundRoot{piece.t_start, piece.t_end, !some_root};
+    return found;
   }
 
-  int deepest() const noexcept { return deepest_; }
-
- private:
-  static bool culled(const TimePiece<C>& piece) noexcept {
-    return certainly_no_root(piece.offsets(), piece.filterable());
+  /// Settles one half of `parent`: nullopt when it holds no root (proven, or searched).
+  /// Sets `unsplittable` when its corners cannot be stored: the parent is then reported,
+  /// whatever the half's search found.
+  std::optional<FoundRoot> visit(const TimePiece<C>& parent, Half which, const Coefficients& p,
+                                 std::optional<RootParity> parity, bool& unsplittable) noexcept {
+    if (coplanarity_ && coplanarity_->nonzero(p)) return std::nullopt;
+    const auto piece = half(parent, which);
+    if (!piece) {
+      unsplittable = true;
+      return std::nullopt;
+    }
+    if (!parity && coplanarity_ && coplanarity_->changes_sign(p)) parity = parity_of(*piece);
+    if (parity && *parity != RootParity::even) return earliest(*piece, *parity, p);
+    if (certainly_no_root(piece->offsets(), piece->filterable())) return std::nullopt;
+    return earliest(*piece, parity ? *parity : parity_of(*piece), p);
   }
 
   static RootParity parity_of(const TimePiece<C>& piece) noexcept {
@@ -78,6 +113,7 @@ class RootSearch {
 
   int max_depth_;
   double width_;
+  std::optional<Coplanarity> coplanarity_;
   int deepest_ = 0;
 };
 

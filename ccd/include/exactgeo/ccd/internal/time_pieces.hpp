@@ -22,8 +22,10 @@
 // makes the split report "cannot".
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <utility>
 
@@ -66,13 +68,21 @@ struct TimePiece {
 
 namespace time_piece_detail {
 
-/// The exponent range of the components: the largest exponent and the lowest possible
-/// last bit (conservative for normal numbers: ilogb - 52).
+/// The exponent of a nonzero finite double: floor(log2 |c|) for normal numbers, -1023 for
+/// subnormals (above their true exponent; their last bit, 2^-1074, is the lowest anyway).
+/// Read from the bits: this runs for every component of every piece.
+inline int exponent_of(double c) noexcept {
+  return static_cast<int>((std::bit_cast<std::uint64_t>(c) >> 52) & 0x7ff) - 1023;
+}
+
+/// The exponent range of the components: the largest exponent (exact for normal numbers,
+/// an overestimate for subnormals) and the lowest possible last bit (exponent - 52, at
+/// least 2^-1074). Components are never zero (expansions drop zeros).
 struct ComponentRange {
   int top = -2000;
   int grain = 2000;
   void include(double c) noexcept {
-    const int e = std::ilogb(c);
+    const int e = exponent_of(c);
     top = std::max(top, e);
     grain = std::min(grain, std::max(e - 52, -1074));
   }
@@ -80,8 +90,17 @@ struct ComponentRange {
 
 inline Coordinate scaled(const Coordinate& x, int s) noexcept {
   Coordinate r = x;
+  if (s == 0) return r;
   for (int i = 0; i < r.size(); ++i)
     r.mutable_data()[i] = std::ldexp(r.data()[i], s);
+  return r;
+}
+
+/// 2 x: exact (pieces keep their components far below overflow).
+inline Coordinate doubled(const Coordinate& x) noexcept {
+  Coordinate r = x;
+  for (int i = 0; i < r.size(); ++i)
+    r.mutable_data()[i] = 2.0 * r.data()[i];
   return r;
 }
 
@@ -145,8 +164,11 @@ std::optional<TimePiece<C>> whole_step(const Offsets<C>& corners) noexcept {
   ExactCorners<C> x;
   for (std::size_t k = 0; k < C; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
-      x[k][axis] = exactgeo::internal::Expansion<2>::difference(
-          std::ldexp(corners[k].head(axis), s), std::ldexp(corners[k].tail(axis), s));
+      const double head = corners[k].head(axis);
+      const double tail = corners[k].tail(axis);
+      x[k][axis] = s == 0 ? exactgeo::internal::Expansion<2>::difference(head, tail)
+                          : exactgeo::internal::Expansion<2>::difference(std::ldexp(head, s),
+                                                                         std::ldexp(tail, s));
     }
   }
   const auto vectors = normalized(x);
@@ -154,31 +176,34 @@ std::optional<TimePiece<C>> whole_step(const Offsets<C>& corners) noexcept {
   return TimePiece<C>{*vectors, 0.0, 1.0, 0};
 }
 
-/// The two halves of a piece at its midpoint time, or nullopt when the midpoint corners
+enum class Half { left, right };
+
+/// One half of a piece, split at its midpoint time, or nullopt when the midpoint corners
 /// cannot be stored exactly (see above).
 template <std::size_t C>
-std::optional<std::pair<TimePiece<C>, TimePiece<C>>> split(const TimePiece<C>& p) noexcept {
+std::optional<TimePiece<C>> half(const TimePiece<C>& p, Half which) noexcept {
   constexpr std::size_t H = C / 2;
-  ExactCorners<C> left;
-  ExactCorners<C> right;
+  ExactCorners<C> x;
   for (std::size_t k = 0; k < H; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
       const Coordinate& start = p.corners[k].exact[axis];
       const Coordinate& end = p.corners[H + k].exact[axis];
       auto mid = (start + end).compress().template narrow<ExactVector::kCapacity>();
       if (!mid) return std::nullopt;
-      left[k][axis] = time_piece_detail::scaled(start, 1);
-      left[H + k][axis] = *mid;
-      right[k][axis] = *mid;
-      right[H + k][axis] = time_piece_detail::scaled(end, 1);
+      if (which == Half::left) {
+        x[k][axis] = time_piece_detail::doubled(start);
+        x[H + k][axis] = *mid;
+      } else {
+        x[k][axis] = *mid;
+        x[H + k][axis] = time_piece_detail::doubled(end);
+      }
     }
   }
-  const auto l = normalized(left);
-  const auto r = normalized(right);
-  if (!l || !r) return std::nullopt;
+  const auto corners = normalized(x);
+  if (!corners) return std::nullopt;
   const double t_mid = 0.5 * (p.t_start + p.t_end);  // exact: dyadic, depth < 1000
-  return std::pair{TimePiece<C>{*l, p.t_start, t_mid, p.depth + 1},
-                   TimePiece<C>{*r, t_mid, p.t_end, p.depth + 1}};
+  return which == Half::left ? TimePiece<C>{*corners, p.t_start, t_mid, p.depth + 1}
+                             : TimePiece<C>{*corners, t_mid, p.t_end, p.depth + 1};
 }
 
 }  // namespace exactgeo::ccd::internal
