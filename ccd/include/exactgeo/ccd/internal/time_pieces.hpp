@@ -40,9 +40,6 @@ using exactgeo::internal::Offsets;
 using Coordinate = ExactVector::Coordinate;
 
 template <std::size_t C>
-using ExactCorners = std::array<std::array<Coordinate, 3>, C>;
-
-template <std::size_t C>
 struct TimePiece {
   /// Corners 0 .. C/2 - 1 at t_start, the others at t_end, all scaled alike.
   std::array<ExactVector, C> corners;
@@ -106,39 +103,33 @@ inline Coordinate doubled(const Coordinate& x) noexcept {
 
 }  // namespace time_piece_detail
 
-/// Rescales every component by the same power of two so that the largest lies in [1, 2)
-/// (or as close as exactness allows), then builds the piece's exact vectors.
+/// Completes corners whose exact coordinates are set, in place: rescales every component
+/// by the same power of two so that the largest lies in [1, 2) (or as close as exactness
+/// allows), then sets the rounded values. False when the corners cannot be stored.
 template <std::size_t C>
-std::optional<std::array<ExactVector, C>> normalized(const ExactCorners<C>& x) noexcept {
+bool complete_corners(std::array<ExactVector, C>& corners) noexcept {
   time_piece_detail::ComponentRange range;
-  for (const auto& corner : x) {
-    for (const Coordinate& c : corner) {
+  for (const ExactVector& corner : corners) {
+    for (const Coordinate& c : corner.exact) {
       for (int i = 0; i < c.size(); ++i)
         range.include(c.data()[i]);
     }
   }
-  std::array<ExactVector, C> out;
-  if (range.top == -2000) {  // every corner is the origin
-    for (std::size_t k = 0; k < C; ++k)
-      out[k] = exactgeo::internal::make_exact_vector(x[k]);
-    return out;
-  }
   // Largest component into [1, 2), unless a last bit would fall below 2^-1074. Pieces
   // whose largest component is already within [2^-32, 2^32] are left as they are (each
-  // split doubles the scale; rescaling every time would cost more than it saves).
-  if (range.top >= -32 && range.top <= 32) {
-    for (std::size_t k = 0; k < C; ++k)
-      out[k] = exactgeo::internal::make_exact_vector(x[k]);
-    return out;
+  // split doubles the scale; rescaling every time would cost more than it saves); so is
+  // a piece whose corners are all the origin.
+  if (range.top != -2000 && (range.top < -32 || range.top > 32)) {
+    const int s = std::max(-range.top, -1074 - range.grain);
+    if (range.top + s > 1000) return false;
+    for (ExactVector& corner : corners) {
+      for (Coordinate& c : corner.exact)
+        c = time_piece_detail::scaled(c, s);
+    }
   }
-  const int s = std::max(-range.top, -1074 - range.grain);
-  if (range.top + s > 1000) return std::nullopt;
-  for (std::size_t k = 0; k < C; ++k) {
-    out[k] = exactgeo::internal::make_exact_vector({time_piece_detail::scaled(x[k][0], s),
-                                                    time_piece_detail::scaled(x[k][1], s),
-                                                    time_piece_detail::scaled(x[k][2], s)});
-  }
-  return out;
+  for (ExactVector& corner : corners)
+    exactgeo::internal::complete_exact_vector(corner);
+  return true;
 }
 
 /// The whole step [0, 1] as a piece, from the query's corners (differences of doubles).
@@ -161,19 +152,19 @@ std::optional<TimePiece<C>> whole_step(const Offsets<C>& corners) noexcept {
     if (smallest < 0x1p-1020) return std::nullopt;
     s = -2;
   }
-  ExactCorners<C> x;
+  std::optional<TimePiece<C>> piece(std::in_place);
   for (std::size_t k = 0; k < C; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
       const double head = corners[k].head(axis);
       const double tail = corners[k].tail(axis);
-      x[k][axis] = s == 0 ? exactgeo::internal::Expansion<2>::difference(head, tail)
-                          : exactgeo::internal::Expansion<2>::difference(std::ldexp(head, s),
-                                                                         std::ldexp(tail, s));
+      piece->corners[k].exact[axis] = s == 0
+                                          ? exactgeo::internal::Expansion<2>::difference(head, tail)
+                                          : exactgeo::internal::Expansion<2>::difference(
+                                                std::ldexp(head, s), std::ldexp(tail, s));
     }
   }
-  const auto vectors = normalized(x);
-  if (!vectors) return std::nullopt;
-  return TimePiece<C>{*vectors, 0.0, 1.0, 0};
+  if (!complete_corners(piece->corners)) return std::nullopt;
+  return piece;
 }
 
 enum class Half { left, right };
@@ -183,7 +174,8 @@ enum class Half { left, right };
 template <std::size_t C>
 std::optional<TimePiece<C>> half(const TimePiece<C>& p, Half which) noexcept {
   constexpr std::size_t H = C / 2;
-  ExactCorners<C> x;
+  std::optional<TimePiece<C>> piece(std::in_place);
+  auto& x = piece->corners;
   for (std::size_t k = 0; k < H; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
       const Coordinate& start = p.corners[k].exact[axis];
@@ -191,19 +183,20 @@ std::optional<TimePiece<C>> half(const TimePiece<C>& p, Half which) noexcept {
       auto mid = (start + end).compress().template narrow<ExactVector::kCapacity>();
       if (!mid) return std::nullopt;
       if (which == Half::left) {
-        x[k][axis] = time_piece_detail::doubled(start);
-        x[H + k][axis] = *mid;
+        x[k].exact[axis] = time_piece_detail::doubled(start);
+        x[H + k].exact[axis] = *mid;
       } else {
-        x[k][axis] = *mid;
-        x[H + k][axis] = time_piece_detail::doubled(end);
+        x[k].exact[axis] = *mid;
+        x[H + k].exact[axis] = time_piece_detail::doubled(end);
       }
     }
   }
-  const auto corners = normalized(x);
-  if (!corners) return std::nullopt;
+  if (!complete_corners(x)) return std::nullopt;
   const double t_mid = 0.5 * (p.t_start + p.t_end);  // exact: dyadic, depth < 1000
-  return which == Half::left ? TimePiece<C>{*corners, p.t_start, t_mid, p.depth + 1}
-                             : TimePiece<C>{*corners, t_mid, p.t_end, p.depth + 1};
+  piece->t_start = which == Half::left ? p.t_start : t_mid;
+  piece->t_end = which == Half::left ? t_mid : p.t_end;
+  piece->depth = p.depth + 1;
+  return piece;
 }
 
 }  // namespace exactgeo::ccd::internal

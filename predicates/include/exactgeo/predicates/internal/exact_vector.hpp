@@ -14,6 +14,7 @@
 //
 // whenever `filterable` is true (see make_exact_vector). The exact stages read `exact`.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
@@ -72,14 +73,30 @@ std::optional<double> within_half_ulp(const Expansion<K>& e) noexcept {
   return std::nullopt;
 }
 
-/// An ExactVector from exact coordinates (each compressed here). `rounded` is exact for
-/// one-component coordinates, within half an ulp for the others when they are normal;
-/// otherwise it is the largest component (correct sign, zero only for zero) and the vector
-/// is not filterable.
-inline ExactVector make_exact_vector(std::array<ExactVector::Coordinate, 3> exact) noexcept {
-  ExactVector v;
+/// Certainly different exact values, judged from the rounded ones alone. Filterable
+/// coordinates are within u |rounded| of the exact ones, so equal exact coordinates have
+/// rounded values at most u (|r| + |s|) <= 2^-52 max(|r|, |s|) apart; the computed
+/// |r - s| is exact when r and s are within a factor 2 (Sterbenz) and far above that bound
+/// otherwise, and 2^-52 max is exact while max >= 2^-960 (below, no claim).
+inline bool certainly_different(const ExactVector& a, const ExactVector& b) noexcept {
+  if (!a.filterable || !b.filterable) return false;
   for (int axis = 0; axis < 3; ++axis) {
-    ExactVector::Coordinate& x = exact[axis];
+    const double r = a.rounded[axis];
+    const double s = b.rounded[axis];
+    const double largest = std::max(std::fabs(r), std::fabs(s));
+    if (largest >= 0x1p-960 && std::fabs(r - s) > 0x1p-52 * largest) return true;
+  }
+  return false;
+}
+
+/// Completes an ExactVector whose exact coordinates are set: compresses them and sets
+/// `rounded` and `filterable`. `rounded` is exact for one-component coordinates, within
+/// half an ulp for the others when they are normal; otherwise it is the largest component
+/// (correct sign, zero only for zero) and the vector is not filterable.
+inline void complete_exact_vector(ExactVector& v) noexcept {
+  v.filterable = true;
+  for (int axis = 0; axis < 3; ++axis) {
+    ExactVector::Coordinate& x = v.exact[axis];
     x.compress();
     if (x.size() <= 1) {
       v.rounded[axis] = x.head();
@@ -90,7 +107,13 @@ inline ExactVector make_exact_vector(std::array<ExactVector::Coordinate, 3> exac
       v.filterable = false;
     }
   }
+}
+
+/// An ExactVector from exact coordinates (see complete_exact_vector).
+inline ExactVector make_exact_vector(const std::array<ExactVector::Coordinate, 3>& exact) noexcept {
+  ExactVector v;
   v.exact = exact;
+  complete_exact_vector(v);
   return v;
 }
 

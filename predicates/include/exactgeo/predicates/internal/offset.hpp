@@ -56,6 +56,7 @@ class Offset {
   bool same_points_as(const Offset& other) const noexcept {
     if (is_exact_vector() || other.is_exact_vector()) {
       return is_exact_vector() && other.is_exact_vector() &&
+             !certainly_different(exact_vector(), other.exact_vector()) &&
              exact_vector().exact == other.exact_vector().exact;
     }
     return *head_ == *other.head_ && *tail_ == *other.tail_;
