@@ -8,12 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <string>
 
 #include "ccd/query_transforms.hpp"
 #include "cli/ccd_queries.hpp"
+#include "exactgeo/predicates/ray_directions.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
@@ -217,6 +219,68 @@ TEST(RootParity, RationalArithmeticAgrees) {
     const auto e = random_dyadic_query<EdgeEdgeQuery>(rng);
     ASSERT_EQ(edge_edge_root_parity(e, Arithmetic::rational).parity, ee(e));
   }
+}
+
+/// A grid query moved by a random non-dyadic offset: the rounding of the moved points
+/// breaks the grid's exact degeneracies by about an ulp, which is where filters must
+/// hand over to exact arithmetic. Also scaled by 2^k, up to the edges of the guards.
+template <class Query>
+Query near_degenerate_query(Rng& rng) {
+  const Point3 offset = testing::random_point(rng, 4.0);
+  const int k = testing::uniform_int(rng, -700, 700);
+  return mapped(random_dyadic_query<Query>(rng), [&](const Point3& x) {
+    return testing::scaled({x[0] + offset[0], x[1] + offset[1], x[2] + offset[2]}, k);
+  });
+}
+
+TEST(RootParity, RationalArithmeticAgreesNearDegeneracies) {
+  Rng rng = testing::seeded_engine("ccd-rational-near-degenerate");
+  int double_differs = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const auto v = near_degenerate_query<VertexFaceQuery>(rng);
+    const RootParity vf_rational = vertex_face_root_parity(v, Arithmetic::rational).parity;
+    ASSERT_EQ(vf_rational, vf(v)) << "vertex-face case " << i;
+    double_differs += vertex_face_root_parity(v, Arithmetic::plain_double).parity != vf_rational;
+    const auto e = near_degenerate_query<EdgeEdgeQuery>(rng);
+    const RootParity ee_rational = edge_edge_root_parity(e, Arithmetic::rational).parity;
+    ASSERT_EQ(ee_rational, ee(e)) << "edge-edge case " << i;
+    double_differs += edge_edge_root_parity(e, Arithmetic::plain_double).parity != ee_rational;
+  }
+  std::printf("plain double differs from rational on %d of 3000 queries\n", double_differs);
+  EXPECT_GT(double_differs, 0);  // the inputs are hard enough to matter
+}
+
+/// 2 s d - x in doubles: with x a corner, the corner that makes the first ray pass within
+/// rounding of the midpoint of their edge.
+Point3 mirrored_through_ray(const Point3& x, double s) {
+  const Vector3 d = exactgeo::ray_direction(0);
+  return {2 * s * d[0] - x[0], 2 * s * d[1] - x[1], 2 * s * d[2] - x[2]};
+}
+
+Point3 minus(const Point3& a, const Point3& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+
+TEST(RootParity, RationalArithmeticAgreesWhenTheRayGrazesAnEdge) {
+  // The first ray passes within rounding of an edge of the t0 slice: its edge signs are
+  // near zero, where the ray tests' filters must hand over to exact arithmetic.
+  Rng rng = testing::seeded_engine("ccd-rational-grazing-ray");
+  int double_differs = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const double s = testing::uniform(rng, 0.25, 2.0);
+    auto v = near_degenerate_query<VertexFaceQuery>(rng);
+    v.f1_t0 = minus(v.v_t0, mirrored_through_ray(minus(v.v_t0, v.f0_t0), s));
+    const RootParity vf_rational = vertex_face_root_parity(v, Arithmetic::rational).parity;
+    ASSERT_EQ(vf_rational, vf(v)) << "vertex-face case " << i;
+    double_differs += vertex_face_root_parity(v, Arithmetic::plain_double).parity != vf_rational;
+    auto e = near_degenerate_query<EdgeEdgeQuery>(rng);
+    e.eb1_t0 = minus(e.ea0_t0, mirrored_through_ray(minus(e.ea0_t0, e.eb0_t0), s));
+    const RootParity ee_rational = edge_edge_root_parity(e, Arithmetic::rational).parity;
+    ASSERT_EQ(ee_rational, ee(e)) << "edge-edge case " << i;
+    double_differs += edge_edge_root_parity(e, Arithmetic::plain_double).parity != ee_rational;
+  }
+  std::printf("plain double differs from rational on %d of 3000 queries\n", double_differs);
+  EXPECT_GT(double_differs, 0);
 }
 
 // --- benchmark data ---------------------------------------------------------------------

@@ -13,7 +13,10 @@
 // Policies are small value types without global state; they are safe to copy and to use
 // from many threads (a StageCounts must not be shared between threads).
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "exactgeo/predicates/arithmetic.hpp"
@@ -122,6 +125,11 @@ class ExactSigns : public NamedSigns<ExactSigns> {
     return exact_sign<Formula, grouping>(in, 0, counts_);
   }
 
+  /// Records one sign decided by a filter outside this policy (StaticDet3Signs).
+  void count_filter() const noexcept {
+    if (counts_) ++counts_->filter;
+  }
+
   /// Exact numbers for the few rare-path computations done outside sign() (the folded
   /// flat patch test).
   template <std::size_t N>
@@ -132,6 +140,94 @@ class ExactSigns : public NamedSigns<ExactSigns> {
  private:
   StageCounts* counts_;
 };
+
+/// Error bounds for det3 signs whose inputs are all among a known set of vectors, fixed
+/// once for the set (a static filter) instead of measured per sign.
+struct Det3Bounds {
+  double by_axis = INFINITY;    ///< det3_by_axis of three of the vectors
+  double by_vector = INFINITY;  ///< det3_by_vector of the vectors and at most one direction
+};
+
+/// The bounds for `vectors` and `direction`. The filter's analysis (roundoff.hpp) holds for
+/// any upper bounds m_g on the magnitudes of each group's inputs that lie within its guard,
+/// not only for the measured maxima: here m_g is the largest |coordinate| of all the vectors
+/// on axis g (by axis), or, by vector, A for a vector and max(A, |direction|) for the third
+/// factor (A: the largest coordinate of all the vectors), which bounds every product of
+/// three group maxima with at most one direction. Unusable (out of the guard): infinite.
+template <std::size_t N>
+Det3Bounds det3_bounds(const Offsets<N>& vectors, const Vector3& direction) noexcept {
+  Vec3<double> axis_max{};
+  for (const Offset& o : vectors) {
+    const Vec3<double> r = o.rounded();
+    for (int a = 0; a < 3; ++a)
+      axis_max[a] = std::max(axis_max[a], std::fabs(r[a]));
+  }
+  const double largest = std::max({axis_max[0], axis_max[1], axis_max[2]});
+  const double third = std::max(
+      {largest, std::fabs(direction[0]), std::fabs(direction[1]), std::fabs(direction[2])});
+  constexpr auto& by_axis = kFilterConstant<Det3Formula, Grouping::by_axis>;
+  constexpr auto& by_vector = kFilterConstant<Det3Formula, Grouping::by_vector>;
+  auto in_guard = [](const auto& constant, double m) {
+    return m >= constant.guard_low && m <= constant.guard_high;
+  };
+  Det3Bounds b;
+  if (in_guard(by_axis, axis_max[0]) && in_guard(by_axis, axis_max[1]) &&
+      in_guard(by_axis, axis_max[2])) {
+    b.by_axis = by_axis.epsilon * axis_max[0] * axis_max[1] * axis_max[2];
+  }
+  if (in_guard(by_vector, largest) && in_guard(by_vector, third)) {
+    b.by_vector = by_vector.epsilon * largest * largest * third;
+  }
+  return b;
+}
+
+/// ExactSigns behind a static filter for det3 signs (Det3Bounds): the one compare that
+/// replaces the per-sign maxima where the bound certifies, the full exact policy
+/// elsewhere. Only for signs whose inputs are among the vectors the bounds were made for.
+class StaticDet3Signs : public NamedSigns<StaticDet3Signs> {
+ public:
+  StaticDet3Signs(const ExactSigns& exact, const Det3Bounds& bounds) noexcept
+      : exact_(exact), bounds_(bounds) {}
+
+  template <class Formula, Grouping grouping, std::size_t N>
+  Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
+    if constexpr (std::is_same_v<Formula, Det3Formula> && grouping != Grouping::by_projected_axis) {
+      const double bound = grouping == Grouping::by_axis ? bounds_.by_axis : bounds_.by_vector;
+      const double value = Formula::evaluate(rounded(in), parameter);
+      if (std::fabs(value) > bound) [[likely]] {
+        exact_.count_filter();
+        return sign_of(value);
+      }
+    }
+    return exact_.sign<Formula, grouping>(in, parameter);
+  }
+
+  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
+  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
+    return exact_.sign_unless_zero<Formula, grouping>(in, proves_zero);
+  }
+
+  template <std::size_t N>
+  static VectorArray<Rational, N> numbers(const Offsets<N>& in) {
+    return ExactSigns::numbers(in);
+  }
+
+ private:
+  ExactSigns exact_;
+  Det3Bounds bounds_;
+};
+
+/// The policy for signs among `vectors` and `direction`: the static filter in front of the
+/// exact policy; any other policy unchanged.
+template <class Signs, std::size_t N>
+auto with_static_filter(const Signs& signs, const Offsets<N>& vectors,
+                        const Vector3& direction) noexcept {
+  if constexpr (std::is_same_v<Signs, ExactSigns>) {
+    return StaticDet3Signs(signs, det3_bounds(vectors, direction));
+  } else {
+    return signs;
+  }
+}
 
 class DoubleSigns : public NamedSigns<DoubleSigns> {
  public:
