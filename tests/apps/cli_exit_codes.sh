@@ -58,6 +58,14 @@ echo "[true, false]" >"$scratch/two.json"
 expect 2 "ccd truth length mismatch" "" ccd --type vf --truth "$scratch/two.json" "$scratch/six.csv"
 echo "1,2,3,4,5,6,7" >"$scratch/bad.csv"
 expect 2 "ccd malformed row" "" ccd --type ee "$scratch/bad.csv"
+expect 2 "ccd zero timing passes" "" ccd --repeat 0 "$unit"
+# Timing passes change the time only: the counts are those of a single pass.
+once=$("$exe" ccd --json "$unit" | sed 's/"ns_per_query": [0-9.]*//g')
+thrice=$("$exe" ccd --json --repeat 3 "$unit" | sed 's/"ns_per_query": [0-9.]*//g')
+if [ -z "$once" ] || [ "$once" != "$thrice" ]; then
+  echo "FAIL: ccd --repeat 3 changed the counts: $thrice"
+  failures=$((failures + 1))
+fi
 
 json=$("$exe" ccd --json --per-query "$scratch/per-query.csv" "$unit")
 for key in '"method": "exact"' '"false_negatives": 0' '"false_positives": 0' '"vertex_face": {' \
