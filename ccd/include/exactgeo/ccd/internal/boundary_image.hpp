@@ -27,9 +27,10 @@ using exactgeo::internal::Offset;
 using exactgeo::internal::Offsets;
 
 struct Face {
-  enum class Kind : std::uint8_t { triangle, patch };
+  enum class Kind : std::uint8_t { triangle, patch, parallelogram };
   Kind kind;
-  /// triangle: three corner indices (the fourth unused); patch: p00, p10, p11, p01.
+  /// triangle: three corner indices (the fourth unused); patch and parallelogram (a patch
+  /// known to be one): p00, p10, p11, p01.
   std::array<std::uint8_t, 4> corners;
 };
 
@@ -47,13 +48,16 @@ inline constexpr std::array<Face, 5> kPrismFaces{{
     {Face::Kind::patch, {0, 3, 5, 2}},     // u = 0: edge f0 f2, parameters (t, v)
 }};
 
+// The time slices of edge-edge are parallelograms whatever the input: c_t1j - c_t0j =
+// ea1(t) - ea0(t) for both j. Exactly so for every piece of the step too (its corners are
+// exact combinations of these), so their flatness is known without a volume sign.
 inline constexpr std::array<Face, 6> kHexahedronFaces{{
-    {Face::Kind::patch, {0, 2, 3, 1}},  // t = 0, parameters (u, v)
-    {Face::Kind::patch, {4, 6, 7, 5}},  // t = 1
-    {Face::Kind::patch, {0, 4, 5, 1}},  // u = 0, parameters (t, v)
-    {Face::Kind::patch, {2, 6, 7, 3}},  // u = 1
-    {Face::Kind::patch, {0, 4, 6, 2}},  // v = 0, parameters (t, u)
-    {Face::Kind::patch, {1, 5, 7, 3}},  // v = 1
+    {Face::Kind::parallelogram, {0, 2, 3, 1}},  // t = 0, parameters (u, v)
+    {Face::Kind::parallelogram, {4, 6, 7, 5}},  // t = 1
+    {Face::Kind::patch, {0, 4, 5, 1}},          // u = 0, parameters (t, v)
+    {Face::Kind::patch, {2, 6, 7, 3}},          // u = 1
+    {Face::Kind::patch, {0, 4, 6, 2}},          // v = 0, parameters (t, u)
+    {Face::Kind::patch, {1, 5, 7, 3}},          // v = 1
 }};
 
 /// The faces of the domain with C corners: the prism (6) or the hexahedron (8). Corners

@@ -42,8 +42,11 @@ template <class Signs, std::size_t C, std::size_t F>
 RootParityResult root_parity(const Signs& signs, const BoundaryImage<C, F>& image) noexcept {
   std::array<in::PatchFrame, F> frames{};
   for (std::size_t f = 0; f < F; ++f) {
-    if (image.faces[f].kind == Face::Kind::patch) {
-      frames[f] = in::patch_frame_from_offsets(signs, patch_corners(image.corners, image.faces[f]));
+    if (image.faces[f].kind != Face::Kind::triangle) {
+      frames[f] = in::patch_frame_from_offsets(signs, patch_corners(image.corners, image.faces[f]),
+                                               image.faces[f].kind == Face::Kind::parallelogram
+                                                   ? in::KnownShape::parallelogram
+                                                   : in::KnownShape::none);
     }
   }
   for (std::size_t k = 0; k < kRayDirectionCount; ++k) {

@@ -103,11 +103,30 @@ inline bool certainly_parallelogram(const Offsets<4>& a) noexcept {
   return disp_equal(0, 1, 2, 3) || disp_equal(0, 2, 1, 3);  // along u, or along v
 }
 
+/// The frame of a patch whose volume is zero: planar if some corner triple spans a plane,
+/// else collinear.
+template <class Signs>
+PatchFrame flat_patch_frame(const Signs& signs, const Offsets<4>& a) noexcept {
+  for (const auto& t : kFaceTriples) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (signs.triangle_normal(axis, a[t[0]], a[t[1]], a[t[2]]) != Sign::zero) {
+        return {PatchFrame::Kind::planar, Sign::zero, t};
+      }
+    }
+  }
+  return {PatchFrame::Kind::collinear, Sign::zero, {}};
+}
+
+/// Whether the patch is flat for a reason the caller knows (a parallelogram by
+/// construction), or its volume has to be found.
+enum class KnownShape { none, parallelogram };
+
 /// The same frame for corners known only relative to some origin (a_i = x_i - o), as in
 /// continuous collision detection, where every corner is a difference of two inputs.
 /// Equal to patch_frame of the corners themselves; the filters are relative to |a_i|.
 template <class Signs>
-PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a) noexcept {
+PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a,
+                                    KnownShape known = KnownShape::none) noexcept {
   // Corners that are the same difference of the same points coincide: with at most two
   // distinct ones the patch is a segment or a point (no evaluation needed).
   int distinct = 0;
@@ -137,16 +156,10 @@ PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a) noe
     }
     return {PatchFrame::Kind::collinear, Sign::zero, {}};
   }
+  if (known == KnownShape::parallelogram) return flat_patch_frame(signs, a);
   const Sign volume = signs.tetrahedron_volume(a, [&] { return certainly_parallelogram(a); });
   if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
-  for (const auto& t : kFaceTriples) {
-    for (int axis = 0; axis < 3; ++axis) {
-      if (signs.triangle_normal(axis, a[t[0]], a[t[1]], a[t[2]]) != Sign::zero) {
-        return {PatchFrame::Kind::planar, Sign::zero, t};
-      }
-    }
-  }
-  return {PatchFrame::Kind::collinear, Sign::zero, {}};
+  return flat_patch_frame(signs, a);
 }
 
 }  // namespace exactgeo::internal
