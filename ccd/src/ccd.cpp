@@ -7,6 +7,7 @@
 #include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/coplanarity.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
+#include "exactgeo/ccd/internal/polynomial_decision.hpp"
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/root_search.hpp"
 #include "exactgeo/ccd/internal/time_pieces.hpp"
@@ -16,6 +17,10 @@
 namespace exactgeo::ccd {
 
 namespace {
+
+/// How many times the polynomial decision may halve the step before it hands over to the
+/// search with pieces.
+constexpr int kPolynomialDepth = 16;
 
 Arithmetic parity_arithmetic(Method m) noexcept {
   switch (m) {
@@ -56,6 +61,20 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
     // step otherwise (typically one coplanar moment, beside the face).
     if (coplanarity && coplanarity->nonzero(coplanarity->whole_step())) {
       return {false, Stage::culled, 0, {}};
+    }
+    // Collision only: the polynomials may settle the step without pieces.
+    if (coplanarity && width >= 1.0) {
+      constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
+      switch (internal::decide_by_polynomials<C>(*coplanarity, coplanarity->whole_step(),
+                                                 internal::SliceSides<C>::of(image.corners),
+                                                 kPolynomialDepth)) {
+        case internal::PieceVerdict::no_root:
+          return {false, Stage::subdivision, 0, {}};
+        case internal::PieceVerdict::root:
+          return collision(Stage::subdivision, 0, {});
+        case internal::PieceVerdict::unknown:
+          break;
+      }
     }
     const bool dips = coplanarity && coplanarity->same_sign_ends(coplanarity->whole_step());
     if (!dips && internal::certainly_no_root(image.corners)) return {false, Stage::culled, 0, {}};

@@ -34,6 +34,51 @@ Query random_dyadic_query(testing::Rng& rng) {
   return q;
 }
 
+/// A grid query moved by a random non-dyadic offset and scaled by 2^k: the rounding of
+/// the moved points breaks the grid's exact degeneracies by about an ulp, and every
+/// product of their differences rounds. Where filters must hand over to exact arithmetic.
+template <class Query>
+Query near_degenerate_query(testing::Rng& rng) {
+  const Point3 offset = testing::random_point(rng, 4.0);
+  const int k = testing::uniform_int(rng, -700, 700);
+  return mapped(random_dyadic_query<Query>(rng), [&](const Point3& x) {
+    return testing::scaled({x[0] + offset[0], x[1] + offset[1], x[2] + offset[2]}, k);
+  });
+}
+
+/// Query `i` of a mix that certificates must survive, from a grid query: as it is (often
+/// exactly degenerate), one point one ulp off the grid, exactly scaled by 2^k with |k| in
+/// [200, 1000], moved off the grid by random amounts (generic), or near-degenerate.
+template <class Query>
+Query varied_query(testing::Rng& rng, int i) {
+  if (i % 5 == 4) return near_degenerate_query<Query>(rng);
+  Query q = random_dyadic_query<Query>(rng);
+  switch (i % 5) {
+    case 0:
+      break;
+    case 1: {
+      Point3* p = points(q)[testing::uniform_int(rng, 0, 7)];
+      *p = testing::ulp_step(*p, testing::uniform_int(rng, 0, 2),
+                             testing::uniform_int(rng, 0, 1) * 2 - 1);
+      break;
+    }
+    case 2: {
+      const int magnitude = testing::uniform_int(rng, 200, 1000);
+      const int k = testing::uniform_int(rng, 0, 1) == 0 ? magnitude : -magnitude;
+      q = mapped(q, [k](const Point3& x) { return testing::scaled(x, k); });
+      break;
+    }
+    default:
+      q = mapped(q, [&](const Point3& x) {
+        return Point3{x[0] + testing::uniform(rng, -0.5, 0.5),
+                      x[1] + testing::uniform(rng, -0.5, 0.5),
+                      x[2] + testing::uniform(rng, -0.5, 0.5)};
+      });
+      break;
+  }
+  return q;
+}
+
 template <class Query>
 Query time_reversed(Query q) {
   auto p = points(q);

@@ -221,18 +221,6 @@ TEST(RootParity, RationalArithmeticAgrees) {
   }
 }
 
-/// A grid query moved by a random non-dyadic offset: the rounding of the moved points
-/// breaks the grid's exact degeneracies by about an ulp, which is where filters must
-/// hand over to exact arithmetic. Also scaled by 2^k, up to the edges of the guards.
-template <class Query>
-Query near_degenerate_query(Rng& rng) {
-  const Point3 offset = testing::random_point(rng, 4.0);
-  const int k = testing::uniform_int(rng, -700, 700);
-  return mapped(random_dyadic_query<Query>(rng), [&](const Point3& x) {
-    return testing::scaled({x[0] + offset[0], x[1] + offset[1], x[2] + offset[2]}, k);
-  });
-}
-
 TEST(RootParity, RationalArithmeticAgreesNearDegeneracies) {
   Rng rng = testing::seeded_engine("ccd-rational-near-degenerate");
   int double_differs = 0;

@@ -1,0 +1,133 @@
+#pragma once
+
+// Exact polynomials in time for the CCD certificate tests: GMP rational coefficients, the
+// moving points of a query as affine polynomials, and Sturm sequences to decide whether a
+// polynomial has a root in a closed interval. Written for clarity, not speed.
+
+#include <gmpxx.h>
+
+#include <array>
+#include <vector>
+
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo::ccd::testing_polynomials {
+
+/// A polynomial in t with rational coefficients, lowest degree first.
+using Polynomial = std::vector<mpq_class>;
+
+inline Polynomial operator*(const Polynomial& a, const Polynomial& b) {
+  Polynomial r(a.size() + b.size() - 1, mpq_class(0));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j)
+      r[i + j] += a[i] * b[j];
+  }
+  return r;
+}
+
+inline Polynomial operator+(Polynomial a, const Polynomial& b) {
+  if (a.size() < b.size()) a.resize(b.size(), mpq_class(0));
+  for (std::size_t i = 0; i < b.size(); ++i)
+    a[i] += b[i];
+  return a;
+}
+
+inline Polynomial operator-(const Polynomial& a) {
+  Polynomial r = a;
+  for (mpq_class& c : r)
+    c = -c;
+  return r;
+}
+
+inline void trim(Polynomial& p) {
+  while (!p.empty() && p.back() == 0)
+    p.pop_back();
+}
+
+inline mpq_class evaluate(const Polynomial& p, const mpq_class& t) {
+  mpq_class value = 0;
+  for (std::size_t i = p.size(); i-- > 0;)
+    value = value * t + p[i];
+  return value;
+}
+
+/// The remainder of a divided by b (b nonzero, trimmed).
+inline Polynomial remainder(Polynomial a, const Polynomial& b) {
+  trim(a);
+  while (a.size() >= b.size() && !a.empty()) {
+    const mpq_class factor = a.back() / b.back();
+    const std::size_t shift = a.size() - b.size();
+    for (std::size_t i = 0; i < b.size(); ++i)
+      a[shift + i] -= factor * b[i];
+    trim(a);
+  }
+  return a;
+}
+
+/// Whether the nonzero polynomial p has a root in the closed interval [a, b] (Sturm).
+inline bool has_root_in(Polynomial p, const mpq_class& a, const mpq_class& b) {
+  trim(p);
+  if (evaluate(p, a) == 0 || evaluate(p, b) == 0) return true;
+  std::vector<Polynomial> sequence{p};
+  Polynomial derivative;
+  for (std::size_t i = 1; i < p.size(); ++i)
+    derivative.push_back(p[i] * static_cast<long>(i));
+  trim(derivative);
+  if (!derivative.empty()) sequence.push_back(derivative);
+  while (sequence.size() >= 2 && !sequence.back().empty()) {
+    Polynomial next = -remainder(sequence[sequence.size() - 2], sequence.back());
+    trim(next);
+    if (next.empty()) break;
+    sequence.push_back(next);
+  }
+  auto variations = [&](const mpq_class& t) {
+    int count = 0;
+    int previous = 0;
+    for (const Polynomial& q : sequence) {
+      const int s = sgn(evaluate(q, t));
+      if (s == 0) continue;
+      if (previous != 0 && s != previous) ++count;
+      previous = s;
+    }
+    return count;
+  };
+  return variations(a) - variations(b) > 0;
+}
+
+/// A point's coordinate along the step, (1 - t) x0 + t x1, as a polynomial.
+inline Polynomial moving(double x0, double x1) {
+  return {mpq_class(x0), mpq_class(x1) - mpq_class(x0)};
+}
+
+using MovingVector = std::array<Polynomial, 3>;
+
+inline MovingVector difference(const Point3& to_t0, const Point3& to_t1, const Point3& from_t0,
+                               const Point3& from_t1) {
+  MovingVector r;
+  for (int k = 0; k < 3; ++k)
+    r[k] = moving(to_t0[k], to_t1[k]) + -moving(from_t0[k], from_t1[k]);
+  return r;
+}
+
+inline Polynomial det3(const MovingVector& a, const MovingVector& b, const MovingVector& c) {
+  return a[0] * (b[1] * c[2] + -(b[2] * c[1])) + a[1] * (b[2] * c[0] + -(b[0] * c[2])) +
+         a[2] * (b[0] * c[1] + -(b[1] * c[0]));
+}
+
+inline MovingVector cross(const MovingVector& a, const MovingVector& b) {
+  return {a[1] * b[2] + -(a[2] * b[1]), a[2] * b[0] + -(a[0] * b[2]), a[0] * b[1] + -(a[1] * b[0])};
+}
+
+inline Polynomial dot(const MovingVector& a, const MovingVector& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+/// Whether p is nonzero with the given sign throughout the closed interval [a, b].
+inline bool of_sign_throughout(const Polynomial& p, int sign, const mpq_class& a,
+                               const mpq_class& b) {
+  Polynomial q = p;
+  trim(q);
+  return !q.empty() && !has_root_in(q, a, b) && sgn(evaluate(q, a)) == sign;
+}
+
+}  // namespace exactgeo::ccd::testing_polynomials

@@ -1,0 +1,172 @@
+// The side quartics of a time slice (internal/slice_sides.hpp): whenever they say the
+// origin is outside an edge throughout a piece, the exact quartic of that edge, built here
+// from its definition in GMP rationals, is negative on the whole closed piece (Sturm);
+// whenever they say inside, every exact quartic is positive on it. Pieces come from the
+// certificate's own midpoint splits along random paths, down to depth 40. Then the
+// decision by polynomials: its "root" must be a collision and its "no root" must not be,
+// by the exact method's own search (time-of-impact mode, which never uses the decision).
+
+#include "exactgeo/ccd/internal/slice_sides.hpp"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <tuple>
+#include <vector>
+
+#include "ccd/exact_polynomial.hpp"
+#include "ccd/query_transforms.hpp"
+#include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/internal/boundary_image.hpp"
+#include "exactgeo/ccd/internal/polynomial_decision.hpp"
+#include "support/generators.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::ccd {
+namespace {
+
+using testing::Rng;
+using namespace testing_polynomials;
+
+MovingVector minus(const MovingVector& a, const MovingVector& b) {
+  return {a[0] + -b[0], a[1] + -b[1], a[2] + -b[2]};
+}
+
+/// The slice polygon in boundary order: vertex-face v - f0, v - f1, v - f2; edge-edge
+/// a0 - b0, a1 - b0, a1 - b1, a0 - b1.
+std::vector<MovingVector> polygon(const VertexFaceQuery& q) {
+  return {difference(q.v_t0, q.v_t1, q.f0_t0, q.f0_t1),
+          difference(q.v_t0, q.v_t1, q.f1_t0, q.f1_t1),
+          difference(q.v_t0, q.v_t1, q.f2_t0, q.f2_t1)};
+}
+std::vector<MovingVector> polygon(const EdgeEdgeQuery& q) {
+  return {difference(q.ea0_t0, q.ea0_t1, q.eb0_t0, q.eb0_t1),
+          difference(q.ea1_t0, q.ea1_t1, q.eb0_t0, q.eb0_t1),
+          difference(q.ea1_t0, q.ea1_t1, q.eb1_t0, q.eb1_t1),
+          difference(q.ea0_t0, q.ea0_t1, q.eb1_t0, q.eb1_t1)};
+}
+
+/// s_i = (P_i x P_{i+1}) . N with N = (P_1 - P_0) x (P_last - P_0), from the definition.
+template <class Query>
+std::vector<Polynomial> side_oracle(const Query& q) {
+  const std::vector<MovingVector> p = polygon(q);
+  const MovingVector normal = cross(minus(p[1], p[0]), minus(p.back(), p[0]));
+  std::vector<Polynomial> sides;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    sides.push_back(dot(cross(p[i], p[(i + 1) % p.size()]), normal));
+  return sides;
+}
+
+struct Tally {
+  int pieces = 0;
+  int outside = 0;
+  int inside = 0;
+};
+
+template <class Query>
+void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
+  const auto image = internal::boundary_image(q);
+  using Sides = internal::SliceSides<std::tuple_size_v<decltype(image.corners)>>;
+  const std::vector<Polynomial> exact = side_oracle(q);
+  for (int path = 0; path < paths; ++path) {
+    typename Sides::Coefficients c = Sides::of(image.corners);
+    mpq_class start = 0;
+    mpq_class end = 1;
+    const int depth = testing::uniform_int(rng, 0, 40);
+    for (int d = 0;; ++d) {
+      ++tally.pieces;
+      if (Sides::origin_outside(c)) {
+        ++tally.outside;
+        bool some_edge = false;
+        for (const Polynomial& s : exact)
+          some_edge = some_edge || of_sign_throughout(s, -1, start, end);
+        ASSERT_TRUE(some_edge) << "claimed outside on [" << start << ", " << end << "]";
+      }
+      if (Sides::origin_inside(c)) {
+        ++tally.inside;
+        for (const Polynomial& s : exact) {
+          ASSERT_TRUE(of_sign_throughout(s, 1, start, end))
+              << "claimed inside on [" << start << ", " << end << "]";
+        }
+      }
+      if (d == depth) break;
+      const auto [left, right] = Sides::split(c);
+      const mpq_class middle = (start + end) / 2;
+      if (testing::uniform_int(rng, 0, 1) == 0) {
+        c = left;
+        end = middle;
+      } else {
+        c = right;
+        start = middle;
+      }
+    }
+  }
+}
+
+template <class Query>
+void check_random_queries(const char* stream) {
+  Rng rng = testing::seeded_engine(stream);
+  Tally tally;
+  for (int i = 0; i < 400; ++i) {
+    check_claims(varied_query<Query>(rng, i), rng, 3, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::printf("%s: %d pieces, %d outside an edge, %d inside every edge\n", stream, tally.pieces,
+              tally.outside, tally.inside);
+  EXPECT_GT(tally.outside, tally.pieces / 20);  // the certificate does work
+  EXPECT_GT(tally.inside, 0);
+}
+
+TEST(SliceSides, ClaimsHoldOnRandomVertexFaceQueries) {
+  check_random_queries<VertexFaceQuery>("SliceSides.VertexFace");
+}
+
+TEST(SliceSides, ClaimsHoldOnRandomEdgeEdgeQueries) {
+  check_random_queries<EdgeEdgeQuery>("SliceSides.EdgeEdge");
+}
+
+/// The decision by polynomials against the exact search (time-of-impact mode never takes
+/// the decision's shortcut).
+template <class Query>
+void check_decisions(const char* stream) {
+  Rng rng = testing::seeded_engine(stream);
+  std::array<int, 3> verdicts{};
+  Options search;
+  search.time_of_impact_width = 1.0 / 1024;
+  for (int i = 0; i < 3000; ++i) {
+    Query q = varied_query<Query>(rng, i);
+    if (i % 8 == 7) q = time_reversed(q);
+    const auto image = internal::boundary_image(q);
+    constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
+    const auto coplanarity = internal::Coplanarity::of(image.corners);
+    if (!coplanarity) continue;
+    const internal::PieceVerdict verdict = internal::decide_by_polynomials<C>(
+        *coplanarity, coplanarity->whole_step(), internal::SliceSides<C>::of(image.corners), 12);
+    ++verdicts[static_cast<int>(verdict)];
+    if (verdict == internal::PieceVerdict::unknown) continue;
+    Result searched;
+    if constexpr (C == 6) {
+      searched = vertex_face_ccd(q, search);
+    } else {
+      searched = edge_edge_ccd(q, search);
+    }
+    ASSERT_EQ(searched.collision, verdict == internal::PieceVerdict::root) << "case " << i;
+  }
+  std::printf("%s: %d no root, %d root, %d unknown\n", stream, verdicts[0], verdicts[1],
+              verdicts[2]);
+  EXPECT_GT(verdicts[0], 0);
+  EXPECT_GT(verdicts[1], 0);
+}
+
+TEST(PolynomialDecision, AgreesWithTheSearchOnVertexFace) {
+  check_decisions<VertexFaceQuery>("PolynomialDecision.VertexFace");
+}
+
+TEST(PolynomialDecision, AgreesWithTheSearchOnEdgeEdge) {
+  check_decisions<EdgeEdgeQuery>("PolynomialDecision.EdgeEdge");
+}
+
+}  // namespace
+}  // namespace exactgeo::ccd
