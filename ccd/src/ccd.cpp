@@ -18,9 +18,9 @@ namespace exactgeo::ccd {
 
 namespace {
 
-/// How many times the polynomial decision may halve the step before it hands over to the
-/// search with pieces.
-constexpr int kPolynomialDepth = 16;
+/// How far the polynomial decision may halve the step before it hands over to the search
+/// with pieces: 16 halvings, 64 pieces in all.
+constexpr internal::DecisionBudget kPolynomialBudget{16, 64};
 
 Arithmetic parity_arithmetic(Method m) noexcept {
   switch (m) {
@@ -63,11 +63,10 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
       return {false, Stage::culled, 0, {}};
     }
     // Collision only: the polynomials may settle the step without pieces.
-    if (coplanarity && width >= 1.0) {
-      constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
-      switch (internal::decide_by_polynomials<C>(*coplanarity, coplanarity->whole_step(),
-                                                 internal::SliceSides<C>::of(image.corners),
-                                                 kPolynomialDepth)) {
+    constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
+    const auto sides = internal::SliceSides<C>::of(image.corners);
+    if (coplanarity && sides && width >= 1.0) {
+      switch (internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget)) {
         case internal::PieceVerdict::no_root:
           return {false, Stage::subdivision, 0, {}};
         case internal::PieceVerdict::root:

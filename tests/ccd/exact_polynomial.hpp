@@ -130,4 +130,35 @@ inline bool of_sign_throughout(const Polynomial& p, int sign, const mpq_class& a
   return !q.empty() && !has_root_in(q, a, b) && sgn(evaluate(q, a)) == sign;
 }
 
+/// The Bernstein coefficients of p (degree at most n) on [a, b]: those of q(x) = p(a + (b -
+/// a) x) on [0, 1], b_k = sum_{j <= k} C(k, j) / C(n, j) q_j.
+inline std::vector<mpq_class> bernstein_on(Polynomial p, int n, const mpq_class& a,
+                                           const mpq_class& b) {
+  p.resize(static_cast<std::size_t>(n) + 1, mpq_class(0));
+  // q(x) = p(a + h x): Taylor shift by a (repeated synthetic division), then scale by h^j.
+  Polynomial q = p;
+  for (int i = 0; i < n; ++i) {
+    for (int j = n - 1; j >= i; --j)
+      q[static_cast<std::size_t>(j)] += a * q[static_cast<std::size_t>(j) + 1];
+  }
+  mpq_class power = 1;
+  for (int j = 0; j <= n; ++j) {
+    q[static_cast<std::size_t>(j)] *= power;
+    power *= b - a;
+  }
+  auto choose = [](int m, int k) {
+    mpq_class c = 1;
+    for (int i = 0; i < k; ++i)
+      c = c * (m - i) / (i + 1);
+    return c;
+  };
+  std::vector<mpq_class> coefficients(static_cast<std::size_t>(n) + 1, mpq_class(0));
+  for (int k = 0; k <= n; ++k) {
+    for (int j = 0; j <= k; ++j)
+      coefficients[static_cast<std::size_t>(k)] +=
+          choose(k, j) / choose(n, j) * q[static_cast<std::size_t>(j)];
+  }
+  return coefficients;
+}
+
 }  // namespace exactgeo::ccd::testing_polynomials

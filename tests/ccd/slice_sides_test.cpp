@@ -1,4 +1,5 @@
-// The side quartics of a time slice (internal/slice_sides.hpp): whenever they say the
+// The side quartics of a time slice (internal/slice_sides.hpp): every coefficient on every
+// piece is within the threshold of the exact one; whenever they say the
 // origin is outside an edge throughout a piece, the exact quartic of that edge, built here
 // from its definition in GMP rationals, is negative on the whole closed piece (Sturm);
 // whenever they say inside, every exact quartic is positive on it. Pieces come from the
@@ -11,8 +12,10 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -69,22 +72,24 @@ template <class Query>
 void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
   const auto image = internal::boundary_image(q);
   using Sides = internal::SliceSides<std::tuple_size_v<decltype(image.corners)>>;
+  const std::optional<Sides> sides = Sides::of(image.corners);
+  if (!sides) return;
   const std::vector<Polynomial> exact = side_oracle(q);
   for (int path = 0; path < paths; ++path) {
-    typename Sides::Coefficients c = Sides::of(image.corners);
+    typename Sides::Coefficients c = sides->whole_step();
     mpq_class start = 0;
     mpq_class end = 1;
     const int depth = testing::uniform_int(rng, 0, 40);
     for (int d = 0;; ++d) {
       ++tally.pieces;
-      if (Sides::origin_outside(c)) {
+      if (sides->origin_outside(c)) {
         ++tally.outside;
         bool some_edge = false;
         for (const Polynomial& s : exact)
           some_edge = some_edge || of_sign_throughout(s, -1, start, end);
         ASSERT_TRUE(some_edge) << "claimed outside on [" << start << ", " << end << "]";
       }
-      if (Sides::origin_inside(c)) {
+      if (sides->origin_inside(c)) {
         ++tally.inside;
         for (const Polynomial& s : exact) {
           ASSERT_TRUE(of_sign_throughout(s, 1, start, end))
@@ -109,7 +114,7 @@ template <class Query>
 void check_random_queries(const char* stream) {
   Rng rng = testing::seeded_engine(stream);
   Tally tally;
-  for (int i = 0; i < 400; ++i) {
+  for (int i = 0; i < 250; ++i) {
     check_claims(varied_query<Query>(rng, i), rng, 3, tally);
     if (::testing::Test::HasFatalFailure()) return;
   }
@@ -117,6 +122,74 @@ void check_random_queries(const char* stream) {
               tally.outside, tally.inside);
   EXPECT_GT(tally.outside, tally.pieces / 20);  // the certificate does work
   EXPECT_GT(tally.inside, 0);
+}
+
+/// Every computed coefficient, on every piece along random split paths, is within the
+/// threshold of the exact one (times 12): the bound the certificate rests on, measured.
+template <class Query>
+double worst_error_ratio(const Query& q, Rng& rng) {
+  const auto image = internal::boundary_image(q);
+  using Sides = internal::SliceSides<std::tuple_size_v<decltype(image.corners)>>;
+  const std::optional<Sides> sides = Sides::of(image.corners);
+  if (!sides) return 0.0;
+  const std::vector<Polynomial> exact = side_oracle(q);
+  double worst = 0.0;
+  typename Sides::Coefficients c = sides->whole_step();
+  mpq_class start = 0;
+  mpq_class end = 1;
+  const int depth = testing::uniform_int(rng, 0, 30);
+  for (int d = 0;; ++d) {
+    for (std::size_t i = 0; i < exact.size(); ++i) {
+      const std::vector<mpq_class> b = bernstein_on(exact[i], 4, start, end);
+      for (int k = 0; k <= 4; ++k) {
+        const mpq_class error = abs(mpq_class(c[i][static_cast<std::size_t>(k)]) - 12 * b[k]);
+        const double ratio = mpq_class(error / sides->threshold()).get_d();
+        if (ratio > worst) worst = ratio;
+      }
+    }
+    if (d == depth) break;
+    const auto [left, right] = Sides::split(c);
+    const mpq_class middle = (start + end) / 2;
+    if (testing::uniform_int(rng, 0, 1) == 0) {
+      c = left;
+      end = middle;
+    } else {
+      c = right;
+      start = middle;
+    }
+  }
+  return worst;
+}
+
+TEST(SliceSides, CoefficientErrorsStayWithinTheThreshold) {
+  Rng rng = testing::seeded_engine("SliceSides.CoefficientErrors");
+  double worst = 0.0;
+  for (int i = 0; i < 400; ++i) {
+    worst = std::max(worst, worst_error_ratio(varied_query<VertexFaceQuery>(rng, i), rng));
+    worst = std::max(worst, worst_error_ratio(varied_query<EdgeEdgeQuery>(rng, i), rng));
+    ASSERT_LE(worst, 1.0) << "case " << i;
+  }
+  std::printf("largest coefficient error: %.3g of the threshold\n", worst);
+  EXPECT_GT(worst, 0.0);  // the computation does round
+}
+
+/// Near-degenerate queries only (rounded grid degeneracies): where a certificate with too
+/// small an error bound makes false claims.
+template <class Query>
+void check_near_degenerate_queries(const char* stream) {
+  Rng rng = testing::seeded_engine(stream);
+  Tally tally;
+  for (int i = 0; i < 600; ++i) {
+    check_claims(near_degenerate_query<Query>(rng), rng, 2, tally);
+    if (::testing::Test::HasFatalFailure()) return;
+  }
+  std::printf("%s: %d pieces, %d outside an edge, %d inside every edge\n", stream, tally.pieces,
+              tally.outside, tally.inside);
+}
+
+TEST(SliceSides, ClaimsHoldNearDegeneracies) {
+  check_near_degenerate_queries<VertexFaceQuery>("SliceSides.NearDegenerateVertexFace");
+  check_near_degenerate_queries<EdgeEdgeQuery>("SliceSides.NearDegenerateEdgeEdge");
 }
 
 TEST(SliceSides, ClaimsHoldOnRandomVertexFaceQueries) {
@@ -141,9 +214,10 @@ void check_decisions(const char* stream) {
     const auto image = internal::boundary_image(q);
     constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
     const auto coplanarity = internal::Coplanarity::of(image.corners);
-    if (!coplanarity) continue;
-    const internal::PieceVerdict verdict = internal::decide_by_polynomials<C>(
-        *coplanarity, coplanarity->whole_step(), internal::SliceSides<C>::of(image.corners), 12);
+    const auto sides = internal::SliceSides<C>::of(image.corners);
+    if (!coplanarity || !sides) continue;
+    const internal::PieceVerdict verdict =
+        internal::decide_by_polynomials<C>(*coplanarity, *sides, {16, 64});
     ++verdicts[static_cast<int>(verdict)];
     if (verdict == internal::PieceVerdict::unknown) continue;
     Result searched;

@@ -10,7 +10,7 @@
 //    of the slice throughout;
 //  * a root on a piece: the cubic changes sign between its ends while the origin is
 //    strictly inside every edge throughout;
-//  * otherwise the halves are tried, up to `depth` more splits.
+//  * otherwise the halves are tried, within a budget of splits and pieces.
 //
 // "Root" says that the piece holds a collision, not where the earliest one is: it answers
 // collision queries, not time-of-impact ones.
@@ -22,26 +22,44 @@ namespace exactgeo::ccd::internal {
 
 enum class PieceVerdict { no_root, root, unknown };
 
+/// How far the decision may go: at most `depth` halvings and `pieces` pieces looked at in
+/// all (polynomials that vanish on a whole stretch decide nothing, and a full tree of
+/// halvings would be exponential).
+struct DecisionBudget {
+  int depth;
+  int pieces;
+};
+
 template <std::size_t C>
 PieceVerdict decide_by_polynomials(const Coplanarity& coplanarity, const CoplanarityCoefficients& p,
-                                   const typename SliceSides<C>::Coefficients& sides,
-                                   int depth) noexcept {
-  if (coplanarity.nonzero(p) || SliceSides<C>::origin_outside(sides)) {
-    return PieceVerdict::no_root;
-  }
-  if (coplanarity.changes_sign(p) && SliceSides<C>::origin_inside(sides)) {
-    return PieceVerdict::root;
-  }
-  if (depth == 0) return PieceVerdict::unknown;
+                                   const SliceSides<C>& sides,
+                                   const typename SliceSides<C>::Coefficients& s, int depth,
+                                   int& pieces_left) noexcept {
+  --pieces_left;
+  if (coplanarity.nonzero(p) || sides.origin_outside(s)) return PieceVerdict::no_root;
+  if (coplanarity.changes_sign(p) && sides.origin_inside(s)) return PieceVerdict::root;
+  if (depth == 0 || pieces_left < 2) return PieceVerdict::unknown;
   const auto [p_left, p_right] = split_coefficients(p);
-  const auto [sides_left, sides_right] = SliceSides<C>::split(sides);
-  const PieceVerdict left = decide_by_polynomials<C>(coplanarity, p_left, sides_left, depth - 1);
+  const auto [s_left, s_right] = SliceSides<C>::split(s);
+  const PieceVerdict left =
+      decide_by_polynomials<C>(coplanarity, p_left, sides, s_left, depth - 1, pieces_left);
   if (left == PieceVerdict::root) return left;
-  const PieceVerdict right = decide_by_polynomials<C>(coplanarity, p_right, sides_right, depth - 1);
+  if (pieces_left < 1) return PieceVerdict::unknown;
+  const PieceVerdict right =
+      decide_by_polynomials<C>(coplanarity, p_right, sides, s_right, depth - 1, pieces_left);
   if (right == PieceVerdict::root || left == PieceVerdict::unknown) {
     return right == PieceVerdict::root ? right : PieceVerdict::unknown;
   }
   return right;
+}
+
+/// The whole step, within `budget`.
+template <std::size_t C>
+PieceVerdict decide_by_polynomials(const Coplanarity& coplanarity, const SliceSides<C>& sides,
+                                   DecisionBudget budget) noexcept {
+  int pieces_left = budget.pieces;
+  return decide_by_polynomials<C>(coplanarity, coplanarity.whole_step(), sides, sides.whole_step(),
+                                  budget.depth, pieces_left);
 }
 
 }  // namespace exactgeo::ccd::internal
