@@ -28,7 +28,7 @@ struct Tally {
   std::uint64_t false_positives = 0;
   std::uint64_t false_negatives = 0;
   double seconds = 0.0;
-  std::array<std::uint64_t, 5> stages{};
+  std::array<std::uint64_t, 6> stages{};
 
   void add(const Tally& o) {
     queries += o.queries;
@@ -46,7 +46,8 @@ struct Tally {
   }
 };
 
-constexpr std::array kStages{ccd::Stage::culled, ccd::Stage::parity, ccd::Stage::subdivision,
+constexpr std::array kStages{ccd::Stage::culled,      ccd::Stage::parity,
+                             ccd::Stage::polynomials, ccd::Stage::subdivision,
                              ccd::Stage::depth_limit, ccd::Stage::cubic};
 
 std::string_view type_name(QueryType t) {
@@ -116,7 +117,8 @@ void write_json_counts(std::ostream& out, const Tally& t) {
       << ", \"ns_per_query\": " << std::fixed << std::setprecision(1) << t.ns_per_query()
       << std::defaultfloat << ", \"stages\": {";
   for (std::size_t s = 0; s < kStages.size(); ++s) {
-    out << (s ? ", " : "") << json_string(ccd::to_string(kStages[s])) << ": " << t.stages[s];
+    out << (s ? ", " : "") << json_string(ccd::to_string(kStages[s])) << ": "
+        << t.stages[static_cast<std::size_t>(kStages[s])];
   }
   out << "}";
 }
@@ -153,7 +155,8 @@ void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf
   row("total", all);
   out << "decided by:";
   for (std::size_t s = 0; s < kStages.size(); ++s) {
-    if (all.stages[s]) out << " " << ccd::to_string(kStages[s]) << " " << all.stages[s];
+    const std::uint64_t count = all.stages[static_cast<std::size_t>(kStages[s])];
+    if (count) out << " " << ccd::to_string(kStages[s]) << " " << count;
   }
   out << "\n";
 }

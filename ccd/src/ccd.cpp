@@ -44,42 +44,54 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   if (internal::separated_by_closest_direction(image.corners)) {
     return {false, Stage::culled, 0, {}};
   }
-  const RootParity parity = internal::root_parity(exactgeo::internal::ExactSigns{}, image).parity;
   const bool toi = options.time_of_impact_width.has_value();
   const double width = toi ? *options.time_of_impact_width : 1.0;
   auto collision = [toi](Stage stage, int depth, TimeInterval when) {
     return Result{true, stage, static_cast<std::uint8_t>(depth),
                   toi ? std::optional<TimeInterval>(when) : std::nullopt};
   };
-  if (parity != RootParity::even && width >= 1.0) return collision(Stage::parity, 0, {});
+  // A coplanarity cubic without a zero proves that there is no root, for a few double
+  // operations. With the slice's side quartics it often decides the whole question
+  // (collision only, not where the earliest root is; polynomial_decision.hpp).
+  constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
   const auto coplanarity = internal::Coplanarity::of(image.corners);
-  if (parity == RootParity::even) {
-    // A coplanarity cubic without a zero proves that there is no root, for a few double
-    // operations. One that has the same sign at both ends of the step but may vanish in
-    // between (a pass through and back, or a near miss) is rarely separated by a plane
-    // of the whole step: the search splits first. The planes are tried on the whole
-    // step otherwise (typically one coplanar moment, beside the face).
-    if (coplanarity && coplanarity->nonzero(coplanarity->whole_step())) {
-      return {false, Stage::culled, 0, {}};
-    }
-    // Collision only: the polynomials may settle the step without pieces.
-    constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
+  if (coplanarity && coplanarity->nonzero(coplanarity->whole_step())) {
+    return {false, Stage::culled, 0, {}};
+  }
+  auto decided_by_polynomials = [&]() -> std::optional<Result> {
+    if (toi || !coplanarity) return std::nullopt;
     const auto sides = internal::SliceSides<C>::of(image.corners);
-    if (coplanarity && sides && width >= 1.0) {
-      switch (internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget)) {
-        case internal::PieceVerdict::no_root:
-          return {false, Stage::subdivision, 0, {}};
-        case internal::PieceVerdict::root:
-          return collision(Stage::subdivision, 0, {});
-        case internal::PieceVerdict::unknown:
-          break;
-      }
+    if (!sides) return std::nullopt;
+    switch (internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget)) {
+      case internal::PieceVerdict::no_root:
+        return Result{false, Stage::polynomials, 0, {}};
+      case internal::PieceVerdict::root:
+        return collision(Stage::polynomials, 0, {});
+      case internal::PieceVerdict::unknown:
+        break;
     }
-    const bool dips = coplanarity && coplanarity->same_sign_ends(coplanarity->whole_step());
+    return std::nullopt;
+  };
+  // A cubic with the same sign at both ends of the step that may vanish in between
+  // "dips": two coplanar moments. Then the primitives often pass through each other and
+  // back, an even parity that would need a second one on a piece; the polynomials go
+  // first. Otherwise (typically one coplanar moment) parity goes first: it decides most
+  // collisions, and the polynomials cannot prove a touch at the step's ends.
+  const bool dips = coplanarity && coplanarity->same_sign_ends(coplanarity->whole_step());
+  if (dips) {
+    if (const auto result = decided_by_polynomials()) return *result;
+  }
+  const RootParity parity = internal::root_parity(exactgeo::internal::ExactSigns{}, image).parity;
+  if (parity != RootParity::even && !toi) return collision(Stage::parity, 0, {});
+  if (parity == RootParity::even) {
+    if (!dips) {
+      if (const auto result = decided_by_polynomials()) return *result;
+    }
+    // Where the cubic dips, the planes of the whole step rarely separate: the search
+    // splits first. Otherwise the planes are tried on the whole step.
     if (!dips && internal::certainly_no_root(image.corners)) return {false, Stage::culled, 0, {}};
   }
   const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
-  constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
   const auto piece = internal::whole_step<C>(image.corners);
   if (!piece) {  // corners beyond exact storage: report the step, unproven if even
     return collision(parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0, {});
@@ -153,6 +165,8 @@ std::string_view to_string(Stage s) noexcept {
       return "depth_limit";
     case Stage::cubic:
       return "cubic";
+    case Stage::polynomials:
+      return "polynomials";
   }
   return "?";
 }

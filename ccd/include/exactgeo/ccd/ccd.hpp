@@ -42,6 +42,8 @@ enum class Stage : std::uint8_t {
   depth_limit,  ///< exact: even parity, a piece left undecided at the depth limit (reported
                 ///< as a collision)
   cubic,        ///< the cubic baseline
+  polynomials,  ///< exact: the coplanarity cubic and the slice's side quartics, split in
+                ///< time, proved a root or its absence (no parity computed)
 };
 
 std::string_view to_string(Stage s) noexcept;
