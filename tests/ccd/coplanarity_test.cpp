@@ -56,34 +56,22 @@ void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
   Polynomial p = coplanarity_oracle(q);
   trim(p);
   for (int path = 0; path < paths; ++path) {
-    internal::CoplanarityCoefficients b = certificate->whole_step();
-    mpq_class start = 0;
-    mpq_class end = 1;
-    const int depth = testing::uniform_int(rng, 0, 48);
-    for (int d = 0;; ++d) {
-      ++tally.pieces;
-      if (certificate->nonzero(b)) {
-        ++tally.proven_nonzero;
-        ASSERT_FALSE(p.empty() || has_root_in(p, start, end))
-            << "claimed no zero on [" << start << ", " << end << "]";
-      }
-      if (certificate->changes_sign(b)) {
-        ++tally.sign_changes;
-        ASSERT_FALSE(p.empty());
-        ASSERT_LT(sgn(evaluate(p, start)) * sgn(evaluate(p, end)), 0)
-            << "claimed a sign change on [" << start << ", " << end << "]";
-      }
-      if (d == depth) break;
-      const auto [left, right] = internal::split_coefficients(b);
-      const mpq_class middle = (start + end) / 2;
-      if (testing::uniform_int(rng, 0, 1) == 0) {
-        b = left;
-        end = middle;
-      } else {
-        b = right;
-        start = middle;
-      }
-    }
+    walk_random_split_path(rng, 48, certificate->whole_step(), internal::split_coefficients,
+                           [&](const internal::CoplanarityCoefficients& b, const mpq_class& start,
+                               const mpq_class& end) {
+                             ++tally.pieces;
+                             if (certificate->nonzero(b)) {
+                               ++tally.proven_nonzero;
+                               ASSERT_FALSE(p.empty() || has_root_in(p, start, end))
+                                   << "claimed no zero on [" << start << ", " << end << "]";
+                             }
+                             if (certificate->changes_sign(b)) {
+                               ++tally.sign_changes;
+                               ASSERT_FALSE(p.empty());
+                               ASSERT_LT(sgn(evaluate(p, start)) * sgn(evaluate(p, end)), 0)
+                                   << "claimed a sign change on [" << start << ", " << end << "]";
+                             }
+                           });
   }
 }
 

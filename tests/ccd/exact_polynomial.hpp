@@ -1,15 +1,18 @@
 #pragma once
 
 // Exact polynomials in time for the CCD certificate tests: GMP rational coefficients, the
-// moving points of a query as affine polynomials, and Sturm sequences to decide whether a
-// polynomial has a root in a closed interval. Written for clarity, not speed.
+// moving points of a query as affine polynomials, Sturm sequences to decide whether a
+// polynomial has a root in a closed interval, and random paths of midpoint splits.
+// Written for clarity, not speed.
 
 #include <gmpxx.h>
+#include <gtest/gtest.h>
 
 #include <array>
 #include <vector>
 
 #include "exactgeo/predicates/point.hpp"
+#include "support/generators.hpp"
 
 namespace exactgeo::ccd::testing_polynomials {
 
@@ -159,6 +162,31 @@ inline std::vector<mpq_class> bernstein_on(Polynomial p, int n, const mpq_class&
           choose(k, j) / choose(n, j) * q[static_cast<std::size_t>(j)];
   }
   return coefficients;
+}
+
+/// Walks one random path of midpoint splits, from the whole step [0, 1] down to a depth
+/// drawn from [0, max_depth]: calls visit(coefficients, start, end) on every piece of it
+/// (the step included), split(coefficients) giving the halves' coefficients. Stops at a
+/// fatal test failure.
+template <class Coefficients, class Split, class Visit>
+void walk_random_split_path(testing::Rng& rng, int max_depth, Coefficients c, Split split,
+                            Visit visit) {
+  mpq_class start = 0;
+  mpq_class end = 1;
+  const int depth = testing::uniform_int(rng, 0, max_depth);
+  for (int d = 0;; ++d) {
+    visit(c, start, end);
+    if (::testing::Test::HasFatalFailure() || d == depth) return;
+    const auto [left, right] = split(c);
+    const mpq_class middle = (start + end) / 2;
+    if (testing::uniform_int(rng, 0, 1) == 0) {
+      c = left;
+      end = middle;
+    } else {
+      c = right;
+      start = middle;
+    }
+  }
 }
 
 }  // namespace exactgeo::ccd::testing_polynomials

@@ -76,52 +76,26 @@ void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
   if (!sides) return;
   const std::vector<Polynomial> exact = side_oracle(q);
   for (int path = 0; path < paths; ++path) {
-    typename Sides::Coefficients c = sides->whole_step();
-    mpq_class start = 0;
-    mpq_class end = 1;
-    const int depth = testing::uniform_int(rng, 0, 40);
-    for (int d = 0;; ++d) {
-      ++tally.pieces;
-      if (sides->origin_outside(c)) {
-        ++tally.outside;
-        bool some_edge = false;
-        for (const Polynomial& s : exact)
-          some_edge = some_edge || of_sign_throughout(s, -1, start, end);
-        ASSERT_TRUE(some_edge) << "claimed outside on [" << start << ", " << end << "]";
-      }
-      if (sides->origin_inside(c)) {
-        ++tally.inside;
-        for (const Polynomial& s : exact) {
-          ASSERT_TRUE(of_sign_throughout(s, 1, start, end))
-              << "claimed inside on [" << start << ", " << end << "]";
-        }
-      }
-      if (d == depth) break;
-      const auto [left, right] = Sides::split(c);
-      const mpq_class middle = (start + end) / 2;
-      if (testing::uniform_int(rng, 0, 1) == 0) {
-        c = left;
-        end = middle;
-      } else {
-        c = right;
-        start = middle;
-      }
-    }
+    walk_random_split_path(
+        rng, 40, sides->whole_step(), Sides::split,
+        [&](const typename Sides::Coefficients& c, const mpq_class& start, const mpq_class& end) {
+          ++tally.pieces;
+          if (sides->origin_outside(c)) {
+            ++tally.outside;
+            bool some_edge = false;
+            for (const Polynomial& s : exact)
+              some_edge = some_edge || of_sign_throughout(s, -1, start, end);
+            ASSERT_TRUE(some_edge) << "claimed outside on [" << start << ", " << end << "]";
+          }
+          if (sides->origin_inside(c)) {
+            ++tally.inside;
+            for (const Polynomial& s : exact) {
+              ASSERT_TRUE(of_sign_throughout(s, 1, start, end))
+                  << "claimed inside on [" << start << ", " << end << "]";
+            }
+          }
+        });
   }
-}
-
-template <class Query>
-void check_random_queries(const char* stream) {
-  Rng rng = testing::seeded_engine(stream);
-  Tally tally;
-  for (int i = 0; i < 250; ++i) {
-    check_claims(varied_query<Query>(rng, i), rng, 3, tally);
-    if (::testing::Test::HasFatalFailure()) return;
-  }
-  std::printf("%s: %d pieces, %d outside an edge, %d inside every edge\n", stream, tally.pieces,
-              tally.outside, tally.inside);
-  EXPECT_GT(tally.outside, tally.pieces / 20);  // the certificate does work
-  EXPECT_GT(tally.inside, 0);
 }
 
 /// Every computed coefficient, on every piece along random split paths, is within the
@@ -134,30 +108,17 @@ double worst_error_ratio(const Query& q, Rng& rng) {
   if (!sides) return 0.0;
   const std::vector<Polynomial> exact = side_oracle(q);
   double worst = 0.0;
-  typename Sides::Coefficients c = sides->whole_step();
-  mpq_class start = 0;
-  mpq_class end = 1;
-  const int depth = testing::uniform_int(rng, 0, 30);
-  for (int d = 0;; ++d) {
-    for (std::size_t i = 0; i < exact.size(); ++i) {
-      const std::vector<mpq_class> b = bernstein_on(exact[i], 4, start, end);
-      for (int k = 0; k <= 4; ++k) {
-        const mpq_class error = abs(mpq_class(c[i][static_cast<std::size_t>(k)]) - 12 * b[k]);
-        const double ratio = mpq_class(error / sides->threshold()).get_d();
-        if (ratio > worst) worst = ratio;
-      }
-    }
-    if (d == depth) break;
-    const auto [left, right] = Sides::split(c);
-    const mpq_class middle = (start + end) / 2;
-    if (testing::uniform_int(rng, 0, 1) == 0) {
-      c = left;
-      end = middle;
-    } else {
-      c = right;
-      start = middle;
-    }
-  }
+  walk_random_split_path(
+      rng, 30, sides->whole_step(), Sides::split,
+      [&](const typename Sides::Coefficients& c, const mpq_class& start, const mpq_class& end) {
+        for (std::size_t i = 0; i < exact.size(); ++i) {
+          const std::vector<mpq_class> b = bernstein_on(exact[i], 4, start, end);
+          for (int k = 0; k <= 4; ++k) {
+            const mpq_class error = abs(mpq_class(c[i][static_cast<std::size_t>(k)]) - 12 * b[k]);
+            worst = std::max(worst, mpq_class(error / sides->threshold()).get_d());
+          }
+        }
+      });
   return worst;
 }
 
@@ -173,31 +134,43 @@ TEST(SliceSides, CoefficientErrorsStayWithinTheThreshold) {
   EXPECT_GT(worst, 0.0);  // the computation does round
 }
 
-/// Near-degenerate queries only (rounded grid degeneracies): where a certificate with too
-/// small an error bound makes false claims.
-template <class Query>
-void check_near_degenerate_queries(const char* stream) {
+/// Checks the claims on `count` queries made by make(rng, i); prints and returns what was
+/// claimed.
+template <class Make>
+Tally check_queries(const char* stream, int count, Make make) {
   Rng rng = testing::seeded_engine(stream);
   Tally tally;
-  for (int i = 0; i < 600; ++i) {
-    check_claims(near_degenerate_query<Query>(rng), rng, 2, tally);
-    if (::testing::Test::HasFatalFailure()) return;
+  for (int i = 0; i < count; ++i) {
+    check_claims(make(rng, i), rng, 3, tally);
+    if (::testing::Test::HasFatalFailure()) break;
   }
   std::printf("%s: %d pieces, %d outside an edge, %d inside every edge\n", stream, tally.pieces,
               tally.outside, tally.inside);
+  return tally;
 }
 
 TEST(SliceSides, ClaimsHoldNearDegeneracies) {
-  check_near_degenerate_queries<VertexFaceQuery>("SliceSides.NearDegenerateVertexFace");
-  check_near_degenerate_queries<EdgeEdgeQuery>("SliceSides.NearDegenerateEdgeEdge");
+  // Rounded grid degeneracies: where too small an error bound makes false claims.
+  check_queries("SliceSides.NearDegenerateVertexFace", 400,
+                [](Rng& rng, int) { return near_degenerate_query<VertexFaceQuery>(rng); });
+  check_queries("SliceSides.NearDegenerateEdgeEdge", 400,
+                [](Rng& rng, int) { return near_degenerate_query<EdgeEdgeQuery>(rng); });
 }
 
 TEST(SliceSides, ClaimsHoldOnRandomVertexFaceQueries) {
-  check_random_queries<VertexFaceQuery>("SliceSides.VertexFace");
+  const Tally t = check_queries("SliceSides.VertexFace", 250, [](Rng& rng, int i) {
+    return varied_query<VertexFaceQuery>(rng, i);
+  });
+  EXPECT_GT(t.outside, t.pieces / 20);  // the certificate does work
+  EXPECT_GT(t.inside, 0);
 }
 
 TEST(SliceSides, ClaimsHoldOnRandomEdgeEdgeQueries) {
-  check_random_queries<EdgeEdgeQuery>("SliceSides.EdgeEdge");
+  const Tally t = check_queries("SliceSides.EdgeEdge", 250, [](Rng& rng, int i) {
+    return varied_query<EdgeEdgeQuery>(rng, i);
+  });
+  EXPECT_GT(t.outside, t.pieces / 20);
+  EXPECT_GT(t.inside, 0);
 }
 
 /// The decision by polynomials against the exact search (time-of-impact mode never takes

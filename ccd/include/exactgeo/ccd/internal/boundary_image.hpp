@@ -16,6 +16,7 @@
 // an Offset with the ray origin at 0.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "exactgeo/ccd/queries.hpp"
@@ -71,6 +72,24 @@ inline constexpr auto kDomainFaces = [] {
     return kHexahedronFaces;
   }
 }();
+
+/// Corners of time slice `slice` (0: the start, 1: the end) in order around its polygon
+/// (the time faces above), rounded to doubles.
+template <std::size_t C>
+std::array<Vector3, C / 2> slice_corners(const Offsets<C>& a, std::size_t slice) noexcept {
+  constexpr std::size_t H = C / 2;
+  constexpr std::array<std::size_t, H> kAround = [] {
+    if constexpr (H == 3) {
+      return std::array<std::size_t, 3>{0, 1, 2};
+    } else {
+      return std::array<std::size_t, 4>{0, 2, 3, 1};
+    }
+  }();
+  std::array<Vector3, H> x;
+  for (std::size_t k = 0; k < H; ++k)
+    x[k] = a[slice * H + kAround[k]].rounded();
+  return x;
+}
 
 /// Views into the query's points: the query must outlive the result.
 inline BoundaryImage<6, 5> boundary_image(const VertexFaceQuery& q) noexcept {

@@ -23,6 +23,7 @@
 #include <cstddef>
 #include <optional>
 
+#include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/predicates/internal/expansion.hpp"
 #include "exactgeo/predicates/internal/filter.hpp"
 #include "exactgeo/predicates/internal/sign_policies.hpp"
@@ -191,24 +192,6 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
 /// approach one slice and one of these planes separates unless the origin is on the
 /// image. The normals are computed in plain doubles from the rounded corners: any normal
 /// will do, because the side of every corner is then certified.
-/// Corners of time slice `slice` (0: t0, 1: t1) in order around its polygon (the time
-/// faces of boundary_image.hpp), rounded to doubles.
-template <std::size_t C>
-std::array<Vector3, C / 2> slice_corners(const in::Offsets<C>& a, std::size_t slice) noexcept {
-  constexpr std::size_t H = C / 2;
-  constexpr std::array<std::size_t, H> kAround = [] {
-    if constexpr (H == 3) {
-      return std::array<std::size_t, 3>{0, 1, 2};
-    } else {
-      return std::array<std::size_t, 4>{0, 2, 3, 1};
-    }
-  }();
-  std::array<Vector3, H> x;
-  for (std::size_t k = 0; k < H; ++k)
-    x[k] = a[slice * H + kAround[k]].rounded();
-  return x;
-}
-
 /// The direction to the slice's point closest to the origin: stable when the primitives
 /// stay close and nearly parallel, where the slice's own plane turns quickly with time.
 template <std::size_t H>

@@ -46,6 +46,7 @@
 #include <optional>
 #include <utility>
 
+#include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/coplanarity.hpp"
 #include "exactgeo/predicates/internal/formulas.hpp"
 #include "exactgeo/predicates/internal/offset.hpp"
@@ -150,20 +151,10 @@ class SliceSides {
 
   /// From the step's corners (rounded differences); nullopt beyond the guard.
   static std::optional<SliceSides> of(const exactgeo::internal::Offsets<C>& corners) noexcept {
-    // Polygon order of the slice's corners (boundary_image.hpp numbering).
-    constexpr std::array<std::size_t, H> kAround = [] {
-      if constexpr (H == 3) {
-        return std::array<std::size_t, 3>{0, 1, 2};
-      } else {
-        return std::array<std::size_t, 4>{0, 2, 3, 1};
-      }
-    }();
-    std::array<Vec3, H> start;
-    std::array<Vec3, H> end;
+    const std::array<Vec3, H> start = slice_corners(corners, 0);
+    const std::array<Vec3, H> end = slice_corners(corners, 1);
     double largest = 0.0;
     for (std::size_t k = 0; k < H; ++k) {
-      start[k] = corners[kAround[k]].rounded();
-      end[k] = corners[H + kAround[k]].rounded();
       for (int axis = 0; axis < 3; ++axis)
         largest = std::max({largest, std::fabs(start[k][axis]), std::fabs(end[k][axis])});
     }
