@@ -47,10 +47,9 @@ PieceVerdict decide_by_polynomials(const Coplanarity& coplanarity, const Coplana
   if (pieces_left < 1) return PieceVerdict::unknown;
   const PieceVerdict right =
       decide_by_polynomials<C>(coplanarity, p_right, sides, s_right, depth - 1, pieces_left);
-  if (right == PieceVerdict::root || left == PieceVerdict::unknown) {
-    return right == PieceVerdict::root ? right : PieceVerdict::unknown;
-  }
-  return right;
+  if (right == PieceVerdict::root) return right;
+  return left == PieceVerdict::no_root && right == PieceVerdict::no_root ? PieceVerdict::no_root
+                                                                         : PieceVerdict::unknown;
 }
 
 /// The whole step, within `budget`.
