@@ -65,6 +65,13 @@ class NamedSigns {
     return self().template sign_unless_zero<TetrahedronVolumeFormula, Grouping::by_axis>(
         a, proves_zero);
   }
+
+  /// A sign with a cheap exact proof of zero, consulted first (policies with a filter
+  /// override this to consult it only where the filter cannot decide).
+  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
+  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
+    return proves_zero() ? Sign::zero : self().template sign<Formula, grouping>(in);
+  }
   /// ((x1 - x0) x (x2 - x0))[axis] for a_i = x_i - o.
   Sign triangle_normal(int axis, const Offset& a0, const Offset& a1,
                        const Offset& a2) const noexcept {
@@ -236,11 +243,6 @@ class DoubleSigns : public NamedSigns<DoubleSigns> {
     return sign_of(Formula::evaluate(rounded(in), parameter));
   }
 
-  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
-  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
-    return proves_zero() ? Sign::zero : sign<Formula, grouping>(in);
-  }
-
   template <std::size_t N>
   static VectorArray<double, N> numbers(const Offsets<N>& in) noexcept {
     return rounded(in);
@@ -252,11 +254,6 @@ class RationalSigns : public NamedSigns<RationalSigns> {
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
     return rational_sign<Formula>(in, parameter);
-  }
-
-  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
-  Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
-    return proves_zero() ? Sign::zero : sign<Formula, grouping>(in);
   }
 
   template <std::size_t N>
