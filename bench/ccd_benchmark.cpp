@@ -22,8 +22,8 @@
 #include <type_traits>
 #include <vector>
 
-#include "cli/ccd_queries.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 
 namespace {
 
@@ -44,13 +44,13 @@ Queries load() {
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (entry.path().extension() != ".csv") continue;
     std::ifstream in(entry.path());
-    const auto records = exactgeo::cli::read_ccd_records(in, entry.path().string());
+    const auto records = exactgeo::ccd::read_query_records(in, entry.path().string());
     const bool edge_edge = entry.path().stem().string().ends_with("ee");
     for (const auto& r : records) {
       if (edge_edge) {
-        q.edge_edge.push_back(exactgeo::cli::edge_edge_query(r));
+        q.edge_edge.push_back(exactgeo::ccd::edge_edge_query(r));
       } else {
-        q.vertex_face.push_back(exactgeo::cli::vertex_face_query(r));
+        q.vertex_face.push_back(exactgeo::ccd::vertex_face_query(r));
       }
     }
   }

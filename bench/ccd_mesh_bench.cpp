@@ -25,7 +25,7 @@
 #include "exactgeo/ccd/internal/box_tree.hpp"
 #include "exactgeo/ccd/internal/swept_box.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
-#include "mesh_io/load_mesh.hpp"
+#include "exactgeo/mesh/load.hpp"
 #include "sweep_and_prune.hpp"
 
 namespace {
@@ -38,7 +38,7 @@ struct Frames {
   std::vector<Triangle> faces;
 };
 
-std::vector<double> flat(const inside::Mesh& mesh) {
+std::vector<double> flat(const mesh::Mesh& mesh) {
   std::vector<double> xyz;
   xyz.reserve(3 * mesh.vertices.size());
   for (const Point3& p : mesh.vertices)
@@ -46,9 +46,9 @@ std::vector<double> flat(const inside::Mesh& mesh) {
   return xyz;
 }
 
-std::vector<Triangle> triangles(const inside::Mesh& mesh) {
+std::vector<Triangle> triangles(const mesh::Mesh& mesh) {
   std::vector<Triangle> faces;
-  for (const inside::Face& f : mesh.faces) {
+  for (const mesh::Face& f : mesh.faces) {
     faces.push_back({f.corners[0], f.corners[1], f.corners[2]});
     if (!f.is_triangle()) faces.push_back({f.corners[0], f.corners[2], f.corners[3]});
   }
@@ -218,11 +218,11 @@ int main(int argc, char** argv) {
   if (paths.empty() || paths.size() > 2) usage("one or two mesh files expected");
 
   Frames frames;
-  const auto first = cli::load_mesh(paths[0]);
+  const auto first = mesh::load_mesh(paths[0]);
   frames.t0 = flat(first.mesh);
   frames.faces = triangles(first.mesh);
   if (paths.size() == 2) {
-    frames.t1 = flat(cli::load_mesh(paths[1]).mesh);
+    frames.t1 = flat(mesh::load_mesh(paths[1]).mesh);
     if (frames.t1.size() != frames.t0.size()) usage("frames differ in vertex count");
   } else {
     random_motion(frames, motion, standing, seed);

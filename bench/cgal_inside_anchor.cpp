@@ -17,9 +17,9 @@
 #include <iostream>
 #include <vector>
 
-#include "cli/input_error.hpp"
-#include "cli/numbers.hpp"
-#include "mesh_io/load_mesh.hpp"
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/numbers.hpp"
+#include "exactgeo/mesh/load.hpp"
 
 namespace {
 
@@ -39,9 +39,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const exactgeo::inside::Mesh mesh = exactgeo::cli::load_mesh(argv[1]).mesh;
+    const exactgeo::mesh::Mesh mesh = exactgeo::mesh::load_mesh(argv[1]).mesh;
     std::ifstream points_file(argv[2]);
-    exactgeo::cli::RecordReader reader(points_file, argv[2]);
+    exactgeo::io::RecordReader reader(points_file, argv[2]);
     std::vector<Kernel::Point_3> points;
     while (const auto record = reader.next()) {
       points.emplace_back((*record).at(0), (*record).at(1), (*record).at(2));

@@ -1,7 +1,9 @@
 # `cmake --install`: the libraries as the CMake package exactgeo (find_package(exactgeo),
-# targets exactgeo::predicates, exactgeo::ccd, exactgeo::inside), their headers, and the
-# command-line tool. The libraries are static, so their private dependencies are part of
-# the export; exactgeoConfig.cmake finds them again (tests/install/consumer uses it all).
+# targets exactgeo::predicates, ::parallel, ::io, ::mesh, ::ccd, ::inside and, where
+# assimp is found, ::mesh_files), their headers, and the command-line tool. The libraries
+# are static, so their private dependencies are part of the export; exactgeoConfig.cmake
+# finds them again (tests/install/consumer uses it all). mesh_files is exported on its
+# own, so that a consumer without assimp still gets every other target.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -11,21 +13,27 @@ set(EXACTGEO_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/exactgeo)
 # exported too, as exactgeo::strict_fp. exactgeo_warnings is build-only and not exported.
 set_target_properties(exactgeo_strict_fp PROPERTIES EXPORT_NAME strict_fp)
 
-install(TARGETS exactgeo_predicates exactgeo_ccd exactgeo_inside exactgeo_strict_fp
+install(TARGETS exactgeo_predicates exactgeo_parallel exactgeo_io exactgeo_mesh exactgeo_ccd
+                exactgeo_inside exactgeo_strict_fp
         EXPORT exactgeoTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS exactgeo_mesh_files EXPORT exactgeoMeshFilesTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS exactgeo RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Every public header, internal/ included: the public templates include those.
-foreach(folder predicates ccd inside)
+foreach(folder predicates parallel io mesh ccd inside)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
           FILES_MATCHING PATTERN "*.hpp")
 endforeach()
 
 install(EXPORT exactgeoTargets NAMESPACE exactgeo:: DESTINATION ${EXACTGEO_INSTALL_CMAKEDIR})
+install(EXPORT exactgeoMeshFilesTargets NAMESPACE exactgeo::
+        DESTINATION ${EXACTGEO_INSTALL_CMAKEDIR})
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/exactgeoConfig.cmake.in
                               ${PROJECT_BINARY_DIR}/exactgeoConfig.cmake
                               INSTALL_DESTINATION ${EXACTGEO_INSTALL_CMAKEDIR})

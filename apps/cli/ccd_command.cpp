@@ -11,11 +11,19 @@
 #include <ostream>
 #include <sstream>
 
-#include "cli/ccd_queries.hpp"
-#include "cli/input_error.hpp"
 #include "cli/json.hpp"
+#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/io/input_error.hpp"
 
 namespace exactgeo::cli {
+
+using ccd::edge_edge_query;
+using ccd::QueryFile;
+using ccd::QueryRecord;
+using ccd::QueryType;
+using ccd::read_query_files;
+using ccd::vertex_face_query;
+using io::InputError;
 
 namespace {
 
@@ -61,7 +69,7 @@ std::vector<ccd::Result> run_timed(const QueryFile& file, Make make, Run run, in
                                    double& seconds) {
   std::vector<Query> queries;
   queries.reserve(file.records.size());
-  for (const CcdRecord& r : file.records)
+  for (const QueryRecord& r : file.records)
     queries.push_back(make(r));
   std::vector<ccd::Result> results(queries.size());
   for (int pass = 0; pass < repeat; ++pass) {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/ccd_queries.hpp"
 #include "cli/exit_code.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 
 namespace CLI {
 class App;
@@ -20,10 +20,10 @@ namespace exactgeo::cli {
 
 struct CcdCommandOptions {
   ccd::Options ccd;
-  std::optional<QueryType> type;  ///< overrides what the paths say
-  std::string truth;              ///< a `*_mma_bool.json` for 6-column files, or empty
-  std::string per_query;          ///< a CSV file to write, or empty
-  int repeat = 1;                 ///< timing passes per file; the fastest is reported
+  std::optional<ccd::QueryType> type;  ///< overrides what the paths say
+  std::string truth;                   ///< a `*_mma_bool.json` for 6-column files, or empty
+  std::string per_query;               ///< a CSV file to write, or empty
+  int repeat = 1;                      ///< timing passes per file; the fastest is reported
   bool json = false;
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   std::vector<std::string> paths;

@@ -16,9 +16,14 @@
 
 #include "cli/json.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
-#include "mesh_io/load_mesh.hpp"
+#include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {
+
+using io::InputError;
+using mesh::load_mesh;
+using mesh::LoadedMesh;
+using mesh::LoadOptions;
 
 namespace {
 
@@ -30,7 +35,7 @@ std::string plural(std::size_t count, std::string_view singular, std::string_vie
 }
 
 /// "[a, b, c]" (or four corners for a quad).
-std::string corners_text(const inside::Face& face) {
+std::string corners_text(const mesh::Face& face) {
   std::string s = "[";
   for (std::size_t k = 0; k < face.size(); ++k) {
     if (k > 0) s.append(", ");
@@ -47,12 +52,12 @@ std::optional<std::string> frame_problem(const std::string& path, const LoadedMe
            ": ccd-mesh reads OBJ, OFF and PLY files only (other formats come through assimp, "
            "which rounds coordinates to float and welds vertices)";
   }
-  const std::vector<inside::Face>& faces = loaded.mesh.faces;
+  const std::vector<mesh::Face>& faces = loaded.mesh.faces;
   const auto first_quad = std::find_if(faces.begin(), faces.end(),
-                                       [](const inside::Face& f) { return !f.is_triangle(); });
+                                       [](const mesh::Face& f) { return !f.is_triangle(); });
   if (first_quad == faces.end()) return std::nullopt;
-  const auto quads = static_cast<std::size_t>(std::count_if(
-      first_quad, faces.end(), [](const inside::Face& f) { return !f.is_triangle(); }));
+  const auto quads = static_cast<std::size_t>(
+      std::count_if(first_quad, faces.end(), [](const mesh::Face& f) { return !f.is_triangle(); }));
   return "triangle meshes are needed: " + path + " has " + plural(quads, "quad", "quads") +
          " (first: face " + std::to_string(first_quad - faces.begin()) + ")";
 }
@@ -60,8 +65,7 @@ std::optional<std::string> frame_problem(const std::string& path, const LoadedMe
 /// Where the frames stop holding the same mesh: vertex count, then the first differing
 /// face, then face count.
 std::optional<std::string> connectivity_problem(const CcdMeshOptions& options,
-                                                const inside::Mesh& mesh0,
-                                                const inside::Mesh& mesh1) {
+                                                const mesh::Mesh& mesh0, const mesh::Mesh& mesh1) {
   if (mesh0.vertices.size() != mesh1.vertices.size()) {
     return "the frames differ: " + options.frame0 + " has " +
            plural(mesh0.vertices.size(), "vertex", "vertices") + ", " + options.frame1 + " has " +
@@ -83,10 +87,10 @@ std::optional<std::string> connectivity_problem(const CcdMeshOptions& options,
   return std::nullopt;
 }
 
-std::vector<ccd::Triangle> triangles_of(const inside::Mesh& mesh) {
+std::vector<ccd::Triangle> triangles_of(const mesh::Mesh& mesh) {
   std::vector<ccd::Triangle> triangles;
   triangles.reserve(mesh.faces.size());
-  for (const inside::Face& f : mesh.faces)
+  for (const mesh::Face& f : mesh.faces)
     triangles.push_back({f.corners[0], f.corners[1], f.corners[2]});
   return triangles;
 }
@@ -198,8 +202,8 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
     }
     if (const auto problem = frame_problem(*paths[k], frames[k])) return fail(*problem);
   }
-  const inside::Mesh& mesh0 = frames[0].mesh;
-  const inside::Mesh& mesh1 = frames[1].mesh;
+  const mesh::Mesh& mesh0 = frames[0].mesh;
+  const mesh::Mesh& mesh1 = frames[1].mesh;
   if (const auto problem = connectivity_problem(options, mesh0, mesh1)) return fail(*problem);
 
   std::optional<ccd::MeshCcd> mesh_ccd;

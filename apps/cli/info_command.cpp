@@ -9,15 +9,20 @@
 #include <sstream>
 #include <string_view>
 
-#include "cli/input_error.hpp"
 #include "cli/json.hpp"
-#include "exactgeo/inside/mesh_check.hpp"
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/mesh/check.hpp"
 
 namespace exactgeo::cli {
 
+using io::InputError;
+using mesh::load_mesh;
+using mesh::LoadedMesh;
+using mesh::MeshCheck;
+
 namespace {
 
-using inside::MeshCheck;
+using mesh::MeshCheck;
 
 /// "[x, y, z]" (the same text is a JSON array).
 std::string point_text(const Point3& p) {
@@ -150,8 +155,8 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
     err << "exactgeo info: " << e.what() << "\n";
     return ExitCode::input_error;
   }
-  const MeshCheck check = inside::check_mesh(loaded.mesh);
-  const std::optional<std::string> problem = inside::classification_problem(check);
+  const MeshCheck check = mesh::check_mesh(loaded.mesh);
+  const std::optional<std::string> problem = mesh::closed_surface_problem(check);
   std::ostringstream text;
   if (options.json) {
     write_json(text, options, loaded, check, problem);

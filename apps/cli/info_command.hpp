@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli/exit_code.hpp"
-#include "mesh_io/load_mesh.hpp"
+#include "exactgeo/mesh/load.hpp"
 
 namespace CLI {
 class App;
@@ -18,7 +18,7 @@ namespace exactgeo::cli {
 
 struct InfoOptions {
   std::string mesh;  ///< the mesh file
-  LoadOptions load;
+  mesh::LoadOptions load;
   bool json = false;
 };
 

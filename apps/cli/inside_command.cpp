@@ -9,13 +9,18 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cli/input_error.hpp"
-#include "cli/numbers.hpp"
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
-#include "mesh_io/load_mesh.hpp"
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/numbers.hpp"
+#include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {
+
+using io::InputError;
+using io::RecordReader;
+using mesh::load_mesh;
+using mesh::LoadedMesh;
 namespace {
 
 using Clock = std::chrono::steady_clock;

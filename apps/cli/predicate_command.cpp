@@ -8,13 +8,16 @@
 #include <sstream>
 #include <vector>
 
-#include "cli/input_error.hpp"
 #include "cli/json.hpp"
-#include "cli/numbers.hpp"
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/numbers.hpp"
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 
 namespace exactgeo::cli {
+
+using io::InputError;
+using io::RecordReader;
 
 namespace {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/internal/error_free.hpp"
-#include "exactgeo/predicates/internal/parallel_blocks.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -130,7 +130,7 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   // The three trees of moving primitives are built side by side. Queries run in tree
   // order (BoxTree::boxes), which keeps them spatially coherent.
   std::array<BoxTree, 3> trees;
-  exactgeo::internal::for_each_block(3, threads, [&](std::size_t k) {
+  parallel::for_each_block(3, threads, [&](std::size_t k) {
     if (k == 0)
       trees[0] = BoxTree(
           boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving, true, frames));
@@ -165,7 +165,7 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
       jobs.push_back({&pass, b, std::min(pass.queries.size(), b + kQueryBlock)});
   }
   std::vector<Candidates> found(jobs.size());
-  exactgeo::internal::for_each_block(jobs.size(), threads, [&](std::size_t j) {
+  parallel::for_each_block(jobs.size(), threads, [&](std::size_t j) {
     const QueryJob& job = jobs[j];
     Candidates& out = found[j];
     for (std::size_t q = job.begin; q < job.end; ++q) {

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
-#include "exactgeo/predicates/internal/parallel_blocks.hpp"
+#include "exactgeo/parallel/blocks.hpp"
 
 namespace exactgeo::ccd {
 
@@ -150,7 +150,7 @@ TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeIn
   }
   const Options fine{options.method, width};
   std::vector<TimeInterval> refined(open.size());
-  exactgeo::internal::for_each_block(open.size(), options.threads, [&](std::size_t k) {
+  parallel::for_each_block(open.size(), options.threads, [&](std::size_t k) {
     const std::size_t i = open[k];
     const Result r =
         i < result.vertex_face.size()
@@ -188,7 +188,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   const std::size_t vf_blocks = (candidates.vertex_face.size() + kNarrowBlock - 1) / kNarrowBlock;
   const std::size_t ee_blocks = (candidates.edge_edge.size() + kNarrowBlock - 1) / kNarrowBlock;
   std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);
-  exactgeo::internal::for_each_block(collisions.size(), options.threads, [&](std::size_t b) {
+  parallel::for_each_block(collisions.size(), options.threads, [&](std::size_t b) {
     BlockCollisions& out = collisions[b];
     // One bracket per colliding pair, so brackets and pairs stay aligned; a method
     // without a time of impact brackets the whole step.

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "exactgeo/predicates/internal/parallel_blocks.hpp"
+#include "exactgeo/parallel/blocks.hpp"
 
 namespace exactgeo::inside {
 
@@ -15,13 +15,13 @@ void classify_batch(const Classifier& classifier, std::span<const Point3> points
   // Points differ in cost (re-casts, candidate counts): workers take blocks in turn.
   constexpr std::size_t kBlock = 512;
   const std::size_t blocks = (points.size() + kBlock - 1) / kBlock;
-  exactgeo::internal::for_each_block(
-      blocks, threads, [&, scratch = ClassifierScratch{}](std::size_t b) mutable {
-        const std::size_t end = std::min(points.size(), (b + 1) * kBlock);
-        for (std::size_t i = b * kBlock; i < end; ++i) {
-          locations[i] = classifier.classify(points[i], arithmetic, scratch);
-        }
-      });
+  parallel::for_each_block(blocks, threads,
+                           [&, scratch = ClassifierScratch{}](std::size_t b) mutable {
+                             const std::size_t end = std::min(points.size(), (b + 1) * kBlock);
+                             for (std::size_t i = b * kBlock; i < end; ++i) {
+                               locations[i] = classifier.classify(points[i], arithmetic, scratch);
+                             }
+                           });
 }
 
 }  // namespace exactgeo::inside

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "exactgeo/inside/internal/candidates.hpp"
-#include "exactgeo/inside/mesh_check.hpp"
+#include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/crossing.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
@@ -21,18 +21,18 @@ constexpr std::size_t kExactDirections = std::size_t{1} << 25;
 /// Plain double signs can call every ray degenerate; after this many it counts anyway.
 constexpr std::size_t kPlainDoubleDirections = 64;
 
-Crossing cross(const Mesh& mesh, const Face& face, const Point3& origin, const Vector3& direction,
-               Arithmetic arithmetic) noexcept {
+Crossing cross(const mesh::Mesh& mesh, const mesh::Face& face, const Point3& origin,
+               const Vector3& direction, Arithmetic arithmetic) noexcept {
   if (face.is_triangle()) {
     const auto& v = mesh.vertices;
     return crossing_of(classify_ray_triangle(origin, direction, v[face.corners[0]],
                                              v[face.corners[1]], v[face.corners[2]], arithmetic)
                            .kind);
   }
-  return crossing_of(ray_patch_parity(origin, direction, patch_of(mesh, face), arithmetic));
+  return crossing_of(ray_patch_parity(origin, direction, mesh::patch_of(mesh, face), arithmetic));
 }
 
-bool strictly_outside(const Box& box, const Point3& p) noexcept {
+bool strictly_outside(const mesh::Box& box, const Point3& p) noexcept {
   for (int i = 0; i < 3; ++i) {
     if (p[i] < box.lower[i] || p[i] > box.upper[i]) return true;
   }
@@ -54,14 +54,15 @@ std::string_view to_string(Location location) noexcept {
 }
 
 struct Classifier::State {
-  Mesh mesh;
-  Box box;
+  mesh::Mesh mesh;
+  mesh::Box box;
   std::optional<internal::EmbreeCandidates> embree;
 };
 
-Classifier::Classifier(Mesh mesh, ClassifierOptions options) : state_(std::make_unique<State>()) {
-  const MeshCheck check = check_mesh(mesh);
-  if (auto problem = classification_problem(check, options.allow_non_manifold)) {
+Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
+    : state_(std::make_unique<State>()) {
+  const mesh::MeshCheck check = mesh::check_mesh(mesh);
+  if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
     throw std::invalid_argument(*problem);
   }
   state_->box = *check.bounding_box;
@@ -73,7 +74,7 @@ Classifier::~Classifier() = default;
 Classifier::Classifier(Classifier&&) noexcept = default;
 Classifier& Classifier::operator=(Classifier&&) noexcept = default;
 
-const Mesh& Classifier::mesh() const noexcept {
+const mesh::Mesh& Classifier::mesh() const noexcept {
   return state_->mesh;
 }
 
@@ -87,7 +88,7 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
   // The solid lies in the convex hull of its surface, hence in the box.
   if (strictly_outside(state_->box, point)) return Location::outside;
 
-  const Mesh& mesh = state_->mesh;
+  const mesh::Mesh& mesh = state_->mesh;
   const bool exact = arithmetic != Arithmetic::plain_double;
   const std::size_t directions = exact ? kExactDirections : kPlainDoubleDirections;
   bool odd = false;

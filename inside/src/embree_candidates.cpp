@@ -76,14 +76,14 @@ struct EmbreeCandidates::Scene {
   }
 };
 
-EmbreeCandidates::EmbreeCandidates(const Mesh& mesh) : scene_(std::make_unique<Scene>()) {
+EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh) : scene_(std::make_unique<Scene>()) {
   if (mesh.faces.size() > std::numeric_limits<FaceIndex>::max()) {
     throw std::runtime_error("Embree: too many faces");
   }
   Point3 lower{}, upper{};
   lower.fill(std::numeric_limits<double>::infinity());
   upper.fill(-std::numeric_limits<double>::infinity());
-  for (const Face& f : mesh.faces) {
+  for (const mesh::Face& f : mesh.faces) {
     for (std::size_t k = 0; k < f.size(); ++k) {
       const Point3& p = mesh.vertices[f.corners[k]];
       for (int i = 0; i < 3; ++i) {
@@ -98,7 +98,7 @@ EmbreeCandidates::EmbreeCandidates(const Mesh& mesh) : scene_(std::make_unique<S
 
   scene_->boxes.resize(mesh.faces.size());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const Face& face = mesh.faces[f];
+    const mesh::Face& face = mesh.faces[f];
     FloatBox& box = scene_->boxes[f];
     for (int i = 0; i < 3; ++i) {
       double lo = std::numeric_limits<double>::infinity();

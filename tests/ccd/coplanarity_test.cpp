@@ -16,8 +16,8 @@
 
 #include "ccd/exact_polynomial.hpp"
 #include "ccd/query_transforms.hpp"
-#include "cli/ccd_queries.hpp"
 #include "exactgeo/ccd/internal/boundary_image.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
@@ -78,13 +78,13 @@ void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
 TEST(Coplanarity, ClaimsHoldOnTheBundledData) {
   Rng rng = testing::seeded_engine("Coplanarity.Data");
   Tally tally;
-  for (const cli::QueryFile& file :
-       cli::read_query_files({(fs::path(EXACTGEO_TEST_DATA_DIR) / "ccd").string()})) {
-    for (const cli::CcdRecord& record : file.records) {
-      if (file.type == cli::QueryType::edge_edge) {
-        check_claims(cli::edge_edge_query(record), rng, 4, tally);
+  for (const ccd::QueryFile& file :
+       ccd::read_query_files({(fs::path(EXACTGEO_TEST_DATA_DIR) / "ccd").string()})) {
+    for (const ccd::QueryRecord& record : file.records) {
+      if (file.type == ccd::QueryType::edge_edge) {
+        check_claims(ccd::edge_edge_query(record), rng, 4, tally);
       } else {
-        check_claims(cli::vertex_face_query(record), rng, 4, tally);
+        check_claims(ccd::vertex_face_query(record), rng, 4, tally);
       }
       if (::testing::Test::HasFatalFailure()) return;
     }

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "ccd/query_transforms.hpp"
-#include "cli/ccd_queries.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
@@ -46,14 +46,14 @@ TEST(ExactCcd, HourglassFromDesignIsACollision) {
 struct DataQuery {
   std::string where;
   bool edge_edge;
-  cli::CcdRecord record;
+  ccd::QueryRecord record;
 };
 
 std::vector<DataQuery> queries_under(const fs::path& root) {
   std::vector<DataQuery> out;
-  for (const cli::QueryFile& file : cli::read_query_files({root.string()})) {
+  for (const ccd::QueryFile& file : ccd::read_query_files({root.string()})) {
     for (std::size_t i = 0; i < file.records.size(); ++i) {
-      out.push_back({file.path + " #" + std::to_string(i), file.type == cli::QueryType::edge_edge,
+      out.push_back({file.path + " #" + std::to_string(i), file.type == ccd::QueryType::edge_edge,
                      file.records[i]});
     }
   }
@@ -66,7 +66,7 @@ std::vector<DataQuery> bundled_queries() {
 
 template <class F>
 auto on_query(const DataQuery& d, F&& f) {
-  return d.edge_edge ? f(cli::edge_edge_query(d.record)) : f(cli::vertex_face_query(d.record));
+  return d.edge_edge ? f(ccd::edge_edge_query(d.record)) : f(ccd::vertex_face_query(d.record));
 }
 
 TEST(ExactCcdData, BundledDataHasNoErrorsAndSeesWhatParityMisses) {

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "ccd/query_transforms.hpp"
-#include "cli/ccd_queries.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
@@ -279,26 +279,26 @@ struct Tally {
 };
 
 /// Runs root parity on every query of one file (which must have ground truth).
-Tally run_file(const cli::QueryFile& file, bool check_rational) {
+Tally run_file(const ccd::QueryFile& file, bool check_rational) {
   const std::string& csv = file.path;
-  const bool edge_edge = file.type == cli::QueryType::edge_edge;
+  const bool edge_edge = file.type == ccd::QueryType::edge_edge;
   const auto& records = file.records;
   Tally t;
   for (std::size_t i = 0; i < records.size(); ++i) {
     EXPECT_TRUE(records[i].truth.has_value()) << csv << " query " << i << " has no ground truth";
     const bool expected = records[i].truth.value_or(false);
     const RootParityResult r = edge_edge
-                                   ? edge_edge_root_parity(cli::edge_edge_query(records[i]))
-                                   : vertex_face_root_parity(cli::vertex_face_query(records[i]));
+                                   ? edge_edge_root_parity(ccd::edge_edge_query(records[i]))
+                                   : vertex_face_root_parity(ccd::vertex_face_query(records[i]));
     if (check_rational) {
       const RootParityResult q =
           edge_edge
-              ? edge_edge_root_parity(cli::edge_edge_query(records[i]), Arithmetic::rational)
-              : vertex_face_root_parity(cli::vertex_face_query(records[i]), Arithmetic::rational);
+              ? edge_edge_root_parity(ccd::edge_edge_query(records[i]), Arithmetic::rational)
+              : vertex_face_root_parity(ccd::vertex_face_query(records[i]), Arithmetic::rational);
       EXPECT_EQ(q.parity, r.parity) << csv << " query " << i;
     }
-    const bool cubic = edge_edge ? edge_edge_cubic(cli::edge_edge_query(records[i]))
-                                 : vertex_face_cubic(cli::vertex_face_query(records[i]));
+    const bool cubic = edge_edge ? edge_edge_cubic(ccd::edge_edge_query(records[i]))
+                                 : vertex_face_cubic(ccd::vertex_face_query(records[i]));
     t.cubic_false_positives += cubic && !expected;
     t.cubic_false_negatives += !cubic && expected;
     ++t.queries;
@@ -317,7 +317,7 @@ TEST(RootParityData, BundledSampleQueriesHaveNoFalsePositives) {
   for (const char* scene : {"unit-tests", "erleben-cube-cliff-edges"}) {
     for (const char* type : {"vertex-face", "edge-edge"}) {
       for (const char* file : {"data_0_0.csv", "data_0_1.csv"}) {
-        const auto files = cli::read_query_files({(root / scene / type / file).string()});
+        const auto files = ccd::read_query_files({(root / scene / type / file).string()});
         const Tally t =
             run_file(files.at(0), /*check_rational=*/std::string(scene) == "unit-tests");
         queries += t.queries;
@@ -341,7 +341,7 @@ TEST(RootParityData, BundledTimeOfImpactSampleHasNoFalsePositives) {
       std::filesystem::path(EXACTGEO_TEST_DATA_DIR) / "ccd/scalable-ccd-data/cloth-funnel";
   for (const char* stem : {"227vf", "227ee"}) {
     const auto files =
-        cli::read_query_files({(root / "queries" / (std::string(stem) + ".csv")).string()});
+        ccd::read_query_files({(root / "queries" / (std::string(stem) + ".csv")).string()});
     const Tally t = run_file(files.at(0), /*check_rational=*/false);
     EXPECT_GT(t.queries, 0);
     EXPECT_EQ(t.false_positives, 0) << stem;
@@ -362,9 +362,9 @@ TEST(RootParityData, FullSharedSetsHaveNoFalsePositives) {
   const fs::path root = fs::path(EXACTGEO_SHARED_DATA_DIR) / "ccd";
   if (!fs::exists(root)) GTEST_SKIP() << root << " not present";
   std::map<std::string, Tally> by_set;
-  for (const cli::QueryFile& file : cli::read_query_files({root.string()})) {
+  for (const ccd::QueryFile& file : ccd::read_query_files({root.string()})) {
     const bool sample = file.path.find("sample-queries") != std::string::npos;
-    const bool edge_edge = file.type == cli::QueryType::edge_edge;
+    const bool edge_edge = file.type == ccd::QueryType::edge_edge;
     const Tally t = run_file(file, false);
     Tally& sum = by_set[std::string(sample ? "sample-queries " : "scalable-ccd-data ") +
                         (edge_edge ? "edge-edge" : "vertex-face")];

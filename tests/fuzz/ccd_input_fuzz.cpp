@@ -15,10 +15,10 @@
 #include <sstream>
 #include <string>
 
-#include "cli/ccd_queries.hpp"
-#include "cli/input_error.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
+#include "exactgeo/io/input_error.hpp"
 
 namespace {
 
@@ -28,10 +28,10 @@ void check(bool condition) {
 
 void run_queries(const std::string& text) {
   std::istringstream in(text);
-  std::vector<exactgeo::cli::CcdRecord> records;
+  std::vector<exactgeo::ccd::QueryRecord> records;
   try {
-    records = exactgeo::cli::read_ccd_records(in, "<fuzz>");
-  } catch (const exactgeo::cli::InputError& e) {
+    records = exactgeo::ccd::read_query_records(in, "<fuzz>");
+  } catch (const exactgeo::io::InputError& e) {
     check(std::string(e.what()).find("<fuzz>") != std::string::npos);
     return;
   }
@@ -42,11 +42,11 @@ void run_queries(const std::string& text) {
     }
     exactgeo::ccd::Options options;
     options.max_depth = 12;  // keep each input fast; depth changes no parity answer
-    const auto vf = exactgeo::cli::vertex_face_query(r);
+    const auto vf = exactgeo::ccd::vertex_face_query(r);
     if (exactgeo::ccd::vertex_face_root_parity(vf).collision()) {
       check(exactgeo::ccd::vertex_face_ccd(vf, options).collision);
     }
-    const auto ee = exactgeo::cli::edge_edge_query(r);
+    const auto ee = exactgeo::ccd::edge_edge_query(r);
     if (exactgeo::ccd::edge_edge_root_parity(ee).collision()) {
       check(exactgeo::ccd::edge_edge_ccd(ee, options).collision);
     }
@@ -56,8 +56,8 @@ void run_queries(const std::string& text) {
 void run_truth(const std::string& text) {
   std::istringstream in(text);
   try {
-    (void)exactgeo::cli::read_truth_array(in, "<fuzz>");
-  } catch (const exactgeo::cli::InputError& e) {
+    (void)exactgeo::ccd::read_truth_array(in, "<fuzz>");
+  } catch (const exactgeo::io::InputError& e) {
     check(std::string(e.what()).find("<fuzz>") != std::string::npos);
   }
 }

@@ -16,17 +16,17 @@
 #include <string>
 #include <string_view>
 
-#include "cli/input_error.hpp"
-#include "mesh_io/load_mesh.hpp"
-#include "mesh_io/obj_reader.hpp"
-#include "mesh_io/off_reader.hpp"
-#include "mesh_io/ply_reader.hpp"
-#include "mesh_io/weld.hpp"
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/mesh/loaded_mesh.hpp"
+#include "exactgeo/mesh/obj_reader.hpp"
+#include "exactgeo/mesh/off_reader.hpp"
+#include "exactgeo/mesh/ply_reader.hpp"
+#include "exactgeo/mesh/weld.hpp"
 
 namespace {
 
-using exactgeo::inside::kNoVertex;
-using exactgeo::inside::Mesh;
+using exactgeo::mesh::kNoVertex;
+using exactgeo::mesh::Mesh;
 
 void check(bool condition) {
   if (!condition) std::abort();
@@ -50,24 +50,24 @@ void check_mesh(const Mesh& mesh) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
   const std::string_view bytes(reinterpret_cast<const char*>(data) + 1, size - 1);
-  exactgeo::cli::LoadOptions options;
+  exactgeo::mesh::LoadOptions options;
   options.split_polygons = (data[0] & 4) != 0;
   options.weld = (data[0] & 8) != 0;
   const std::string source = "<fuzz>";
-  exactgeo::cli::LoadedMesh loaded;
+  exactgeo::mesh::LoadedMesh loaded;
   try {
     switch (data[0] % 3) {
       case 0:
-        loaded = exactgeo::cli::read_obj(bytes, source, options);
+        loaded = exactgeo::mesh::read_obj(bytes, source, options);
         break;
       case 1:
-        loaded = exactgeo::cli::read_off(bytes, source, options);
+        loaded = exactgeo::mesh::read_off(bytes, source, options);
         break;
       default:
-        loaded = exactgeo::cli::read_ply(bytes, source, options);
+        loaded = exactgeo::mesh::read_ply(bytes, source, options);
         break;
     }
-  } catch (const exactgeo::cli::InputError& e) {
+  } catch (const exactgeo::io::InputError& e) {
     check(std::string_view(e.what()).find(source) != std::string_view::npos);
     return 0;
   }
@@ -75,7 +75,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(options.split_polygons || loaded.split_polygons == 0);
   if (options.weld) {
     const std::size_t before = loaded.mesh.vertices.size();
-    const std::size_t removed = exactgeo::cli::weld_vertices(loaded.mesh);
+    const std::size_t removed = exactgeo::mesh::weld_vertices(loaded.mesh);
     check(loaded.mesh.vertices.size() + removed == before);
     check_mesh(loaded.mesh);
   }

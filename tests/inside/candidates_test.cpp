@@ -22,6 +22,11 @@
 namespace exactgeo::inside {
 namespace {
 
+using mesh::Face;
+using mesh::make_quad;
+using mesh::make_triangle;
+using mesh::Mesh;
+
 using internal::FaceIndex;
 
 /// A closed torus of nu x nv quads with dyadic coordinates (at most about 24 significant

@@ -32,17 +32,21 @@
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
-#include "exactgeo/inside/mesh_check.hpp"
+#include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
-#include "inside/hexahedron.hpp"
 #include "inside/polycube.hpp"
+#include "mesh/hexahedron.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::inside {
 namespace {
+
+using mesh::Face;
+using mesh::make_triangle;
+using mesh::Mesh;
 
 using polycube::FaceOrigin;
 using polycube::Lattice;
@@ -469,7 +473,7 @@ SolidReport check_polycube(std::string_view name, const Voxels& voxels, const Va
 /// The mesh facts of a polycube: closed, every edge used by an even number of faces, the
 /// four-face edges exactly those of the voxel set, accepted iff non-manifold is allowed.
 void expect_polycube_mesh(const Voxels& voxels, const Polycube& p, bool triangles) {
-  const MeshCheck c = check_mesh(p.mesh);
+  const mesh::MeshCheck c = mesh::check_mesh(p.mesh);
   const std::size_t non_manifold = polycube::count_non_manifold_edges(voxels);
   EXPECT_TRUE(c.closed());
   EXPECT_EQ(c.odd_edges.count, 0u);
@@ -480,7 +484,7 @@ void expect_polycube_mesh(const Voxels& voxels, const Polycube& p, bool triangle
   if (non_manifold == 0) {
     EXPECT_EQ(c.consistently_oriented, std::optional<bool>(true));
   }
-  EXPECT_FALSE(classification_problem(c, /*allow_non_manifold=*/true).has_value());
+  EXPECT_FALSE(mesh::closed_surface_problem(c, /*allow_non_manifold=*/true).has_value());
   if (non_manifold > 0) {
     EXPECT_THROW(Classifier(p.mesh, ClassifierOptions{}), std::invalid_argument);
   } else {
@@ -612,7 +616,7 @@ void moved_test(std::string_view stream, bool triangles) {
     SCOPED_TRACE(cat(describe(voxels), "; ", variant.describe()));
     expect_polycube_mesh(voxels, p, triangles);
     if (!triangles) {
-      EXPECT_GT(check_mesh(p.mesh).non_planar_quads.count, 0u);
+      EXPECT_GT(mesh::check_mesh(p.mesh).non_planar_quads.count, 0u);
     }
 
     PolycubeProbes probes;
@@ -647,7 +651,7 @@ TEST(KnownTruthPolycube, ShearedSkewPatchesForceRecasts) {
     SCOPED_TRACE(cat(describe(voxels), "; ", variant.describe()));
     expect_polycube_mesh(voxels, p, triangles);
     if (!triangles) {
-      EXPECT_GT(check_mesh(p.mesh).non_planar_quads.count, 0u);
+      EXPECT_GT(mesh::check_mesh(p.mesh).non_planar_quads.count, 0u);
     }
     PolycubeProbes probes;
     add_half_lattice_points(probes, n, true, kShearYExponent);
@@ -816,7 +820,7 @@ TEST(KnownTruthPolycube, ExactLinearMapsForceRecastsAndKeepLabels) {
 // ---------------------------------------------------------------------------------------
 // 5. Hand-made solids
 
-using test_meshes::hexahedron;
+using mesh::test_meshes::hexahedron;
 
 std::array<Point3, 8> unit_box_corners() {
   std::array<Point3, 8> c{};
@@ -919,7 +923,7 @@ TEST(KnownTruthSolid, UnitCubeAsQuadsTrianglesAndFlippedFaces) {
       flips[f] = std::bernoulli_distribution(0.5)(rng);
   } while (std::count(flips.begin(), flips.end(), true) % 6 == 0);
   const Mesh flipped = polycube::with_flipped_faces(cube, [&](std::size_t f) { return flips[f]; });
-  EXPECT_EQ(check_mesh(flipped).consistently_oriented, std::optional<bool>(false));
+  EXPECT_EQ(mesh::check_mesh(flipped).consistently_oriented, std::optional<bool>(false));
   check_solid("unit cube, some faces flipped", flipped, probes);
 }
 
@@ -946,7 +950,7 @@ TEST(KnownTruthSolid, BoxWithSkewTopAndBottom) {
     corners[square[k] + 4] = {x, y, top[k]};
   }
   const Mesh solid = hexahedron(corners);
-  ASSERT_EQ(check_mesh(solid).non_planar_quads.count, 2u);
+  ASSERT_EQ(mesh::check_mesh(solid).non_planar_quads.count, 2u);
 
   const auto truth = [&](const Point3& p) {
     const mpq_class x(p[0]), y(p[1]), z(p[2]);
@@ -982,7 +986,7 @@ TEST(KnownTruthSolid, HexahedronWithVertexMovedAlongDiagonal) {
   std::array<Point3, 8> corners = unit_box_corners();
   corners[7] = {1 + d, 1 + d, 1 + d};
   const Mesh solid = hexahedron(corners);
-  ASSERT_EQ(check_mesh(solid).non_planar_quads.count, 3u);
+  ASSERT_EQ(mesh::check_mesh(solid).non_planar_quads.count, 3u);
 
   const auto truth = [&](const Point3& p) -> std::optional<Location> {
     bool open = true, closed = true, beyond = false, zero = false;

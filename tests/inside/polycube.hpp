@@ -23,9 +23,14 @@
 #include <vector>
 
 #include "exactgeo/inside/classifier.hpp"
-#include "exactgeo/inside/mesh.hpp"
+#include "exactgeo/mesh/mesh.hpp"
 
 namespace exactgeo::inside::polycube {
+
+using mesh::Face;
+using mesh::make_quad;
+using mesh::make_triangle;
+using mesh::Mesh;
 
 using Lattice = std::array<int, 3>;
 
@@ -160,13 +165,13 @@ struct Polycube {
 inline Polycube build_polycube(const Voxels& voxels) {
   const int n = voxels.n;
   const auto side = static_cast<std::size_t>(n + 1);
-  std::vector<VertexIndex> vertex_of(side * side * side, kNoVertex);
+  std::vector<VertexIndex> vertex_of(side * side * side, mesh::kNoVertex);
   Polycube out;
   const auto vertex = [&](const Lattice& p) {
     const std::size_t key =
         static_cast<std::size_t>(p[0]) +
         side * (static_cast<std::size_t>(p[1]) + side * static_cast<std::size_t>(p[2]));
-    if (vertex_of[key] == kNoVertex) {
+    if (vertex_of[key] == mesh::kNoVertex) {
       vertex_of[key] = static_cast<VertexIndex>(out.mesh.vertices.size());
       out.mesh.vertices.push_back(
           {static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])});

@@ -12,15 +12,18 @@
 #include <string>
 #include <vector>
 
-#include "cli/input_error.hpp"
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
-#include "exactgeo/inside/mesh_check.hpp"
-#include "mesh_io/load_mesh.hpp"
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/load.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::inside {
 namespace {
+
+using mesh::Face;
+using mesh::Mesh;
 
 const std::string kMeshes = std::string(EXACTGEO_TEST_DATA_DIR) + "/meshes/";
 const std::string kSharedMeshes = std::string(EXACTGEO_SHARED_DATA_DIR) + "/meshes/";
@@ -28,7 +31,7 @@ const std::string kSharedMeshes = std::string(EXACTGEO_SHARED_DATA_DIR) + "/mesh
 /// Random points in the box, and for random faces: a corner, an edge midpoint, the patch
 /// point at (1/2, 1/2) (rounded: near, maybe not on, the patch) and that point moved one
 /// ulp each way along x.
-std::vector<Point3> test_points(const Mesh& mesh, const Box& box, std::mt19937_64& rng,
+std::vector<Point3> test_points(const Mesh& mesh, const mesh::Box& box, std::mt19937_64& rng,
                                 std::size_t count) {
   std::vector<Point3> points;
   std::uniform_real_distribution<double> unit(-0.05, 1.05);
@@ -60,14 +63,15 @@ std::vector<Point3> test_points(const Mesh& mesh, const Box& box, std::mt19937_6
 }
 
 void expect_embree_matches_brute_force(const std::string& path, std::size_t count,
-                                       const cli::LoadOptions& load = {}) {
+                                       const mesh::LoadOptions& load = {}) {
   SCOPED_TRACE(path);
-  const Mesh mesh = cli::load_mesh(path, load).mesh;
+  const Mesh mesh = mesh::load_mesh(path, load).mesh;
   const Classifier embree(mesh);
   const Classifier brute(mesh, {CandidateSearch::brute_force, false});
   auto rng =
       testing::seeded_engine("inside.real_meshes." + std::filesystem::path(path).stem().string());
-  const std::vector<Point3> points = test_points(mesh, *check_mesh(mesh).bounding_box, rng, count);
+  const std::vector<Point3> points =
+      test_points(mesh, *mesh::check_mesh(mesh).bounding_box, rng, count);
 
   std::vector<Location> fast(points.size());
   classify_batch(embree, points, fast, Arithmetic::exact, 2);
@@ -92,7 +96,7 @@ TEST(RealMeshes, EmbreeAgreesWithBruteForceOnBundledMeshes) {
   }
   expect_embree_matches_brute_force(kMeshes + "spot/spot_quadrangulated.obj", 1500);
   // Pentagons split into fans: a closed mesh of quads and triangles.
-  cli::LoadOptions split;
+  mesh::LoadOptions split;
   split.split_polygons = true;
   expect_embree_matches_brute_force(kMeshes + "spot/spot_control_mesh.obj", 600, split);
   expect_embree_matches_brute_force(kMeshes + "cgal/double-torus-example.off", 600, split);
@@ -109,10 +113,10 @@ TEST(RealMeshes, EmbreeAgreesWithBruteForceOnSharedMeshes) {
 
 /// The reason `exactgeo inside` gives for refusing a mesh.
 std::string refusal(const std::string& path) {
-  cli::LoadOptions split;
+  mesh::LoadOptions split;
   split.split_polygons = true;
-  const MeshCheck check = check_mesh(cli::load_mesh(path, split).mesh);
-  return classification_problem(check).value_or("");
+  const mesh::MeshCheck check = mesh::check_mesh(mesh::load_mesh(path, split).mesh);
+  return mesh::closed_surface_problem(check).value_or("");
 }
 
 TEST(RealMeshes, NegativeMeshesAreRefusedForTheRightReason) {
@@ -122,10 +126,10 @@ TEST(RealMeshes, NegativeMeshesAreRefusedForTheRightReason) {
             std::string::npos);
   // Orientation does not matter for the inside semantics: inconsistent is accepted.
   EXPECT_EQ(refusal(kMeshes + "negative/cube4-shuffled.off"), "");
-  EXPECT_FALSE(check_mesh(cli::load_mesh(kMeshes + "negative/cube4-shuffled.off").mesh)
+  EXPECT_FALSE(mesh::check_mesh(mesh::load_mesh(kMeshes + "negative/cube4-shuffled.off").mesh)
                    .consistently_oriented.value_or(true));
   // Faces with more than four corners are refused by the loader.
-  EXPECT_THROW(cli::load_mesh(kMeshes + "spot/spot_control_mesh.obj"), cli::InputError);
+  EXPECT_THROW(mesh::load_mesh(kMeshes + "spot/spot_control_mesh.obj"), io::InputError);
 }
 
 TEST(RealMeshes, SharedNegativeMeshesAreRefusedForTheRightReason) {
@@ -140,12 +144,12 @@ TEST(RealMeshes, SharedNegativeMeshesAreRefusedForTheRightReason) {
   // position. Welding joins most of them; 16 edges stay open because their corners differ
   // in the last printed digit, and welding never uses a tolerance.
   const std::string soup = negative + "tref_quad_soup.off";
-  EXPECT_EQ(check_mesh(cli::load_mesh(soup).mesh).boundary_edges.count, 4u * 320u);
-  cli::LoadOptions weld;
+  EXPECT_EQ(mesh::check_mesh(mesh::load_mesh(soup).mesh).boundary_edges.count, 4u * 320u);
+  mesh::LoadOptions weld;
   weld.weld = true;
-  const cli::LoadedMesh welded = cli::load_mesh(soup, weld);
+  const mesh::LoadedMesh welded = mesh::load_mesh(soup, weld);
   EXPECT_EQ(welded.welded_vertices, 952u);
-  EXPECT_EQ(check_mesh(welded.mesh).boundary_edges.count, 16u);
+  EXPECT_EQ(mesh::check_mesh(welded.mesh).boundary_edges.count, 16u);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 
 namespace {
@@ -67,12 +68,14 @@ void mesh_ccd() {
 
 void inside() {
   using namespace exactgeo::inside;
+  using exactgeo::mesh::make_quad;
   // The unit cube [0, 1]^3 as six quads; the bits of vertex c are its x, y, z.
-  Mesh cube;
+  exactgeo::mesh::Mesh cube;
   for (int c = 0; c < 8; ++c)
     cube.vertices.push_back({double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1)});
   cube.faces = {make_quad(0, 2, 3, 1), make_quad(4, 5, 7, 6), make_quad(0, 1, 5, 4),
                 make_quad(2, 6, 7, 3), make_quad(0, 4, 6, 2), make_quad(1, 3, 7, 5)};
+  check(exactgeo::mesh::check_mesh(cube).closed(), "cube: the mesh check calls it closed");
   const Classifier classifier(std::move(cube));
   check(classifier.classify({0.5, 0.5, 0.5}) == Location::inside, "cube: centre is inside");
   check(classifier.classify({2, 0.5, 0.5}) == Location::outside, "cube: (2, .5, .5) is outside");

@@ -31,10 +31,11 @@
 #include <vector>
 
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::ccd {
 
-using VertexIndex = std::uint32_t;
+using exactgeo::VertexIndex;  // predicates/point.hpp
 using FaceIndex = std::uint32_t;
 using Triangle = std::array<VertexIndex, 3>;
 /// An edge with its smaller vertex first.

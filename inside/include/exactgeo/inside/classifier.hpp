@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-#include "exactgeo/inside/mesh.hpp"
+#include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/point.hpp"
 
@@ -44,10 +44,10 @@ struct ClassifierScratch {
 
 class Classifier {
  public:
-  /// Checks the mesh (check_mesh, classification_problem) and builds the candidate search.
+  /// Checks the mesh (check_mesh, closed_surface_problem) and builds the candidate search.
   /// Throws std::invalid_argument with the problem's description if the mesh cannot be
   /// classified against, std::runtime_error if Embree fails.
-  explicit Classifier(Mesh mesh, ClassifierOptions options = {});
+  explicit Classifier(mesh::Mesh mesh, ClassifierOptions options = {});
   ~Classifier();
   Classifier(Classifier&&) noexcept;
   Classifier& operator=(Classifier&&) noexcept;
@@ -59,7 +59,7 @@ class Classifier {
   Location classify(const Point3& point, Arithmetic arithmetic, ClassifierScratch& scratch) const;
   Location classify(const Point3& point, Arithmetic arithmetic = Arithmetic::exact) const;
 
-  const Mesh& mesh() const noexcept;
+  const mesh::Mesh& mesh() const noexcept;
 
  private:
   struct State;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <limits>
 
 namespace exactgeo {
@@ -11,5 +12,8 @@ static_assert(std::numeric_limits<double>::is_iec559,
 /// A point or a vector in 3D, with coordinates exactly as given by the caller.
 using Point3 = std::array<double, 3>;
 using Vector3 = std::array<double, 3>;
+
+/// The position of a point in a list of points (a mesh's vertices, a face set's corners).
+using VertexIndex = std::uint32_t;
 
 }  // namespace exactgeo

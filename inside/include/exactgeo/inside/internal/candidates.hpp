@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "exactgeo/inside/mesh.hpp"
+#include "exactgeo/mesh/mesh.hpp"
 
 namespace exactgeo::inside::internal {
 
@@ -18,7 +18,7 @@ using FaceIndex = std::uint32_t;
 
 /// Every face: the oracle the accelerated finder is tested against, and the fallback for
 /// directions a single-precision tracer cannot represent exactly.
-inline void all_faces(const Mesh& mesh, std::vector<FaceIndex>& out) {
+inline void all_faces(const mesh::Mesh& mesh, std::vector<FaceIndex>& out) {
   out.resize(mesh.faces.size());
   for (std::size_t f = 0; f < out.size(); ++f)
     out[f] = static_cast<FaceIndex>(f);
@@ -31,7 +31,7 @@ class EmbreeCandidates {
  public:
   /// Builds the BVH over `mesh` (which must outlive this object). Throws
   /// std::runtime_error if Embree fails (out of memory, unsupported CPU).
-  explicit EmbreeCandidates(const Mesh& mesh);
+  explicit EmbreeCandidates(const mesh::Mesh& mesh);
   ~EmbreeCandidates();
   EmbreeCandidates(EmbreeCandidates&&) noexcept;
   EmbreeCandidates& operator=(EmbreeCandidates&&) noexcept;

@@ -1,0 +1,120 @@
+#include "exactgeo/io/numbers.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <system_error>
+
+#include "exactgeo/io/input_error.hpp"
+
+namespace exactgeo::io {
+
+namespace {
+
+bool starts_with_hex_prefix(std::string_view s) {
+  return s.size() >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
+}
+
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kMaxShown = 40;
+  std::string shown(token.substr(0, kMaxShown));
+  for (char& c : shown) {
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  }
+  return "'" + shown + (token.size() > kMaxShown ? "...'" : "'");
+}
+
+}  // namespace
+
+std::optional<double> parse_number(std::string_view token, std::string& error) {
+  std::string_view body = token;
+  bool negative = false;
+  if (!body.empty() && (body[0] == '+' || body[0] == '-')) {
+    negative = body[0] == '-';
+    body.remove_prefix(1);
+  }
+  std::chars_format format = std::chars_format::general;
+  if (starts_with_hex_prefix(body)) {
+    format = std::chars_format::hex;
+    body.remove_prefix(2);
+  }
+  // from_chars would accept a second sign, "inf" and "nan": reject them first.
+  if (body.empty() || !(std::isdigit(static_cast<unsigned char>(body[0])) || body[0] == '.')) {
+    error = quoted(token) + " is not a number";
+    return std::nullopt;
+  }
+  double value = 0;
+  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value, format);
+  if (ec == std::errc::result_out_of_range) {
+    error = quoted(token) + " is outside the range of double";
+    return std::nullopt;
+  }
+  if (ec != std::errc() || end != body.data() + body.size()) {
+    error = quoted(token) + " is not a number";
+    return std::nullopt;
+  }
+  if (!std::isfinite(value)) {
+    error = quoted(token) + " is not finite";
+    return std::nullopt;
+  }
+  return negative ? -value : value;
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+  if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+  auto is_space = [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+  };
+  std::vector<std::string_view> fields;
+  std::size_t i = 0;
+  bool after_comma = false;  // a comma was seen since the last field
+  while (i < line.size()) {
+    if (is_space(line[i])) {
+      ++i;
+    } else if (line[i] == ',') {
+      if (after_comma || fields.empty()) fields.emplace_back();  // ",," or a leading comma
+      after_comma = true;
+      ++i;
+    } else {
+      std::size_t j = i;
+      while (j < line.size() && !is_space(line[j]) && line[j] != ',')
+        ++j;
+      fields.push_back(line.substr(i, j - i));
+      after_comma = false;
+      i = j;
+    }
+  }
+  if (after_comma) fields.emplace_back();  // a trailing comma
+  return fields;
+}
+
+std::vector<double> parse_numbers(std::string_view line, const std::string& source,
+                                  std::size_t line_number) {
+  const std::vector<std::string_view> fields = split_fields(line);
+  std::vector<double> numbers;
+  numbers.reserve(fields.size());
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (fields[i].empty()) {
+      throw InputError(source, line_number, "field " + std::to_string(i + 1) + " is empty");
+    }
+    std::string error;
+    const std::optional<double> x = parse_number(fields[i], error);
+    if (!x) throw InputError(source, line_number, "field " + std::to_string(i + 1) + ": " + error);
+    numbers.push_back(*x);
+  }
+  return numbers;
+}
+
+std::optional<std::vector<double>> RecordReader::next() {
+  while (std::getline(in_, line_)) {
+    ++line_number_;
+    if (line_.find('\0') != std::string::npos) {
+      throw InputError(source_, line_number_, "contains a NUL byte (binary input?)");
+    }
+    std::vector<double> numbers = parse_numbers(line_, source_, line_number_);
+    if (!numbers.empty()) return numbers;
+  }
+  if (in_.bad()) throw InputError(source_ + ": read error");
+  return std::nullopt;
+}
+
+}  // namespace exactgeo::io

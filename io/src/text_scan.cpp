@@ -1,0 +1,87 @@
+#include "exactgeo/io/text_scan.hpp"
+
+#include <charconv>
+#include <system_error>
+
+namespace exactgeo::io {
+
+std::optional<std::string_view> LineCursor::next() {
+  if (pos_ >= text_.size()) return std::nullopt;
+  const std::size_t newline = text_.find('\n', pos_);
+  const std::size_t end = newline == std::string_view::npos ? text_.size() : newline;
+  std::string_view line = text_.substr(pos_, end - pos_);
+  if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+  pos_ = newline == std::string_view::npos ? text_.size() : newline + 1;
+  ++next_line_;
+  return line;
+}
+
+std::string_view skip_utf8_bom(std::string_view text) noexcept {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  return text;
+}
+
+std::string_view strip_comment(std::string_view line) noexcept {
+  const std::size_t hash = line.find('#');
+  return hash == std::string_view::npos ? line : line.substr(0, hash);
+}
+
+void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) {
+  tokens.clear();
+  auto is_space = [](char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+  };
+  std::size_t i = 0;
+  while (i < line.size()) {
+    if (is_space(line[i])) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < line.size() && !is_space(line[j]))
+      ++j;
+    tokens.push_back(line.substr(i, j - i));
+    i = j;
+  }
+}
+
+std::optional<std::int64_t> parse_integer(std::string_view token, std::string& error) {
+  std::string_view body = token;
+  if (!body.empty() && body[0] == '+') body.remove_prefix(1);
+  // from_chars accepts a leading '-' itself; refuse "+-1" and "--1".
+  if (body.empty() || body[0] == '+' || (body[0] == '-' && body.size() > 1 && body[1] == '-')) {
+    error = quoted(token) + " is not an integer";
+    return std::nullopt;
+  }
+  std::int64_t value = 0;
+  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    error = quoted(token) + " is too large";
+    return std::nullopt;
+  }
+  if (ec != std::errc() || end != body.data() + body.size()) {
+    error = quoted(token) + " is not an integer";
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::string printable(std::string_view text) {
+  std::string shown;
+  shown.reserve(text.size());
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    shown.push_back(u < 0x20 || u >= 0x7f ? '?' : c);
+  }
+  return shown;
+}
+
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kMaxShown = 40;
+  std::string shown = "'";
+  shown.append(printable(token.substr(0, kMaxShown)));
+  shown.append(token.size() > kMaxShown ? "...'" : "'");
+  return shown;
+}
+
+}  // namespace exactgeo::io

@@ -1,0 +1,72 @@
+#pragma once
+
+// Facts about a mesh that decide whether point-in-volume classification is defined for
+// it, and that `exactgeo info` reports. Every geometric fact is exact (orient3d and the
+// exact patch classification), every combinatorial one is counted over undirected edges.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::mesh {
+
+/// How many of something, and the first few of them (indices into the mesh).
+template <class T>
+struct Examples {
+  static constexpr std::size_t kKept = 5;
+  std::size_t count = 0;
+  std::vector<T> first;  ///< at most kKept, in index order
+
+  void add(const T& item) {
+    if (first.size() < kKept) first.push_back(item);
+    ++count;
+  }
+};
+
+using Edge = std::pair<VertexIndex, VertexIndex>;  ///< smaller index first
+
+struct Box {
+  Point3 lower;
+  Point3 upper;
+};
+
+struct MeshCheck {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+  std::size_t quads = 0;
+  std::size_t triangles = 0;
+  std::optional<Box> bounding_box;           ///< of the finite vertices; none if there are none
+  Examples<std::size_t> out_of_range_faces;  ///< faces with a corner index >= vertices
+  /// The corner index that is out of range in the first such face (for the message).
+  VertexIndex first_out_of_range_corner = kNoVertex;
+  Examples<std::size_t> non_finite_vertices;
+  Examples<Edge> boundary_edges;      ///< used by exactly one face
+  Examples<Edge> non_manifold_edges;  ///< used by more than two faces
+  Examples<Edge> odd_edges;           ///< used by an odd number of faces (subset of the two above)
+  Examples<std::size_t> degenerate_faces;  ///< a repeated corner index, or zero area (exact)
+  Examples<std::size_t> non_planar_quads;  ///< corners not coplanar (exact orient3d)
+  std::size_t unreferenced_vertices = 0;
+  std::size_t components = 0;  ///< connected through shared vertices
+  /// Every edge used once in each direction; none when some edge is not shared by two faces.
+  std::optional<bool> consistently_oriented;
+
+  bool closed() const noexcept { return boundary_edges.count == 0 && odd_edges.count == 0; }
+  bool manifold() const noexcept { return non_manifold_edges.count == 0; }
+};
+
+/// Checks every face and edge. Runs in O(faces log faces).
+MeshCheck check_mesh(const Mesh& mesh);
+
+/// What keeps the mesh from bounding a solid that crossing parity can classify points
+/// against (exactgeo::inside), as one message with counts and the first few indices, or
+/// nullopt if nothing does: no out-of-range index,
+/// finite coordinates, at least one face, no degenerate face, every edge shared by an
+/// even number of faces, and (unless allow_non_manifold) by exactly two.
+std::optional<std::string> closed_surface_problem(const MeshCheck& check,
+                                                  bool allow_non_manifold = false);
+
+}  // namespace exactgeo::mesh

@@ -1,0 +1,29 @@
+#pragma once
+
+// Loading a mesh file into an exactgeo::Mesh, keeping coordinates exact.
+//
+// OBJ, OFF and PLY (ASCII, binary little- and big-endian, float and double) are read by
+// exactgeo's own readers: decimal numbers are converted with correct rounding
+// (std::from_chars), binary values bit for bit, so a double-precision file keeps every
+// bit. Every other format goes through assimp, whose coordinates are 32-bit floats:
+// LoadedMesh::coordinates_via_float says so.
+//
+// Faces keep their corners: triangles stay triangles, quads stay quads (the bilinear
+// patch through the four corners). A face with more than four corners is an error unless
+// LoadOptions::split_polygons asks for a fan split from its first corner.
+
+#include <string>
+
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/mesh/loaded_mesh.hpp"
+
+namespace exactgeo::mesh {
+
+/// Reads `path`; the format comes from the extension (case-insensitive). Throws
+/// io::InputError naming the file, and the line (text formats) or the face/vertex index
+/// (binary formats), for anything malformed: unreadable file, bad or non-finite number,
+/// index out of range, face with fewer than three or (without split_polygons) more
+/// than four corners, truncated data, an empty mesh.
+LoadedMesh load_mesh(const std::string& path, const LoadOptions& options = {});
+
+}  // namespace exactgeo::mesh

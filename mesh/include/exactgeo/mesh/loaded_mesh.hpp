@@ -1,0 +1,32 @@
+#pragma once
+
+// What reading a mesh gives: the mesh, its format, and what was done to it on the way
+// (the options that asked for it).
+
+#include <cstddef>
+#include <string>
+
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::mesh {
+
+struct LoadOptions {
+  /// Merge vertices with exactly equal coordinates (+0 and -0 count as equal) and
+  /// re-index faces. Meshes stored as face soups (STL, per-corner data) need it.
+  bool weld = false;
+  /// Split faces with more than four corners into a triangle fan from their first
+  /// corner, instead of refusing them.
+  bool split_polygons = false;
+};
+
+struct LoadedMesh {
+  Mesh mesh;
+  /// "obj", "off", "ply ascii", "ply binary little endian", "ply binary big endian",
+  /// or "assimp " and the extension ("assimp stl").
+  std::string format;
+  bool coordinates_via_float = false;  ///< coordinates were rounded to 32-bit floats (assimp)
+  std::size_t welded_vertices = 0;     ///< vertices removed by welding (LoadOptions::weld, assimp)
+  std::size_t split_polygons = 0;      ///< faces with more than four corners that were split
+};
+
+}  // namespace exactgeo::mesh

@@ -1,0 +1,19 @@
+#pragma once
+
+// Welding: vertices at exactly the same position become one vertex.
+
+#include <cstddef>
+
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::mesh {
+
+/// Merges vertices whose coordinates are exactly equal (+0 and -0 count as equal), keeping
+/// each position's first occurrence (its coordinates and its place in the order of first
+/// occurrences, so the result is deterministic), and re-indexes the faces. Vertices no face
+/// uses are kept. Returns the number of vertices removed. Faces may become degenerate
+/// (two corners at one position); they are kept for the mesh checks to report.
+/// Precondition: every corner index is in range or kNoVertex.
+std::size_t weld_vertices(Mesh& mesh);
+
+}  // namespace exactgeo::mesh

@@ -1,0 +1,188 @@
+#include "assimp_reader.hpp"
+
+#include <assimp/scene.h>
+#include <array>
+#include <assimp/Importer.hpp>
+#include <cmath>
+#include <exception>
+#include <utility>
+#include <vector>
+
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/read_bytes.hpp"
+#include "exactgeo/io/text_scan.hpp"
+#include "exactgeo/mesh/weld.hpp"
+#include "polygon.hpp"
+
+namespace exactgeo::mesh {
+
+using io::InputError;
+using io::quoted;
+using io::require_readable;
+
+namespace {
+
+using Matrix = std::array<std::array<double, 4>, 4>;
+
+constexpr Matrix kIdentity = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+
+Matrix to_matrix(const aiMatrix4x4& m) {
+  return {{{m.a1, m.a2, m.a3, m.a4},
+           {m.b1, m.b2, m.b3, m.b4},
+           {m.c1, m.c2, m.c3, m.c4},
+           {m.d1, m.d2, m.d3, m.d4}}};
+}
+
+Matrix multiply(const Matrix& a, const Matrix& b) {
+  Matrix c{};
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t j = 0; j < 4; ++j) {
+      for (std::size_t k = 0; k < 4; ++k)
+        c[i][j] += a[i][k] * b[k][j];
+    }
+  }
+  return c;
+}
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  std::string message = path;
+  message.append(": ");
+  message.append(what);
+  throw InputError(message);
+}
+
+class SceneMerger {
+ public:
+  SceneMerger(const aiScene& scene, const std::string& path, const LoadOptions& options,
+              LoadedMesh& out)
+      : scene_(scene), path_(path), options_(options), out_(out) {}
+
+  void merge() {
+    if (scene_.mRootNode == nullptr) {
+      for (unsigned m = 0; m < scene_.mNumMeshes; ++m)
+        add_mesh(m, kIdentity);
+      return;
+    }
+    // Depth first, with an explicit stack: scene graphs can be deep.
+    std::vector<std::pair<const aiNode*, Matrix>> stack;
+    stack.emplace_back(scene_.mRootNode, to_matrix(scene_.mRootNode->mTransformation));
+    while (!stack.empty()) {
+      const auto [node, transform] = stack.back();
+      stack.pop_back();
+      for (unsigned i = 0; i < node->mNumMeshes; ++i)
+        add_mesh(node->mMeshes[i], transform);
+      for (unsigned i = node->mNumChildren; i-- > 0;) {
+        const aiNode* child = node->mChildren[i];
+        if (child != nullptr) {
+          stack.emplace_back(child, multiply(transform, to_matrix(child->mTransformation)));
+        }
+      }
+    }
+  }
+
+ private:
+  void add_mesh(unsigned m, const Matrix& transform) {
+    if (m >= scene_.mNumMeshes || scene_.mMeshes[m] == nullptr) return;
+    const aiMesh& mesh = *scene_.mMeshes[m];
+    auto& vertices = out_.mesh.vertices;
+    const std::size_t base = vertices.size();
+    if (mesh.mNumVertices > kMaxVertices - base) fail(path_, "too many vertices");
+    const bool identity = transform == kIdentity;
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& a = mesh.mVertices[v];
+      Point3 p{a.x, a.y, a.z};
+      if (!identity) {
+        Point3 q{};
+        for (std::size_t i = 0; i < 3; ++i) {
+          q[i] = transform[i][0] * p[0] + transform[i][1] * p[1] + transform[i][2] * p[2] +
+                 transform[i][3];
+        }
+        p = q;
+      }
+      if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+        std::string what = "mesh ";
+        what.append(std::to_string(m));
+        what.append(", vertex ");
+        what.append(std::to_string(v));
+        what.append(": a coordinate is not finite");
+        fail(path_, what);
+      }
+      vertices.push_back(p);
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices < 3) continue;  // points and lines bound no volume
+      auto fail_face = [&](const std::string& what) {
+        std::string message = "mesh ";
+        message.append(std::to_string(m));
+        message.append(", face ");
+        message.append(std::to_string(f));
+        message.append(": ");
+        message.append(what);
+        fail(path_, message);
+      };
+      corners_.clear();
+      for (unsigned c = 0; c < face.mNumIndices; ++c) {
+        const unsigned index = face.mIndices[c];
+        if (index >= mesh.mNumVertices) {
+          std::string what = "vertex index ";
+          what.append(std::to_string(index));
+          what.append(" is out of range");
+          fail_face(what);
+        }
+        corners_.push_back(static_cast<VertexIndex>(base + index));
+      }
+      if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail_face(*why);
+    }
+  }
+
+  const aiScene& scene_;
+  const std::string& path_;
+  const LoadOptions& options_;
+  LoadedMesh& out_;
+  std::vector<VertexIndex> corners_;
+};
+
+}  // namespace
+
+LoadedMesh read_with_assimp(const std::string& path, const std::string& extension,
+                            const LoadOptions& options) {
+  Assimp::Importer importer;
+  std::string dotted = ".";
+  dotted.append(extension);
+  if (extension.empty() || !importer.IsExtensionSupported(dotted)) {
+    std::string what = "unsupported mesh format ";
+    what.append(extension.empty() ? "(no file extension)" : quoted(dotted));
+    what.append(": expected .obj, .off, .ply or a format assimp reads (.stl, .gltf, .glb, ...)");
+    fail(path, what);
+  }
+  require_readable(path);  // the same message as for the other formats
+
+  const aiScene* scene = nullptr;
+  try {
+    scene = importer.ReadFile(path, 0u);  // no post-processing: quads stay quads
+  } catch (const std::exception& e) {
+    std::string what = "assimp: ";
+    what.append(e.what());
+    fail(path, what);
+  }
+  if (scene == nullptr) {
+    std::string what = "assimp cannot read it: ";
+    what.append(importer.GetErrorString());
+    fail(path, what);
+  }
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
+    fail(path, "assimp read an incomplete scene (no mesh data?)");
+  }
+
+  LoadedMesh out;
+  out.format = "assimp ";
+  out.format.append(extension);
+  out.coordinates_via_float = true;
+  SceneMerger(*scene, path, options, out).merge();
+  require_faces(out, path);
+  out.welded_vertices = weld_vertices(out.mesh);
+  return out;
+}
+
+}  // namespace exactgeo::mesh

@@ -1,0 +1,277 @@
+#include "exactgeo/mesh/check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <string_view>
+
+#include "exactgeo/predicates/orient3d.hpp"
+
+namespace exactgeo::mesh {
+
+namespace {
+
+bool is_finite(const Point3& p) noexcept {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+/// One use of an undirected edge by a face: `forward` when the face walks it from the
+/// smaller index to the larger one.
+struct EdgeUse {
+  Edge edge;
+  bool forward;
+};
+
+/// Union-find over vertices, with path halving and union by size.
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t n) : parent_(n), size_(n, 1) {
+    std::iota(parent_.begin(), parent_.end(), std::size_t{0});
+  }
+  std::size_t find(std::size_t x) noexcept {
+    while (parent_[x] != x) {
+      parent_[x] = parent_[parent_[x]];
+      x = parent_[x];
+    }
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b) noexcept {
+    a = find(a);
+    b = find(b);
+    if (a == b) return;
+    if (size_[a] < size_[b]) std::swap(a, b);
+    parent_[b] = a;
+    size_[a] += size_[b];
+  }
+
+ private:
+  std::vector<std::size_t> parent_;
+  std::vector<std::size_t> size_;
+};
+
+/// Zero area, decided exactly. A quad is degenerate when its patch collapses to a segment
+/// or a point; the patch {a, b, c, c} of a triangle does so exactly when a, b, c are
+/// collinear. Every other flat shape (convex, concave, butterfly, or a quad with a
+/// collinear corner) spans a non-zero area. Precondition: finite corners.
+bool zero_area(const BilinearPatch& patch) noexcept {
+  const PatchShape shape = classify_patch(patch);
+  return shape == PatchShape::segment || shape == PatchShape::point;
+}
+
+bool repeated_corner(const Face& face) noexcept {
+  const std::size_t n = face.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (face.corners[i] == face.corners[j]) return true;
+    }
+  }
+  return false;
+}
+
+void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
+    return a.edge < b.edge || (a.edge == b.edge && a.forward < b.forward);
+  });
+  bool every_edge_twice = !uses.empty();
+  bool opposite_directions = true;
+  for (std::size_t begin = 0; begin < uses.size();) {
+    std::size_t end = begin + 1;
+    while (end < uses.size() && uses[end].edge == uses[begin].edge)
+      ++end;
+    const std::size_t count = end - begin;
+    const Edge& edge = uses[begin].edge;
+    if (count == 1) check.boundary_edges.add(edge);
+    if (count > 2) check.non_manifold_edges.add(edge);
+    if (count % 2 == 1) check.odd_edges.add(edge);
+    if (count != 2) every_edge_twice = false;
+    // Sorted with backward before forward: two uses in opposite directions differ.
+    if (count == 2 && uses[begin].forward == uses[begin + 1].forward) opposite_directions = false;
+    begin = end;
+  }
+  if (every_edge_twice) check.consistently_oriented = opposite_directions;
+}
+
+std::string edge_text(const Edge& e) {
+  std::string s = std::to_string(e.first);
+  s.append("-");
+  s.append(std::to_string(e.second));
+  return s;
+}
+
+template <class T, class Format>
+std::string first_list(const Examples<T>& examples, Format format) {
+  std::string s = "first: ";
+  for (std::size_t i = 0; i < examples.first.size(); ++i) {
+    if (i > 0) s.append(", ");
+    s.append(format(examples.first[i]));
+  }
+  if (examples.count > examples.first.size()) s.append(", ...");
+  return s;
+}
+
+/// "head (before first: a, b, ...)": a problem with its first examples.
+template <class T, class Format>
+std::string with_examples(std::string head, const Examples<T>& examples, Format format,
+                          std::string_view before = {}) {
+  head.append(" (").append(before).append(first_list(examples, format)).append(")");
+  return head;
+}
+
+std::string index_text(std::size_t i) {
+  return std::to_string(i);
+}
+
+/// "<count> <noun or plural>", e.g. "1 boundary edge", "42 boundary edges".
+std::string counted(std::size_t count, std::string_view singular, std::string_view plural) {
+  std::string s = std::to_string(count);
+  s.append(" ");
+  s.append(count == 1 ? singular : plural);
+  return s;
+}
+
+}  // namespace
+
+MeshCheck check_mesh(const Mesh& mesh) {
+  MeshCheck check;
+  const std::size_t n = mesh.vertices.size();
+  check.vertices = n;
+  check.faces = mesh.faces.size();
+
+  std::vector<bool> finite(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const Point3& p = mesh.vertices[v];
+    finite[v] = is_finite(p);
+    if (!finite[v]) {
+      check.non_finite_vertices.add(v);
+      continue;
+    }
+    if (!check.bounding_box) {
+      check.bounding_box = Box{p, p};
+      continue;
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      check.bounding_box->lower[k] = std::min(check.bounding_box->lower[k], p[k]);
+      check.bounding_box->upper[k] = std::max(check.bounding_box->upper[k], p[k]);
+    }
+  }
+
+  std::vector<EdgeUse> uses;
+  uses.reserve(4 * mesh.faces.size());
+  std::vector<bool> referenced(n);
+  DisjointSets components(n);
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Face& face = mesh.faces[f];
+    const std::size_t size = face.size();
+    (face.is_triangle() ? check.triangles : check.quads) += 1;
+    const auto bad = std::find_if(face.corners.begin(), face.corners.begin() + size,
+                                  [n](VertexIndex c) { return c >= n; });
+    if (bad != face.corners.begin() + size) {
+      if (check.out_of_range_faces.count == 0) check.first_out_of_range_corner = *bad;
+      check.out_of_range_faces.add(f);
+      continue;  // no edges, references or geometry from a face that is not all there
+    }
+
+    bool all_finite = true;
+    for (std::size_t i = 0; i < size; ++i) {
+      const VertexIndex a = face.corner(i);
+      const VertexIndex b = face.corner(i + 1);
+      referenced[a] = true;
+      all_finite = all_finite && finite[a];
+      components.unite(a, b);
+      // A repeated corner makes a zero-length "edge": it joins nothing, so it is not counted.
+      if (a != b) uses.push_back({{std::min(a, b), std::max(a, b)}, a < b});
+    }
+
+    if (repeated_corner(face)) {
+      check.degenerate_faces.add(f);
+      continue;
+    }
+    if (!all_finite) continue;  // the exact predicates need finite coordinates
+    const BilinearPatch patch = patch_of(mesh, face);
+    if (!face.is_triangle() && orient3d(patch.p00, patch.p10, patch.p11, patch.p01) != Sign::zero) {
+      check.non_planar_quads.add(f);  // skew: never zero area
+      continue;
+    }
+    if (zero_area(patch)) check.degenerate_faces.add(f);
+  }
+
+  check_edges(uses, check);
+
+  std::vector<bool> counted_root(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!referenced[v]) {
+      ++check.unreferenced_vertices;
+      continue;
+    }
+    const std::size_t root = components.find(v);
+    if (!counted_root[root]) {
+      counted_root[root] = true;
+      ++check.components;
+    }
+  }
+  return check;
+}
+
+std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool allow_non_manifold) {
+  std::vector<std::string> problems;
+  if (check.faces == 0) problems.emplace_back("mesh has no faces");
+
+  if (const auto& bad = check.out_of_range_faces; bad.count > 0) {
+    std::string s;
+    if (bad.count > 1) {
+      s = counted(bad.count, "face has", "faces have");
+      s.append(" corner indices out of range (");
+      s.append(first_list(bad, index_text));
+      s.append("): ");
+    }
+    s.append("face ");
+    s.append(std::to_string(bad.first.front()));
+    s.append(" has corner index ");
+    s.append(std::to_string(check.first_out_of_range_corner));
+    s.append(", but there ");
+    s.append(check.vertices == 1 ? "is " : "are ");
+    s.append(counted(check.vertices, "vertex", "vertices"));
+    problems.push_back(std::move(s));
+  }
+
+  if (const auto& bad = check.non_finite_vertices; bad.count > 0) {
+    std::string head = counted(bad.count, "vertex has", "vertices have");
+    head.append(" non-finite coordinates");
+    problems.push_back(with_examples(std::move(head), bad, index_text));
+  }
+
+  // With allow_non_manifold the rule is "every edge used an even number of times", so the
+  // odd edges are the ones to name when some of them are not boundary edges.
+  const bool odd_beyond_boundary = check.odd_edges.count > check.boundary_edges.count;
+  if (allow_non_manifold && odd_beyond_boundary) {
+    std::string head = "mesh is not closed: ";
+    head.append(counted(check.odd_edges.count, "edge", "edges"));
+    head.append(" used by an odd number of faces");
+    problems.push_back(with_examples(std::move(head), check.odd_edges, edge_text));
+  } else if (check.boundary_edges.count > 0) {
+    std::string head = "mesh is not closed: ";
+    head.append(counted(check.boundary_edges.count, "boundary edge", "boundary edges"));
+    problems.push_back(with_examples(std::move(head), check.boundary_edges, edge_text));
+  }
+  if (!allow_non_manifold && check.non_manifold_edges.count > 0) {
+    problems.push_back(with_examples(
+        counted(check.non_manifold_edges.count, "non-manifold edge", "non-manifold edges"),
+        check.non_manifold_edges, edge_text, "used by more than two faces; "));
+  }
+
+  if (const auto& bad = check.degenerate_faces; bad.count > 0) {
+    problems.push_back(
+        with_examples(counted(bad.count, "degenerate face", "degenerate faces"), bad, index_text));
+  }
+
+  if (problems.empty()) return std::nullopt;
+  std::string message;
+  for (const std::string& p : problems) {
+    if (!message.empty()) message.append("; ");
+    message.append(p);
+  }
+  return message;
+}
+
+}  // namespace exactgeo::mesh

@@ -1,0 +1,165 @@
+#include "exactgeo/mesh/obj_reader.hpp"
+
+#include <cstdint>
+#include <vector>
+
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/numbers.hpp"
+#include "exactgeo/io/text_scan.hpp"
+#include "polygon.hpp"
+
+namespace exactgeo::mesh {
+
+using io::InputError;
+using io::LineCursor;
+using io::parse_integer;
+using io::parse_number;
+using io::quoted;
+using io::skip_utf8_bom;
+using io::split_tokens;
+using io::strip_comment;
+
+namespace {
+
+std::string valid_range(std::size_t vertex_count) {
+  if (vertex_count == 0) return "no vertex is defined";
+  std::string range = "valid: 1..";
+  range.append(std::to_string(vertex_count));
+  range.append(" or -1..-");
+  range.append(std::to_string(vertex_count));
+  range.append(" (relative)");
+  return range;
+}
+
+std::string out_of_range(std::int64_t index, std::size_t vertex_count) {
+  std::string what = "vertex index ";
+  what.append(std::to_string(index));
+  what.append(" is out of range: ");
+  what.append(valid_range(vertex_count));
+  return what;
+}
+
+class ObjParser {
+ public:
+  ObjParser(std::string_view text, const std::string& source, const LoadOptions& options)
+      : lines_(skip_utf8_bom(text)), source_(source), options_(options) {
+    out_.format = "obj";
+  }
+
+  LoadedMesh parse() {
+    while (const auto line = lines_.next()) {
+      split_tokens(strip_comment(*line), tokens_);
+      if (tokens_.empty()) continue;
+      if (tokens_[0] == "v") {
+        read_vertex();
+      } else if (tokens_[0] == "f" || tokens_[0] == "fo") {
+        read_face();
+      }
+      // Anything else carries no polygon geometry: texture coordinates, normals, groups,
+      // materials, smoothing, lines, points, free-form curves and surfaces.
+    }
+    const std::size_t n = out_.mesh.vertices.size();
+    if (forward_line_ != 0 && static_cast<std::uint64_t>(forward_index_) > n) {
+      throw InputError(source_, forward_line_, out_of_range(forward_index_, n));
+    }
+    require_faces(out_, source_);
+    return std::move(out_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(source_, lines_.line_number(), what);
+  }
+
+  double number(std::string_view token) const {
+    std::string error;
+    const std::optional<double> x = parse_number(token, error);
+    if (!x) fail(error);
+    return *x;
+  }
+
+  void read_vertex() {
+    const std::size_t values = tokens_.size() - 1;
+    if (values != 3 && values != 4 && values != 6) {
+      std::string what = "a vertex needs x y z (and optionally w, or r g b), found ";
+      what.append(std::to_string(values));
+      what.append(values == 1 ? " value" : " values");
+      fail(what);
+    }
+    const Point3 p{number(tokens_[1]), number(tokens_[2]), number(tokens_[3])};
+    for (std::size_t i = 4; i < tokens_.size(); ++i) {
+      const double value = number(tokens_[i]);
+      if (values == 4 && value != 1.0) {
+        // Dividing x, y, z by w would round: refuse rather than change the geometry.
+        std::string what = "w = ";
+        what.append(tokens_[i]);
+        what.append(": homogeneous coordinates with w other than 1 are not supported");
+        fail(what);
+      }
+    }
+    if (out_.mesh.vertices.size() >= kMaxVertices) fail("too many vertices");
+    out_.mesh.vertices.push_back(p);
+  }
+
+  // The position index of one corner ("i", "i/t", "i//n", "i/t/n"), 0-based.
+  VertexIndex corner_index(std::string_view token) {
+    const std::string_view position = token.substr(0, token.find('/'));
+    if (position.empty()) {
+      std::string what = "face corner ";
+      what.append(quoted(token));
+      what.append(" has no vertex index");
+      fail(what);
+    }
+    std::string error;
+    const std::optional<std::int64_t> index = parse_integer(position, error);
+    if (!index) fail(error);
+    const std::size_t defined = out_.mesh.vertices.size();
+    if (*index == 0) fail("vertex index 0 is invalid: OBJ indices start at 1");
+    if (*index < 0) {
+      // Relative: -1 is the last vertex defined so far.
+      if (static_cast<std::uint64_t>(-(*index + 1)) >= defined) {
+        std::string what = "relative vertex index ";
+        what.append(std::to_string(*index));
+        what.append(" reaches before the first vertex: ");
+        what.append(std::to_string(defined));
+        what.append(defined == 1 ? " vertex is" : " vertices are");
+        what.append(" defined before this line");
+        fail(what);
+      }
+      return static_cast<VertexIndex>(static_cast<std::int64_t>(defined) + *index);
+    }
+    const auto one_based = static_cast<std::uint64_t>(*index);
+    if (one_based > kMaxVertices) fail(out_of_range(*index, defined));
+    if (one_based > defined && *index > forward_index_) {
+      // A vertex defined later in the file; checked once every vertex is known.
+      forward_index_ = *index;
+      forward_line_ = lines_.line_number();
+    }
+    return static_cast<VertexIndex>(one_based - 1);
+  }
+
+  void read_face() {
+    corners_.clear();
+    for (std::size_t i = 1; i < tokens_.size(); ++i) {
+      corners_.push_back(corner_index(tokens_[i]));
+    }
+    if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);
+  }
+
+  LineCursor lines_;
+  const std::string& source_;
+  const LoadOptions& options_;
+  LoadedMesh out_;
+  std::vector<std::string_view> tokens_;
+  std::vector<VertexIndex> corners_;
+  std::int64_t forward_index_ = 0;  // the largest index beyond the vertices defined so far
+  std::size_t forward_line_ = 0;    // and its line
+};
+
+}  // namespace
+
+LoadedMesh read_obj(std::string_view text, const std::string& source, const LoadOptions& options) {
+  return ObjParser(text, source, options).parse();
+}
+
+}  // namespace exactgeo::mesh

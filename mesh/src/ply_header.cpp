@@ -1,0 +1,208 @@
+#include "ply_header.hpp"
+
+#include <optional>
+#include <set>
+
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/text_scan.hpp"
+
+namespace exactgeo::mesh {
+
+using io::InputError;
+using io::LineCursor;
+using io::parse_integer;
+using io::quoted;
+using io::split_tokens;
+
+namespace {
+
+std::optional<PlyType> type_named(std::string_view name) {
+  struct Named {
+    std::string_view name;
+    PlyType type;
+  };
+  static constexpr Named kTypes[] = {
+      {"char", PlyType::int8},       {"int8", PlyType::int8},       {"uchar", PlyType::uint8},
+      {"uint8", PlyType::uint8},     {"short", PlyType::int16},     {"int16", PlyType::int16},
+      {"ushort", PlyType::uint16},   {"uint16", PlyType::uint16},   {"int", PlyType::int32},
+      {"int32", PlyType::int32},     {"uint", PlyType::uint32},     {"uint32", PlyType::uint32},
+      {"float", PlyType::float32},   {"float32", PlyType::float32}, {"double", PlyType::float64},
+      {"float64", PlyType::float64},
+  };
+  for (const Named& t : kTypes) {
+    if (t.name == name) return t.type;
+  }
+  return std::nullopt;
+}
+
+class HeaderParser {
+ public:
+  HeaderParser(std::string_view data, const std::string& source) : lines_(data), source_(source) {}
+
+  PlyHeader parse() {
+    const auto magic = lines_.next();
+    if (magic) split_tokens(*magic, tokens_);
+    if (!magic || tokens_.size() != 1 || tokens_[0] != "ply") {
+      fail("not a PLY file: the first line must be 'ply'");
+    }
+    bool have_format = false;
+    while (const auto line = lines_.next()) {
+      split_tokens(*line, tokens_);
+      if (tokens_.empty()) continue;
+      const std::string_view keyword = tokens_[0];
+      if (keyword == "comment" || keyword == "obj_info") continue;
+      if (keyword == "end_header") {
+        if (tokens_.size() != 1) fail("unexpected text after end_header");
+        if (!have_format) fail("the header has no format line");
+        header_.data_offset = lines_.offset();
+        header_.data_line = lines_.line_number() + 1;
+        return std::move(header_);
+      }
+      if (keyword == "format") {
+        if (have_format) fail("a second format line");
+        read_format();
+        have_format = true;
+      } else if (keyword == "element") {
+        read_element();
+      } else if (keyword == "property") {
+        read_property();
+      } else {
+        std::string what = "unknown header keyword ";
+        what.append(quoted(keyword));
+        fail(what);
+      }
+    }
+    fail("the header has no end_header line");
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(source_, lines_.line_number(), what);
+  }
+
+  void read_format() {
+    if (tokens_.size() != 3)
+      fail("expected 'format <ascii|binary_little_endian|binary_big_endian> 1.0'");
+    if (tokens_[1] == "ascii") {
+      header_.format = PlyFormat::ascii;
+    } else if (tokens_[1] == "binary_little_endian") {
+      header_.format = PlyFormat::binary_little_endian;
+    } else if (tokens_[1] == "binary_big_endian") {
+      header_.format = PlyFormat::binary_big_endian;
+    } else {
+      std::string what = "unknown PLY format ";
+      what.append(quoted(tokens_[1]));
+      fail(what);
+    }
+    if (tokens_[2] != "1.0" && tokens_[2] != "1") {
+      std::string what = "unsupported PLY version ";
+      what.append(quoted(tokens_[2]));
+      what.append(" (only 1.0)");
+      fail(what);
+    }
+  }
+
+  void read_element() {
+    if (tokens_.size() != 3) fail("expected 'element <name> <count>'");
+    if (!element_names_.emplace(tokens_[1]).second) {
+      std::string what = "a second element named ";
+      what.append(quoted(tokens_[1]));
+      fail(what);
+    }
+    property_names_.clear();
+    std::string error;
+    const std::optional<std::int64_t> count = parse_integer(tokens_[2], error);
+    if (!count) fail("element count: " + error);
+    if (*count < 0) fail("element count is negative");
+    PlyElement element;
+    element.name = std::string(tokens_[1]);
+    element.count = static_cast<std::uint64_t>(*count);
+    element.line = lines_.line_number();
+    header_.elements.push_back(std::move(element));
+  }
+
+  PlyType type(std::string_view name) const {
+    const std::optional<PlyType> t = type_named(name);
+    if (!t) {
+      std::string what = "unknown property type ";
+      what.append(quoted(name));
+      fail(what);
+    }
+    return *t;
+  }
+
+  void read_property() {
+    if (header_.elements.empty()) fail("a property before any element");
+    PlyProperty property;
+    property.line = lines_.line_number();
+    if (tokens_.size() >= 2 && tokens_[1] == "list") {
+      if (tokens_.size() != 5) fail("expected 'property list <count type> <item type> <name>'");
+      property.is_list = true;
+      property.count_type = type(tokens_[2]);
+      property.type = type(tokens_[3]);
+      if (!ply_type_is_integer(property.count_type)) {
+        fail("a list's count type must be an integer type");
+      }
+      property.name = std::string(tokens_[4]);
+    } else {
+      if (tokens_.size() != 3) fail("expected 'property <type> <name>'");
+      property.type = type(tokens_[1]);
+      property.name = std::string(tokens_[2]);
+    }
+    if (!property_names_.insert(property.name).second) {
+      std::string what = "a second property named ";
+      what.append(quoted(property.name));
+      fail(what);
+    }
+    header_.elements.back().properties.push_back(std::move(property));
+  }
+
+  LineCursor lines_;
+  const std::string& source_;
+  PlyHeader header_;
+  std::vector<std::string_view> tokens_;
+  std::set<std::string, std::less<>> element_names_;   // to refuse duplicates
+  std::set<std::string, std::less<>> property_names_;  // of the current element
+};
+
+}  // namespace
+
+std::size_t ply_type_size(PlyType type) noexcept {
+  switch (type) {
+    case PlyType::int8:
+    case PlyType::uint8:
+      return 1;
+    case PlyType::int16:
+    case PlyType::uint16:
+      return 2;
+    case PlyType::int32:
+    case PlyType::uint32:
+    case PlyType::float32:
+      return 4;
+    case PlyType::float64:
+      return 8;
+  }
+  return 8;
+}
+
+bool ply_type_is_integer(PlyType type) noexcept {
+  return type != PlyType::float32 && type != PlyType::float64;
+}
+
+PlyHeader parse_ply_header(std::string_view data, const std::string& source) {
+  return HeaderParser(data, source).parse();
+}
+
+std::string ply_format_name(PlyFormat format) {
+  switch (format) {
+    case PlyFormat::ascii:
+      return "ply ascii";
+    case PlyFormat::binary_little_endian:
+      return "ply binary little endian";
+    case PlyFormat::binary_big_endian:
+      return "ply binary big endian";
+  }
+  return "ply";
+}
+
+}  // namespace exactgeo::mesh

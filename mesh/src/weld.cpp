@@ -1,0 +1,62 @@
+#include "exactgeo/mesh/weld.hpp"
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace exactgeo::mesh {
+
+namespace {
+
+using Key = std::array<std::uint64_t, 3>;
+
+// Equal keys for equal coordinates: -0 becomes +0. (Coordinates are finite.)
+Key key_of(const Point3& p) {
+  Key key;
+  for (std::size_t i = 0; i < 3; ++i) {
+    key[i] = std::bit_cast<std::uint64_t>(p[i] == 0.0 ? 0.0 : p[i]);
+  }
+  return key;
+}
+
+struct KeyHash {
+  std::size_t operator()(const Key& key) const noexcept {
+    std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+    for (const std::uint64_t k : key) {
+      h ^= k + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+      h *= 0xbf58476d1ce4e5b9ULL;
+      h ^= h >> 31;
+    }
+    return static_cast<std::size_t>(h);
+  }
+};
+
+}  // namespace
+
+std::size_t weld_vertices(Mesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  std::unordered_map<Key, VertexIndex, KeyHash> first;
+  first.reserve(n);
+  std::vector<VertexIndex> new_index(n);
+  std::vector<Point3> welded;
+  welded.reserve(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const auto [it, inserted] =
+        first.try_emplace(key_of(mesh.vertices[v]), static_cast<VertexIndex>(welded.size()));
+    if (inserted) welded.push_back(mesh.vertices[v]);
+    new_index[v] = it->second;
+  }
+  const std::size_t removed = n - welded.size();
+  if (removed == 0) return 0;
+  for (Face& face : mesh.faces) {
+    for (VertexIndex& c : face.corners) {
+      if (c != kNoVertex) c = new_index[c];
+    }
+  }
+  mesh.vertices = std::move(welded);
+  return removed;
+}
+
+}  // namespace exactgeo::mesh

@@ -1,0 +1,998 @@
+// Exact mesh loading: OBJ, OFF and PLY (ASCII, binary little/big endian) read bit for bit,
+// assimp for the other formats, welding, polygon splitting, and an error naming the file
+// and the line or element index for every kind of bad input.
+
+#include "exactgeo/mesh/load.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/read_bytes.hpp"
+#include "exactgeo/mesh/obj_reader.hpp"
+#include "exactgeo/mesh/off_reader.hpp"
+#include "exactgeo/mesh/ply_reader.hpp"
+#include "exactgeo/mesh/weld.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::mesh {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------
+// Helpers
+
+std::uint64_t bits(double x) {
+  return std::bit_cast<std::uint64_t>(x);
+}
+
+// "%.17g": the shortest form that always reads back as the same double.
+std::string decimal(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+// The pieces, appended (chained std::string + trips a false GCC 12 -Wrestrict warning).
+template <class... Parts>
+std::string cat(const Parts&... parts) {
+  std::string s;
+  (s.append(parts), ...);
+  return s;
+}
+
+// The message of the InputError `f` throws; a test failure if it throws nothing else.
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const io::InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "not an InputError: " << e.what();
+    return {};
+  }
+  ADD_FAILURE() << "no error";
+  return {};
+}
+
+#define EXPECT_MESSAGE_HAS(message, ...)                                                        \
+  do {                                                                                          \
+    const std::string message_ = (message);                                                     \
+    for (const std::string_view part_ : std::initializer_list<std::string_view>{__VA_ARGS__}) { \
+      EXPECT_NE(message_.find(part_), std::string::npos)                                        \
+          << "message: " << message_ << "\nlacks: " << part_;                                   \
+    }                                                                                           \
+  } while (0)
+
+void expect_same_mesh(const Mesh& actual, const Mesh& expected) {
+  ASSERT_EQ(actual.vertices.size(), expected.vertices.size());
+  for (std::size_t v = 0; v < expected.vertices.size(); ++v) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      EXPECT_EQ(bits(actual.vertices[v][i]), bits(expected.vertices[v][i]))
+          << "vertex " << v << " coordinate " << i << ": " << actual.vertices[v][i] << " vs "
+          << expected.vertices[v][i];
+    }
+  }
+  EXPECT_TRUE(actual.faces == expected.faces);
+}
+
+// A test with its own temporary directory.
+class mesh_io : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string name = "exactgeo_mesh_io_";
+    name.append(std::to_string(::getpid()));
+    name.push_back('_');
+    name.append(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir_ = fs::temp_directory_path() / name;
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  std::string write(const std::string& name, std::string_view bytes) const {
+    const fs::path path = dir_ / name;
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    EXPECT_TRUE(out.good()) << path;
+    return path.string();
+  }
+
+  LoadedMesh load(const std::string& name, std::string_view bytes, LoadOptions options = {}) {
+    return load_mesh(write(name, bytes), options);
+  }
+
+  std::string load_error(const std::string& name, std::string_view bytes,
+                         LoadOptions options = {}) {
+    const std::string path = write(name, bytes);
+    return error_of([&] { (void)load_mesh(path, options); });
+  }
+
+  fs::path dir_;
+};
+
+// ---------------------------------------------------------------------------------------
+// One quad and one triangle, with coordinates that are floats (so a float PLY holds them).
+
+Mesh quad_and_triangle() {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0},
+                   {1, 0, 0},
+                   {1, 1, static_cast<double>(0.1f)},
+                   {0, 1, 0},
+                   {static_cast<double>(-1.5e-3f), 2, -0.25}};
+  mesh.faces = {make_quad(0, 1, 2, 3), make_triangle(3, 2, 4)};
+  return mesh;
+}
+
+std::string to_obj(const Mesh& mesh) {
+  std::string s = "# quad and triangle\r\nmtllib x.mtl\no thing\n";
+  for (const auto& p : mesh.vertices) {
+    s.append(cat("v ", decimal(p[0]), " ", decimal(p[1]), " ", decimal(p[2]), "\n"));
+  }
+  s.append("vt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n\ng group\nusemtl m\ns off\n");
+  for (const Face& f : mesh.faces) {
+    s.append("f");
+    for (std::size_t c = 0; c < f.size(); ++c) {
+      // Every corner syntax: i, i/t, i//n, i/t/n.
+      const std::string i = std::to_string(f.corners[c] + 1);
+      const char* const forms[] = {"", "/1", "//1", "/2/1"};
+      s.append(cat(" ", i, forms[c % 4]));
+    }
+    s.append("\n");
+  }
+  s.append("l 1 2\n");
+  return s;
+}
+
+std::string to_off(const Mesh& mesh) {
+  std::string s = cat("OFF\n# a comment\n", std::to_string(mesh.vertices.size()), " ",
+                      std::to_string(mesh.faces.size()), " 0\n\n");
+  for (const auto& p : mesh.vertices) {
+    s.append(cat(decimal(p[0]), " ", decimal(p[1]), " ", decimal(p[2]), "\n"));
+  }
+  for (const Face& f : mesh.faces) {
+    s.append(std::to_string(f.size()));
+    for (std::size_t c = 0; c < f.size(); ++c)
+      s.append(cat(" ", std::to_string(f.corners[c])));
+    s.append(" 255 0 0\n");  // a colour
+  }
+  return s;
+}
+
+struct PlyLayout {
+  std::string format;  // ascii, binary_little_endian, binary_big_endian
+  std::string coordinate_type = "double";
+  std::string count_type = "uchar";
+  std::string index_type = "int";
+};
+
+template <class T>
+void put(std::string& out, T value, bool big_endian) {
+  auto raw = std::bit_cast<std::array<char, sizeof(T)>>(value);
+  if (big_endian != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.end());
+  out.append(raw.data(), raw.size());
+}
+
+// Writes `value` as PLY type `type` (binary), or as text.
+void put_value(std::string& out, const std::string& type, double value, bool binary, bool big) {
+  if (!binary) {
+    out.append(decimal(value));
+    out.push_back(' ');
+  } else if (type == "double" || type == "float64") {
+    put(out, value, big);
+  } else if (type == "float" || type == "float32") {
+    put(out, static_cast<float>(value), big);
+  } else if (type == "uchar" || type == "uint8") {
+    put(out, static_cast<std::uint8_t>(value), big);
+  } else if (type == "int" || type == "int32") {
+    put(out, static_cast<std::int32_t>(value), big);
+  } else if (type == "uint" || type == "uint32") {
+    put(out, static_cast<std::uint32_t>(value), big);
+  } else if (type == "short" || type == "int16") {
+    put(out, static_cast<std::int16_t>(value), big);
+  } else {
+    ADD_FAILURE() << "type " << type;
+  }
+}
+
+// The mesh as PLY, with a skipped vertex property, a skipped element with a list property
+// between vertices and faces, and a skipped face property.
+std::string to_ply(const Mesh& mesh, const PlyLayout& layout) {
+  const bool binary = layout.format != "ascii";
+  const bool big = layout.format == "binary_big_endian";
+  const std::string& c = layout.coordinate_type;
+  std::string s = cat("ply\nformat ", layout.format, " 1.0\ncomment written by a test\n");
+  s.append(cat("obj_info nothing\nelement vertex ", std::to_string(mesh.vertices.size()), "\n"));
+  s.append(cat("property ", c, " x\nproperty uchar red\nproperty ", c, " y\nproperty ", c, " z\n"));
+  s.append("element edge 2\nproperty list uchar int vertex_pair\nproperty float weight\n");
+  s.append(cat("element face ", std::to_string(mesh.faces.size()), "\n"));
+  s.append(cat("property list ", layout.count_type, " ", layout.index_type, " vertex_indices\n"));
+  s.append("property short flags\nend_header\n");
+  auto line_end = [&] {
+    if (!binary) {
+      s.pop_back();
+      s.push_back('\n');
+    }
+  };
+  for (const auto& p : mesh.vertices) {
+    put_value(s, c, p[0], binary, big);
+    put_value(s, "uchar", 200, binary, big);
+    put_value(s, c, p[1], binary, big);
+    put_value(s, c, p[2], binary, big);
+    line_end();
+  }
+  for (int e = 0; e < 2; ++e) {
+    put_value(s, "uchar", 2, binary, big);
+    put_value(s, "int", e, binary, big);
+    put_value(s, "int", e + 1, binary, big);
+    put_value(s, "float", 0.5, binary, big);
+    line_end();
+  }
+  for (const Face& f : mesh.faces) {
+    put_value(s, layout.count_type, static_cast<double>(f.size()), binary, big);
+    for (std::size_t k = 0; k < f.size(); ++k) {
+      put_value(s, layout.index_type, f.corners[k], binary, big);
+    }
+    put_value(s, "short", -7, binary, big);
+    line_end();
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------
+// The same mesh in every format
+
+TEST_F(mesh_io, SameMeshFromObjOffAndEveryPlyLayout) {
+  const Mesh expected = quad_and_triangle();
+
+  const LoadedMesh obj = load("m.obj", to_obj(expected));
+  EXPECT_EQ(obj.format, "obj");
+  expect_same_mesh(obj.mesh, expected);
+  EXPECT_FALSE(obj.coordinates_via_float);
+  EXPECT_EQ(obj.welded_vertices, 0u);
+  EXPECT_EQ(obj.split_polygons, 0u);
+
+  const LoadedMesh off = load("m.off", to_off(expected));
+  EXPECT_EQ(off.format, "off");
+  expect_same_mesh(off.mesh, expected);
+
+  const LoadedMesh ascii = load("m.ply", to_ply(expected, {"ascii"}));
+  EXPECT_EQ(ascii.format, "ply ascii");
+  expect_same_mesh(ascii.mesh, expected);
+
+  const std::pair<const char*, const char*> formats[] = {
+      {"binary_little_endian", "ply binary little endian"},
+      {"binary_big_endian", "ply binary big endian"}};
+  for (const auto& [format, name] : formats) {
+    for (const char* coordinates : {"float", "double", "float32", "float64"}) {
+      for (const auto& [count, index] :
+           {std::pair{"uchar", "int"}, std::pair{"int", "uint"}, std::pair{"uint8", "int32"}}) {
+        SCOPED_TRACE(cat(format, " ", coordinates, " ", count, " ", index));
+        const PlyLayout layout{format, coordinates, count, index};
+        const LoadedMesh ply = load("m.ply", to_ply(expected, layout));
+        EXPECT_EQ(ply.format, name);
+        expect_same_mesh(ply.mesh, expected);
+        for (const auto& p : ply.mesh.vertices) {
+          for (const double x : p)
+            EXPECT_EQ(static_cast<double>(static_cast<float>(x)), x);
+        }
+      }
+    }
+  }
+}
+
+TEST_F(mesh_io, ExtensionIsCaseInsensitive) {
+  const Mesh expected = quad_and_triangle();
+  expect_same_mesh(load("UPPER.OBJ", to_obj(expected)).mesh, expected);
+  expect_same_mesh(load("Mixed.Off", to_off(expected)).mesh, expected);
+  expect_same_mesh(load("x.PLY", to_ply(expected, {"binary_big_endian"})).mesh, expected);
+}
+
+TEST(mesh_io_streams, ReadersTakeStreamsAndMemory) {
+  const Mesh expected = quad_and_triangle();
+  std::istringstream obj(to_obj(expected));
+  expect_same_mesh(read_obj(io::read_stream(obj, "<obj>"), "<obj>", {}).mesh, expected);
+  std::istringstream off(to_off(expected));
+  expect_same_mesh(read_off(io::read_stream(off, "<off>"), "<off>", {}).mesh, expected);
+  const std::string ply = to_ply(expected, {"binary_little_endian"});
+  expect_same_mesh(read_ply(std::string_view(ply), "<ply>", {}).mesh, expected);
+  EXPECT_MESSAGE_HAS(error_of([] { (void)read_obj(std::string_view("v 1 2 x\n"), "<mem>", {}); }),
+                     "<mem>:1:", "'x'");
+}
+
+// ---------------------------------------------------------------------------------------
+// Exactness
+
+// Text forms of awkward doubles and their exact values.
+struct ExactCase {
+  const char* text;
+  double value;
+};
+const ExactCase kExactCases[] = {
+    {"0.1", 0.1},
+    {"0.30000000000000004", 0.30000000000000004},
+    {"0.12345678901234568", 0.12345678901234568},
+    {"-2.7182818284590451", -2.7182818284590451},
+    {"0x1.999999999999ap-4", 0.1},
+    {"-0x1.8p+3", -12.0},
+    {"4.9e-324", std::numeric_limits<double>::denorm_min()},
+    {"-4.9406564584124654e-324", -std::numeric_limits<double>::denorm_min()},
+    {"2.2250738585072009e-308", std::nextafter(DBL_MIN, 0.0)},
+    {"0x1p-1074", std::numeric_limits<double>::denorm_min()},
+    {"1.0715086071862673e301", 0x1p1000},
+    {"9.332636185032189e-302", 0x1p-1000},
+    {"0x1.fffffffffffffp+1023", DBL_MAX},
+    {"-1.7976931348623157e308", -DBL_MAX},
+    {"3", 3.0},
+    {"-0", -0.0},
+};
+
+TEST_F(mesh_io, DecimalAndHexfloatTextIsCorrectlyRounded) {
+  constexpr std::size_t n = std::size(kExactCases);
+  std::string obj, off_vertices, ply_vertices;
+  for (std::size_t v = 0; v < n; ++v) {
+    // Vertex v holds case v in x, case v+1 in y, case v+2 in z.
+    std::string xyz;
+    for (std::size_t i = 0; i < 3; ++i) {
+      xyz.append(kExactCases[(v + i) % n].text);
+      xyz.push_back(i < 2 ? ' ' : '\n');
+    }
+    obj.append(cat("v ", xyz));
+    off_vertices.append(xyz);
+    ply_vertices.append(xyz);
+  }
+  obj.append("f 1 2 3\n");
+  const std::string off = cat("OFF ", std::to_string(n), " 1 0\n", off_vertices, "3 0 1 2\n");
+  const std::string ply = cat("ply\nformat ascii 1.0\nelement vertex ", std::to_string(n),
+                              "\nproperty double x\nproperty double y\nproperty double z\n"
+                              "element face 1\nproperty list uchar int vertex_indices\n"
+                              "end_header\n",
+                              ply_vertices, "3 0 1 2\n");
+  for (const LoadedMesh& m : {load("e.obj", obj), load("e.off", off), load("e.ply", ply)}) {
+    SCOPED_TRACE(m.format);
+    ASSERT_EQ(m.mesh.vertices.size(), n);
+    for (std::size_t v = 0; v < n; ++v) {
+      for (std::size_t i = 0; i < 3; ++i) {
+        const ExactCase& c = kExactCases[(v + i) % n];
+        EXPECT_EQ(bits(m.mesh.vertices[v][i]), bits(c.value)) << c.text;
+      }
+    }
+  }
+}
+
+TEST_F(mesh_io, BinaryDoublesAreReadBitForBit) {
+  Mesh mesh;
+  for (std::size_t v = 0; v + 2 < std::size(kExactCases); ++v) {
+    mesh.vertices.push_back(
+        {kExactCases[v].value, kExactCases[v + 1].value, kExactCases[v + 2].value});
+  }
+  mesh.faces = {make_triangle(0, 1, 2), make_quad(3, 4, 5, 6)};
+  for (const char* format : {"binary_little_endian", "binary_big_endian"}) {
+    expect_same_mesh(load("b.ply", to_ply(mesh, {format})).mesh, mesh);
+  }
+}
+
+TEST_F(mesh_io, RandomDoublesRoundTripThroughTextAndBinary) {
+  auto engine = exactgeo::testing::seeded_engine("mesh_io.random_doubles");
+  std::uniform_int_distribution<std::uint64_t> any_bits;
+  Mesh mesh;
+  while (mesh.vertices.size() < 300) {
+    Point3 p{};
+    for (double& x : p) {
+      do {
+        x = std::bit_cast<double>(any_bits(engine));
+      } while (!std::isfinite(x));
+    }
+    mesh.vertices.push_back(p);
+  }
+  for (mesh::VertexIndex v = 0; v + 3 < 300; v += 4)
+    mesh.faces.push_back(make_quad(v, v + 1, v + 2, v + 3));
+  expect_same_mesh(load("r.obj", to_obj(mesh)).mesh, mesh);
+  expect_same_mesh(load("r.off", to_off(mesh)).mesh, mesh);
+  expect_same_mesh(load("r.ply", to_ply(mesh, {"ascii"})).mesh, mesh);
+  expect_same_mesh(load("r.ply", to_ply(mesh, {"binary_big_endian"})).mesh, mesh);
+}
+
+// ---------------------------------------------------------------------------------------
+// OBJ specifics
+
+const char kObjSquare[] = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";  // lines 1-4
+
+TEST_F(mesh_io, ObjRelativeIndicesAndForwardReferences) {
+  // -1 is the last vertex defined before the line.
+  LoadedMesh m = load("rel.obj", cat(kObjSquare, "f -4 -3 -2 -1\nv 0 0 1\nf -5 -4 -1\n"));
+  EXPECT_TRUE(m.mesh.faces == (std::vector<Face>{make_quad(0, 1, 2, 3), make_triangle(0, 1, 4)}));
+  // A face may name vertices defined further down.
+  m = load("fwd.obj", "f 1 2 3\nv 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+}
+
+TEST_F(mesh_io, ObjIgnoresOtherStatementsCommentsAndCrlf) {
+  const std::string text =
+      "\xEF\xBB\xBF# exported\r\nmtllib a.mtl\r\no cube\r\nv 0 0 0\r\nv 1 0 0 1\r\n"
+      "v 1 1 0 0.5 0.5 0.5\r\nvt 0.5 0.5\r\nvn 0 0 1\r\nvp 0.1\r\ng g1 g2\r\ns 1\r\n"
+      "usemtl red\r\n\r\n   \r\nl 1 2 3\r\np 1\r\nf 1/1/1 2/1/1 3/1/1 # trailing\r\n";
+  const LoadedMesh m = load("crlf.obj", text);
+  ASSERT_EQ(m.mesh.vertices.size(), 3u);
+  EXPECT_EQ(m.mesh.vertices[2], (Point3{1, 1, 0}));
+  EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+}
+
+TEST_F(mesh_io, ObjTextureSeamsDoNotSplitVertices) {
+  // Two faces sharing positions 2 and 3 with different texture coordinates.
+  const LoadedMesh m =
+      load("seam.obj", cat(kObjSquare, "vt 0 0\nvt 1 1\nf 1/1 2/1 3/1\nf 3/2 4/2 1/2\n"));
+  EXPECT_EQ(m.mesh.vertices.size(), 4u);
+  EXPECT_TRUE(m.mesh.faces == (std::vector<Face>{make_triangle(0, 1, 2), make_triangle(2, 3, 0)}));
+}
+
+TEST_F(mesh_io, ObjErrorsNameFileAndLine) {
+  const std::string square(kObjSquare);
+  std::string e = load_error("w.obj", "v 1 2 3 0.5\nf 1 1 1\n");
+  EXPECT_MESSAGE_HAS(e, "w.obj:1:", "w = 0.5");
+  EXPECT_NO_THROW((void)load("w1.obj", "v 1 2 3 1\nv 0 0 0 1.0\nv 0 1 0\nf 1 2 3\n"));
+
+  EXPECT_MESSAGE_HAS(load_error("token.obj", "v 0 0 0\nv 1 abc 3\n"), "token.obj:2:", "'abc'");
+  EXPECT_MESSAGE_HAS(load_error("nan.obj", "v nan 0 0\n"), "nan.obj:1:", "'nan'");
+  EXPECT_MESSAGE_HAS(load_error("inf.obj", "v 0 -inf 0\n"), "inf.obj:1:", "'-inf'");
+  EXPECT_MESSAGE_HAS(load_error("big.obj", "v 0 0 1e999\n"), "big.obj:1:", "'1e999'",
+                     "outside the range");
+  EXPECT_MESSAGE_HAS(load_error("tiny.obj", "v 0 0 1e-400\n"), "tiny.obj:1:", "'1e-400'");
+  EXPECT_MESSAGE_HAS(load_error("two.obj", "v 1 2\n"), "two.obj:1:", "found 2 values");
+
+  e = load_error("range.obj", cat(square, "f 1 2 9\n"));
+  EXPECT_MESSAGE_HAS(e, "range.obj:5:", "vertex index 9", "1..4");
+  e = load_error("fwd.obj", cat(square, "f 1 2 7\nf 1 2 3\nv 0 0 2\n"));
+  EXPECT_MESSAGE_HAS(e, "fwd.obj:5:", "vertex index 7", "1..5");
+  // 2^32 + 1 and 2^32 would wrap to 1 and 0 in 32 bits: they must be refused.
+  e = load_error("wrap.obj", cat(square, "f 1 2 4294967297\n"));
+  EXPECT_MESSAGE_HAS(e, "wrap.obj:5:", "4294967297", "out of range");
+  e = load_error("wrap0.obj", cat(square, "f 4294967296 2 3\n"));
+  EXPECT_MESSAGE_HAS(e, "wrap0.obj:5:", "4294967296", "out of range");
+  e = load_error("huge.obj", cat(square, "f 1 2 99999999999999999999999\n"));
+  EXPECT_MESSAGE_HAS(e, "huge.obj:5:", "too large");
+  e = load_error("neg.obj", cat(square, "f -1 -2 -5\n"));
+  EXPECT_MESSAGE_HAS(e, "neg.obj:5:", "-5", "4 vertices are defined before");
+  e = load_error("negbig.obj", cat(square, "f -1 -2 -9223372036854775808\n"));
+  EXPECT_MESSAGE_HAS(e, "negbig.obj:5:", "-9223372036854775808");
+  EXPECT_MESSAGE_HAS(load_error("zero.obj", cat(square, "f 0 1 2\n")), "zero.obj:5:", "index 0");
+  EXPECT_MESSAGE_HAS(load_error("slash.obj", cat(square, "f 1 2 /3\n")), "slash.obj:5:", "'/3'");
+  EXPECT_MESSAGE_HAS(load_error("x.obj", cat(square, "f 1 2 3x\n")), "x.obj:5:", "'3x'");
+  EXPECT_MESSAGE_HAS(load_error("short.obj", cat(square, "f 1 2\n")),
+                     "short.obj:5:", "at least 3 corners", "has 2");
+  EXPECT_MESSAGE_HAS(load_error("empty.obj", cat(square, "# no faces\n")), "empty.obj", "no faces");
+}
+
+// ---------------------------------------------------------------------------------------
+// Polygons with more than four corners
+
+TEST_F(mesh_io, PentagonsAreRefusedOrSplitIntoFans) {
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\n";
+  EXPECT_MESSAGE_HAS(load_error("p.obj", obj), "p.obj:6:", "5 corners", "--split-polygons");
+  const LoadedMesh split = load("p.obj", obj, {.split_polygons = true});
+  EXPECT_EQ(split.split_polygons, 1u);
+  EXPECT_TRUE(split.mesh.faces == (std::vector<Face>{make_triangle(0, 1, 2), make_triangle(0, 2, 3),
+                                                     make_triangle(0, 3, 4)}));
+
+  const std::string off = "OFF\n5 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n3 0 1 2\n5 0 1 2 3 4\n";
+  EXPECT_MESSAGE_HAS(load_error("p.off", off), "p.off:9:", "face 1", "5 corners",
+                     "--split-polygons");
+  EXPECT_EQ(load("p.off", off, {.split_polygons = true}).mesh.faces.size(), 4u);
+
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {1, 2, 0}, {0, 1, 0}, {0, 0, 1}};
+  mesh.faces = {make_triangle(0, 1, 5)};
+  std::string ply = to_ply(mesh, {"binary_little_endian"});
+  // Turn the triangle into a hexagon 0 1 2 3 4 5: count byte 6, then three more indices.
+  const std::size_t face_at = ply.size() - (1 + 3 * 4 + 2);
+  ply[face_at] = 6;
+  std::string extra;
+  for (const std::int32_t i : {2, 3, 4})
+    put(extra, i, false);
+  ply.insert(face_at + 1 + 2 * 4, extra);  // after corners 0 1: 0 1 2 3 4 5
+  EXPECT_MESSAGE_HAS(load_error("h.ply", ply), "h.ply: face 0:", "6 corners", "--split-polygons");
+  const LoadedMesh hex = load("h.ply", ply, {.split_polygons = true});
+  EXPECT_EQ(hex.split_polygons, 1u);
+  EXPECT_TRUE(hex.mesh.faces ==
+              (std::vector<Face>{make_triangle(0, 1, 2), make_triangle(0, 2, 3),
+                                 make_triangle(0, 3, 4), make_triangle(0, 4, 5)}));
+}
+
+// ---------------------------------------------------------------------------------------
+// OFF specifics
+
+TEST_F(mesh_io, OffHeaderVariantsExtraColumnsAndColours) {
+  const std::string body =
+      "0 0 0 0 0 1 0.5 0.5 0.5 1\n1 0 0 0 0 1 1 1 1 1\n0 1 0 0 0 1 1 1 1 1\n"
+      "3 0 1 2 0.1 0.2 0.3 1\n";
+  for (const char* header :
+       {"OFF\n3 1 0\n", "OFF 3 1 0\n", "COFF\n3 1 0\n", "NOFF\n3 1\n", "CNOFF\n3 1 3\n",
+        "STCNOFF 3 1 0\n", "3 1 0\n", "# first\n\nOFF # header\n\n# counts next\n3 1 0\n"}) {
+    SCOPED_TRACE(header);
+    const LoadedMesh m = load("h.off", cat(header, body));
+    ASSERT_EQ(m.mesh.vertices.size(), 3u);
+    EXPECT_EQ(m.mesh.vertices[1], (Point3{1, 0, 0}));
+    EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+  }
+}
+
+TEST_F(mesh_io, OffFacesWrappedOverLines) {
+  // Some writers wrap a face's indices over several lines (the shared data set's
+  // inspired_mesh_quads_Conjugate.off does): accepted when the indices end a line.
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  const LoadedMesh m = load("wrap.off", cat("OFF\n4 2 0\n", vertices, "4 0\n1\n2\n3\n3 0 1 2\n"));
+  EXPECT_TRUE(m.mesh.faces == (std::vector<Face>{make_quad(0, 1, 2, 3), make_triangle(0, 1, 2)}));
+  // A face line that is merely short must not swallow the next face as its colour.
+  EXPECT_MESSAGE_HAS(load_error("short.off", cat("OFF\n4 2 0\n", vertices, "3 0 1\n3 0 2 3\n")),
+                     "short.off:", "face 0: the corner count is 3");
+}
+
+TEST_F(mesh_io, OffErrorsNameFileAndLine) {
+  const std::string cube_vertices =
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";  // lines 3-10
+  EXPECT_MESSAGE_HAS(load_error("hdr.off", "FOO\n3 1 0\n"), "hdr.off:1:", "not an OFF file");
+  EXPECT_MESSAGE_HAS(load_error("4d.off", "4OFF\n3 1 0\n"), "4d.off:1:", "not supported");
+  EXPECT_MESSAGE_HAS(load_error("bin.off", "OFF BINARY\n"), "bin.off:1:", "binary OFF");
+  EXPECT_MESSAGE_HAS(load_error("none.off", ""), "none.off:0:", "the OFF header");
+  EXPECT_MESSAGE_HAS(load_error("cnt.off", "OFF\n8 six 0\n"), "cnt.off:2:", "'six'");
+  EXPECT_MESSAGE_HAS(load_error("neg.off", "OFF\n-8 6 0\n"), "neg.off:2:", "negative");
+  EXPECT_MESSAGE_HAS(load_error("many.off", "OFF\n99999999999 1 0\n0 0 0\n"),
+                     "many.off:2:", "too many vertices");
+  // A count that would be a 100 GB allocation: the file ends first.
+  EXPECT_MESSAGE_HAS(load_error("absurd.off", "OFF\n4000000000 4000000000 0\n0 0 0\n"),
+                     "absurd.off:3:", "1 of 4000000000 vertices");
+  EXPECT_MESSAGE_HAS(
+      load_error("fewf.off", cat("OFF\n8 99999999999 0\n", cube_vertices, "4 0 1 2 3\n")),
+      "fewf.off:11:", "1 of 99999999999 faces");
+  EXPECT_MESSAGE_HAS(load_error("nan.off", "OFF\n3 1 0\n0 0 0\n0 NaN 0\n"), "nan.off:4:", "'NaN'");
+  EXPECT_MESSAGE_HAS(load_error("inf.off", "OFF\n3 1 0\n0 0 0\n0 0 Infinity\n"),
+                     "inf.off:4:", "'Infinity'");
+  EXPECT_MESSAGE_HAS(load_error("xy.off", "OFF\n3 1 0\n0 0\n"), "xy.off:3:", "vertex 0",
+                     "expected x y z");
+  EXPECT_MESSAGE_HAS(load_error("range.off", cat("OFF\n8 1 0\n", cube_vertices, "4 0 1 8 3\n")),
+                     "range.off:11:", "face 0", "vertex index 8", "0..7");
+  EXPECT_MESSAGE_HAS(
+      load_error("wrap.off", cat("OFF\n8 1 0\n", cube_vertices, "4 0 1 4294967296 3\n")),
+      "wrap.off:11:", "4294967296", "out of range");
+  EXPECT_MESSAGE_HAS(load_error("neg.off", cat("OFF\n8 1 0\n", cube_vertices, "3 0 -1 2\n")),
+                     "neg.off:11:", "-1", "out of range");
+  EXPECT_MESSAGE_HAS(load_error("corners.off", cat("OFF\n8 1 0\n", cube_vertices, "4 0 1 2\n")),
+                     "corners.off:11:", "face 0", "corner count");
+  EXPECT_MESSAGE_HAS(
+      load_error("hugen.off", cat("OFF\n8 1 0\n", cube_vertices, "999999999999 0\n")),
+      "hugen.off:11:", "corner count");
+  EXPECT_MESSAGE_HAS(load_error("two.off", cat("OFF\n8 1 0\n", cube_vertices, "2 0 1\n")),
+                     "two.off:11:", "at least 3 corners");
+  EXPECT_MESSAGE_HAS(load_error("nof.off", cat("OFF\n8 0 0\n", cube_vertices)), "nof.off",
+                     "no faces");
+}
+
+// ---------------------------------------------------------------------------------------
+// PLY specifics
+
+std::string ply_header(const std::string& format, std::uint64_t vertices, std::uint64_t faces,
+                       const std::string& coordinate = "float",
+                       const std::string& list = "uchar int") {
+  return cat("ply\nformat ", format, " 1.0\nelement vertex ", std::to_string(vertices),
+             "\nproperty ", coordinate, " x\nproperty ", coordinate, " y\nproperty ", coordinate,
+             " z\nelement face ", std::to_string(faces), "\nproperty list ", list,
+             " vertex_indices\nend_header\n");
+}
+
+TEST_F(mesh_io, PlyVertexIndexNameCrlfHeaderAndOtherTypes) {
+  const std::string text =
+      "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\nproperty short x\r\nproperty uint8 y\r\n"
+      "property float64 z\r\nproperty list uchar float normals\r\nelement face 1\r\n"
+      "property list int uint vertex_index\r\nend_header\r\n"
+      "-3 200 0.1 2 0.5 0.5\r\n1 0 0 0\r\n0 1 0 1 7\r\n\r\n3 0 1 2\r\n";
+  const LoadedMesh m = load("crlf.ply", text);
+  ASSERT_EQ(m.mesh.vertices.size(), 3u);
+  EXPECT_EQ(m.mesh.vertices[0], (Point3{-3, 200, 0.1}));
+  EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+
+  // Binary with a CRLF header, big-endian shorts and a uint16 count.
+  std::string bin =
+      "ply\r\nformat binary_big_endian 1.0\r\nelement vertex 3\r\n"
+      "property int16 x\r\nproperty int16 y\r\nproperty int16 z\r\n"
+      "element face 1\r\nproperty list ushort uint vertex_indices\r\nend_header\r\n";
+  for (const int x : {-1, 2, 3, 4, -5, 6, 7, 8, 9})
+    put(bin, static_cast<std::int16_t>(x), true);
+  put(bin, std::uint16_t{3}, true);
+  for (const std::uint32_t i : {2u, 1u, 0u})
+    put(bin, i, true);
+  const LoadedMesh b = load("crlf_bin.ply", bin);
+  EXPECT_EQ(b.mesh.vertices[1], (Point3{4, -5, 6}));
+  EXPECT_TRUE(b.mesh.faces == std::vector<Face>{make_triangle(2, 1, 0)});
+}
+
+TEST_F(mesh_io, PlyByteOrderFromLiteralBytes) {
+  // One triangle, x = 1.0f, y = 0.1 (double), z = -2 (int16), written out byte by byte.
+  const std::string header_end =
+      " 1.0\nelement vertex 3\nproperty float x\nproperty double y\nproperty short z\n"
+      "element face 1\nproperty list uchar ushort vertex_indices\nend_header\n";
+  const std::string le_vertex("\x00\x00\x80\x3f\x9a\x99\x99\x99\x99\x99\xb9\x3f\xfe\xff", 14);
+  const std::string be_vertex("\x3f\x80\x00\x00\x3f\xb9\x99\x99\x99\x99\x99\x9a\xff\xfe", 14);
+  const std::string le = cat("ply\nformat binary_little_endian", header_end, le_vertex, le_vertex,
+                             le_vertex, std::string("\x03\x00\x00\x01\x00\x02\x00", 7));
+  const std::string be = cat("ply\nformat binary_big_endian", header_end, be_vertex, be_vertex,
+                             be_vertex, std::string("\x03\x00\x00\x00\x01\x00\x02", 7));
+  for (const LoadedMesh& m : {load("le.ply", le), load("be.ply", be)}) {
+    SCOPED_TRACE(m.format);
+    ASSERT_EQ(m.mesh.vertices.size(), 3u);
+    EXPECT_EQ(bits(m.mesh.vertices[2][0]), bits(1.0));
+    EXPECT_EQ(bits(m.mesh.vertices[2][1]), bits(0.1));
+    EXPECT_EQ(bits(m.mesh.vertices[2][2]), bits(-2.0));
+    EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+  }
+}
+
+TEST_F(mesh_io, PlyHeaderErrors) {
+  EXPECT_MESSAGE_HAS(load_error("magic.ply", "PLY\n"), "magic.ply:1:", "'ply'");
+  EXPECT_MESSAGE_HAS(load_error("ver.ply", "ply\nformat ascii 2.0\n"), "ver.ply:2:", "'2.0'");
+  EXPECT_MESSAGE_HAS(load_error("fmt.ply", "ply\nformat binary 1.0\n"), "fmt.ply:2:", "'binary'");
+  EXPECT_MESSAGE_HAS(load_error("end.ply", "ply\nformat ascii 1.0\nelement vertex 0\n"),
+                     "end.ply:3:", "end_header");
+  EXPECT_MESSAGE_HAS(load_error("nofmt.ply", "ply\nelement vertex 0\nend_header\n"),
+                     "nofmt.ply:3:", "format");
+  EXPECT_MESSAGE_HAS(load_error("type.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                "property real x\n"),
+                     "type.ply:4:", "'real'");
+  EXPECT_MESSAGE_HAS(load_error("prop.ply", "ply\nformat ascii 1.0\nproperty float x\n"),
+                     "prop.ply:3:", "before any element");
+  EXPECT_MESSAGE_HAS(load_error("cnt.ply", "ply\nformat ascii 1.0\nelement vertex -1\n"),
+                     "cnt.ply:3:", "negative");
+  EXPECT_MESSAGE_HAS(load_error("key.ply", "ply\nformat ascii 1.0\nfoo bar\n"),
+                     "key.ply:3:", "'foo'");
+  EXPECT_MESSAGE_HAS(load_error("noz.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                "property float y\nelement face 0\n"
+                                "property list uchar int vertex_indices\nend_header\n"),
+                     "noz.ply:3:", "property z is missing");
+  EXPECT_MESSAGE_HAS(load_error("flist.ply", ply_header("ascii", 3, 1, "float", "uchar float")),
+                     "flist.ply:8:", "integer type");
+  EXPECT_MESSAGE_HAS(load_error("fcount.ply", ply_header("ascii", 3, 1, "float", "float int")),
+                     "fcount.ply:8:", "count type");
+  EXPECT_MESSAGE_HAS(load_error("noface.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 0\n"
+                                "property float x\nproperty float y\n"
+                                "property float z\nend_header\n"),
+                     "noface.ply", "no 'face' element");
+  EXPECT_MESSAGE_HAS(load_error("dup.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 0\n"
+                                "property float x\nproperty float x\n"),
+                     "dup.ply:5:", "second property");
+}
+
+TEST_F(mesh_io, PlyAsciiDataErrors) {
+  const std::string header = ply_header("ascii", 3, 1);  // 9 header lines
+  EXPECT_MESSAGE_HAS(load_error("nan.ply", cat(header, "0 0 0\n0 nan 0\n")),
+                     "nan.ply:11:", "vertex 1", "'nan'");
+  EXPECT_MESSAGE_HAS(load_error("inf.ply", cat(header, "0 0 0\n0 0 0\n1e999 0 0\n")),
+                     "inf.ply:12:", "vertex 2", "'1e999'");
+  EXPECT_MESSAGE_HAS(load_error("few.ply", cat(header, "0 0 0\n0 0\n")), "few.ply:11:", "vertex 1",
+                     "too few values");
+  EXPECT_MESSAGE_HAS(load_error("more.ply", cat(header, "0 0 0 0\n")), "more.ply:10:", "vertex 0",
+                     "more values");
+  EXPECT_MESSAGE_HAS(load_error("end.ply", cat(header, "0 0 0\n0 0 0\n")),
+                     "end.ply:11:", "vertex 2", "ends");
+  const std::string v = "0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_MESSAGE_HAS(load_error("range.ply", cat(header, v, "3 0 1 3\n")),
+                     "range.ply:13:", "face 0", "vertex index 3", "0..2");
+  EXPECT_MESSAGE_HAS(load_error("wrap.ply", cat(header, v, "3 0 1 4294967296\n")),
+                     "wrap.ply:13:", "4294967296", "out of range");
+  EXPECT_MESSAGE_HAS(load_error("neg.ply", cat(header, v, "3 0 1 -1\n")), "neg.ply:13:", "-1");
+  EXPECT_MESSAGE_HAS(load_error("len.ply", cat(header, v, "4 0 1 2\n")), "len.ply:13:", "face 0",
+                     "has length 4");
+  EXPECT_MESSAGE_HAS(load_error("absurd.ply", cat(ply_header("ascii", 4000000000u, 1), v)),
+                     "absurd.ply:12:", "vertex 3", "4000000000");
+  EXPECT_MESSAGE_HAS(load_error("nof.ply", cat(ply_header("ascii", 3, 0), v)), "nof.ply",
+                     "no faces");
+}
+
+TEST_F(mesh_io, PlyBinaryErrorsNameElementAndIndex) {
+  const Mesh mesh = quad_and_triangle();
+  for (const char* format : {"binary_little_endian", "binary_big_endian"}) {
+    SCOPED_TRACE(format);
+    const std::string full = to_ply(mesh, {format, "float", "uchar", "int"});
+    // Faces are 1 + 4*4 + 2 and 1 + 3*4 + 2 bytes: cut into the last one.
+    EXPECT_MESSAGE_HAS(load_error("cut.ply", full.substr(0, full.size() - 3)),
+                       "cut.ply: face 1:", "truncated");
+    // Cut into the vertices: the declared counts no longer fit.
+    const std::size_t header_size = full.find("end_header\n") + 11;
+    EXPECT_MESSAGE_HAS(load_error("cutv.ply", full.substr(0, header_size + 20)),
+                       "cutv.ply:", "truncated", "vertex 1", "declares 5");
+    EXPECT_MESSAGE_HAS(load_error("none.ply", full.substr(0, header_size)),
+                       "none.ply:", "truncated", "vertex 0");
+  }
+  // Huge vertex counts on a tiny file: refused before any allocation.
+  std::string absurd = ply_header("binary_little_endian", 4000000000u, 1);
+  for (int i = 0; i < 9; ++i)
+    put(absurd, 1.0f, false);
+  EXPECT_MESSAGE_HAS(load_error("absurd.ply", absurd), "absurd.ply:", "vertex 3",
+                     "declares 4000000000");
+  EXPECT_MESSAGE_HAS(load_error("many.ply", ply_header("binary_little_endian", 99999999999, 1)),
+                     "many.ply:3:", "too many vertices");
+  std::string faces = ply_header("binary_little_endian", 3, 4000000000u);
+  for (int i = 0; i < 9; ++i)
+    put(faces, 1.0f, false);
+  EXPECT_MESSAGE_HAS(load_error("faces.ply", faces), "faces.ply:", "face 0", "declares 4000000000");
+  // An element no one reads, with a huge count, must not be trusted either.
+  const std::string other =
+      "ply\nformat binary_little_endian 1.0\nelement junk 99999999999\n"
+      "property list int int stuff\nelement vertex 0\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n";
+  EXPECT_MESSAGE_HAS(load_error("junk.ply", other), "junk.ply:", "junk 0", "truncated");
+
+  const std::string header = ply_header("binary_little_endian", 3, 1, "float", "int uint");
+  auto vertices = [](float bad) {
+    std::string s;
+    for (const float x : {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, bad, 0.0f})
+      put(s, x, false);
+    return s;
+  };
+  auto face = [](std::int32_t n, std::initializer_list<std::uint32_t> corners) {
+    std::string s;
+    put(s, n, false);
+    for (const std::uint32_t c : corners)
+      put(s, c, false);
+    return s;
+  };
+  EXPECT_MESSAGE_HAS(
+      load_error("nan.ply", cat(header, vertices(std::numeric_limits<float>::quiet_NaN()),
+                                face(3, {0, 1, 2}))),
+      "nan.ply: vertex 2:", "y is NaN");
+  EXPECT_MESSAGE_HAS(
+      load_error("inf.ply", cat(header, vertices(-std::numeric_limits<float>::infinity()),
+                                face(3, {0, 1, 2}))),
+      "inf.ply: vertex 2:", "y is infinite");
+  EXPECT_MESSAGE_HAS(load_error("range.ply", cat(header, vertices(1), face(3, {0, 1, 3}))),
+                     "range.ply: face 0:", "vertex index 3", "0..2");
+  EXPECT_MESSAGE_HAS(load_error("max.ply", cat(header, vertices(1), face(3, {0, 4294967295u, 1}))),
+                     "max.ply: face 0:", "vertex index 4294967295", "0..2");
+  EXPECT_MESSAGE_HAS(load_error("negn.ply", cat(header, vertices(1), face(-1, {}))),
+                     "negn.ply: face 0:", "negative length -1");
+  EXPECT_MESSAGE_HAS(load_error("bign.ply", cat(header, vertices(1), face(2000000000, {0, 1, 2}))),
+                     "bign.ply: face 0:", "truncated");
+  EXPECT_MESSAGE_HAS(load_error("two.ply", cat(header, vertices(1), face(2, {0, 1}))),
+                     "two.ply: face 0:", "at least 3 corners");
+  const std::string signed_header = ply_header("binary_little_endian", 3, 1, "float", "uchar int");
+  std::string negative = signed_header + vertices(1);
+  put(negative, std::uint8_t{3}, false);
+  for (const std::int32_t c : {0, -2, 1})
+    put(negative, c, false);
+  EXPECT_MESSAGE_HAS(load_error("neg.ply", negative), "neg.ply: face 0:", "vertex index -2");
+}
+
+// ---------------------------------------------------------------------------------------
+// Files, extensions, assimp
+
+TEST_F(mesh_io, FileAndExtensionErrors) {
+  const std::string missing = (dir_ / "missing.obj").string();
+  EXPECT_MESSAGE_HAS(error_of([&] { (void)load_mesh(missing); }), missing, "cannot open");
+  const std::string missing_stl = (dir_ / "missing.stl").string();
+  EXPECT_MESSAGE_HAS(error_of([&] { (void)load_mesh(missing_stl); }), missing_stl, "cannot open");
+  EXPECT_MESSAGE_HAS(error_of([&] { (void)load_mesh(cat(dir_.string(), "/")); }), "unsupported");
+  fs::create_directories(dir_ / "folder.obj");
+  EXPECT_MESSAGE_HAS(error_of([&] { (void)load_mesh((dir_ / "folder.obj").string()); }),
+                     "folder.obj", "directory");
+  EXPECT_MESSAGE_HAS(load_error("mesh.xyzzy", "v 0 0 0\n"), "mesh.xyzzy", "unsupported", ".xyzzy");
+  EXPECT_MESSAGE_HAS(load_error("noextension", "v 0 0 0\n"), "noextension", "no file extension");
+}
+
+// A unit cube as ASCII STL: 12 triangles, 36 corners, 8 positions. One coordinate is 0.1,
+// which assimp rounds to the float 0.1f.
+std::string cube_stl() {
+  const std::array<Point3, 8> p = {{{0, 0, 0},
+                                    {1, 0, 0},
+                                    {1, 1, 0},
+                                    {0, 1, 0},
+                                    {0, 0, 0.1},
+                                    {1, 0, 0.1},
+                                    {1, 1, 0.1},
+                                    {0, 1, 0.1}}};
+  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::string s = "solid cube\n";
+  for (const auto& q : quads) {
+    for (const auto& tri : {std::array{q[0], q[1], q[2]}, std::array{q[0], q[2], q[3]}}) {
+      s.append("facet normal 0 0 0\n outer loop\n");
+      for (const int v : tri) {
+        s.append(
+            cat("  vertex ", decimal(p[v][0]), " ", decimal(p[v][1]), " ", decimal(p[v][2]), "\n"));
+      }
+      s.append(" endloop\nendfacet\n");
+    }
+  }
+  s.append("endsolid cube\n");
+  return s;
+}
+
+TEST_F(mesh_io, AssimpStlIsWeldedAndMarkedAsFloat) {
+  const LoadedMesh m = load("cube.STL", cube_stl());
+  EXPECT_EQ(m.format, "assimp stl");
+  EXPECT_TRUE(m.coordinates_via_float);
+  EXPECT_EQ(m.mesh.vertices.size(), 8u);
+  EXPECT_EQ(m.welded_vertices, 36u - 8u);
+  ASSERT_EQ(m.mesh.faces.size(), 12u);
+  for (const Face& f : m.mesh.faces) {
+    EXPECT_TRUE(f.is_triangle());
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_LT(f.corners[c], 8u);
+  }
+  bool saw_tenth = false;
+  for (const auto& v : m.mesh.vertices) {
+    EXPECT_TRUE(v[2] == 0.0 || v[2] == static_cast<double>(0.1f)) << v[2];
+    saw_tenth = saw_tenth || v[2] != 0.0;
+  }
+  EXPECT_TRUE(saw_tenth);
+  EXPECT_MESSAGE_HAS(load_error("empty.stl", "solid empty\nendsolid empty\n"), "empty.stl");
+  EXPECT_MESSAGE_HAS(load_error("garbage.stl", "solid x\nfacet normal a b c\n"), "garbage.stl");
+}
+
+// ---------------------------------------------------------------------------------------
+// Welding
+
+TEST_F(mesh_io, WeldingTurnsAQuadSoupIntoSharedVertices) {
+  // A cube stored as six quads with four vertices each.
+  const int quads[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  auto corner = [](int v) {
+    return Point3{static_cast<double>(v & 1 ? 1 : 0) * 0.1, v & 2 ? 1e-300 : 0.0,
+                  v & 4 ? -3.0 : 0.0};
+  };
+  std::string off = "OFF\n24 6 0\n";
+  for (const auto& q : quads) {
+    for (const int v : q) {
+      const Point3 p = corner(v);
+      off.append(cat(decimal(p[0]), " ", decimal(p[1]), " ", decimal(p[2]), "\n"));
+    }
+  }
+  for (int f = 0; f < 6; ++f) {
+    off.append("4");
+    for (int c = 0; c < 4; ++c)
+      off.append(cat(" ", std::to_string(4 * f + c)));
+    off.append("\n");
+  }
+  const LoadedMesh soup = load("soup.off", off);
+  EXPECT_EQ(soup.mesh.vertices.size(), 24u);
+  EXPECT_EQ(soup.welded_vertices, 0u);
+
+  const LoadedMesh welded = load("soup.off", off, {.weld = true});
+  EXPECT_EQ(welded.mesh.vertices.size(), 8u);
+  EXPECT_EQ(welded.welded_vertices, 16u);
+  ASSERT_EQ(welded.mesh.faces.size(), 6u);
+  for (std::size_t f = 0; f < 6; ++f) {
+    EXPECT_FALSE(welded.mesh.faces[f].is_triangle());
+    for (std::size_t c = 0; c < 4; ++c) {
+      // Same corner positions as before, now shared.
+      EXPECT_EQ(welded.mesh.vertices[welded.mesh.faces[f].corners[c]],
+                soup.mesh.vertices[soup.mesh.faces[f].corners[c]]);
+    }
+  }
+  // First-occurrence order: the first face's corners are vertices 0..3.
+  EXPECT_TRUE(welded.mesh.faces[0] == make_quad(0, 1, 2, 3));
+}
+
+TEST(mesh_io_weld, SignedZerosMergeAndFirstOccurrenceWins) {
+  Mesh mesh;
+  mesh.vertices = {{-0.0, 0.0, 1.0},    // 0
+                   {5.0, 5.0, 5.0},     // 1: unreferenced, kept
+                   {0.0, -0.0, 1.0},    // 2 == 0
+                   {2.0, 0.0, 0.0},     // 3
+                   {0.0, 0.0, 1.0},     // 4 == 0
+                   {2.0, -0.0, -0.0}};  // 5 == 3
+  mesh.faces = {make_triangle(2, 3, 4), make_quad(5, 0, 2, 3)};
+  EXPECT_EQ(weld_vertices(mesh), 3u);
+  ASSERT_EQ(mesh.vertices.size(), 3u);
+  EXPECT_TRUE(std::signbit(mesh.vertices[0][0]));  // the first occurrence's coordinates
+  EXPECT_EQ(mesh.vertices[1], (Point3{5, 5, 5}));
+  EXPECT_EQ(mesh.vertices[2], (Point3{2, 0, 0}));
+  EXPECT_TRUE(mesh.faces == (std::vector<Face>{make_triangle(0, 2, 0), make_quad(2, 0, 0, 2)}));
+
+  Mesh distinct;
+  distinct.vertices = {{0, 0, 0}, {0, 0, std::numeric_limits<double>::denorm_min()}};
+  distinct.faces = {make_triangle(0, 1, 1)};
+  EXPECT_EQ(weld_vertices(distinct), 0u);
+  EXPECT_EQ(distinct.vertices.size(), 2u);
+}
+
+// ---------------------------------------------------------------------------------------
+// Bundled and shared data
+
+struct DataFile {
+  const char* path;  // under meshes/
+  std::size_t vertices;
+  std::size_t triangles;
+  std::size_t quads;
+  std::size_t larger;         // faces with more than four corners
+  std::size_t fan_triangles;  // the triangles they split into
+};
+
+// Counts as listed in the shared data's README (and counted in the files).
+const DataFile kBundled[] = {
+    {"cgal/3torus.off", 19, 0, 23, 0, 0},
+    {"cgal/P.off", 26, 2, 21, 2, 8},
+    {"cgal/corner.off", 16, 0, 14, 0, 0},
+    {"cgal/cross_quad.off", 40, 0, 38, 0, 0},
+    {"cgal/cube_quad.off", 8, 0, 6, 0, 0},
+    {"cgal/double-torus-example.off", 231, 0, 202, 18, 62},
+    {"cgal/hole.off", 20, 16, 12, 0, 0},
+    {"cgal/mpi.off", 90, 13, 12, 27, 143},
+    {"cgal/torus_quad.off", 25, 0, 25, 0, 0},
+    {"negative/corner_with_hole.off", 16, 0, 13, 0, 0},
+    {"negative/cube4-shuffled.off", 8, 0, 6, 0, 0},
+    {"negative/double-torus-3-holes.off", 228, 0, 183, 18, 62},
+    {"spot/spot_control_mesh.obj", 188, 4, 160, 16, 48},
+    {"spot/spot_quadrangulated.obj", 2930, 0, 2928, 0, 0},
+};
+
+void expect_counts(const LoadedMesh& m, const DataFile& d, bool split) {
+  EXPECT_EQ(m.mesh.vertices.size(), d.vertices);
+  std::size_t triangles = 0;
+  std::size_t quads = 0;
+  for (const Face& f : m.mesh.faces) {
+    (f.is_triangle() ? triangles : quads) += 1;
+    for (std::size_t c = 0; c < f.size(); ++c)
+      ASSERT_LT(f.corners[c], m.mesh.vertices.size());
+  }
+  EXPECT_EQ(quads, d.quads);
+  EXPECT_EQ(triangles, d.triangles + (split ? d.fan_triangles : 0));
+  EXPECT_EQ(m.split_polygons, split ? d.larger : 0);
+}
+
+TEST(mesh_io_data, BundledMeshesLoadWithTheirFaceCounts) {
+  for (const DataFile& d : kBundled) {
+    SCOPED_TRACE(d.path);
+    const std::string path = cat(EXACTGEO_TEST_DATA_DIR, "/meshes/", d.path);
+    if (d.larger == 0) {
+      expect_counts(load_mesh(path), d, false);
+    } else {
+      EXPECT_MESSAGE_HAS(error_of([&] { (void)load_mesh(path); }), path, "--split-polygons");
+    }
+    expect_counts(load_mesh(path, {.split_polygons = true}), d, true);
+  }
+}
+
+TEST(mesh_io_data, SharedSpotPlyFilesLoadAsQuads) {
+  const fs::path dir = fs::path(EXACTGEO_SHARED_DATA_DIR) / "meshes" / "spot";
+  if (!fs::exists(dir / "spot_quad_cc1.ply")) GTEST_SKIP() << "no shared data at " << dir;
+  const DataFile levels[] = {{"spot_quad_cc1.ply", 11714, 0, 11712, 0, 0},
+                             {"spot_quad_cc2.ply", 46850, 0, 46848, 0, 0},
+                             {"spot_quad_cc3.ply", 187394, 0, 187392, 0, 0},
+                             {"spot_quad_cc4.ply", 749570, 0, 749568, 0, 0}};
+  for (const DataFile& d : levels) {
+    SCOPED_TRACE(d.path);
+    const fs::path path = dir / d.path;
+    if (!fs::exists(path)) continue;
+    const LoadedMesh m = load_mesh(path.string());
+    EXPECT_EQ(m.format, "ply binary little endian");
+    expect_counts(m, d, false);
+  }
+}
+
+}  // namespace
+}  // namespace exactgeo::mesh
