@@ -105,10 +105,10 @@ void BM_orient3d_double(benchmark::State& state, Kind kind) {
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(cases.size()));
 }
 
-exactgeo::internal::StageCounts orient_stages(Kind kind) {
-  using exactgeo::internal::Offset;
-  exactgeo::internal::StageCounts counts;
-  const exactgeo::internal::ExactSigns signs(&counts);
+exactgeo::kernel::StageCounts orient_stages(Kind kind) {
+  using exactgeo::kernel::Offset;
+  exactgeo::kernel::StageCounts counts;
+  const exactgeo::kernel::ExactSigns signs(&counts);
   for (const auto& c : orient_cases(kind)) {
     signs.det3_by_axis(Offset::between(c.a, c.b), Offset::between(c.a, c.c),
                        Offset::between(c.a, c.d));
@@ -166,14 +166,14 @@ void BM_ray_patch(benchmark::State& state, Kind kind, Arithmetic arithmetic) {
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(cases.size()));
 }
 
-exactgeo::internal::StageCounts ray_patch_stages(Kind kind) {
+exactgeo::kernel::StageCounts ray_patch_stages(Kind kind) {
   namespace in = exactgeo::internal;
-  in::StageCounts counts;
-  const in::ExactSigns signs(&counts);
+  exactgeo::kernel::StageCounts counts;
+  const exactgeo::kernel::ExactSigns signs(&counts);
   for (const auto& c : ray_patch_cases(kind)) {
     const auto x = in::internal_corners(c.patch);
     in::ray_patch_parity_offsets(signs, in::patch_frame(signs, x), in::offsets_from(c.origin, x),
-                                 in::Offset::vector(c.direction));
+                                 exactgeo::kernel::Offset::vector(c.direction));
   }
   return counts;
 }
@@ -215,7 +215,7 @@ int ray_patch_double_errors(Kind kind) {
   return wrong;
 }
 
-void print_stages(const char* label, const exactgeo::internal::StageCounts& c) {
+void print_stages(const char* label, const exactgeo::kernel::StageCounts& c) {
   const double total = double(c.total());
   std::printf("  %-28s signs %8llu  filter %6.2f%%  expansion %6.2f%%  rational %6.2f%%\n", label,
               static_cast<unsigned long long>(c.total()), 100 * double(c.filter) / total,

@@ -12,7 +12,7 @@
 #include "exactgeo/ccd/internal/root_search.hpp"
 #include "exactgeo/ccd/internal/time_pieces.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::ccd {
 
@@ -81,7 +81,7 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   if (dips) {
     if (const auto result = decided_by_polynomials()) return *result;
   }
-  const RootParity parity = internal::root_parity(exactgeo::internal::ExactSigns{}, image).parity;
+  const RootParity parity = internal::root_parity(exactgeo::kernel::ExactSigns{}, image).parity;
   if (parity != RootParity::even && !toi) return collision(Stage::parity, 0, {});
   if (parity == RootParity::even) {
     if (!dips) {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "exactgeo/parallel/blocks.hpp"
-#include "exactgeo/predicates/internal/error_free.hpp"
+#include "exactgeo/predicates/kernel/error_free.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -49,8 +49,7 @@ struct Displacements {
     d.resize(n);
     exact.assign(n, 1);
     for (std::size_t i = 0; i < 3 * n; ++i) {
-      const auto diff =
-          exactgeo::internal::two_diff(frames.positions_t1[i], frames.positions_t0[i]);
+      const auto diff = exactgeo::kernel::two_diff(frames.positions_t1[i], frames.positions_t0[i]);
       d[i / 3][i % 3] = diff.head;
       if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[i / 3] = 0;
     }

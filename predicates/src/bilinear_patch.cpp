@@ -6,7 +6,7 @@
 
 namespace exactgeo {
 
-using internal::Offset;
+using kernel::Offset;
 
 std::string_view to_string(PatchShape shape) noexcept {
   switch (shape) {
@@ -43,7 +43,7 @@ std::string_view to_string(RayPatch r) noexcept {
 }
 
 PatchShape classify_patch(const BilinearPatch& patch) noexcept {
-  const internal::ExactSigns signs;
+  const kernel::ExactSigns signs;
   const auto x = internal::internal_corners(patch);
   const internal::PatchFrame frame = internal::patch_frame(signs, x);
   switch (frame.kind) {
@@ -70,7 +70,7 @@ PatchShape classify_patch(const BilinearPatch& patch) noexcept {
 RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
                           const BilinearPatch& patch, Arithmetic arithmetic) noexcept {
   const auto x = internal::internal_corners(patch);
-  return internal::with_signs(arithmetic, [&](const auto& signs) {
+  return kernel::with_signs(arithmetic, [&](const auto& signs) {
     return internal::ray_patch_parity_offsets(signs, internal::patch_frame(signs, x),
                                               internal::offsets_from(origin, x),
                                               Offset::vector(direction));
@@ -79,7 +79,7 @@ RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
 
 Sign patch_side(const BilinearPatch& patch, const Point3& x, Arithmetic arithmetic) noexcept {
   const auto corners = internal::internal_corners(patch);
-  return internal::with_signs(
+  return kernel::with_signs(
       arithmetic, [&](const auto& signs) { return signs.phi(internal::offsets_from(x, corners)); });
 }
 

@@ -1,6 +1,6 @@
 #include "exactgeo/predicates/orient3d.hpp"
 
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo {
 
@@ -9,20 +9,20 @@ namespace {
 template <class Signs>
 Sign orient3d_with(const Signs& signs, const Point3& a, const Point3& b, const Point3& c,
                    const Point3& d) noexcept {
-  using internal::Offset;
+  using kernel::Offset;
   return signs.det3_by_axis(Offset::between(a, b), Offset::between(a, c), Offset::between(a, d));
 }
 
 }  // namespace
 
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) noexcept {
-  return orient3d_with(internal::ExactSigns{}, a, b, c, d);
+  return orient3d_with(kernel::ExactSigns{}, a, b, c, d);
 }
 
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
               Arithmetic arithmetic) noexcept {
-  return internal::with_signs(arithmetic,
-                              [&](const auto& signs) { return orient3d_with(signs, a, b, c, d); });
+  return kernel::with_signs(arithmetic,
+                            [&](const auto& signs) { return orient3d_with(signs, a, b, c, d); });
 }
 
 }  // namespace exactgeo

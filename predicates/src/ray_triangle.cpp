@@ -7,8 +7,8 @@ namespace exactgeo {
 RayTriangleHit classify_ray_triangle(const Point3& origin, const Vector3& direction,
                                      const Point3& a, const Point3& b, const Point3& c,
                                      Arithmetic arithmetic) noexcept {
-  using internal::Offset;
-  return internal::with_signs(arithmetic, [&](const auto& signs) {
+  using kernel::Offset;
+  return kernel::with_signs(arithmetic, [&](const auto& signs) {
     return internal::classify_ray_triangle_offsets(
         signs, Offset::between(origin, a), Offset::between(origin, b), Offset::between(origin, c),
         Offset::vector(direction));

@@ -309,7 +309,7 @@ TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
     if (i % 3 == 1) p.p11 = testing::rounded_affine(p.p00, p.p10, p.p01, 1, 1);  // nearly flat
     const auto x = internal::internal_corners(p);
     const Point3 origin = i % 2 ? testing::random_point(rng, 4) : testing::integer_point(rng, 3);
-    const internal::ExactSigns signs;
+    const kernel::ExactSigns signs;
     const internal::PatchFrame expected = internal::patch_frame(signs, x);
     const internal::PatchFrame got =
         internal::patch_frame_from_offsets(signs, internal::offsets_from(origin, x));
@@ -327,7 +327,7 @@ TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
 TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
   Rng rng = testing::seeded_engine("patch-frame-ccd");
   using Q = std::array<mpq_class, 3>;
-  auto exact = [](const internal::Offset& o) {
+  auto exact = [](const kernel::Offset& o) {
     return Q{mpq_class(o.head(0)) - o.tail(0), mpq_class(o.head(1)) - o.tail(1),
              mpq_class(o.head(2)) - o.tail(2)};
   };
@@ -346,11 +346,9 @@ TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
     const Point3 f1 = i % 4 < 2 ? f0 : point();   // static edge half of the time
     const Point3 g1 = i % 4 < 2 ? g0 : (i % 5 == 0 ? f1 : point());
     // Side patch over the edge (f, g): p00 = v0 - f0, p10 = v1 - f1, p11 = v1 - g1, p01 = v0 - g0.
-    const internal::Offsets<4> a{
-        internal::Offset::between(f0, v0), internal::Offset::between(f1, v1),
-        internal::Offset::between(g0, v0), internal::Offset::between(g1, v1)};
-    const internal::PatchFrame frame =
-        internal::patch_frame_from_offsets(internal::ExactSigns{}, a);
+    const kernel::Offsets<4> a{kernel::Offset::between(f0, v0), kernel::Offset::between(f1, v1),
+                               kernel::Offset::between(g0, v0), kernel::Offset::between(g1, v1)};
+    const internal::PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
     ++kinds[static_cast<int>(frame.kind)];
     std::array<Q, 4> c{exact(a[0]), exact(a[1]), exact(a[2]), exact(a[3])};
     const Q n012 = cross(sub(c[1], c[0]), sub(c[2], c[0]));

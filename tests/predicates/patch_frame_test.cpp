@@ -12,15 +12,15 @@
 #include <cmath>
 #include <limits>
 
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo {
 namespace {
 
-using internal::Offset;
-using internal::Offsets;
+using kernel::Offset;
+using kernel::Offsets;
 using testing::Rng;
 
 using ExactPoint = std::array<mpq_class, 3>;
@@ -94,7 +94,7 @@ TEST(PatchFrame, RigidTranslationIsACertainParallelogram) {
     ASSERT_TRUE(oracle_parallelogram(p.corners()));  // the construction is exact
     EXPECT_TRUE(internal::certainly_parallelogram(p.corners())) << "case " << i;
     const internal::PatchFrame frame =
-        internal::patch_frame_from_offsets(internal::ExactSigns{}, p.corners());
+        internal::patch_frame_from_offsets(kernel::ExactSigns{}, p.corners());
     EXPECT_EQ(frame.volume, Sign::zero);
     EXPECT_NE(frame.kind, internal::PatchFrame::Kind::skew);
   }
@@ -112,8 +112,7 @@ TEST(PatchFrame, OneUlpFromATranslationIsNotClaimed) {
     if (internal::certainly_parallelogram(a)) {
       EXPECT_TRUE(parallelogram) << "case " << i;
     }
-    const internal::PatchFrame frame =
-        internal::patch_frame_from_offsets(internal::ExactSigns{}, a);
+    const internal::PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
     const int volume = oracle_volume_sign(a);
     EXPECT_EQ(static_cast<int>(frame.volume), volume) << "case " << i;
     EXPECT_EQ(frame.kind == internal::PatchFrame::Kind::skew, volume != 0) << "case " << i;
@@ -138,7 +137,7 @@ TEST(PatchFrame, OverflowingDisplacements) {
   EXPECT_FALSE(internal::certainly_parallelogram(shorter.corners()));
   for (const SidePatch& p : {same, shorter}) {
     const internal::PatchFrame frame =
-        internal::patch_frame_from_offsets(internal::ExactSigns{}, p.corners());
+        internal::patch_frame_from_offsets(kernel::ExactSigns{}, p.corners());
     EXPECT_EQ(static_cast<int>(frame.volume), oracle_volume_sign(p.corners()));
   }
 }

@@ -20,12 +20,12 @@
 #include <cstdint>
 
 #include "exactgeo/ccd/queries.hpp"
-#include "exactgeo/predicates/internal/offset.hpp"
+#include "exactgeo/predicates/kernel/offset.hpp"
 
 namespace exactgeo::ccd::internal {
 
-using exactgeo::internal::Offset;
-using exactgeo::internal::Offsets;
+using exactgeo::kernel::Offset;
+using exactgeo::kernel::Offsets;
 
 struct Face {
   enum class Kind : std::uint8_t { triangle, patch, parallelogram };

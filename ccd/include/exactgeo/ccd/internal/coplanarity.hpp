@@ -40,9 +40,9 @@
 #include <optional>
 #include <utility>
 
-#include "exactgeo/predicates/internal/filter.hpp"
-#include "exactgeo/predicates/internal/formula_descriptors.hpp"
-#include "exactgeo/predicates/internal/offset.hpp"
+#include "exactgeo/predicates/kernel/filter.hpp"
+#include "exactgeo/predicates/kernel/formula_descriptors.hpp"
+#include "exactgeo/predicates/kernel/offset.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -70,8 +70,7 @@ class Coplanarity {
   /// From the corners of the whole step (C = 6: vertex-face, 8: edge-edge); nullopt when
   /// the corners are beyond the filter's guard (no certificate then).
   template <std::size_t C>
-  static std::optional<Coplanarity> of(const exactgeo::internal::Offsets<C>& corners) noexcept {
-    namespace in = exactgeo::internal;
+  static std::optional<Coplanarity> of(const exactgeo::kernel::Offsets<C>& corners) noexcept {
     constexpr std::size_t H = C / 2;
     // x, y, z: corners 0, 1, 2 (vertex-face) or c00, c01, c10 (edge-edge), at t0 and t1.
     const std::array<std::array<Vec3, 2>, 3> v{{{corners[0].rounded(), corners[H].rounded()},
@@ -84,11 +83,12 @@ class Coplanarity {
           largest[a] = std::max(largest[a], std::fabs(x[a]));
       }
     }
-    constexpr auto& filter = in::kFilterConstant<in::Det3Formula, in::Grouping::by_axis>;
+    constexpr auto& filter =
+        kernel::kFilterConstant<kernel::Det3Formula, kernel::Grouping::by_axis>;
     for (const double m : largest) {
       if (!(m >= filter.guard_low && m <= filter.guard_high)) return std::nullopt;
     }
-    auto d = [&](int i, int j, int k) { return in::det3(v[0][i], v[1][j], v[2][k]); };
+    auto d = [&](int i, int j, int k) { return kernel::det3(v[0][i], v[1][j], v[2][k]); };
     const std::array<double, 8> dets{d(0, 0, 0), d(1, 0, 0), d(0, 1, 0), d(0, 0, 1),
                                      d(1, 1, 0), d(1, 0, 1), d(0, 1, 1), d(1, 1, 1)};
     double largest_det = 0.0;
@@ -122,7 +122,7 @@ class Coplanarity {
   }
 
  private:
-  using Vec3 = exactgeo::internal::Vec3<double>;
+  using Vec3 = exactgeo::kernel::Vec3<double>;
 
   CoplanarityCoefficients whole_step_{};
   double threshold_ = 0.0;

@@ -24,21 +24,19 @@
 #include <optional>
 
 #include "exactgeo/ccd/internal/boundary_image.hpp"
-#include "exactgeo/predicates/internal/expansion.hpp"
-#include "exactgeo/predicates/internal/filter.hpp"
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/expansion.hpp"
+#include "exactgeo/predicates/kernel/filter.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::ccd::internal {
 
-namespace in = exactgeo::internal;
-
 template <std::size_t C>
-bool outside_bounding_box(const in::Offsets<C>& a) noexcept {
+bool outside_bounding_box(const kernel::Offsets<C>& a) noexcept {
   for (int axis = 0; axis < 3; ++axis) {
     int positive = 0;
     int negative = 0;
-    for (const in::Offset& o : a) {
-      const Sign s = in::coordinate_sign(o, axis);
+    for (const kernel::Offset& o : a) {
+      const Sign s = kernel::coordinate_sign(o, axis);
       positive += s == Sign::positive;
       negative += s == Sign::negative;
     }
@@ -67,17 +65,18 @@ class StrictSide {
 /// n . p exactly, with expansions: the exact coordinates of p times the doubles n_k
 /// (TwoProduct), summed. nullopt when a product could underflow or overflow (culling may
 /// always say "don't know").
-inline std::optional<in::Expansion<48>> exact_dot(const in::Offset& p, const Vector3& n) noexcept {
-  std::array<in::Expansion<16>, 3> terms;
+inline std::optional<kernel::Expansion<48>> exact_dot(const kernel::Offset& p,
+                                                      const Vector3& n) noexcept {
+  std::array<kernel::Expansion<16>, 3> terms;
   for (int axis = 0; axis < 3; ++axis) {
-    in::Expansion<8> x;
+    kernel::Expansion<8> x;
     if (p.is_exact_vector()) {
       x = p.exact_vector().exact[axis];
     } else {
       if (std::fabs(p.head(axis)) >= 0x1p1021 || std::fabs(p.tail(axis)) >= 0x1p1021) {
         return std::nullopt;
       }
-      x = in::Expansion<2>::difference(p.head(axis), p.tail(axis));
+      x = kernel::Expansion<2>::difference(p.head(axis), p.tail(axis));
     }
     if (n[axis] != 0.0) {
       const int e = std::ilogb(n[axis]);
@@ -86,7 +85,7 @@ inline std::optional<in::Expansion<48>> exact_dot(const in::Offset& p, const Vec
         if (sum_of_exponents < -960 || sum_of_exponents > 1000) return std::nullopt;
       }
     }
-    terms[axis] = in::scale(x, n[axis]);
+    terms[axis] = kernel::scale(x, n[axis]);
   }
   return terms[0] + terms[1] + terms[2];
 }
@@ -96,11 +95,11 @@ inline std::optional<in::Expansion<48>> exact_dot(const in::Offset& p, const Vec
 enum class Certify { filter_only, filter_then_exact };
 
 /// The sign of n . p: the filter's, else (filter_then_exact) the exact one, else don't know.
-inline std::optional<Sign> dot_sign(const in::Offset& p, const Vector3& n,
+inline std::optional<Sign> dot_sign(const kernel::Offset& p, const Vector3& n,
                                     Certify how = Certify::filter_then_exact) noexcept {
-  const in::Offset normal = in::Offset::vector(n);
-  if (const auto s = in::filtered_sign<in::Dot3Formula, in::Grouping::by_vector>(
-          in::Offsets<2>{p, normal}, 0)) {
+  const kernel::Offset normal = kernel::Offset::vector(n);
+  if (const auto s = kernel::filtered_sign<kernel::Dot3Formula, kernel::Grouping::by_vector>(
+          kernel::Offsets<2>{p, normal}, 0)) {
     return s;
   }
   if (how == Certify::filter_only) return std::nullopt;
@@ -111,7 +110,7 @@ inline std::optional<Sign> dot_sign(const in::Offset& p, const Vector3& n,
 /// Every corner strictly on the positive side of the plane n . x = 0, or every corner on
 /// the negative side, each side certified as `how` says.
 template <std::size_t C>
-bool on_one_side(const in::Offsets<C>& a, const Vector3& n,
+bool on_one_side(const kernel::Offsets<C>& a, const Vector3& n,
                  Certify how = Certify::filter_then_exact) noexcept {
   StrictSide side;
   for (std::size_t k = 0; k < C && side.holds(); ++k)
@@ -127,7 +126,7 @@ bool on_one_side(const in::Offsets<C>& a, const Vector3& n,
 /// differs from the mean of the outer two by (n0 - n1) . (R_k - L_k) / 2, quadratic in the
 /// piece's length, where a fixed plane's error is linear: pieces can be far longer.
 template <std::size_t C>
-bool separated_by_turning_plane(const in::Offsets<C>& a, const Vector3& n0,
+bool separated_by_turning_plane(const kernel::Offsets<C>& a, const Vector3& n0,
                                 const Vector3& n1) noexcept {
   constexpr std::size_t H = C / 2;
   StrictSide side;
@@ -143,7 +142,7 @@ bool separated_by_turning_plane(const in::Offsets<C>& a, const Vector3& n0,
 }
 
 inline Vector3 cross(const Vector3& a, const Vector3& b) noexcept {
-  return {in::cross2(0, a, b), in::cross2(1, a, b), in::cross2(2, a, b)};
+  return {kernel::cross2(0, a, b), kernel::cross2(1, a, b), kernel::cross2(2, a, b)};
 }
 
 inline bool usable(const Vector3& n) noexcept {
@@ -153,20 +152,20 @@ inline bool usable(const Vector3& n) noexcept {
 
 /// The point of segment [p, q] closest to the origin, in plain doubles.
 inline Vector3 closest_on_segment(const Vector3& p, const Vector3& q) noexcept {
-  const Vector3 d = in::difference(q, p);
-  const double dd = in::dot3(d, d);
-  const double s = dd > 0.0 ? std::clamp(-in::dot3(p, d) / dd, 0.0, 1.0) : 0.0;
+  const Vector3 d = kernel::difference(q, p);
+  const double dd = kernel::dot3(d, d);
+  const double s = dd > 0.0 ? std::clamp(-kernel::dot3(p, d) / dd, 0.0, 1.0) : 0.0;
   return {p[0] + s * d[0], p[1] + s * d[1], p[2] + s * d[2]};
 }
 
 /// The point of triangle (a, b, c) closest to the origin, in plain doubles (an estimate:
 /// it only proposes a normal, which on_one_side then certifies).
 inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vector3& c) noexcept {
-  const Vector3 e1 = in::difference(b, a);
-  const Vector3 e2 = in::difference(c, a);
+  const Vector3 e1 = kernel::difference(b, a);
+  const Vector3 e2 = kernel::difference(c, a);
   // Minimise |a + s e1 + t e2|^2: the normal equations.
-  const double d11 = in::dot3(e1, e1), d12 = in::dot3(e1, e2), d22 = in::dot3(e2, e2);
-  const double r1 = -in::dot3(a, e1), r2 = -in::dot3(a, e2);
+  const double d11 = kernel::dot3(e1, e1), d12 = kernel::dot3(e1, e2), d22 = kernel::dot3(e2, e2);
+  const double r1 = -kernel::dot3(a, e1), r2 = -kernel::dot3(a, e2);
   const double det = d11 * d22 - d12 * d12;
   if (det > 0.0) {
     const double s = (r1 * d22 - r2 * d12) / det;
@@ -178,7 +177,7 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
   }
   Vector3 best = closest_on_segment(a, b);
   for (const Vector3& candidate : {closest_on_segment(b, c), closest_on_segment(c, a)}) {
-    if (in::dot3(candidate, candidate) < in::dot3(best, best)) best = candidate;
+    if (kernel::dot3(candidate, candidate) < kernel::dot3(best, best)) best = candidate;
   }
   return best;
 }
@@ -199,7 +198,7 @@ Vector3 closest_direction(const std::array<Vector3, H>& x) noexcept {
   Vector3 closest = closest_on_triangle(x[0], x[1], x[2]);
   if constexpr (H == 4) {
     const Vector3 other = closest_on_triangle(x[0], x[2], x[3]);
-    if (in::dot3(other, other) < in::dot3(closest, closest)) closest = other;
+    if (kernel::dot3(other, other) < kernel::dot3(closest, closest)) closest = other;
   }
   return closest;
 }
@@ -210,7 +209,7 @@ Vector3 closest_direction(const std::array<Vector3, H>& x) noexcept {
 /// it runs before root parity; where the filter cannot decide (a collision, a touch) it
 /// gives up at once. The other planes, with exact fallbacks, wait for an even parity.
 template <std::size_t C>
-bool separated_by_closest_direction(const in::Offsets<C>& a) noexcept {
+bool separated_by_closest_direction(const kernel::Offsets<C>& a) noexcept {
   const Vector3 closest = closest_direction(slice_corners(a, 0));
   return usable(closest) && on_one_side(a, closest, Certify::filter_only);
 }
@@ -225,7 +224,7 @@ bool separated_by_closest_direction(const in::Offsets<C>& a) noexcept {
 /// image. The normals are computed in plain doubles from the rounded corners: any normal
 /// will do, because the side of every corner is then certified.
 template <std::size_t C>
-bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
+bool separated_by_slice_planes(const kernel::Offsets<C>& a) noexcept {
   constexpr std::size_t H = C / 2;
   std::array<Vector3, 2> closest_of_slice{};
   for (std::size_t slice = 0; slice < 2; ++slice) {
@@ -233,12 +232,13 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
     const Vector3 closest = closest_direction(x);
     closest_of_slice[slice] = closest;
     if (usable(closest) && on_one_side(a, closest)) return true;
-    const Vector3 normal = H == 3 ? cross(in::difference(x[1], x[0]), in::difference(x[2], x[0]))
-                                  : cross(in::difference(x[2], x[0]), in::difference(x[3], x[1]));
+    const Vector3 normal =
+        H == 3 ? cross(kernel::difference(x[1], x[0]), kernel::difference(x[2], x[0]))
+               : cross(kernel::difference(x[2], x[0]), kernel::difference(x[3], x[1]));
     if (!usable(normal)) continue;
     if (on_one_side(a, normal)) return true;
     for (std::size_t k = 0; k < H; ++k) {
-      const Vector3 lateral = cross(in::difference(x[(k + 1) % H], x[k]), normal);
+      const Vector3 lateral = cross(kernel::difference(x[(k + 1) % H], x[k]), normal);
       if (usable(lateral) && on_one_side(a, lateral)) return true;
     }
   }
@@ -249,7 +249,7 @@ bool separated_by_slice_planes(const in::Offsets<C>& a) noexcept {
 /// Both tests; `filterable` false (a piece whose rounded corners are not within the
 /// filter's input model) leaves only the exact bounding-box test.
 template <std::size_t C>
-bool certainly_no_root(const in::Offsets<C>& a, bool filterable = true) noexcept {
+bool certainly_no_root(const kernel::Offsets<C>& a, bool filterable = true) noexcept {
   if (outside_bounding_box(a)) return true;
   return filterable && separated_by_slice_planes(a);
 }

@@ -53,7 +53,7 @@ RootParityResult root_parity(const Signs& signs, const BoundaryImage<C, F>& imag
     const Offset direction = Offset::vector(kRayDirections[k]);
     const auto rays = static_cast<std::uint8_t>(k + 1);
     // Every det3 sign of a ray test is on corners and the direction: one static bound.
-    const auto ray_signs = in::with_static_filter(signs, image.corners, kRayDirections[k]);
+    const auto ray_signs = kernel::with_static_filter(signs, image.corners, kRayDirections[k]);
     int crossings = 0;
     bool clean = true;
     for (std::size_t f = 0; f < F && clean; ++f) {

@@ -37,7 +37,7 @@
 #include "exactgeo/ccd/internal/culling.hpp"
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/time_pieces.hpp"
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -107,8 +107,8 @@ class RootSearch {
 
   static RootParity parity_of(const TimePiece<C>& piece) noexcept {
     const BoundaryImage<C, kDomainFaces<C>.size()> image{piece.offsets(), kDomainFaces<C>};
-    if (piece.filterable()) return root_parity(exactgeo::internal::ExactSigns{}, image).parity;
-    return root_parity(exactgeo::internal::RationalSigns{}, image).parity;
+    if (piece.filterable()) return root_parity(exactgeo::kernel::ExactSigns{}, image).parity;
+    return root_parity(exactgeo::kernel::RationalSigns{}, image).parity;
   }
 
   int max_depth_;

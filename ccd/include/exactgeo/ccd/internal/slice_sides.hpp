@@ -48,16 +48,16 @@
 
 #include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/coplanarity.hpp"
-#include "exactgeo/predicates/internal/formulas.hpp"
-#include "exactgeo/predicates/internal/offset.hpp"
-#include "exactgeo/predicates/internal/roundoff.hpp"
+#include "exactgeo/predicates/kernel/formulas.hpp"
+#include "exactgeo/predicates/kernel/offset.hpp"
+#include "exactgeo/predicates/kernel/roundoff.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
 namespace exactgeo::ccd::internal {
 
 namespace slice_sides_detail {
 
-using exactgeo::internal::Vec3;
+using exactgeo::kernel::Vec3;
 
 template <class T>
 constexpr Vec3<T> sum(const Vec3<T>& a, const Vec3<T>& b) {
@@ -91,8 +91,8 @@ constexpr T thrice(const T& x) {
 template <class T, std::size_t H>
 constexpr std::array<std::array<T, 5>, H> side_quartics(const std::array<Vec3<T>, H>& a,
                                                         const std::array<Vec3<T>, H>& b) {
-  using exactgeo::internal::difference;
-  using exactgeo::internal::dot3;
+  using exactgeo::kernel::difference;
+  using exactgeo::kernel::dot3;
   const auto n = cross_quadratic(difference(a[1], a[0]), difference(b[1], b[0]),
                                  difference(a[H - 1], a[0]), difference(b[H - 1], b[0]));
   std::array<std::array<T, 5>, H> sides{};
@@ -116,7 +116,7 @@ struct SideBound {
 
 template <std::size_t H>
 inline constexpr SideBound kSideBound = [] {
-  using R = exactgeo::internal::Roundoff<1>;
+  using R = exactgeo::kernel::Roundoff<1>;
   std::array<Vec3<R>, H> a{};
   std::array<Vec3<R>, H> b{};
   for (std::size_t k = 0; k < H; ++k) {
@@ -128,7 +128,7 @@ inline constexpr SideBound kSideBound = [] {
   SideBound bound{0.0, 0.0, 0.0, 0.0};
   for (const auto& quartic : side_quartics<R, H>(a, b)) {
     for (const R& coefficient : quartic) {
-      const auto filter = exactgeo::internal::derive_filter(coefficient);
+      const auto filter = exactgeo::kernel::derive_filter(coefficient);
       bound.epsilon = std::max(bound.epsilon, filter.epsilon);
       bound.magnitude =
           std::max(bound.magnitude, coefficient.magnitude().upper_bound_at_unit_roundoff());
@@ -150,7 +150,7 @@ class SliceSides {
   using Coefficients = std::array<Quartic, H>;
 
   /// From the step's corners (rounded differences); nullopt beyond the guard.
-  static std::optional<SliceSides> of(const exactgeo::internal::Offsets<C>& corners) noexcept {
+  static std::optional<SliceSides> of(const exactgeo::kernel::Offsets<C>& corners) noexcept {
     const std::array<Vec3, H> start = slice_corners(corners, 0);
     const std::array<Vec3, H> end = slice_corners(corners, 1);
     double largest = 0.0;
@@ -207,7 +207,7 @@ class SliceSides {
   }
 
  private:
-  using Vec3 = exactgeo::internal::Vec3<double>;
+  using Vec3 = exactgeo::kernel::Vec3<double>;
 
   bool all_beyond(const Quartic& q, Sign s) const noexcept {
     for (const double b : q) {

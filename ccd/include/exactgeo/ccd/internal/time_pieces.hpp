@@ -29,14 +29,14 @@
 #include <optional>
 #include <utility>
 
-#include "exactgeo/predicates/internal/exact_vector.hpp"
-#include "exactgeo/predicates/internal/offset.hpp"
+#include "exactgeo/predicates/kernel/exact_vector.hpp"
+#include "exactgeo/predicates/kernel/offset.hpp"
 
 namespace exactgeo::ccd::internal {
 
-using exactgeo::internal::ExactVector;
-using exactgeo::internal::Offset;
-using exactgeo::internal::Offsets;
+using exactgeo::kernel::ExactVector;
+using exactgeo::kernel::Offset;
+using exactgeo::kernel::Offsets;
 using Coordinate = ExactVector::Coordinate;
 
 template <std::size_t C>
@@ -128,7 +128,7 @@ bool complete_corners(std::array<ExactVector, C>& corners) noexcept {
     }
   }
   for (ExactVector& corner : corners)
-    exactgeo::internal::complete_exact_vector(corner);
+    exactgeo::kernel::complete_exact_vector(corner);
   return true;
 }
 
@@ -158,8 +158,8 @@ std::optional<TimePiece<C>> whole_step(const Offsets<C>& corners) noexcept {
       const double head = corners[k].head(axis);
       const double tail = corners[k].tail(axis);
       piece->corners[k].exact[axis] = s == 0
-                                          ? exactgeo::internal::Expansion<2>::difference(head, tail)
-                                          : exactgeo::internal::Expansion<2>::difference(
+                                          ? exactgeo::kernel::Expansion<2>::difference(head, tail)
+                                          : exactgeo::kernel::Expansion<2>::difference(
                                                 std::ldexp(head, s), std::ldexp(tail, s));
     }
   }

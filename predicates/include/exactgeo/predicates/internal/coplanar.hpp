@@ -16,9 +16,12 @@
 #include <cstddef>
 #include <optional>
 
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::internal {
+
+using kernel::coordinate_sign;
+using kernel::Offset;
 
 struct Projection {
   enum class Kind { plane, line };

@@ -8,10 +8,15 @@
 #include <optional>
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
-#include "exactgeo/predicates/internal/error_free.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
+#include "exactgeo/predicates/kernel/error_free.hpp"
 
 namespace exactgeo::internal {
+
+using kernel::Offset;
+using kernel::Offsets;
+using kernel::two_diff;
+using kernel::TwoTerm;
 
 /// Corners in the internal order x0 = p00, x1 = p10, x2 = p01, x3 = p11.
 inline std::array<Point3, 4> internal_corners(const BilinearPatch& p) noexcept {

@@ -52,6 +52,9 @@
 
 namespace exactgeo::internal {
 
+using kernel::Offset;
+using kernel::Offsets;
+
 /// What the ray test needs to know about a patch independently of the ray: computed once
 /// per patch (patch_frame.hpp).
 struct PatchFrame {

@@ -26,6 +26,8 @@
 
 namespace exactgeo::internal {
 
+using kernel::Offset;
+
 /// Classification from precomputed edge signs; `plane_side` is det[a, b, c] when the
 /// caller already has it (computed here otherwise, and only when needed).
 template <class Signs>

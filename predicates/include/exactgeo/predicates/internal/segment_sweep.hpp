@@ -23,11 +23,16 @@
 
 #include <array>
 
-#include "exactgeo/predicates/internal/formulas.hpp"
-#include "exactgeo/predicates/internal/rational.hpp"
+#include "exactgeo/predicates/kernel/formulas.hpp"
+#include "exactgeo/predicates/kernel/rational.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
 namespace exactgeo::internal {
+
+using kernel::cross2;
+using kernel::dot3;
+using kernel::Rational;
+using kernel::Vec3;
 
 inline Sign sign_of_number(double x) noexcept {
   return sign_of(x);

@@ -9,7 +9,7 @@
 #include <array>
 #include <cstddef>
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 template <class T>
 using Vec3 = std::array<T, 3>;
@@ -69,4 +69,4 @@ constexpr auto bilinear_phi(const Vec3<T>& a0, const Vec3<T>& a1, const Vec3<T>&
   return det3(a0, a1, a2) * det3(a1, a3, a2) - det3(a0, a1, a3) * det3(a0, a3, a2);
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -21,7 +21,7 @@
 #error "exactgeo predicates must not be compiled with fast-math optimizations"
 #endif
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 struct TwoTerm {
   double head;
@@ -71,4 +71,4 @@ inline TwoTerm two_product(double a, double b) noexcept {
 #endif
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -1,6 +1,6 @@
 // Error-free transformations and expansion arithmetic against GMP rationals.
 
-#include "exactgeo/predicates/internal/expansion.hpp"
+#include "exactgeo/predicates/kernel/expansion.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 namespace {
 
 using testing::Rng;
@@ -142,4 +142,4 @@ TEST(Expansion, NarrowFitsOrSaysSo) {
 }
 
 }  // namespace
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

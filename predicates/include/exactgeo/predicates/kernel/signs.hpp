@@ -20,10 +20,10 @@
 #include <utility>
 
 #include "exactgeo/predicates/arithmetic.hpp"
-#include "exactgeo/predicates/internal/exact_stages.hpp"
-#include "exactgeo/predicates/internal/filter.hpp"
+#include "exactgeo/predicates/kernel/exact_stages.hpp"
+#include "exactgeo/predicates/kernel/filter.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 /// How many signs each stage decided.
 struct StageCounts {
@@ -282,4 +282,4 @@ inline Sign coordinate_sign(const Offset& v, int axis) noexcept {
   return sign_of(v.head(axis) - v.tail(axis));
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

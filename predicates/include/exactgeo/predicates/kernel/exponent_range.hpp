@@ -28,7 +28,7 @@
 #include <cstdint>
 #include <optional>
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 class ExponentRange {
  public:
@@ -70,4 +70,4 @@ class ExponentRange {
   bool nonzero_ = false;
 };
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

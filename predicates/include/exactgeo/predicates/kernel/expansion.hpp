@@ -18,10 +18,10 @@
 #include <cstddef>
 #include <optional>
 
-#include "exactgeo/predicates/internal/error_free.hpp"
+#include "exactgeo/predicates/kernel/error_free.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 namespace expansion_detail {
 
@@ -241,4 +241,4 @@ Expansion<2 * N * M> operator*(const Expansion<N>& a, const Expansion<M>& b) noe
   }
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -7,7 +7,7 @@
 
 #include "exactgeo/predicates/sign.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 /// A thin value wrapper around mpq_class. Its operators return values, not GMP
 /// expression templates, so generic formulas can hold intermediate results in `auto`.
@@ -45,4 +45,4 @@ class Rational {
   mpq_class q_;
 };
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -49,7 +49,7 @@
 #include <array>
 #include <cstddef>
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 /// A polynomial sum_k c_k u^k in the unit roundoff u = 2^-53, with nonnegative integer
 /// coefficients. Terms beyond kMaxPower are folded into the u^kMaxPower coefficient,
@@ -234,4 +234,4 @@ constexpr FilterConstant<G> derive_filter(const Roundoff<G>& r) {
   return c;
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

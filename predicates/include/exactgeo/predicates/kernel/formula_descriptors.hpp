@@ -7,11 +7,11 @@
 
 #include <optional>
 
-#include "exactgeo/predicates/internal/expansion.hpp"
-#include "exactgeo/predicates/internal/formulas.hpp"
+#include "exactgeo/predicates/kernel/expansion.hpp"
+#include "exactgeo/predicates/kernel/formulas.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 /// Default: every coordinate of every input vector is read.
 struct ReadsAllCoordinates {
@@ -93,4 +93,4 @@ struct TriangleNormalFormula {
   }
 };
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -15,11 +15,11 @@
 #include <array>
 #include <cstddef>
 
-#include "exactgeo/predicates/internal/exact_vector.hpp"
-#include "exactgeo/predicates/internal/formulas.hpp"
+#include "exactgeo/predicates/kernel/exact_vector.hpp"
+#include "exactgeo/predicates/kernel/formulas.hpp"
 #include "exactgeo/predicates/point.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 inline constexpr Point3 kZeroPoint{0.0, 0.0, 0.0};
 /// The tail of every Offset that views an ExactVector (its address marks the kind).
@@ -83,4 +83,4 @@ class Offset {
 template <std::size_t N>
 using Offsets = std::array<Offset, N>;
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

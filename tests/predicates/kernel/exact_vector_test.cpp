@@ -2,7 +2,7 @@
 // model, and every predicate answers on them exactly as on the same vectors given as
 // differences of doubles, checked against the independent rational oracle.
 
-#include "exactgeo/predicates/internal/exact_vector.hpp"
+#include "exactgeo/predicates/kernel/exact_vector.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 
 #include "exactgeo/predicates/internal/patch_frame.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
-#include "exactgeo/predicates/internal/sign_policies.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 #include "support/generators.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
@@ -19,8 +19,8 @@
 namespace exactgeo {
 namespace {
 
-using internal::ExactVector;
-using internal::Offset;
+using kernel::ExactVector;
+using kernel::Offset;
 using testing::Rng;
 
 mpq_class exact_value(const ExactVector::Coordinate& e) {
@@ -34,8 +34,8 @@ mpq_class exact_value(const ExactVector::Coordinate& e) {
 ExactVector exact_difference(const Point3& head, const Point3& tail) {
   std::array<ExactVector::Coordinate, 3> c;
   for (int axis = 0; axis < 3; ++axis)
-    c[axis] = internal::Expansion<2>::difference(head[axis], tail[axis]);
-  return internal::make_exact_vector(c);
+    c[axis] = kernel::Expansion<2>::difference(head[axis], tail[axis]);
+  return kernel::make_exact_vector(c);
 }
 
 /// A double with a random exponent in [lo, hi] and a random sign.
@@ -58,7 +58,7 @@ TEST(ExactVector, RoundedValueIsWithinTheFilterInputModel) {
       x = *(x + ExactVector::Coordinate(term)).compress().narrow<ExactVector::kCapacity>();
     }
     if (i % 7 == 0) x = *(x - ExactVector::Coordinate(x.head())).compress().narrow<8>();
-    const ExactVector v = internal::make_exact_vector({x, x, x});
+    const ExactVector v = kernel::make_exact_vector({x, x, x});
     const mpq_class exact = exact_value(x);
     ASSERT_TRUE(v.filterable);
     ASSERT_EQ(sgn(mpq_class(v.rounded[0])), sgn(exact));
@@ -75,12 +75,11 @@ TEST(ExactVector, ExtremeValues) {
   // Below 2^-1021 every sum of doubles is itself a double (all are multiples of 2^-1074):
   // it compresses to one exact component.
   const ExactVector::Coordinate tiny =
-      *(internal::Expansion<1>(0x1p-1074) + internal::Expansion<1>(-0x1p-1030)).narrow<8>();
+      *(kernel::Expansion<1>(0x1p-1074) + kernel::Expansion<1>(-0x1p-1030)).narrow<8>();
   // Near the top of the range: a quarter ulp below the largest double.
   const ExactVector::Coordinate huge =
-      *(internal::Expansion<1>(0x1.fffffffffffffp1023) + internal::Expansion<1>(-0x1p969))
-           .narrow<8>();
-  const ExactVector v = internal::make_exact_vector({tiny, huge, {}});
+      *(kernel::Expansion<1>(0x1.fffffffffffffp1023) + kernel::Expansion<1>(-0x1p969)).narrow<8>();
+  const ExactVector v = kernel::make_exact_vector({tiny, huge, {}});
   EXPECT_EQ(v.exact[0].size(), 1);
   EXPECT_EQ(v.rounded[0], -0x1p-1030 + 0x1p-1074);
   EXPECT_EQ(v.exact[1].size(), 2);
@@ -96,16 +95,16 @@ void expect_exact_vector_corners_match_oracle(const Point3& o, const Vector3& d,
   const auto x = internal::internal_corners(p);
   const std::array<ExactVector, 4> e{exact_difference(x[0], o), exact_difference(x[1], o),
                                      exact_difference(x[2], o), exact_difference(x[3], o)};
-  const internal::Offsets<4> a{Offset::exact(e[0]), Offset::exact(e[1]), Offset::exact(e[2]),
-                               Offset::exact(e[3])};
+  const kernel::Offsets<4> a{Offset::exact(e[0]), Offset::exact(e[1]), Offset::exact(e[2]),
+                             Offset::exact(e[3])};
   const Offset direction = Offset::vector(d);
   const RayPatch expected = testing::ray_patch_oracle(o, d, p);
   auto answer = [&](const auto& signs) {
     return internal::ray_patch_parity_offsets(signs, internal::patch_frame_from_offsets(signs, a),
                                               a, direction);
   };
-  ASSERT_EQ(answer(internal::ExactSigns{}), expected);
-  ASSERT_EQ(answer(internal::RationalSigns{}), expected);
+  ASSERT_EQ(answer(kernel::ExactSigns{}), expected);
+  ASSERT_EQ(answer(kernel::RationalSigns{}), expected);
 }
 
 TEST(ExactVector, RayPatchOnExactVectorCornersAgreesWithOracle) {
@@ -142,11 +141,11 @@ TEST(ExactVector, ExactEqualityAndParallelograms) {
   const ExactVector x1 = exact_difference({1, 1, 0}, {0.1, 0, 0});
   const ExactVector x2 = exact_difference({1, 0, 1}, {0.1, 0, 0});
   const ExactVector x3 = exact_difference({1, 1, 1}, {0.1, 0, 0});
-  const internal::Offsets<4> square{Offset::exact(x0), Offset::exact(x1), Offset::exact(x2),
-                                    Offset::exact(x3)};
+  const kernel::Offsets<4> square{Offset::exact(x0), Offset::exact(x1), Offset::exact(x2),
+                                  Offset::exact(x3)};
   EXPECT_TRUE(internal::certainly_parallelogram(square));
-  const internal::Offsets<4> skewed{Offset::exact(x0), Offset::exact(x1), Offset::exact(x2),
-                                    Offset::exact(c)};
+  const kernel::Offsets<4> skewed{Offset::exact(x0), Offset::exact(x1), Offset::exact(x2),
+                                  Offset::exact(c)};
   EXPECT_FALSE(internal::certainly_parallelogram(skewed));
 }
 

@@ -12,14 +12,14 @@
 #include <cstddef>
 #include <optional>
 
-#include "exactgeo/predicates/internal/expansion.hpp"
-#include "exactgeo/predicates/internal/exponent_range.hpp"
-#include "exactgeo/predicates/internal/formula_descriptors.hpp"
-#include "exactgeo/predicates/internal/offset.hpp"
-#include "exactgeo/predicates/internal/rational.hpp"
+#include "exactgeo/predicates/kernel/expansion.hpp"
+#include "exactgeo/predicates/kernel/exponent_range.hpp"
+#include "exactgeo/predicates/kernel/formula_descriptors.hpp"
+#include "exactgeo/predicates/kernel/offset.hpp"
+#include "exactgeo/predicates/kernel/rational.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 // The exact stages are kept out of line and marked cold, so that their kilobytes of
 // stack-allocated expansions are not part of the frame of every (filtered) sign.
@@ -102,4 +102,4 @@ template <class Formula, std::size_t N>
   return Formula::evaluate(rational_vectors(in), parameter).sign();
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -1,8 +1,8 @@
 // Soundness of each stage on its own: whenever the filter or the expansion stage answers,
 // it agrees with the independent oracle, and each answers where it should.
 
-#include "exactgeo/predicates/internal/exact_stages.hpp"
-#include "exactgeo/predicates/internal/filter.hpp"
+#include "exactgeo/predicates/kernel/exact_stages.hpp"
+#include "exactgeo/predicates/kernel/filter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,7 @@
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 namespace {
 
 using testing::Rng;
@@ -136,4 +136,4 @@ TEST(ExponentRange, ScalesUpSubnormalsAndDownHugeValues) {
 }
 
 }  // namespace
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

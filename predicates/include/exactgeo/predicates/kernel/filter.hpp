@@ -11,12 +11,12 @@
 #include <optional>
 #include <utility>
 
-#include "exactgeo/predicates/internal/formula_descriptors.hpp"
-#include "exactgeo/predicates/internal/offset.hpp"
-#include "exactgeo/predicates/internal/roundoff.hpp"
+#include "exactgeo/predicates/kernel/formula_descriptors.hpp"
+#include "exactgeo/predicates/kernel/offset.hpp"
+#include "exactgeo/predicates/kernel/roundoff.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 /// How the filter normalises its inputs. The bound is epsilon * prod_g m_g^deg_g with m_g
 /// the largest |input| of group g; any grouping in which the formula is homogeneous is
@@ -186,4 +186,4 @@ inline std::optional<Sign> filtered_sign(const Offsets<N>& in, int parameter) no
   return std::nullopt;
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -19,10 +19,10 @@
 #include <cmath>
 #include <optional>
 
-#include "exactgeo/predicates/internal/expansion.hpp"
+#include "exactgeo/predicates/kernel/expansion.hpp"
 #include "exactgeo/predicates/point.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 
 struct ExactVector {
   /// Enough for a dyadic combination of four doubles: four blocks of at most 53 + 52 bits,
@@ -117,4 +117,4 @@ inline ExactVector make_exact_vector(const std::array<ExactVector::Coordinate, 3
   return v;
 }
 
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel

@@ -1,19 +1,19 @@
 // The filter constants: derived at compile time by roundoff.hpp, checked here against
 // independent hand derivations, a published value, and measured errors.
 
-#include "exactgeo/predicates/internal/roundoff.hpp"
+#include "exactgeo/predicates/kernel/roundoff.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "exactgeo/predicates/internal/exact_stages.hpp"
-#include "exactgeo/predicates/internal/filter.hpp"
+#include "exactgeo/predicates/kernel/exact_stages.hpp"
+#include "exactgeo/predicates/kernel/filter.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
-namespace exactgeo::internal {
+namespace exactgeo::kernel {
 namespace {
 
 constexpr double u = 0x1p-53;
@@ -109,4 +109,4 @@ TEST(FilterConstant, Det3BoundHoldsOnNearDegenerateInputs) {
 }
 
 }  // namespace
-}  // namespace exactgeo::internal
+}  // namespace exactgeo::kernel
