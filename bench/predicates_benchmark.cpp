@@ -18,7 +18,8 @@
 #include <vector>
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
-#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/crossing_parity.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 
 namespace {
@@ -167,13 +168,18 @@ void BM_ray_patch(benchmark::State& state, Kind kind, Arithmetic arithmetic) {
 }
 
 exactgeo::kernel::StageCounts ray_patch_stages(Kind kind) {
-  namespace in = exactgeo::internal;
+  using exactgeo::kernel::Offset;
   exactgeo::kernel::StageCounts counts;
   const exactgeo::kernel::ExactSigns signs(&counts);
+  constexpr auto face = exactgeo::SurfaceFace::patch(0, 1, 2, 3);
   for (const auto& c : ray_patch_cases(kind)) {
-    const auto x = in::internal_corners(c.patch);
-    in::ray_patch_parity_offsets(signs, in::patch_frame(signs, x), in::offsets_from(c.origin, x),
-                                 exactgeo::kernel::Offset::vector(c.direction));
+    const std::array<exactgeo::Point3, 4> corners{c.patch.p00, c.patch.p10, c.patch.p11,
+                                                  c.patch.p01};
+    const auto corner = [&](exactgeo::VertexIndex i) {
+      return Offset::between(c.origin, corners[i]);
+    };
+    exactgeo::cross_face(signs, face, exactgeo::frame_of(signs, face, corners), corner,
+                         Offset::vector(c.direction));
   }
   return counts;
 }

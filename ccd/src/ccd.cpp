@@ -35,13 +35,13 @@ Arithmetic parity_arithmetic(Method m) noexcept {
 
 template <class Query>
 Result exact_ccd(const Query& query, const Options& options) noexcept {
-  const auto image = internal::boundary_image(query);
+  const auto corners = internal::corner_images(query);
   // The cheap cull first: exact coordinate signs, a few nanoseconds.
-  if (internal::outside_bounding_box(image.corners)) return {false, Stage::culled, 0, {}};
+  if (internal::outside_bounding_box(corners)) return {false, Stage::culled, 0, {}};
   // Then one certified separating plane, before parity: most queries a broad phase
   // proposes are near misses, which it settles for a fraction of parity's cost. The
   // other planes cost more and wait for an even parity.
-  if (internal::separated_by_closest_direction(image.corners)) {
+  if (internal::separated_by_closest_direction(corners)) {
     return {false, Stage::culled, 0, {}};
   }
   const bool toi = options.time_of_impact_width.has_value();
@@ -53,14 +53,14 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   // A coplanarity cubic without a zero proves that there is no root, for a few double
   // operations. With the slice's side quartics it often decides the whole question
   // (collision only, not where the earliest root is; polynomial_decision.hpp).
-  constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
-  const auto coplanarity = internal::Coplanarity::of(image.corners);
+  constexpr std::size_t C = std::tuple_size_v<decltype(corners)>;
+  const auto coplanarity = internal::Coplanarity::of(corners);
   if (coplanarity && coplanarity->nonzero(coplanarity->whole_step())) {
     return {false, Stage::culled, 0, {}};
   }
   auto decided_by_polynomials = [&]() -> std::optional<Result> {
     if (toi || !coplanarity) return std::nullopt;
-    const auto sides = internal::SliceSides<C>::of(image.corners);
+    const auto sides = internal::SliceSides<C>::of(corners);
     if (!sides) return std::nullopt;
     switch (internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget)) {
       case internal::PieceVerdict::no_root:
@@ -81,7 +81,7 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   if (dips) {
     if (const auto result = decided_by_polynomials()) return *result;
   }
-  const RootParity parity = internal::root_parity(exactgeo::kernel::ExactSigns{}, image).parity;
+  const RootParity parity = internal::root_parity(exactgeo::kernel::ExactSigns{}, corners).parity;
   if (parity != RootParity::even && !toi) return collision(Stage::parity, 0, {});
   if (parity == RootParity::even) {
     if (!dips) {
@@ -89,10 +89,10 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
     }
     // Where the cubic dips, the planes of the whole step rarely separate: the search
     // splits first. Otherwise the planes are tried on the whole step.
-    if (!dips && internal::certainly_no_root(image.corners)) return {false, Stage::culled, 0, {}};
+    if (!dips && internal::certainly_no_root(corners)) return {false, Stage::culled, 0, {}};
   }
   const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
-  const auto piece = internal::whole_step<C>(image.corners);
+  const auto piece = internal::whole_step<C>(corners);
   if (!piece) {  // corners beyond exact storage: report the step, unproven if even
     return collision(parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0, {});
   }

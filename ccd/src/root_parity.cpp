@@ -7,15 +7,15 @@ namespace exactgeo::ccd {
 
 RootParityResult vertex_face_root_parity(const VertexFaceQuery& query,
                                          Arithmetic arithmetic) noexcept {
-  const auto image = internal::boundary_image(query);
+  const auto corners = internal::corner_images(query);
   return exactgeo::kernel::with_signs(
-      arithmetic, [&](const auto& signs) { return internal::root_parity(signs, image); });
+      arithmetic, [&](const auto& signs) { return internal::root_parity(signs, corners); });
 }
 
 RootParityResult edge_edge_root_parity(const EdgeEdgeQuery& query, Arithmetic arithmetic) noexcept {
-  const auto image = internal::boundary_image(query);
+  const auto corners = internal::corner_images(query);
   return exactgeo::kernel::with_signs(
-      arithmetic, [&](const auto& signs) { return internal::root_parity(signs, image); });
+      arithmetic, [&](const auto& signs) { return internal::root_parity(signs, corners); });
 }
 
 }  // namespace exactgeo::ccd

@@ -5,10 +5,9 @@
 
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/mesh/check.hpp"
-#include "exactgeo/predicates/bilinear_patch.hpp"
-#include "exactgeo/predicates/crossing.hpp"
+#include "exactgeo/predicates/crossing_parity.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
-#include "exactgeo/predicates/ray_triangle.hpp"
 
 namespace exactgeo::inside {
 namespace {
@@ -18,18 +17,29 @@ namespace {
 /// V + 2 (E + F) directions are degenerate (ray_directions.hpp), fewer than 2^25 for any
 /// mesh below about four million faces.
 constexpr std::size_t kExactDirections = std::size_t{1} << 25;
-/// Plain double signs can call every ray degenerate; after this many it counts anyway.
+/// Plain double signs can call every ray degenerate; after this many the point is called
+/// outside (a wrong answer is what that baseline may give).
 constexpr std::size_t kPlainDoubleDirections = 64;
 
-Crossing cross(const mesh::Mesh& mesh, const mesh::Face& face, const Point3& origin,
-               const Vector3& direction, Arithmetic arithmetic) noexcept {
-  if (face.is_triangle()) {
-    const auto& v = mesh.vertices;
-    return crossing_of(classify_ray_triangle(origin, direction, v[face.corners[0]],
-                                             v[face.corners[1]], v[face.corners[2]], arithmetic)
-                           .kind);
+/// The mesh's faces as a face set over its vertices: quads as patches, in tensor order.
+std::vector<SurfaceFace> surface_faces(const mesh::Mesh& mesh) {
+  std::vector<SurfaceFace> faces;
+  faces.reserve(mesh.faces.size());
+  for (const mesh::Face& f : mesh.faces) {
+    const auto& c = f.corners;
+    faces.push_back(f.is_triangle() ? SurfaceFace::triangle(c[0], c[1], c[2])
+                                    : SurfaceFace::patch(c[0], c[1], c[2], c[3]));
   }
-  return crossing_of(ray_patch_parity(origin, direction, mesh::patch_of(mesh, face), arithmetic));
+  return faces;
+}
+
+template <class Signs>
+std::vector<PatchFrame> frames_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
+                                  std::span<const Point3> points) {
+  std::vector<PatchFrame> frames(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    frames[f] = frame_of(signs, faces[f], points);
+  return frames;
 }
 
 bool strictly_outside(const mesh::Box& box, const Point3& p) noexcept {
@@ -56,7 +66,17 @@ std::string_view to_string(Location location) noexcept {
 struct Classifier::State {
   mesh::Mesh mesh;
   mesh::Box box;
+  std::vector<SurfaceFace> faces;
+  /// Every face's frame, found once with exact signs (for the exact and rational
+  /// arithmetics, which agree on every sign) and with plain double signs (for the baseline,
+  /// which runs the whole algorithm in doubles).
+  std::vector<PatchFrame> exact_frames;
+  std::vector<PatchFrame> double_frames;
   std::optional<internal::EmbreeCandidates> embree;
+
+  PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
+    return {faces, arithmetic == Arithmetic::plain_double ? double_frames : exact_frames};
+  }
 };
 
 Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
@@ -65,9 +85,13 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
     throw std::invalid_argument(*problem);
   }
-  state_->box = *check.bounding_box;
-  state_->mesh = std::move(mesh);
-  if (options.candidates == CandidateSearch::embree) state_->embree.emplace(state_->mesh);
+  State& s = *state_;
+  s.box = *check.bounding_box;
+  s.mesh = std::move(mesh);
+  s.faces = surface_faces(s.mesh);
+  s.exact_frames = frames_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
+  s.double_frames = frames_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
+  if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh);
 }
 
 Classifier::~Classifier() = default;
@@ -86,35 +110,37 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const 
 Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
                               ClassifierScratch& scratch) const {
   // The solid lies in the convex hull of its surface, hence in the box.
-  if (strictly_outside(state_->box, point)) return Location::outside;
+  const State& s = *state_;
+  if (strictly_outside(s.box, point)) return Location::outside;
 
-  const mesh::Mesh& mesh = state_->mesh;
-  const bool exact = arithmetic != Arithmetic::plain_double;
-  const std::size_t directions = exact ? kExactDirections : kPlainDoubleDirections;
-  bool odd = false;
-  for (std::size_t k = 0; k < directions; ++k) {
-    if (state_->embree && k < kFloatExactRayDirections) {
-      state_->embree->find(point, k, scratch.candidates);
-    } else {
-      internal::all_faces(mesh, scratch.candidates);
-    }
-    const Vector3 direction = ray_direction(k);
-    odd = false;
-    bool clean = true;
-    for (const internal::FaceIndex f : scratch.candidates) {
-      const Crossing c = cross(mesh, mesh.faces[f], point, direction, arithmetic);
-      if (c == Crossing::origin_on) return Location::boundary;
-      if (c == Crossing::ambiguous) {
-        clean = false;
-        if (exact) break;  // plain double may keep counting: it may never see a clean ray
+  const PreparedFaces faces = s.prepared(arithmetic);
+  const auto corner = [&](VertexIndex i) {
+    return kernel::Offset::between(point, s.mesh.vertices[i]);
+  };
+  const std::size_t max_rays =
+      arithmetic == Arithmetic::plain_double ? kPlainDoubleDirections : kExactDirections;
+  const auto found = kernel::with_signs(arithmetic, [&](const auto& signs) {
+    return crossing_parity(max_rays, [&](std::size_t k) {
+      if (s.embree && k < kFloatExactRayDirections) {
+        s.embree->find(point, k, scratch.candidates);
+      } else {
+        internal::all_faces(s.mesh, scratch.candidates);
       }
-      if (c == Crossing::crossed) odd = !odd;
-    }
-    if (clean) return odd ? Location::inside : Location::outside;
+      const Vector3 direction = ray_direction(k);
+      return count_crossings(signs, faces, scratch.candidates, corner,
+                             kernel::Offset::vector(direction));
+    });
+  });
+  if (!found) return Location::outside;  // plain double only (see kPlainDoubleDirections)
+  switch (found->parity) {
+    case CrossingParity::even:
+      return Location::outside;
+    case CrossingParity::odd:
+      return Location::inside;
+    case CrossingParity::on_surface:
+      break;
   }
-  // Plain double only (see kExactDirections): the last ray's count, degenerate faces
-  // counted as not crossed.
-  return odd ? Location::inside : Location::outside;
+  return Location::boundary;
 }
 
 }  // namespace exactgeo::inside

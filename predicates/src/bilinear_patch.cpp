@@ -44,14 +44,14 @@ std::string_view to_string(RayPatch r) noexcept {
 
 PatchShape classify_patch(const BilinearPatch& patch) noexcept {
   const kernel::ExactSigns signs;
-  const auto x = internal::internal_corners(patch);
-  const internal::PatchFrame frame = internal::patch_frame(signs, x);
+  const auto x = internal::tensor_corners(patch);
+  const PatchFrame frame = internal::patch_frame(signs, x);
   switch (frame.kind) {
-    case internal::PatchFrame::Kind::skew:
+    case PatchFrame::Kind::skew:
       return PatchShape::skew;
-    case internal::PatchFrame::Kind::collinear:
+    case PatchFrame::Kind::collinear:
       return x[0] == x[1] && x[0] == x[2] && x[0] == x[3] ? PatchShape::point : PatchShape::segment;
-    case internal::PatchFrame::Kind::planar:
+    case PatchFrame::Kind::planar:
       break;
   }
   const int k = *internal::normal_axis(signs, x, frame.plane_triple);
@@ -69,7 +69,7 @@ PatchShape classify_patch(const BilinearPatch& patch) noexcept {
 
 RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
                           const BilinearPatch& patch, Arithmetic arithmetic) noexcept {
-  const auto x = internal::internal_corners(patch);
+  const auto x = internal::tensor_corners(patch);
   return kernel::with_signs(arithmetic, [&](const auto& signs) {
     return internal::ray_patch_parity_offsets(signs, internal::patch_frame(signs, x),
                                               internal::offsets_from(origin, x),
@@ -78,7 +78,7 @@ RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
 }
 
 Sign patch_side(const BilinearPatch& patch, const Point3& x, Arithmetic arithmetic) noexcept {
-  const auto corners = internal::internal_corners(patch);
+  const auto corners = internal::tensor_corners(patch);
   return kernel::with_signs(
       arithmetic, [&](const auto& signs) { return signs.phi(internal::offsets_from(x, corners)); });
 }

@@ -50,8 +50,8 @@ struct Tally {
 /// Walks `paths` random split paths of the query's step and checks every claim made.
 template <class Query>
 void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
-  const auto image = internal::boundary_image(q);
-  const auto certificate = internal::Coplanarity::of(image.corners);
+  const auto corners = internal::corner_images(q);
+  const auto certificate = internal::Coplanarity::of(corners);
   if (!certificate) return;
   Polynomial p = coplanarity_oracle(q);
   trim(p);
@@ -122,7 +122,7 @@ TEST(Coplanarity, NoCertificateBeyondTheFilterGuard) {
   // Corners near the top of the double range: the products would overflow.
   const VertexFaceQuery q{{0x1p1000, 0, 0}, {0, 0x1p1000, 0}, {0, 0, 0x1p1000}, {1, 1, 1},
                           {0x1p1000, 1, 0}, {0, 0x1p1000, 1}, {1, 0, 0x1p1000}, {2, 1, 1}};
-  EXPECT_FALSE(internal::Coplanarity::of(internal::boundary_image(q).corners).has_value());
+  EXPECT_FALSE(internal::Coplanarity::of(internal::corner_images(q)).has_value());
 }
 
 }  // namespace

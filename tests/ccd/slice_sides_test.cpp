@@ -70,9 +70,9 @@ struct Tally {
 
 template <class Query>
 void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
-  const auto image = internal::boundary_image(q);
-  using Sides = internal::SliceSides<std::tuple_size_v<decltype(image.corners)>>;
-  const std::optional<Sides> sides = Sides::of(image.corners);
+  const auto corners = internal::corner_images(q);
+  using Sides = internal::SliceSides<std::tuple_size_v<decltype(corners)>>;
+  const std::optional<Sides> sides = Sides::of(corners);
   if (!sides) return;
   const std::vector<Polynomial> exact = side_oracle(q);
   for (int path = 0; path < paths; ++path) {
@@ -102,9 +102,9 @@ void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
 /// threshold of the exact one (times 12): the bound the certificate rests on, measured.
 template <class Query>
 double worst_error_ratio(const Query& q, Rng& rng) {
-  const auto image = internal::boundary_image(q);
-  using Sides = internal::SliceSides<std::tuple_size_v<decltype(image.corners)>>;
-  const std::optional<Sides> sides = Sides::of(image.corners);
+  const auto corners = internal::corner_images(q);
+  using Sides = internal::SliceSides<std::tuple_size_v<decltype(corners)>>;
+  const std::optional<Sides> sides = Sides::of(corners);
   if (!sides) return 0.0;
   const std::vector<Polynomial> exact = side_oracle(q);
   double worst = 0.0;
@@ -184,10 +184,10 @@ void check_decisions(const char* stream) {
   for (int i = 0; i < 3000; ++i) {
     Query q = varied_query<Query>(rng, i);
     if (i % 8 == 7) q = time_reversed(q);
-    const auto image = internal::boundary_image(q);
-    constexpr std::size_t C = std::tuple_size_v<decltype(image.corners)>;
-    const auto coplanarity = internal::Coplanarity::of(image.corners);
-    const auto sides = internal::SliceSides<C>::of(image.corners);
+    const auto corners = internal::corner_images(q);
+    constexpr std::size_t C = std::tuple_size_v<decltype(corners)>;
+    const auto coplanarity = internal::Coplanarity::of(corners);
+    const auto sides = internal::SliceSides<C>::of(corners);
     if (!coplanarity || !sides) continue;
     const internal::PieceVerdict verdict =
         internal::decide_by_polynomials<C>(*coplanarity, *sides, {16, 64});

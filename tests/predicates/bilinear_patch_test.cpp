@@ -307,15 +307,15 @@ TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
                           : BilinearPatch{testing::random_point(rng), testing::random_point(rng),
                                           testing::random_point(rng), testing::random_point(rng)};
     if (i % 3 == 1) p.p11 = testing::rounded_affine(p.p00, p.p10, p.p01, 1, 1);  // nearly flat
-    const auto x = internal::internal_corners(p);
+    const auto x = internal::tensor_corners(p);
     const Point3 origin = i % 2 ? testing::random_point(rng, 4) : testing::integer_point(rng, 3);
     const kernel::ExactSigns signs;
-    const internal::PatchFrame expected = internal::patch_frame(signs, x);
-    const internal::PatchFrame got =
+    const PatchFrame expected = internal::patch_frame(signs, x);
+    const PatchFrame got =
         internal::patch_frame_from_offsets(signs, internal::offsets_from(origin, x));
     ASSERT_EQ(got.kind, expected.kind) << describe(origin, {0, 0, 0}, p);
     ASSERT_EQ(got.volume, expected.volume);
-    if (got.kind == internal::PatchFrame::Kind::planar) {
+    if (got.kind == PatchFrame::Kind::planar) {
       // Any non-collinear triple will do; it must really be one.
       ASSERT_NE(testing::patch_shape_oracle(p), PatchShape::skew);
     }
@@ -348,7 +348,7 @@ TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
     // Side patch over the edge (f, g): p00 = v0 - f0, p10 = v1 - f1, p11 = v1 - g1, p01 = v0 - g0.
     const kernel::Offsets<4> a{kernel::Offset::between(f0, v0), kernel::Offset::between(f1, v1),
                                kernel::Offset::between(g0, v0), kernel::Offset::between(g1, v1)};
-    const internal::PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
+    const PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
     ++kinds[static_cast<int>(frame.kind)];
     std::array<Q, 4> c{exact(a[0]), exact(a[1]), exact(a[2]), exact(a[3])};
     const Q n012 = cross(sub(c[1], c[0]), sub(c[2], c[0]));
@@ -360,16 +360,16 @@ TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
       all_collinear &= is_zero(cross(sub(c[t[1]], c[t[0]]), sub(c[t[2]], c[t[0]])));
     }
     switch (frame.kind) {
-      case internal::PatchFrame::Kind::skew:
+      case PatchFrame::Kind::skew:
         ASSERT_NE(volume, 0);
         break;
-      case internal::PatchFrame::Kind::planar: {
+      case PatchFrame::Kind::planar: {
         ASSERT_EQ(volume, 0);
         const auto& t = frame.plane_triple;
         ASSERT_FALSE(is_zero(cross(sub(c[t[1]], c[t[0]]), sub(c[t[2]], c[t[0]]))));
         break;
       }
-      case internal::PatchFrame::Kind::collinear:
+      case PatchFrame::Kind::collinear:
         ASSERT_TRUE(all_collinear);
         break;
     }

@@ -93,10 +93,10 @@ TEST(PatchFrame, RigidTranslationIsACertainParallelogram) {
     const SidePatch p = translating_edge(rng);
     ASSERT_TRUE(oracle_parallelogram(p.corners()));  // the construction is exact
     EXPECT_TRUE(internal::certainly_parallelogram(p.corners())) << "case " << i;
-    const internal::PatchFrame frame =
+    const PatchFrame frame =
         internal::patch_frame_from_offsets(kernel::ExactSigns{}, p.corners());
     EXPECT_EQ(frame.volume, Sign::zero);
-    EXPECT_NE(frame.kind, internal::PatchFrame::Kind::skew);
+    EXPECT_NE(frame.kind, PatchFrame::Kind::skew);
   }
 }
 
@@ -112,10 +112,10 @@ TEST(PatchFrame, OneUlpFromATranslationIsNotClaimed) {
     if (internal::certainly_parallelogram(a)) {
       EXPECT_TRUE(parallelogram) << "case " << i;
     }
-    const internal::PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
+    const PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
     const int volume = oracle_volume_sign(a);
     EXPECT_EQ(static_cast<int>(frame.volume), volume) << "case " << i;
-    EXPECT_EQ(frame.kind == internal::PatchFrame::Kind::skew, volume != 0) << "case " << i;
+    EXPECT_EQ(frame.kind == PatchFrame::Kind::skew, volume != 0) << "case " << i;
     skew += volume != 0;
   }
   EXPECT_GT(skew, 1000);  // the perturbation does make most patches skew
@@ -136,7 +136,7 @@ TEST(PatchFrame, OverflowingDisplacements) {
   EXPECT_FALSE(oracle_parallelogram(shorter.corners()));
   EXPECT_FALSE(internal::certainly_parallelogram(shorter.corners()));
   for (const SidePatch& p : {same, shorter}) {
-    const internal::PatchFrame frame =
+    const PatchFrame frame =
         internal::patch_frame_from_offsets(kernel::ExactSigns{}, p.corners());
     EXPECT_EQ(static_cast<int>(frame.volume), oracle_volume_sign(p.corners()));
   }

@@ -92,7 +92,7 @@ TEST(ExactVector, ExtremeValues) {
 /// rounded differences): the oracle on the original points decides.
 void expect_exact_vector_corners_match_oracle(const Point3& o, const Vector3& d,
                                               const BilinearPatch& p) {
-  const auto x = internal::internal_corners(p);
+  const auto x = internal::tensor_corners(p);
   const std::array<ExactVector, 4> e{exact_difference(x[0], o), exact_difference(x[1], o),
                                      exact_difference(x[2], o), exact_difference(x[3], o)};
   const kernel::Offsets<4> a{Offset::exact(e[0]), Offset::exact(e[1]), Offset::exact(e[2]),

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string_view>
 
@@ -17,6 +18,29 @@ struct BilinearPatch {
   Point3 p10;
   Point3 p11;
   Point3 p01;
+};
+
+/// The order in which the ray tests read a patch's corners: p_ij at index i + 2j, that is
+/// x0 = p00, x1 = p10, x2 = p01, x3 = p11 (boundary x0 -> x1 -> x3 -> x2). Patches are
+/// given in boundary order everywhere else; every reordering goes through here.
+template <class T>
+constexpr std::array<T, 4> tensor_order(const T& p00, const T& p10, const T& p11, const T& p01) {
+  return {p00, p10, p01, p11};
+}
+
+/// What the ray tests need to know about a patch independently of any ray, found once per
+/// patch (crossing_parity.hpp prepares it for a set of faces).
+struct PatchFrame {
+  enum class Kind : std::uint8_t {
+    skew,       ///< corners not coplanar
+    planar,     ///< coplanar, not collinear
+    collinear,  ///< all corners on one line (a segment or a point)
+  };
+  Kind kind = Kind::collinear;
+  /// skew: the sign of orient3d(x0, x1, x2, x3), corners in tensor order.
+  Sign volume = Sign::zero;
+  /// planar: three corners (tensor-order indices) that are not collinear.
+  std::array<std::uint8_t, 3> plane_triple{};
 };
 
 /// The exact shape of a patch.

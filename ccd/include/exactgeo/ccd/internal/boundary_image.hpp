@@ -1,6 +1,7 @@
 #pragma once
 
-// The image under F of the boundary of the CCD domain, as corners and faces.
+// The image under F of the boundary of the CCD domain: the corner images, and the faces
+// over them (SurfaceFace, for the crossing parity predicate).
 //
 // Vertex-face, F(t, u, v) = v(t) - [(1-u-v) f0(t) + u f1(t) + v f2(t)], t in [0,1], (u, v)
 // in the unit triangle: the domain is a prism. Its corners map to c_tj = v(t) - fj(t)
@@ -17,9 +18,9 @@
 
 #include <array>
 #include <cstddef>
-#include <cstdint>
 
 #include "exactgeo/ccd/queries.hpp"
+#include "exactgeo/predicates/crossing_parity.hpp"
 #include "exactgeo/predicates/kernel/offset.hpp"
 
 namespace exactgeo::ccd::internal {
@@ -27,38 +28,25 @@ namespace exactgeo::ccd::internal {
 using exactgeo::kernel::Offset;
 using exactgeo::kernel::Offsets;
 
-struct Face {
-  enum class Kind : std::uint8_t { triangle, patch, parallelogram };
-  Kind kind;
-  /// triangle: three corner indices (the fourth unused); patch and parallelogram (a patch
-  /// known to be one): p00, p10, p11, p01.
-  std::array<std::uint8_t, 4> corners;
-};
-
-template <std::size_t C, std::size_t F>
-struct BoundaryImage {
-  Offsets<C> corners;
-  std::array<Face, F> faces;
-};
-
-inline constexpr std::array<Face, 5> kPrismFaces{{
-    {Face::Kind::triangle, {0, 1, 2, 0}},  // t = 0
-    {Face::Kind::triangle, {3, 4, 5, 3}},  // t = 1
-    {Face::Kind::patch, {0, 3, 4, 1}},     // v = 0: edge f0 f1, parameters (t, u)
-    {Face::Kind::patch, {1, 4, 5, 2}},     // u + v = 1: edge f1 f2
-    {Face::Kind::patch, {0, 3, 5, 2}},     // u = 0: edge f0 f2, parameters (t, v)
+inline constexpr std::array<SurfaceFace, 5> kPrismFaces{{
+    SurfaceFace::triangle(0, 1, 2),  // t = 0
+    SurfaceFace::triangle(3, 4, 5),  // t = 1
+    SurfaceFace::patch(0, 3, 4, 1),  // v = 0: edge f0 f1, parameters (t, u)
+    SurfaceFace::patch(1, 4, 5, 2),  // u + v = 1: edge f1 f2
+    SurfaceFace::patch(0, 3, 5, 2),  // u = 0: edge f0 f2, parameters (t, v)
 }};
 
 // The time slices of edge-edge are parallelograms whatever the input: c_t1j - c_t0j =
 // ea1(t) - ea0(t) for both j. Exactly so for every piece of the step too (its corners are
 // exact combinations of these), so their flatness is known without a volume sign.
-inline constexpr std::array<Face, 6> kHexahedronFaces{{
-    {Face::Kind::parallelogram, {0, 2, 3, 1}},  // t = 0, parameters (u, v)
-    {Face::Kind::parallelogram, {4, 6, 7, 5}},  // t = 1
-    {Face::Kind::patch, {0, 4, 5, 1}},          // u = 0, parameters (t, v)
-    {Face::Kind::patch, {2, 6, 7, 3}},          // u = 1
-    {Face::Kind::patch, {0, 4, 6, 2}},          // v = 0, parameters (t, u)
-    {Face::Kind::patch, {1, 5, 7, 3}},          // v = 1
+inline constexpr SurfaceFace::Kind kParallelogram = SurfaceFace::Kind::parallelogram;
+inline constexpr std::array<SurfaceFace, 6> kHexahedronFaces{{
+    SurfaceFace::patch(0, 2, 3, 1, kParallelogram),  // t = 0, parameters (u, v)
+    SurfaceFace::patch(4, 6, 7, 5, kParallelogram),  // t = 1
+    SurfaceFace::patch(0, 4, 5, 1),                  // u = 0, parameters (t, v)
+    SurfaceFace::patch(2, 6, 7, 3),                  // u = 1
+    SurfaceFace::patch(0, 4, 6, 2),                  // v = 0, parameters (t, u)
+    SurfaceFace::patch(1, 5, 7, 3),                  // v = 1
 }};
 
 /// The faces of the domain with C corners: the prism (6) or the hexahedron (8). Corners
@@ -91,21 +79,19 @@ std::array<Vector3, C / 2> slice_corners(const Offsets<C>& a, std::size_t slice)
   return x;
 }
 
-/// Views into the query's points: the query must outlive the result.
-inline BoundaryImage<6, 5> boundary_image(const VertexFaceQuery& q) noexcept {
-  return {{Offset::between(q.f0_t0, q.v_t0), Offset::between(q.f1_t0, q.v_t0),
-           Offset::between(q.f2_t0, q.v_t0), Offset::between(q.f0_t1, q.v_t1),
-           Offset::between(q.f1_t1, q.v_t1), Offset::between(q.f2_t1, q.v_t1)},
-          kPrismFaces};
+/// The corner images, as views into the query's points: the query must outlive them.
+inline Offsets<6> corner_images(const VertexFaceQuery& q) noexcept {
+  return {Offset::between(q.f0_t0, q.v_t0), Offset::between(q.f1_t0, q.v_t0),
+          Offset::between(q.f2_t0, q.v_t0), Offset::between(q.f0_t1, q.v_t1),
+          Offset::between(q.f1_t1, q.v_t1), Offset::between(q.f2_t1, q.v_t1)};
 }
 
-inline BoundaryImage<8, 6> boundary_image(const EdgeEdgeQuery& q) noexcept {
+inline Offsets<8> corner_images(const EdgeEdgeQuery& q) noexcept {
   // Corner 4t + 2i + j = eai(t) - ebj(t).
-  return {{Offset::between(q.eb0_t0, q.ea0_t0), Offset::between(q.eb1_t0, q.ea0_t0),
-           Offset::between(q.eb0_t0, q.ea1_t0), Offset::between(q.eb1_t0, q.ea1_t0),
-           Offset::between(q.eb0_t1, q.ea0_t1), Offset::between(q.eb1_t1, q.ea0_t1),
-           Offset::between(q.eb0_t1, q.ea1_t1), Offset::between(q.eb1_t1, q.ea1_t1)},
-          kHexahedronFaces};
+  return {Offset::between(q.eb0_t0, q.ea0_t0), Offset::between(q.eb1_t0, q.ea0_t0),
+          Offset::between(q.eb0_t0, q.ea1_t0), Offset::between(q.eb1_t0, q.ea1_t0),
+          Offset::between(q.eb0_t1, q.ea0_t1), Offset::between(q.eb1_t1, q.ea0_t1),
+          Offset::between(q.eb0_t1, q.ea1_t1), Offset::between(q.eb1_t1, q.ea1_t1)};
 }
 
 }  // namespace exactgeo::ccd::internal

@@ -1,7 +1,8 @@
 #pragma once
 
-// Root parity over a boundary image, for any sign policy: cast rays from the origin in the
-// fixed direction sequence until one meets no face's boundary, and count its crossings.
+// Root parity over the corner images of a CCD domain, for any sign policy: the crossing
+// parity predicate (exactgeo/predicates/crossing_parity.hpp) on the domain's faces, with
+// the origin as the ray origin.
 
 #include <array>
 #include <cstddef>
@@ -9,72 +10,37 @@
 #include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/ray_directions.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
-#include "exactgeo/predicates/crossing.hpp"
-#include "exactgeo/predicates/internal/patch_frame.hpp"
-#include "exactgeo/predicates/internal/ray_patch_core.hpp"
-#include "exactgeo/predicates/internal/ray_triangle_core.hpp"
+#include "exactgeo/predicates/crossing_parity.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::ccd::internal {
 
-namespace in = exactgeo::internal;
-
-/// A patch face's corners in the order of the ray-patch core (p00, p10, p01, p11).
-template <std::size_t C>
-Offsets<4> patch_corners(const Offsets<C>& corners, const Face& face) noexcept {
-  return {corners[face.corners[0]], corners[face.corners[1]], corners[face.corners[3]],
-          corners[face.corners[2]]};
-}
-
 template <class Signs, std::size_t C>
-Crossing cross_face(const Signs& signs, const Offsets<C>& corners, const Face& face,
-                    const in::PatchFrame& frame, const Offset& direction) noexcept {
-  if (face.kind == Face::Kind::triangle) {
-    return crossing_of(in::classify_ray_triangle_offsets(signs, corners[face.corners[0]],
-                                                         corners[face.corners[1]],
-                                                         corners[face.corners[2]], direction)
-                           .kind);
-  }
-  return crossing_of(
-      in::ray_patch_parity_offsets(signs, frame, patch_corners(corners, face), direction));
-}
-
-template <class Signs, std::size_t C, std::size_t F>
-RootParityResult root_parity(const Signs& signs, const BoundaryImage<C, F>& image) noexcept {
-  std::array<in::PatchFrame, F> frames{};
-  for (std::size_t f = 0; f < F; ++f) {
-    if (image.faces[f].kind != Face::Kind::triangle) {
-      frames[f] = in::patch_frame_from_offsets(signs, patch_corners(image.corners, image.faces[f]),
-                                               image.faces[f].kind == Face::Kind::parallelogram
-                                                   ? in::KnownShape::parallelogram
-                                                   : in::KnownShape::none);
-    }
-  }
-  for (std::size_t k = 0; k < kRayDirectionCount; ++k) {
-    const Offset direction = Offset::vector(kRayDirections[k]);
-    const auto rays = static_cast<std::uint8_t>(k + 1);
+RootParityResult root_parity(const Signs& signs, const Offsets<C>& corners) noexcept {
+  constexpr auto& faces = kDomainFaces<C>;
+  const auto corner = [&corners](VertexIndex i) -> const Offset& { return corners[i]; };
+  std::array<PatchFrame, faces.size()> frames;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    frames[f] = frame_of_offsets(signs, faces[f], corner);
+  const PreparedFaces prepared{faces, frames};
+  const auto found = crossing_parity(kRayDirectionCount, [&](std::size_t k) {
     // Every det3 sign of a ray test is on corners and the direction: one static bound.
-    const auto ray_signs = kernel::with_static_filter(signs, image.corners, kRayDirections[k]);
-    int crossings = 0;
-    bool clean = true;
-    for (std::size_t f = 0; f < F && clean; ++f) {
-      switch (cross_face(ray_signs, image.corners, image.faces[f], frames[f], direction)) {
-        case Crossing::none:
-          break;
-        case Crossing::crossed:
-          ++crossings;
-          break;
-        case Crossing::origin_on:
-          return {RootParity::boundary_root, rays};
-        case Crossing::ambiguous:
-          clean = false;
-          break;
-      }
-    }
-    if (clean) return {crossings % 2 == 1 ? RootParity::odd : RootParity::even, rays};
+    const auto ray_signs = kernel::with_static_filter(signs, corners, kRayDirections[k]);
+    return count_crossings(ray_signs, prepared, corner, Offset::vector(kRayDirections[k]));
+  });
+  // No clean ray is impossible for exact signs (ray_directions.hpp proves some direction
+  // is clean); with plain double signs, a conservative "collision".
+  if (!found) return {RootParity::odd, static_cast<std::uint8_t>(kRayDirectionCount)};
+  const auto rays = static_cast<std::uint8_t>(found->rays);
+  switch (found->parity) {
+    case CrossingParity::even:
+      return {RootParity::even, rays};
+    case CrossingParity::odd:
+      return {RootParity::odd, rays};
+    case CrossingParity::on_surface:
+      break;
   }
-  // Unreachable for exact signs (ray_directions.hpp proves some direction is clean); with
-  // plain double signs, a conservative "collision".
-  return {RootParity::odd, static_cast<std::uint8_t>(kRayDirectionCount)};
+  return {RootParity::boundary_root, rays};
 }
 
 }  // namespace exactgeo::ccd::internal

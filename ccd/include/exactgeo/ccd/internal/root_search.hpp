@@ -106,9 +106,9 @@ class RootSearch {
   }
 
   static RootParity parity_of(const TimePiece<C>& piece) noexcept {
-    const BoundaryImage<C, kDomainFaces<C>.size()> image{piece.offsets(), kDomainFaces<C>};
-    if (piece.filterable()) return root_parity(exactgeo::kernel::ExactSigns{}, image).parity;
-    return root_parity(exactgeo::kernel::RationalSigns{}, image).parity;
+    const Offsets<C> corners = piece.offsets();
+    if (piece.filterable()) return root_parity(exactgeo::kernel::ExactSigns{}, corners).parity;
+    return root_parity(exactgeo::kernel::RationalSigns{}, corners).parity;
   }
 
   int max_depth_;

@@ -18,9 +18,9 @@ using kernel::Offsets;
 using kernel::two_diff;
 using kernel::TwoTerm;
 
-/// Corners in the internal order x0 = p00, x1 = p10, x2 = p01, x3 = p11.
-inline std::array<Point3, 4> internal_corners(const BilinearPatch& p) noexcept {
-  return {p.p00, p.p10, p.p01, p.p11};
+/// The corners in tensor order (x0 = p00, x1 = p10, x2 = p01, x3 = p11).
+inline std::array<Point3, 4> tensor_corners(const BilinearPatch& p) noexcept {
+  return tensor_order(p.p00, p.p10, p.p11, p.p01);
 }
 
 /// Offsets x_i - origin.

@@ -55,15 +55,6 @@ namespace exactgeo::internal {
 using kernel::Offset;
 using kernel::Offsets;
 
-/// What the ray test needs to know about a patch independently of the ray: computed once
-/// per patch (patch_frame.hpp).
-struct PatchFrame {
-  enum class Kind : std::uint8_t { skew, planar, collinear };
-  Kind kind = Kind::collinear;
-  Sign volume = Sign::zero;                    // skew: sign of orient3d(x0, x1, x2, x3)
-  std::array<std::uint8_t, 3> plane_triple{};  // planar: three corners that are not collinear
-};
-
 struct TrianglePair {
   std::array<std::array<std::uint8_t, 3>, 2> triangles;
   std::array<std::uint8_t, 2> diagonal_edge;  // edge index within each triangle

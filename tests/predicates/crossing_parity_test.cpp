@@ -1,0 +1,294 @@
+// Crossing parity over a prepared face set (crossing_parity.hpp): the count along one ray
+// and the ray loop, against the independent rational oracles for each face, on random,
+// flat, exactly degenerate, one-ulp-off and scaled face sets; and the two ways of
+// preparing a face (from points, from offsets) against each other.
+
+#include "exactgeo/predicates/crossing_parity.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "exactgeo/predicates/kernel/signs.hpp"
+#include "exactgeo/predicates/ray_directions.hpp"
+#include "support/generators.hpp"
+#include "support/rational_oracle.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo {
+namespace {
+
+using kernel::Offset;
+using testing::Rng;
+
+/// A face set over its own corner list, prepared with exact signs.
+struct FaceSet {
+  std::vector<Point3> points;
+  std::vector<SurfaceFace> faces;
+  std::vector<PatchFrame> frames;
+
+  void prepare() {
+    frames.clear();
+    for (const SurfaceFace& f : faces)
+      frames.push_back(frame_of(kernel::ExactSigns{}, f, points));
+  }
+  PreparedFaces prepared() const { return {faces, frames}; }
+};
+
+/// The oracle's answer for one face, reduced to a Crossing.
+Crossing oracle_crossing(const FaceSet& set, const SurfaceFace& f, const Point3& origin,
+                         const Vector3& direction) {
+  const auto& p = set.points;
+  const auto& c = f.corners;
+  if (f.is_triangle()) {
+    return crossing_of(
+        testing::ray_triangle_oracle(origin, direction, p[c[0]], p[c[1]], p[c[2]]).kind);
+  }
+  // Tensor order back to boundary order: p00 = x0, p10 = x1, p11 = x3, p01 = x2.
+  return crossing_of(
+      testing::ray_patch_oracle(origin, direction, {p[c[0]], p[c[1]], p[c[3]], p[c[2]]}));
+}
+
+/// The oracle's count along one ray, with the predicate's documented stopping rule: the
+/// first face that is degenerate or holds the origin decides.
+RayCount oracle_count(const FaceSet& set, const Point3& origin, const Vector3& direction) {
+  bool odd = false;
+  for (const SurfaceFace& f : set.faces) {
+    switch (oracle_crossing(set, f, origin, direction)) {
+      case Crossing::none:
+        break;
+      case Crossing::crossed:
+        odd = !odd;
+        break;
+      case Crossing::origin_on:
+        return RayCount::origin_on_face;
+      case Crossing::degenerate:
+        return RayCount::degenerate;
+    }
+  }
+  return odd ? RayCount::odd : RayCount::even;
+}
+
+RayCount library_count(const FaceSet& set, const Point3& origin, const Vector3& direction) {
+  const auto corner = [&](VertexIndex i) { return Offset::between(origin, set.points[i]); };
+  return count_crossings(kernel::ExactSigns{}, set.prepared(), corner, Offset::vector(direction));
+}
+
+std::string describe(const FaceSet& set, const Point3& origin) {
+  std::string s = "origin " + std::to_string(origin[0]) + " ...; corners:";
+  char buf[96];
+  for (const Point3& p : set.points) {
+    std::snprintf(buf, sizeof buf, " (%a,%a,%a)", p[0], p[1], p[2]);
+    s += buf;
+  }
+  return s;
+}
+
+/// Random faces over a few shared corners, some of them flat or exactly degenerate: the
+/// corners are small integers (so rays from integer origins along the sequence's
+/// directions often meet edges and corners exactly), or random reals.
+FaceSet random_face_set(Rng& rng, bool integer_corners) {
+  FaceSet set;
+  const int n = testing::uniform_int(rng, 4, 7);
+  for (int i = 0; i < n; ++i) {
+    set.points.push_back(integer_corners ? testing::integer_point(rng, 2)
+                                         : testing::random_point(rng, 1.0));
+  }
+  auto index = [&] { return static_cast<VertexIndex>(testing::uniform_int(rng, 0, n - 1)); };
+  const int faces = testing::uniform_int(rng, 1, 4);
+  for (int f = 0; f < faces; ++f) {
+    if (testing::uniform_int(rng, 0, 2) == 0) {
+      set.faces.push_back(SurfaceFace::triangle(index(), index(), index()));
+    } else {
+      set.faces.push_back(SurfaceFace::patch(index(), index(), index(), index()));
+    }
+  }
+  set.prepare();
+  return set;
+}
+
+TEST(CrossingParity, OneRayMatchesTheOracleFaceByFace) {
+  Rng rng = testing::seeded_engine("CrossingParity.OneRay");
+  std::array<int, 4> seen{};
+  for (int trial = 0; trial < 3000; ++trial) {
+    const bool integer = trial % 2 == 0;
+    const FaceSet set = random_face_set(rng, integer);
+    const Vector3 direction = ray_direction(static_cast<std::size_t>(trial % 5));
+    Point3 origin = integer ? testing::integer_point(rng, 2) : testing::random_point(rng, 1.0);
+    if (integer && trial % 4 == 0) {
+      // Aimed at a corner or an edge midpoint: origin = target - s direction, exactly
+      // (dyadic coordinates), so the ray meets a face's boundary.
+      const auto& c = set.faces[0].corners;
+      const Point3& a = set.points[c[0]];
+      const Point3& b = set.points[c[testing::uniform_int(rng, 0, 1)]];
+      const double s = 0.25 * testing::uniform_int(rng, 1, 4);
+      for (int i = 0; i < 3; ++i)
+        origin[i] = 0.5 * (a[i] + b[i]) - s * direction[i];
+    }
+    const RayCount expected = oracle_count(set, origin, direction);
+    ASSERT_EQ(library_count(set, origin, direction), expected)
+        << "trial " << trial << ": " << describe(set, origin);
+    ++seen[static_cast<int>(expected)];
+  }
+  // The inputs reach every answer, so each path was compared.
+  for (int kind = 0; kind < 4; ++kind)
+    EXPECT_GT(seen[kind], 20) << "RayCount " << kind;
+}
+
+TEST(CrossingParity, ScaledCopiesCountAlike) {
+  // Scaling corners and origin by 2^k changes no sign; at extreme k the filters' guards
+  // fail and the exact stages (rescaled expansions, rationals) must answer instead.
+  Rng rng = testing::seeded_engine("CrossingParity.Scaled");
+  for (int trial = 0; trial < 300; ++trial) {
+    FaceSet set = random_face_set(rng, false);
+    const Point3 origin = testing::random_point(rng, 1.0);
+    const Vector3 direction = ray_direction(static_cast<std::size_t>(trial % 3));
+    const RayCount expected = oracle_count(set, origin, direction);
+    for (const int k : {-900, -500, 300, 900}) {
+      FaceSet scaled = set;
+      for (Point3& p : scaled.points)
+        p = testing::scaled(p, k);
+      scaled.prepare();
+      ASSERT_EQ(library_count(scaled, testing::scaled(origin, k), direction), expected)
+          << "trial " << trial << ", scale 2^" << k << ": " << describe(set, origin);
+    }
+  }
+}
+
+TEST(CrossingParity, CandidatesRestrictTheCount) {
+  // Two parallel squares z = 0 and z = 1 (as patches); a ray up from below crosses both.
+  FaceSet set;
+  set.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  set.faces = {SurfaceFace::patch(0, 1, 2, 3), SurfaceFace::patch(4, 5, 6, 7)};
+  set.prepare();
+  const Point3 origin{0.25, 0.375, -1};
+  const Vector3 up{0.0625, 0.03125, 1};
+  const auto corner = [&](VertexIndex i) { return Offset::between(origin, set.points[i]); };
+  const kernel::ExactSigns signs;
+  const std::vector<std::size_t> first{0}, both{0, 1}, none{};
+  EXPECT_EQ(count_crossings(signs, set.prepared(), first, corner, Offset::vector(up)),
+            RayCount::odd);
+  EXPECT_EQ(count_crossings(signs, set.prepared(), both, corner, Offset::vector(up)),
+            RayCount::even);
+  EXPECT_EQ(count_crossings(signs, set.prepared(), none, corner, Offset::vector(up)),
+            RayCount::even);
+  EXPECT_EQ(count_crossings(signs, set.prepared(), corner, Offset::vector(up)), RayCount::even);
+}
+
+/// The unit cube as six quads (tensor order through SurfaceFace::patch).
+FaceSet unit_cube() {
+  FaceSet cube;
+  for (int c = 0; c < 8; ++c)
+    cube.points.push_back({double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1)});
+  for (const auto& q : std::array<std::array<VertexIndex, 4>, 6>{
+           {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}}) {
+    cube.faces.push_back(SurfaceFace::patch(q[0], q[1], q[2], q[3]));
+  }
+  cube.prepare();
+  return cube;
+}
+
+std::optional<CrossingParityResult> parity_of(const FaceSet& set, const Point3& origin) {
+  const auto corner = [&](VertexIndex i) { return Offset::between(origin, set.points[i]); };
+  return crossing_parity(64, [&](std::size_t k) {
+    const Vector3 d = ray_direction(k);
+    return count_crossings(kernel::ExactSigns{}, set.prepared(), corner, Offset::vector(d));
+  });
+}
+
+TEST(CrossingParity, RayLoopRecastsUntilAClean) {
+  const FaceSet cube = unit_cube();
+  const auto centre = parity_of(cube, {0.5, 0.5, 0.5});
+  ASSERT_TRUE(centre.has_value());
+  EXPECT_EQ(centre->parity, CrossingParity::odd);
+  EXPECT_EQ(centre->rays, 1u);
+
+  const auto outside = parity_of(cube, {-1, 0.5, 0.5});
+  ASSERT_TRUE(outside.has_value());
+  EXPECT_EQ(outside->parity, CrossingParity::even);
+
+  const auto on_face = parity_of(cube, {1, 0.25, 0.75});
+  ASSERT_TRUE(on_face.has_value());
+  EXPECT_EQ(on_face->parity, CrossingParity::on_surface);
+
+  // Ray 0 from this origin passes exactly through the cube's corner (1, 1, 1), a vertex of
+  // three faces: degenerate. Ray 1 is clean; the origin is inside.
+  const Vector3 d0 = ray_direction(0);
+  const double s = 0.25;  // (1, 1, 1) - s d0, exact: d0 is dyadic
+  const Point3 origin{1 - s * d0[0], 1 - s * d0[1], 1 - s * d0[2]};
+  ASSERT_EQ(library_count(cube, origin, d0), RayCount::degenerate);
+  const auto recast = parity_of(cube, origin);
+  ASSERT_TRUE(recast.has_value());
+  EXPECT_EQ(recast->parity, CrossingParity::odd);
+  EXPECT_EQ(recast->rays, 2u);
+}
+
+TEST(CrossingParity, GivesUpOnlyAfterMaxRays) {
+  int cast = 0;
+  const auto none = crossing_parity(5, [&](std::size_t) {
+    ++cast;
+    return RayCount::degenerate;
+  });
+  EXPECT_FALSE(none.has_value());
+  EXPECT_EQ(cast, 5);
+}
+
+TEST(CrossingParity, FramesFromPointsAndFromOffsetsAgree) {
+  // CCD prepares faces from offsets (corner images, origin 0), meshes from points. On the
+  // same corners both must give the same frame, for exactly flat, near-flat and skew
+  // patches at any magnitude.
+  Rng rng = testing::seeded_engine("CrossingParity.Frames");
+  const kernel::ExactSigns signs;
+  const SurfaceFace face = SurfaceFace::patch(0, 1, 2, 3);
+  int flat = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::array<Point3, 4> x;
+    switch (trial % 4) {
+      case 0:  // random: skew
+        for (Point3& p : x)
+          p = testing::random_point(rng, 1.0);
+        break;
+      case 1: {  // coplanar up to rounding
+        const auto q = testing::near_coplanar_points(rng, 1.0, 2.0);
+        x = {q[0], q[1], q[3], q[2]};
+        break;
+      }
+      case 2:  // small integers: exactly flat or collinear shapes are frequent
+        for (Point3& p : x)
+          p = testing::integer_point(rng, 1);
+        break;
+      default:  // one ulp off a parallelogram
+        x[0] = testing::random_point(rng, 1.0);
+        x[1] = testing::random_point(rng, 1.0);
+        x[3] = testing::random_point(rng, 1.0);
+        for (int i = 0; i < 3; ++i)
+          x[2][i] = x[1][i] + (x[3][i] - x[0][i]);
+        x[2] = testing::ulp_step(x[2], testing::uniform_int(rng, 0, 2),
+                                 testing::uniform_int(rng, -1, 1));
+    }
+    const int k = testing::uniform_int(rng, -900, 900);
+    for (Point3& p : x)
+      p = testing::scaled(p, k);
+    const PatchFrame from_points = frame_of(signs, face, x);
+    const auto corner = [&](VertexIndex i) { return Offset::vector(x[i]); };
+    const PatchFrame from_offsets = frame_of_offsets(signs, face, corner);
+    ASSERT_EQ(from_points.kind, from_offsets.kind) << "trial " << trial;
+    ASSERT_EQ(from_points.volume, from_offsets.volume) << "trial " << trial;
+    // Both frames are the oracle's shape class.
+    const PatchShape shape = testing::patch_shape_oracle({x[0], x[1], x[2], x[3]});
+    const PatchFrame::Kind expected = shape == PatchShape::skew ? PatchFrame::Kind::skew
+                                      : shape == PatchShape::segment || shape == PatchShape::point
+                                          ? PatchFrame::Kind::collinear
+                                          : PatchFrame::Kind::planar;
+    ASSERT_EQ(from_points.kind, expected) << "trial " << trial;
+    flat += expected != PatchFrame::Kind::skew;
+  }
+  EXPECT_GT(flat, 500);
+}
+
+}  // namespace
+}  // namespace exactgeo
