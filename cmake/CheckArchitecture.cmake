@@ -1,0 +1,81 @@
+# The include rules of docs/architecture.md, checked on the sources (ctest
+# architecture.includes):
+#
+#   cmake -DROOT=<source tree> -P cmake/CheckArchitecture.cmake
+#
+# 1. A library includes public headers only of the libraries below it (kAllowed below);
+#    apps/ and python/ may include every library's public headers.
+# 2. A library's internal/ headers are included only by that library's own files, its own
+#    tests (tests/<library>/) and the benchmarks (bench/ measures internals on purpose).
+#
+# Every violation is listed with its file and line; any violation fails the run.
+
+cmake_minimum_required(VERSION 3.22)
+
+if(NOT ROOT)
+  message(FATAL_ERROR "usage: cmake -DROOT=<source tree> -P CheckArchitecture.cmake")
+endif()
+get_filename_component(ROOT "${ROOT}" ABSOLUTE)
+
+# What each library may include besides itself (its targets' dependencies).
+set(kLibraries predicates parallel io mesh ccd inside)
+set(kAllowed_predicates "")
+set(kAllowed_parallel "")
+set(kAllowed_io "")
+set(kAllowed_mesh predicates io)
+set(kAllowed_ccd predicates io parallel)
+set(kAllowed_inside predicates mesh parallel)
+
+set(violations "")
+
+# The folder a file belongs to (predicates, ccd, ..., tests/<x>, bench, apps, python).
+function(owner_of relative out)
+  string(REGEX MATCH "^[^/]+" top "${relative}")
+  if(top STREQUAL "tests")
+    string(REGEX MATCH "^tests/[^/]+" top "${relative}")
+  endif()
+  set(${out} "${top}" PARENT_SCOPE)
+endfunction()
+
+file(GLOB_RECURSE sources RELATIVE "${ROOT}" "${ROOT}/*.hpp" "${ROOT}/*.cpp")
+foreach(relative IN LISTS sources)
+  if(relative MATCHES "^build" OR relative MATCHES "^tests/architecture/")
+    continue()
+  endif()
+  owner_of("${relative}" owner)
+  file(STRINGS "${ROOT}/${relative}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]exactgeo/")
+  file(READ "${ROOT}/${relative}" content)
+  foreach(line IN LISTS lines)
+    string(REGEX MATCH "exactgeo/([a-z_]+)/" _ "${line}")
+    set(library "${CMAKE_MATCH_1}")
+    if(NOT library IN_LIST kLibraries)
+      continue()  # exactgeo/version.hpp (generated for apps/) and the like
+    endif()
+    # The line number: one more than the newlines before the include.
+    string(FIND "${content}" "${line}" position)
+    string(SUBSTRING "${content}" 0 ${position} before)
+    string(REGEX MATCHALL "\n" newlines "${before}")
+    list(LENGTH newlines line_number)
+    math(EXPR line_number "${line_number} + 1")
+    set(where "${relative}:${line_number}")
+    # Rule 2: internal/ headers stay with their library.
+    if(line MATCHES "exactgeo/${library}/internal/")
+      if(NOT (owner STREQUAL library OR owner STREQUAL "tests/${library}" OR owner STREQUAL "bench"))
+        list(APPEND violations "${where}: ${owner} includes an internal header of ${library}: ${line}")
+      endif()
+    endif()
+    # Rule 1: a library includes only what lies below it.
+    if(owner IN_LIST kLibraries AND NOT owner STREQUAL library)
+      if(NOT library IN_LIST kAllowed_${owner})
+        list(APPEND violations "${where}: ${owner} may not include ${library}: ${line}")
+      endif()
+    endif()
+  endforeach()
+endforeach()
+
+if(violations)
+  list(LENGTH violations count)
+  string(REPLACE ";" "\n  " listed "${violations}")
+  message(FATAL_ERROR "${count} include rule violation(s) (docs/architecture.md):\n  ${listed}")
+endif()
+message(STATUS "include rules hold")
