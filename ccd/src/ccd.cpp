@@ -62,15 +62,11 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
     if (toi || !coplanarity) return std::nullopt;
     const auto sides = internal::SliceSides<C>::of(corners);
     if (!sides) return std::nullopt;
-    switch (internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget)) {
-      case internal::PieceVerdict::no_root:
-        return Result{false, Stage::polynomials, 0, {}};
-      case internal::PieceVerdict::root:
-        return collision(Stage::polynomials, 0, {});
-      case internal::PieceVerdict::unknown:
-        break;
-    }
-    return std::nullopt;
+    const auto verdict =
+        internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget);
+    if (!verdict) return std::nullopt;
+    if (*verdict == internal::PieceVerdict::root) return collision(Stage::polynomials, 0, {});
+    return Result{false, Stage::polynomials, 0, {}};
   };
   // A cubic with the same sign at both ends of the step that may vanish in between
   // "dips": two coplanar moments. Then the primitives often pass through each other and

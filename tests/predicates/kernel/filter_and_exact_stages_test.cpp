@@ -67,7 +67,7 @@ TEST(SignStages, FilterIsSoundOnNearDegenerateInputsAndDefers) {
     const auto [a, b, c, d] = testing::near_coplanar_points(rng, scale, 2);
     check_stages(a, b, c, d, answers);
   }
-  // Most near-coplanar cases are beyond the filter: it must say "don't know", and the
+  // Most near-coplanar cases are beyond the filter: it must leave them undecided, and the
   // expansion stage (inputs well inside the exponent range) must decide every one.
   EXPECT_LT(answers.filter, answers.cases / 2);
   EXPECT_EQ(answers.expansion, answers.cases);

@@ -15,7 +15,7 @@
 //   2. For one ray, ask each candidate face whether the ray crosses it (cross_face) and
 //      add up (count_crossings): an even or odd count, the ray's origin on a face, or a
 //      degenerate ray (it meets a face's boundary, or lies in a flat face's plane). A
-//      degenerate ray is an exact answer, not a "don't know": that ray cannot count.
+//      degenerate ray is an exact answer, not an undecided one: that ray cannot count.
 //   3. Cast rays in the fixed direction sequence of ray_directions.hpp until one is not
 //      degenerate (crossing_parity): its count is the parity. The sequence guarantees an
 //      end: at most V + 2 (E + F) of its directions are degenerate for a set with V

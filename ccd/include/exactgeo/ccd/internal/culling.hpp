@@ -64,9 +64,9 @@ class StrictSide {
 
 /// n . p exactly, with expansions: the exact coordinates of p times the doubles n_k
 /// (TwoProduct), summed. nullopt when a product could underflow or overflow (culling may
-/// always say "don't know").
-inline std::optional<kernel::Expansion<48>> exact_dot(const kernel::Offset& p,
-                                                      const Vector3& n) noexcept {
+/// always leave a sign undecided).
+inline std::optional<kernel::Expansion<48>> expansion_dot(const kernel::Offset& p,
+                                                          const Vector3& n) noexcept {
   std::array<kernel::Expansion<16>, 3> terms;
   for (int axis = 0; axis < 3; ++axis) {
     kernel::Expansion<8> x;
@@ -90,20 +90,21 @@ inline std::optional<kernel::Expansion<48>> exact_dot(const kernel::Offset& p,
   return terms[0] + terms[1] + terms[2];
 }
 
-/// How a side is certified: by the filter alone (cheap, may say "don't know"), or by the
+/// How a side is certified: by the filter alone (cheap, may leave it undecided), or by the
 /// filter and then, where it cannot decide, expansions.
-enum class Certify { filter_only, filter_then_exact };
+enum class Certify { filter_only, filter_then_expansion };
 
-/// The sign of n . p: the filter's, else (filter_then_exact) the exact one, else don't know.
+/// The sign of n . p: the filter's, else (filter_then_expansion) the expansion's, else
+/// undecided.
 inline std::optional<Sign> dot_sign(const kernel::Offset& p, const Vector3& n,
-                                    Certify how = Certify::filter_then_exact) noexcept {
+                                    Certify how = Certify::filter_then_expansion) noexcept {
   const kernel::Offset normal = kernel::Offset::vector(n);
   if (const auto s = kernel::filtered_sign<kernel::Dot3Formula, kernel::Grouping::by_vector>(
           kernel::Offsets<2>{p, normal}, 0)) {
     return s;
   }
   if (how == Certify::filter_only) return std::nullopt;
-  if (const auto d = exact_dot(p, n)) return d->sign();
+  if (const auto d = expansion_dot(p, n)) return d->sign();
   return std::nullopt;
 }
 
@@ -111,7 +112,7 @@ inline std::optional<Sign> dot_sign(const kernel::Offset& p, const Vector3& n,
 /// the negative side, each side certified as `how` says.
 template <std::size_t C>
 bool on_one_side(const kernel::Offsets<C>& a, const Vector3& n,
-                 Certify how = Certify::filter_then_exact) noexcept {
+                 Certify how = Certify::filter_then_expansion) noexcept {
   StrictSide side;
   for (std::size_t k = 0; k < C && side.holds(); ++k)
     side.add(dot_sign(a[k], n, how));
@@ -133,8 +134,8 @@ bool separated_by_turning_plane(const kernel::Offsets<C>& a, const Vector3& n0,
   for (std::size_t k = 0; k < H && side.holds(); ++k) {
     side.add(dot_sign(a[k], n0));
     side.add(dot_sign(a[H + k], n1));
-    const auto cross_start = exact_dot(a[k], n1);
-    const auto cross_end = exact_dot(a[H + k], n0);
+    const auto cross_start = expansion_dot(a[k], n1);
+    const auto cross_end = expansion_dot(a[H + k], n0);
     side.add(cross_start && cross_end ? std::optional<Sign>((*cross_start + *cross_end).sign())
                                       : std::nullopt);
   }

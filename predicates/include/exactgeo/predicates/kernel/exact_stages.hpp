@@ -4,7 +4,7 @@
 //
 //   expansion_sign  stack-allocated floating-point expansions, after an exact power-of-two
 //                   rescaling if the inputs' exponents demand one (exponent_range.hpp);
-//                   "don't know" only when no rescaling makes expansion arithmetic safe or
+//                   undecided (nullopt) only when no rescaling makes expansion arithmetic safe or
 //                   a narrowing does not fit;
 //   rational_sign   GMP rationals; always answers.
 

@@ -20,7 +20,7 @@
 // Multiplying every input by 2^s (exact, given the same bounds) multiplies a homogeneous
 // polynomial by 2^(D s) and keeps its sign. So if some s satisfies both conditions, the
 // exact stage scales by it; if none does (inputs spanning more than about 1950 / D
-// binades), the exact stage says "don't know" and the rational stage decides.
+// binades), the expansion stage leaves the sign undecided and the rational stage decides.
 
 #include <algorithm>
 #include <bit>

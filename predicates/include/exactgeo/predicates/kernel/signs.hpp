@@ -87,17 +87,18 @@ class NamedSigns {
   const Policy& self() const noexcept { return static_cast<const Policy&>(*this); }
 };
 
-/// The stages after the filter, out of line and cold, so that their stack of expansions
-/// never enlarges the hot path's frame. The inputs are views (a few pointers), passed by
-/// value.
+/// Where the filter's bound did not certify: the rest of stage 1 (a vanishing group), then
+/// stages 2 and 3, expansions and rationals. Out of line and cold, so that their stack of
+/// expansions never enlarges the hot path's frame. The inputs are views (a few pointers),
+/// passed by value.
 template <class Formula, Grouping grouping, std::size_t N>
-[[gnu::noinline, gnu::cold]] Sign exact_sign(const Offsets<N> in, int parameter,
-                                             StageCounts* counts) noexcept {
-  if (vanishing_group<Formula, grouping>(in, parameter)) {  // still the filter's rule
+[[gnu::noinline, gnu::cold]] Sign sign_after_filter(const Offsets<N> in, int parameter,
+                                                    StageCounts* counts) noexcept {
+  if (vanishing_group<Formula, grouping>(in, parameter)) {
     if (counts) ++counts->filter;
     return Sign::zero;
   }
-  if (const auto s = expansion_sign<Formula>(in, parameter)) {
+  if (const std::optional<Sign> s = expansion_sign<Formula>(in, parameter)) {
     if (counts) ++counts->expansion;
     return *s;
   }
@@ -109,30 +110,31 @@ class ExactSigns : public NamedSigns<ExactSigns> {
  public:
   explicit ExactSigns(StageCounts* counts = nullptr) noexcept : counts_(counts) {}
 
+  /// The filter, then expansions, then rationals: the first stage that decides.
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
-    if (const FilterResult f = apply_filter<Formula, grouping>(in, parameter); f.certified)
+    if (const auto f = detail::evaluate_filter<Formula, grouping>(in, parameter); f.certified)
         [[likely]] {
-      if (counts_) ++counts_->filter;
+      count_filter();
       return sign_of(f.value);
     }
-    return exact_sign<Formula, grouping>(in, parameter, counts_);
+    return sign_after_filter<Formula, grouping>(in, parameter, counts_);
   }
 
   template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
   Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
-    if (const FilterResult f = apply_filter<Formula, grouping>(in, 0); f.certified) [[likely]] {
-      if (counts_) ++counts_->filter;
+    if (const auto f = detail::evaluate_filter<Formula, grouping>(in, 0); f.certified) [[likely]] {
+      count_filter();
       return sign_of(f.value);
     }
     if (proves_zero()) {
-      if (counts_) ++counts_->filter;
+      count_filter();
       return Sign::zero;
     }
-    return exact_sign<Formula, grouping>(in, 0, counts_);
+    return sign_after_filter<Formula, grouping>(in, 0, counts_);
   }
 
-  /// Records one sign decided by a filter outside this policy (StaticDet3Signs).
+  /// Records one sign decided by a filter (this policy's, or StaticDet3Signs').
   void count_filter() const noexcept {
     if (counts_) ++counts_->filter;
   }
