@@ -1,7 +1,8 @@
 #pragma once
 
 // `exactgeo ccd`: runs CCD queries stored in the public benchmark's CSV format and
-// reports results, errors against ground truth and time per query (DESIGN.md section 4).
+// reports results, errors against ground truth and time per query (the command-line contract,
+// README.md).
 
 #include <iosfwd>
 #include <optional>

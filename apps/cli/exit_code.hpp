@@ -2,7 +2,7 @@
 
 namespace exactgeo::cli {
 
-/// The exit codes of every subcommand (DESIGN.md section 4).
+/// The exit codes of every subcommand (the command-line contract, README.md).
 enum class ExitCode : int {
   success = 0,
   found = 1,        ///< the run found what it checks for (ccd: a false negative)

@@ -2,7 +2,7 @@
 
 // `exactgeo info MESH`: what a mesh file holds and whether `exactgeo inside` can use it
 // (counts, bounding box, closed/manifold/oriented, exact degenerate faces and non-planar
-// quads, components; DESIGN.md section 4).
+// quads, components; the command-line contract, README.md).
 
 #include <iosfwd>
 #include <string>

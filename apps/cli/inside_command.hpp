@@ -1,8 +1,8 @@
 #pragma once
 
 // `exactgeo inside MESH [POINTS|-]`: classifies points against a closed mesh, one word
-// per point in input order (DESIGN.md section 4). Points stream through in blocks, so
-// memory stays flat however many there are.
+// per point in input order (the command-line contract, README.md). Points stream through in blocks,
+// so memory stays flat however many there are.
 
 #include <iosfwd>
 #include <string>

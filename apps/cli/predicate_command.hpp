@@ -1,7 +1,7 @@
 #pragma once
 
 // `exactgeo predicate orient3d|ray-patch`: exact predicates on a batch of cases, one per
-// line of text, one answer per line (DESIGN.md section 4).
+// line of text, one answer per line (the command-line contract, README.md).
 
 #include <iosfwd>
 #include <string>

@@ -1,4 +1,5 @@
-// Root parity CCD: the small cases of DESIGN.md, symmetries that must not change any
+// Root parity CCD: small hand cases (the hourglass flat patch, coplanar sliding, contacts
+// offset by 2^-23, coordinates near 3e7), symmetries that must not change any
 // answer, exact vs rational arithmetic, and the public benchmark data.
 
 #include "exactgeo/ccd/root_parity.hpp"
@@ -323,8 +324,9 @@ TEST(RootParityData, BundledSampleQueriesHaveNoFalsePositives) {
         queries += t.queries;
         EXPECT_EQ(t.false_positives, 0);
         false_negatives += t.false_negatives;
-        // Root parity misses only queries with an even number of roots; DESIGN.md records
-        // five such two-root collisions in this sample, all edge-edge unit tests.
+        // Root parity misses only queries with an even number of roots; this sample has
+        // five such two-root collisions, all edge-edge unit tests (the exact method finds
+        // them: exact_ccd_test.cpp).
         if (std::string(scene) != "unit-tests" || std::string(type) != "edge-edge") {
           EXPECT_EQ(t.false_negatives, 0) << scene << " " << type << " " << file;
         }

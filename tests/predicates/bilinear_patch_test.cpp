@@ -25,7 +25,8 @@ using testing::Rng;
 
 const BilinearPatch kSaddle{{0, 0, 0}, {1, 0, 0}, {1, 1, 1}, {0, 1, 0}};  // (u, v, uv)
 const BilinearPatch kDart{{0, 0, 0}, {2, 0, 0}, {0.5, 0.5, 0}, {0, 2, 0}};
-// The hourglass of DESIGN.md section 5: in the plane x + y = 1, edges p00p10 and p11p01 cross.
+// The hourglass (the original 2012 code mishandles it): in the plane x + y = 1, edges p00p10
+// and p11p01 cross.
 const BilinearPatch kHourglass{{1, 0, 1}, {0, 1, 1}, {1, 0, 0}, {0, 1, 0}};
 const BilinearPatch kSquare{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
 

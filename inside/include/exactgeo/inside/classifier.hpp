@@ -1,7 +1,7 @@
 #pragma once
 
 // Exact point-in-volume classification against a closed mesh of bilinear patches and
-// triangles (DESIGN.md section 2, "Inside semantics").
+// triangles (the inside semantics of docs/architecture.md, "Contracts").
 //
 // A point is `boundary` if it lies exactly on a face, else `inside` or `outside` by the
 // parity of the crossings of a ray from it with the faces. Rays follow the fixed sequence

@@ -77,7 +77,8 @@ RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
                           const BilinearPatch& patch,
                           Arithmetic arithmetic = Arithmetic::exact) noexcept;
 
-/// Sign of the patch's implicit function phi at x (DESIGN.md section 1): zero on the
+/// Sign of the patch's implicit function phi at x (phi = g012 g132 - g013 g032 with
+/// g_pqr(x) = orient3d(x_p, x_q, x_r, x), corners in tensor order): zero on the
 /// patch's quadric; for a skew patch and x inside the corners' tetrahedron, negative on the
 /// side of the triangles (p00, p10, p01), (p10, p11, p01), positive on the other side.
 Sign patch_side(const BilinearPatch& patch, const Point3& x,
