@@ -36,7 +36,7 @@ RootParity parity(const EdgeEdgeQuery& q) {
   return edge_edge_root_parity(q).parity;
 }
 
-TEST(ExactCcd, HourglassFromDesignIsACollision) {
+TEST(ExactCcd, HourglassIsACollision) {
   const VertexFaceQuery q{{0.1, 0.1, 0.1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1},
                           {0.1, 0.1, 0.1}, {0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
   EXPECT_TRUE(exact(q).collision);
@@ -216,6 +216,62 @@ TEST(ExactCcd, TimeOfImpactOnTwoRootCasesIsNestedAcrossWidths) {
     ++checked;
   }
   EXPECT_GT(checked, 0);
+}
+
+/// The split depth limit: the search halves the step at most max_depth times. A vertex
+/// falls through a still triangle at t* = 3/10 (not dyadic, so every level splits); asked
+/// for an interval far narrower than 2^-max_depth, the search must stop exactly at the
+/// limit: depth == max_depth and an interval 2^-max_depth wide that still holds t*. One
+/// level more or less is what an off-by-one in the limit gives.
+TEST(ExactCcd, DepthLimitIsHonouredExactly) {
+  const VertexFaceQuery q{{0.25, 0.25, 3},  {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                          {0.25, 0.25, -7}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const mpq_class t_star(3, 10);
+  for (const int limit : {0, 1, 2, 3, 10}) {
+    Options o;
+    o.time_of_impact_width = 0x1p-40;
+    o.max_depth = limit;
+    const Result r = exact(q, o);
+    ASSERT_TRUE(r.collision) << "max_depth " << limit;
+    EXPECT_EQ(r.depth, limit) << "max_depth " << limit;
+    EXPECT_EQ(r.decided_by, Stage::parity) << "max_depth " << limit;  // a root, proven
+    ASSERT_TRUE(r.time_of_impact.has_value());
+    EXPECT_EQ(r.time_of_impact->end - r.time_of_impact->start, std::ldexp(1.0, -limit))
+        << "max_depth " << limit;
+    EXPECT_LE(mpq_class(r.time_of_impact->start), t_star) << "max_depth " << limit;
+    EXPECT_GE(mpq_class(r.time_of_impact->end), t_star) << "max_depth " << limit;
+  }
+}
+
+/// With even parity (two roots: parity cannot see them) the search needs splits to find a
+/// piece with a root; at max_depth 0 it cannot split at all and must report the whole step
+/// as a collision without proof (depth_limit), never as free.
+TEST(ExactCcd, DepthLimitZeroOnTwoRootCasesIsConservative) {
+  int checked = 0;
+  for (const DataQuery& d : bundled_queries()) {
+    const RootParity p = on_query(d, [](const auto& q) { return parity(q); });
+    if (p != RootParity::even || !*d.record.truth) continue;
+    Options o;
+    o.time_of_impact_width = 0x1p-20;  // no shortcut by polynomials: the search runs
+    o.max_depth = 0;
+    const Result r = on_query(d, [&](const auto& q) { return exact(q, o); });
+    ASSERT_TRUE(r.collision) << d.where;
+    EXPECT_EQ(r.decided_by, Stage::depth_limit) << d.where;
+    EXPECT_EQ(r.depth, 0) << d.where;
+    ASSERT_TRUE(r.time_of_impact.has_value()) << d.where;
+    EXPECT_EQ(r.time_of_impact->start, 0.0) << d.where;
+    EXPECT_EQ(r.time_of_impact->end, 1.0) << d.where;
+    // One level deeper finds a proven root in a half (or reports that half at the limit).
+    o.max_depth = 1;
+    const Result deeper = on_query(d, [&](const auto& q) { return exact(q, o); });
+    ASSERT_TRUE(deeper.collision) << d.where;
+    EXPECT_EQ(deeper.depth, 1) << d.where;
+    EXPECT_EQ(deeper.time_of_impact->end - deeper.time_of_impact->start, 0.5) << d.where;
+    ++checked;
+  }
+  // The bundled two-root collisions: five edge-edge unit tests of sample-queries, one
+  // edge-edge query of the cloth-funnel sample.
+  EXPECT_EQ(checked, 6);
 }
 
 TEST(ExactCcdData, FullSharedSetsHaveNoErrors) {
