@@ -118,6 +118,41 @@ TEST(Coplanarity, ClaimsHoldOnRandomEdgeEdgeQueries) {
   check_random_queries<EdgeEdgeQuery>("Coplanarity.EdgeEdge");
 }
 
+/// Every computed coefficient, on every piece along random split paths, is within the
+/// threshold of the exact one (3 times the exact Bernstein coefficient): the bound the
+/// certificate rests on, measured. The largest error, as a fraction of the threshold, is
+/// printed (docs/predicates.md, "How tight the bounds are").
+template <class Query>
+double worst_error_ratio(const Query& q, Rng& rng) {
+  const auto certificate = internal::Coplanarity::of(internal::corner_images(q));
+  if (!certificate) return 0.0;
+  const Polynomial p = coplanarity_oracle(q);
+  double worst = 0.0;
+  walk_random_split_path(rng, 48, certificate->whole_step(), internal::split_coefficients,
+                         [&](const internal::CoplanarityCoefficients& c, const mpq_class& start,
+                             const mpq_class& end) {
+                           const std::vector<mpq_class> b = bernstein_on(p, 3, start, end);
+                           for (std::size_t k = 0; k < 4; ++k) {
+                             const mpq_class error = abs(mpq_class(c[k]) - 3 * b[k]);
+                             worst = std::max(worst,
+                                              mpq_class(error / certificate->threshold()).get_d());
+                           }
+                         });
+  return worst;
+}
+
+TEST(Coplanarity, CoefficientErrorsStayWithinTheThreshold) {
+  Rng rng = testing::seeded_engine("Coplanarity.CoefficientErrors");
+  double worst = 0.0;
+  for (int i = 0; i < 1500; ++i) {
+    worst = std::max(worst, worst_error_ratio(varied_query<VertexFaceQuery>(rng, i), rng));
+    worst = std::max(worst, worst_error_ratio(varied_query<EdgeEdgeQuery>(rng, i), rng));
+    ASSERT_LE(worst, 1.0) << "case " << i;
+  }
+  std::printf("largest coefficient error: %.3g of the threshold\n", worst);
+  EXPECT_GT(worst, 0.0);  // the computation does round
+}
+
 TEST(Coplanarity, NoCertificateBeyondTheFilterGuard) {
   // Corners near the top of the double range: the products would overflow.
   const VertexFaceQuery q{{0x1p1000, 0, 0}, {0, 0x1p1000, 0}, {0, 0, 0x1p1000}, {1, 1, 1},

@@ -103,6 +103,8 @@ class Coplanarity {
   }
 
   const CoplanarityCoefficients& whole_step() const noexcept { return whole_step_; }
+  /// The error bound every computed coefficient of every piece is within.
+  double threshold() const noexcept { return threshold_; }
 
   /// p certainly has no zero on the closed piece with these coefficients.
   bool nonzero(const CoplanarityCoefficients& b) const noexcept {

@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# Plants single bugs ("mutants") in a scratch copy of the tree, one at a time, rebuilds the
+# test suites that should notice, runs them, and prints one line per mutant: which tests
+# caught it, or NOT CAUGHT. Each mutant weakens one certificate or breaks one exact
+# shortcut. A mutant the suite cannot catch must be shown harmless in docs/predicates.md
+# ("Planted bugs"), with the measured reason.
+#
+# Usage: scripts/mutants.sh [NAME...] > mutants.txt     (every mutant when none is named)
+#
+# Not part of CI: it rebuilds after every mutant (about an hour on 2 cores). The scratch
+# copy and its build live in build-mutants/ (ignored by git); the checkout is not touched.
+set -euo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+scratch="$here/build-mutants/tree"
+build="$here/build-mutants/build"
+
+echo "scratch copy of $(git -C "$here" rev-parse --short HEAD) and its changes: $scratch" >&2
+rm -rf "$scratch"
+mkdir -p "$scratch"
+(cd "$here" && git ls-files -z --cached --others --exclude-standard |
+  xargs -0 cp --parents -t "$scratch")
+cmake -S "$scratch" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" -j"$(nproc)" --target predicates_tests ccd_tests inside_tests >/dev/null
+
+exec python3 - "$here" "$scratch" "$build" "$@" <<'PY'
+import os
+import re
+import subprocess
+import sys
+
+here, scratch, build, *selected = sys.argv[1:]
+
+# name, file, text replaced (exactly once), replacement, test suites that should catch it
+MUTANTS = [
+    ("static_det3_ignores_direction",
+     "predicates/include/exactgeo/predicates/kernel/signs.hpp",
+     "{largest, std::fabs(direction[0]), std::fabs(direction[1]), std::fabs(direction[2])}",
+     "{largest}", ["predicates_tests", "ccd_tests"]),
+    ("static_det3_by_axis_halved",
+     "predicates/include/exactgeo/predicates/kernel/signs.hpp",
+     "b.by_axis = by_axis.epsilon *", "b.by_axis = 0.5 * by_axis.epsilon *",
+     ["predicates_tests", "ccd_tests"]),
+    ("static_det3_by_vector_halved",
+     "predicates/include/exactgeo/predicates/kernel/signs.hpp",
+     "b.by_vector = by_vector.epsilon *", "b.by_vector = 0.5 * by_vector.epsilon *",
+     ["predicates_tests", "ccd_tests"]),
+    ("filter_bound_halved",
+     "predicates/include/exactgeo/predicates/kernel/filter.hpp",
+     "const double bound = (constant.epsilon * ...",
+     "const double bound = (0.5 * constant.epsilon * ...", ["predicates_tests"]),
+    ("filter_bound_quartered",
+     "predicates/include/exactgeo/predicates/kernel/filter.hpp",
+     "const double bound = (constant.epsilon * ...",
+     "const double bound = (0.25 * constant.epsilon * ...", ["predicates_tests"]),
+    ("filter_bound_sixteenth",
+     "predicates/include/exactgeo/predicates/kernel/filter.hpp",
+     "const double bound = (constant.epsilon * ...",
+     "const double bound = (0x1p-4 * constant.epsilon * ...", ["predicates_tests"]),
+    ("filter_guard_ignored",
+     "predicates/include/exactgeo/predicates/kernel/filter.hpp",
+     "return (in_guard & static_cast<int>(std::fabs(value) > bound)) != 0;",
+     "return (static_cast<int>(std::fabs(value) > bound) | (in_guard & 0)) != 0;",
+     ["predicates_tests"]),
+    ("expansion_underflow_margin_dropped",
+     "predicates/include/exactgeo/predicates/kernel/exponent_range.hpp",
+     "const int lowest = ceil_div(-969, degree) - grain_;",
+     "const int lowest = ceil_div(-1074, degree) - grain_;", ["predicates_tests"]),
+    ("exact_vector_rounding_a_full_ulp",
+     "predicates/include/exactgeo/predicates/kernel/exact_vector.hpp",
+     "return std::ldexp(1.0, std::ilogb(s) - 53);",
+     "return std::ldexp(1.0, std::ilogb(s) - 51);", ["predicates_tests", "ccd_tests"]),
+    ("certainly_different_too_eager",
+     "predicates/include/exactgeo/predicates/kernel/exact_vector.hpp",
+     "std::fabs(r - s) > 0x1p-52 * largest", "std::fabs(r - s) > 0x1p-56 * largest",
+     ["predicates_tests", "ccd_tests"]),
+    ("parallelogram_proof_ignores_tails",
+     "predicates/include/exactgeo/predicates/internal/patch_frame.hpp",
+     "if (a.head != b.head || a.tail != b.tail) return false;",
+     "if (a.head != b.head) return false;", ["predicates_tests", "ccd_tests"]),
+    ("coplanarity_threshold_halved",
+     "ccd/include/exactgeo/ccd/internal/coplanarity.hpp",
+     "c.threshold_ = (3.0 * e0", "c.threshold_ = 0.5 * (3.0 * e0", ["ccd_tests"]),
+    ("coplanarity_threshold_sixteenth",
+     "ccd/include/exactgeo/ccd/internal/coplanarity.hpp",
+     "c.threshold_ = (3.0 * e0", "c.threshold_ = 0x1p-4 * (3.0 * e0", ["ccd_tests"]),
+    ("slice_sides_threshold_halved",
+     "ccd/include/exactgeo/ccd/internal/slice_sides.hpp",
+     "sides.threshold_ =", "sides.threshold_ = 0.5 *", ["ccd_tests"]),
+    ("search_one_level_past_max_depth",
+     "ccd/include/exactgeo/ccd/internal/root_search.hpp",
+     "if (piece.depth >= max_depth_)", "if (piece.depth > max_depth_)", ["ccd_tests"]),
+    ("bounding_box_cull_one_corner_short",
+     "ccd/include/exactgeo/ccd/internal/culling.hpp",
+     "if (positive == static_cast<int>(C) || negative == static_cast<int>(C)) return true;",
+     "if (positive + 1 >= static_cast<int>(C) || negative + 1 >= static_cast<int>(C)) return true;",
+     ["ccd_tests"]),
+    ("polynomial_root_without_inside",
+     "ccd/include/exactgeo/ccd/internal/polynomial_decision.hpp",
+     "if (coplanarity.changes_sign(p) && sides.origin_inside(s)) return PieceVerdict::root;",
+     "if (coplanarity.changes_sign(p)) return PieceVerdict::root;", ["ccd_tests"]),
+    ("float_box_padding_removed",
+     "inside/include/exactgeo/inside/internal/float_frame.hpp",
+     "static constexpr double kPad = 0x1p-20;", "static constexpr double kPad = 0.0;",
+     ["inside_tests"]),
+    ("degenerate_ray_counted",
+     "predicates/include/exactgeo/predicates/crossing_parity.hpp",
+     "      case Crossing::degenerate:\n        return RayCount::degenerate;",
+     "      case Crossing::degenerate:\n        break;",
+     ["predicates_tests", "ccd_tests", "inside_tests"]),
+]
+
+
+def run(command, log=None):
+    with open(log or os.devnull, "w") as out:
+        return subprocess.run(command, stdout=out, stderr=subprocess.STDOUT).returncode
+
+
+caught = total = 0
+for name, path, old, new, suites in MUTANTS:
+    if selected and name not in selected:
+        continue
+    total += 1
+    original = open(os.path.join(here, path)).read()
+    if original.count(old) != 1:
+        print(f"{name}: NOT APPLIED (the text is not in {path} exactly once)", flush=True)
+        continue
+    target = os.path.join(scratch, path)
+    open(target, "w").write(original.replace(old, new))
+    failed = []
+    if run(["cmake", "--build", build, f"-j{os.cpu_count()}", "--target", *suites]) != 0:
+        failed.append("(does not compile)")
+    else:
+        for suite in suites:
+            log = os.path.join(build, f"{name}.{suite}.log")
+            if run(["timeout", "1800", os.path.join(build, "bin", suite), "--gtest_brief=1"],
+                   log) != 0:
+                tests = sorted(set(re.findall(r"^\[  FAILED  \] ([\w/.]+)",
+                                              open(log).read(), re.M)))
+                failed += tests[:3] or [f"{suite} (crashed or timed out)"]
+    open(target, "w").write(original)
+    caught += bool(failed)
+    print(f"{name}: " + ("caught by " + " ".join(failed) if failed else "NOT CAUGHT"), flush=True)
+print(f"{caught} of {total} mutants caught")
+PY
