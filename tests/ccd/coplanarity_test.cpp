@@ -42,6 +42,8 @@ Polynomial coplanarity_oracle(const EdgeEdgeQuery& q) {
 }
 
 struct Tally {
+  int queries = 0;
+  int certified = 0;  ///< queries whose cubic got an error bound (corners within the guard)
   int pieces = 0;
   int proven_nonzero = 0;
   int sign_changes = 0;
@@ -52,7 +54,9 @@ template <class Query>
 void check_claims(const Query& q, Rng& rng, int paths, Tally& tally) {
   const auto corners = internal::corner_images(q);
   const auto certificate = internal::Coplanarity::of(corners);
+  ++tally.queries;
   if (!certificate) return;
+  ++tally.certified;
   Polynomial p = coplanarity_oracle(q);
   trim(p);
   for (int path = 0; path < paths; ++path) {
@@ -89,8 +93,14 @@ TEST(Coplanarity, ClaimsHoldOnTheBundledData) {
       if (::testing::Test::HasFatalFailure()) return;
     }
   }
-  std::printf("data: %d pieces, %d proven free of coplanarity, %d sign changes\n", tally.pieces,
-              tally.proven_nonzero, tally.sign_changes);
+  std::printf(
+      "data: %d of %d queries certified, %d pieces, %d proven free of coplanarity, %d "
+      "sign changes\n",
+      tally.certified, tally.queries, tally.pieces, tally.proven_nonzero, tally.sign_changes);
+  // A query gets no certificate when the largest coordinate of its corners on some axis
+  // is outside the guard [2^-242, 2^242]: 38 of the 1,179 bundled ones, every one with an
+  // axis on which all corners are zero (primitives moving in a coordinate plane).
+  EXPECT_GT(tally.certified, tally.queries * 9 / 10);
   EXPECT_GT(tally.proven_nonzero, tally.pieces / 10);  // the certificate does work
   EXPECT_GT(tally.sign_changes, 0);
 }
@@ -104,8 +114,14 @@ void check_random_queries(const char* stream) {
     check_claims(q, rng, 3, tally);
     if (::testing::Test::HasFatalFailure()) return;
   }
-  std::printf("%s: %d pieces, %d proven free of coplanarity, %d sign changes\n", stream,
-              tally.pieces, tally.proven_nonzero, tally.sign_changes);
+  std::printf(
+      "%s: %d of %d queries certified, %d pieces, %d proven free of coplanarity, %d "
+      "sign changes\n",
+      stream, tally.certified, tally.queries, tally.pieces, tally.proven_nonzero,
+      tally.sign_changes);
+  // The mix includes scalings far beyond the cubic's guard (2^+-242), where no certificate
+  // is made: claims are checked on the others.
+  EXPECT_GT(tally.certified, tally.queries / 2);
   EXPECT_GT(tally.proven_nonzero, tally.pieces / 10);
   EXPECT_GT(tally.sign_changes, 0);
 }

@@ -34,13 +34,14 @@ Query random_dyadic_query(testing::Rng& rng) {
   return q;
 }
 
-/// A grid query moved by a random non-dyadic offset and scaled by 2^k: the rounding of
-/// the moved points breaks the grid's exact degeneracies by about an ulp, and every
-/// product of their differences rounds. Where filters must hand over to exact arithmetic.
+/// A grid query moved by a random non-dyadic offset and scaled by 2^k, |k| <= max_exponent:
+/// the rounding of the moved points breaks the grid's exact degeneracies by about an ulp,
+/// and every product of their differences rounds. Where filters must hand over to exact
+/// arithmetic, and where a certificate's error bound is tested hardest.
 template <class Query>
-Query near_degenerate_query(testing::Rng& rng) {
+Query near_degenerate_query(testing::Rng& rng, int max_exponent = 700) {
   const Point3 offset = testing::random_point(rng, 4.0);
-  const int k = testing::uniform_int(rng, -700, 700);
+  const int k = testing::uniform_int(rng, -max_exponent, max_exponent);
   return mapped(random_dyadic_query<Query>(rng), [&](const Point3& x) {
     return testing::scaled({x[0] + offset[0], x[1] + offset[1], x[2] + offset[2]}, k);
   });
