@@ -985,10 +985,11 @@ TEST(mesh_io_data, SharedSpotPlyFilesLoadAsQuads) {
                              {"spot_quad_cc3.ply", 187394, 0, 187392, 0, 0},
                              {"spot_quad_cc4.ply", 749570, 0, 749568, 0, 0}};
   for (const DataFile& d : levels) {
+    if (!fs::exists(dir / d.path)) GTEST_SKIP() << "no " << (dir / d.path);
+  }
+  for (const DataFile& d : levels) {
     SCOPED_TRACE(d.path);
-    const fs::path path = dir / d.path;
-    if (!fs::exists(path)) continue;
-    const LoadedMesh m = load_mesh(path.string());
+    const LoadedMesh m = load_mesh((dir / d.path).string());
     EXPECT_EQ(m.format, "ply binary little endian");
     expect_counts(m, d, false);
   }
