@@ -71,6 +71,36 @@ TEST(ExactVector, RoundedValueIsWithinTheFilterInputModel) {
   EXPECT_GT(multi_component, 5000);
 }
 
+/// Near ties: h + (a half ulp of h) + t with t tiny. The exact value is just above or just
+/// below the midpoint between two doubles, and a plain sum from the smallest component up
+/// rounds the midpoint to even, off by a little more than half an ulp whenever t points the
+/// other way. The rounded value must still be the nearest double: within half an ulp.
+TEST(ExactVector, RoundedValueIsNearestAtTies) {
+  Rng rng = testing::seeded_engine("exact-vector-ties");
+  int corrected = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double h = random_magnitude(rng, -300, 300);
+    const double half =
+        std::ldexp(1.0, std::ilogb(h) - 53) * (testing::uniform_int(rng, 0, 1) ? 1 : -1);
+    const double tiny = random_magnitude(rng, std::ilogb(h) - 200, std::ilogb(h) - 60);
+    ExactVector::Coordinate x = ExactVector::Coordinate(h);
+    for (const double term : {half, tiny})
+      x = *(x + ExactVector::Coordinate(term)).compress().narrow<ExactVector::kCapacity>();
+    const ExactVector v = kernel::make_exact_vector({x, x, x});
+    ASSERT_TRUE(v.filterable);
+    const double r = v.rounded[0];
+    const mpq_class error = abs(mpq_class(r) - exact_value(x));
+    const mpq_class half_ulp = mpq_class(std::ldexp(1.0, std::ilogb(r) - 53));
+    ASSERT_LE(error, half_ulp) << std::hexfloat << "h " << h << " half " << half << " tiny " << tiny
+                               << ": rounded " << r;
+    double plain = 0;  // the plain sum, smallest component first
+    for (int k = 0; k < x.size(); ++k)
+      plain += x.data()[k];
+    corrected += plain != r;
+  }
+  EXPECT_GT(corrected, 1000);  // the plain sum is off often: the cases reach the edge
+}
+
 TEST(ExactVector, ExtremeValues) {
   // Below 2^-1021 every sum of doubles is itself a double (all are multiples of 2^-1074):
   // it compresses to one exact component.
