@@ -142,19 +142,10 @@ template <class Query>
 double worst_error_ratio(const Query& q, Rng& rng) {
   const auto certificate = internal::Coplanarity::of(internal::corner_images(q));
   if (!certificate) return 0.0;
-  const Polynomial p = coplanarity_oracle(q);
-  double worst = 0.0;
-  walk_random_split_path(rng, 48, certificate->whole_step(), internal::split_coefficients,
-                         [&](const internal::CoplanarityCoefficients& c, const mpq_class& start,
-                             const mpq_class& end) {
-                           const std::vector<mpq_class> b = bernstein_on(p, 3, start, end);
-                           for (std::size_t k = 0; k < 4; ++k) {
-                             const mpq_class error = abs(mpq_class(c[k]) - 3 * b[k]);
-                             worst = std::max(worst,
-                                              mpq_class(error / certificate->threshold()).get_d());
-                           }
-                         });
-  return worst;
+  return worst_coefficient_error(
+      rng, 48, certificate->whole_step(), internal::split_coefficients, {coplanarity_oracle(q)}, 3,
+      3, certificate->threshold(),
+      [](const internal::CoplanarityCoefficients& c, std::size_t) -> const auto& { return c; });
 }
 
 TEST(Coplanarity, CoefficientErrorsStayWithinTheThreshold) {

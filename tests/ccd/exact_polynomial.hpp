@@ -8,6 +8,7 @@
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -187,6 +188,30 @@ void walk_random_split_path(testing::Rng& rng, int max_depth, Coefficients c, Sp
       start = middle;
     }
   }
+}
+
+/// The largest |computed - scale * exact| / threshold over the Bernstein coefficients of
+/// every piece along one random split path: the error bound a certificate rests on,
+/// measured. `exact` are the polynomials (degree at most `degree`); computed(c, i) gives
+/// the certificate's coefficients of polynomial i on the piece whose coefficients are c.
+template <class Coefficients, class Split, class Computed>
+double worst_coefficient_error(testing::Rng& rng, int max_depth, const Coefficients& whole_step,
+                               Split split, const std::vector<Polynomial>& exact, int degree,
+                               int scale, double threshold, Computed computed) {
+  double worst = 0.0;
+  walk_random_split_path(rng, max_depth, whole_step, split,
+                         [&](const Coefficients& c, const mpq_class& start, const mpq_class& end) {
+                           for (std::size_t i = 0; i < exact.size(); ++i) {
+                             const std::vector<mpq_class> b =
+                                 bernstein_on(exact[i], degree, start, end);
+                             const auto& ci = computed(c, i);
+                             for (std::size_t k = 0; k < b.size(); ++k) {
+                               const mpq_class error = abs(mpq_class(ci[k]) - scale * b[k]);
+                               worst = std::max(worst, mpq_class(error / threshold).get_d());
+                             }
+                           }
+                         });
+  return worst;
 }
 
 }  // namespace exactgeo::ccd::testing_polynomials

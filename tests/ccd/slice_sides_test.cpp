@@ -110,20 +110,9 @@ double worst_error_ratio(const Query& q, Rng& rng) {
   using Sides = internal::SliceSides<std::tuple_size_v<decltype(corners)>>;
   const std::optional<Sides> sides = Sides::of(corners);
   if (!sides) return 0.0;
-  const std::vector<Polynomial> exact = side_oracle(q);
-  double worst = 0.0;
-  walk_random_split_path(
-      rng, 30, sides->whole_step(), Sides::split,
-      [&](const typename Sides::Coefficients& c, const mpq_class& start, const mpq_class& end) {
-        for (std::size_t i = 0; i < exact.size(); ++i) {
-          const std::vector<mpq_class> b = bernstein_on(exact[i], 4, start, end);
-          for (int k = 0; k <= 4; ++k) {
-            const mpq_class error = abs(mpq_class(c[i][static_cast<std::size_t>(k)]) - 12 * b[k]);
-            worst = std::max(worst, mpq_class(error / sides->threshold()).get_d());
-          }
-        }
-      });
-  return worst;
+  return worst_coefficient_error(
+      rng, 30, sides->whole_step(), Sides::split, side_oracle(q), 4, 12, sides->threshold(),
+      [](const typename Sides::Coefficients& c, std::size_t i) -> const auto& { return c[i]; });
 }
 
 TEST(SliceSides, CoefficientErrorsStayWithinTheThreshold) {
