@@ -253,6 +253,42 @@ TEST(CertificateEdges, PhiFilter) {
   EXPECT_GT(e.near_bound, 50);
 }
 
+/// cross2 where its rounding is worst with the exact value on the other side of zero. For
+/// a = (a1, a2), b = (b1, b2), every input just off a midpoint between two doubles near 1
+/// (1 + n 2^-52 + 2^-53, nudged by 2^-105), so each rounds by half an ulp in a chosen
+/// direction: a1 and b2 up, a2 and b1 down. With n(a1) + n(b2) = n(a2) + n(b1) and the
+/// first pair further apart, a1 b2 - a2 b1 is negative (about -d^2 2^-104), while the
+/// rounded inputs give exactly +2^-51: half the bound, with the wrong sign. A bound
+/// weakened to a quarter certifies it; the true one must not.
+TEST(CertificateEdges, Cross2RoundingAgainstTheSign) {
+  Rng rng = testing::seeded_engine("edges.cross2_against_the_sign");
+  Edge edge;
+  constexpr double kUlp = 0x1p-52;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int c = testing::uniform_int(rng, 1, 1 << 20);
+    const int d = testing::uniform_int(rng, 1, c);
+    const int k = testing::uniform_int(rng, -400, 400);  // exact scaling: within the guard
+    // (n, rounds up): a1 = c - d up, b2 = c + d up, a2 = c down, b1 = c down.
+    const std::array<std::pair<int, bool>, 4> inputs{
+        {{c - d, true}, {c, false}, {c, false}, {c + d, true}}};  // a1, a2, b1, b2
+    Inputs<2> in;
+    for (int i = 0; i < 4; ++i) {
+      const auto [n, up] = inputs[static_cast<std::size_t>(i)];
+      const std::size_t vector = static_cast<std::size_t>(i / 2);
+      const int axis = i % 2;
+      in.heads[vector][axis] = std::ldexp(1 + n * kUlp, k);
+      in.tails[vector][axis] = std::ldexp(-(0x1p-53 + (up ? 0x1p-105 : -0x1p-105)), k);
+    }
+    check_filter<Cross2Formula, Grouping::by_vector>(in.offsets(), 2, edge);
+    if (::testing::Test::HasFatalFailure()) {
+      ADD_FAILURE() << "trial " << trial << ": c " << c << ", d " << d << ", 2^" << k;
+      return;
+    }
+  }
+  edge.print("cross2 rounding against the sign");
+  EXPECT_GT(edge.worst, 0.45);  // the rounding is as bad as designed: half the bound
+}
+
 /// The static det3 bound of one ray: every det3 sign of a ray test is on corners and the
 /// direction, and one bound serves them all. Corners here are 2^-60 to 2^20 times the
 /// size of the direction's components (which reach 66 for ray 63), with det[c0, c1, d]
