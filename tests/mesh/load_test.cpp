@@ -948,6 +948,7 @@ const DataFile kBundled[] = {
     {"negative/double-torus-3-holes.off", 228, 0, 183, 18, 62},
     {"spot/spot_control_mesh.obj", 188, 4, 160, 16, 48},
     {"spot/spot_quadrangulated.obj", 2930, 0, 2928, 0, 0},
+    {"spot/spot_quad_cc1.ply", 11714, 0, 11712, 0, 0},  // binary float64 PLY
 };
 
 void expect_counts(const LoadedMesh& m, const DataFile& d, bool split) {
@@ -977,11 +978,10 @@ TEST(mesh_io_data, BundledMeshesLoadWithTheirFaceCounts) {
   }
 }
 
+/// The finer Spot levels (cc1 is bundled, see kBundled).
 TEST(mesh_io_data, SharedSpotPlyFilesLoadAsQuads) {
   const fs::path dir = fs::path(EXACTGEO_SHARED_DATA_DIR) / "meshes" / "spot";
-  if (!fs::exists(dir / "spot_quad_cc1.ply")) GTEST_SKIP() << "no shared data at " << dir;
-  const DataFile levels[] = {{"spot_quad_cc1.ply", 11714, 0, 11712, 0, 0},
-                             {"spot_quad_cc2.ply", 46850, 0, 46848, 0, 0},
+  const DataFile levels[] = {{"spot_quad_cc2.ply", 46850, 0, 46848, 0, 0},
                              {"spot_quad_cc3.ply", 187394, 0, 187392, 0, 0},
                              {"spot_quad_cc4.ply", 749570, 0, 749568, 0, 0}};
   for (const DataFile& d : levels) {
