@@ -26,30 +26,26 @@ if(EXACTGEO_BUILD_FUZZERS)
   add_compile_options(-fsanitize=fuzzer-no-link)
 endif()
 
-# exactgeo_library(<name> <sources...>): a library of the current top-level folder, as
-# target exactgeo_<name> with alias exactgeo::<name>, public headers in <folder>/include.
-# (One library per folder, named after it; mesh/ has a second one, mesh_files.)
+# exactgeo_library(<name> [<sources...>]): a library of the current top-level folder, as
+# target exactgeo_<name> with alias exactgeo::<name>, public headers in <folder>/include;
+# header-only (an INTERFACE library) when no source is given. (One library per folder,
+# named after it; mesh/ has a second one, mesh_files.)
 function(exactgeo_library name)
   set(target exactgeo_${name})
-  add_library(${target} ${ARGN})
-  add_library(exactgeo::${name} ALIAS ${target})
-  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME ${target})
-  target_include_directories(${target} PUBLIC
-    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
-    $<INSTALL_INTERFACE:include>)
-  target_compile_features(${target} PUBLIC cxx_std_20)
-  # Build-only: the warnings (and -Werror) are ours, not an installed consumer's.
-  target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:exactgeo_warnings>)
-endfunction()
-
-# exactgeo_header_library(<name>): a header-only library, as exactgeo_library.
-function(exactgeo_header_library name)
-  set(target exactgeo_${name})
-  add_library(${target} INTERFACE)
+  if(ARGN)
+    add_library(${target} ${ARGN})
+    set(scope PUBLIC)
+    set_target_properties(${target} PROPERTIES OUTPUT_NAME ${target})
+    # Build-only: the warnings (and -Werror) are ours, not an installed consumer's.
+    target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:exactgeo_warnings>)
+  else()
+    add_library(${target} INTERFACE)
+    set(scope INTERFACE)
+  endif()
   add_library(exactgeo::${name} ALIAS ${target})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
-  target_include_directories(${target} INTERFACE
+  target_include_directories(${target} ${scope}
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:include>)
-  target_compile_features(${target} INTERFACE cxx_std_20)
+  target_compile_features(${target} ${scope} cxx_std_20)
 endfunction()
