@@ -7,7 +7,7 @@
 #
 # Usage: scripts/mutants.sh [NAME...] > mutants.txt     (every mutant when none is named)
 #
-# Not part of CI: it rebuilds after every mutant (about an hour on 2 cores). The scratch
+# Not part of CI: it rebuilds after every mutant (about half an hour on 2 cores). The scratch
 # copy and its build live in build-mutants/ (ignored by git); the checkout is not touched.
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"

@@ -266,6 +266,7 @@ TEST(ExactCcd, DepthLimitZeroOnTwoRootCasesIsConservative) {
     const Result deeper = on_query(d, [&](const auto& q) { return exact(q, o); });
     ASSERT_TRUE(deeper.collision) << d.where;
     EXPECT_EQ(deeper.depth, 1) << d.where;
+    ASSERT_TRUE(deeper.time_of_impact.has_value()) << d.where;
     EXPECT_EQ(deeper.time_of_impact->end - deeper.time_of_impact->start, 0.5) << d.where;
     ++checked;
   }

@@ -88,6 +88,18 @@ void expect_embree_matches_brute_force(const std::string& path, std::size_t coun
   EXPECT_GT(by_location[static_cast<int>(Location::boundary)], count / 8);
 }
 
+/// The README's examples: the C++ snippet (load, check and build, classify) and the points
+/// of the command-line example, with Embree and with every face as candidates.
+TEST(RealMeshes, ReadmeExamples) {
+  mesh::LoadedMesh spot = mesh::load_mesh(kMeshes + "spot/spot_quadrangulated.obj");
+  const Classifier brute(spot.mesh, {CandidateSearch::brute_force});
+  const Classifier classifier(std::move(spot.mesh));
+  for (const Classifier* c : {&classifier, &brute}) {
+    EXPECT_EQ(c->classify({0, 0.2, 0}), Location::inside);
+    EXPECT_EQ(c->classify({0, 0, 2}), Location::outside);
+  }
+}
+
 TEST(RealMeshes, EmbreeAgreesWithBruteForceOnBundledMeshes) {
   for (const char* name :
        {"cgal/cube_quad.off", "cgal/torus_quad.off", "cgal/3torus.off", "cgal/cross_quad.off",

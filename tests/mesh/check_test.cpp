@@ -19,7 +19,7 @@
 namespace exactgeo::mesh {
 namespace {
 
-using test_meshes::kHexahedronFaces;
+using testing::kHexahedronFaces;
 
 /// Appends the box [lower, upper] as six quads, reusing existing vertices with exactly the
 /// same coordinates (so two boxes can share an edge).

@@ -15,6 +15,7 @@
 #include "exactgeo/predicates/kernel/signs.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "support/generators.hpp"
+#include "support/hexahedron.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
 
@@ -78,8 +79,9 @@ RayCount library_count(const FaceSet& set, const Point3& origin, const Vector3& 
 }
 
 std::string describe(const FaceSet& set, const Point3& origin) {
-  std::string s = "origin " + std::to_string(origin[0]) + " ...; corners:";
   char buf[96];
+  std::snprintf(buf, sizeof buf, "origin (%a,%a,%a); corners:", origin[0], origin[1], origin[2]);
+  std::string s = buf;
   for (const Point3& p : set.points) {
     std::snprintf(buf, sizeof buf, " (%a,%a,%a)", p[0], p[1], p[2]);
     s += buf;
@@ -182,12 +184,10 @@ TEST(CrossingParity, CandidatesRestrictTheCount) {
 /// The unit cube as six quads (tensor order through SurfaceFace::patch).
 FaceSet unit_cube() {
   FaceSet cube;
-  for (int c = 0; c < 8; ++c)
-    cube.points.push_back({double(c & 1), double((c >> 1) & 1), double((c >> 2) & 1)});
-  for (const auto& q : std::array<std::array<VertexIndex, 4>, 6>{
-           {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}}) {
+  const auto corners = testing::unit_cube_corners();
+  cube.points.assign(corners.begin(), corners.end());
+  for (const auto& q : testing::kHexahedronFaces)
     cube.faces.push_back(SurfaceFace::patch(q[0], q[1], q[2], q[3]));
-  }
   cube.prepare();
   return cube;
 }

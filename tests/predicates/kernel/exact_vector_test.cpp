@@ -21,6 +21,7 @@ namespace {
 
 using kernel::ExactVector;
 using kernel::Offset;
+using testing::random_magnitude;
 using testing::Rng;
 
 mpq_class exact_value(const ExactVector::Coordinate& e) {
@@ -36,12 +37,6 @@ ExactVector exact_difference(const Point3& head, const Point3& tail) {
   for (int axis = 0; axis < 3; ++axis)
     c[axis] = kernel::Expansion<2>::difference(head[axis], tail[axis]);
   return kernel::make_exact_vector(c);
-}
-
-/// A double with a random exponent in [lo, hi] and a random sign.
-double random_magnitude(Rng& rng, int lo, int hi) {
-  const double m = testing::uniform(rng, 1, 2);
-  return std::ldexp(testing::uniform_int(rng, 0, 1) ? m : -m, testing::uniform_int(rng, lo, hi));
 }
 
 TEST(ExactVector, RoundedValueIsWithinTheFilterInputModel) {
