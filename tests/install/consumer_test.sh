@@ -18,7 +18,7 @@ if [ "$(cache EXACTGEO_SANITIZE)" = ON ]; then
   flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 fi
 
-rm -rf "$work_dir/prefix" "$work_dir/build"
+rm -rf "$work_dir/prefix" "$work_dir/build" "$work_dir/build-files"
 cmake --install "$build_dir" --prefix "$work_dir/prefix" ${build_type:+--config "$build_type"}
 
 # Only the install prefix is searched, and the dependencies a consumer need not have
@@ -42,3 +42,49 @@ esac
 
 cmake --build "$work_dir/build" ${build_type:+--config "$build_type"}
 "$work_dir/build/consumer"
+
+# Again with assimp allowed: exactgeo::mesh_files is imported and loads files, by the
+# exact readers and through assimp (an ASCII STL tetrahedron, welded).
+cmake -S "$source_dir" -B "$work_dir/build-files" --no-warn-unused-cli \
+  -DCMAKE_PREFIX_PATH="$work_dir/prefix" \
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF \
+  -DCONSUMER_MESH_FILES=ON \
+  -DCMAKE_BUILD_TYPE="$build_type" \
+  -DCMAKE_CXX_COMPILER="$compiler" \
+  -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="$flags"
+cmake --build "$work_dir/build-files" ${build_type:+--config "$build_type"}
+cat >"$work_dir/tetrahedron.stl" <<'STL'
+solid tetrahedron
+facet normal 0 0 -1
+outer loop
+vertex 0 0 0
+vertex 0 1 0
+vertex 1 0 0
+endloop
+endfacet
+facet normal 0 -1 0
+outer loop
+vertex 0 0 0
+vertex 1 0 0
+vertex 0 0 1
+endloop
+endfacet
+facet normal -1 0 0
+outer loop
+vertex 0 0 0
+vertex 0 0 1
+vertex 0 1 0
+endloop
+endfacet
+facet normal 1 1 1
+outer loop
+vertex 1 0 0
+vertex 0 1 0
+vertex 0 0 1
+endloop
+endfacet
+endsolid tetrahedron
+STL
+"$work_dir/build-files/load_mesh_file" "$source_dir/../../data/meshes/cgal/cube_quad.off" \
+  "$work_dir/tetrahedron.stl"
