@@ -21,39 +21,36 @@ fi
 rm -rf "$work_dir/prefix" "$work_dir/build" "$work_dir/build-files"
 cmake --install "$build_dir" --prefix "$work_dir/prefix" ${build_type:+--config "$build_type"}
 
-# Only the install prefix is searched, and the dependencies a consumer need not have
-# (test and CLI packages) are switched off: find_package(exactgeo) must not want them.
-cmake -S "$source_dir" -B "$work_dir/build" --no-warn-unused-cli \
-  -DCMAKE_PREFIX_PATH="$work_dir/prefix" \
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF \
-  -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON \
-  -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON \
-  -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON \
-  -DCMAKE_BUILD_TYPE="$build_type" \
-  -DCMAKE_CXX_COMPILER="$compiler" \
-  -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="$flags"
+# Configures and builds the consumer in build dir $1 with the extra cmake arguments after
+# it, searching only the install prefix, with the build's compiler, type and sanitizers.
+build_consumer() {
+  local dir=$1
+  shift
+  cmake -S "$source_dir" -B "$dir" --no-warn-unused-cli \
+    -DCMAKE_PREFIX_PATH="$work_dir/prefix" \
+    -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF \
+    -DCMAKE_BUILD_TYPE="$build_type" \
+    -DCMAKE_CXX_COMPILER="$compiler" \
+    -DCMAKE_CXX_FLAGS="$flags" \
+    -DCMAKE_EXE_LINKER_FLAGS="$flags" "$@"
+  local found
+  found=$(sed -n 's/^exactgeo_DIR:[A-Z]*=//p' "$dir/CMakeCache.txt")
+  case "$found" in
+    "$work_dir/prefix/"*) ;;
+    *) echo "consumer found exactgeo in '$found', not under $work_dir/prefix" >&2; exit 1 ;;
+  esac
+  cmake --build "$dir" ${build_type:+--config "$build_type"}
+}
 
-found=$(sed -n 's/^exactgeo_DIR:[A-Z]*=//p' "$work_dir/build/CMakeCache.txt")
-case "$found" in
-  "$work_dir/prefix/"*) ;;
-  *) echo "consumer found exactgeo in '$found', not under $work_dir/prefix" >&2; exit 1 ;;
-esac
-
-cmake --build "$work_dir/build" ${build_type:+--config "$build_type"}
+# The dependencies a consumer need not have (test and CLI packages, and assimp without
+# exactgeo::mesh_files) are switched off: find_package(exactgeo) must not want them.
+build_consumer "$work_dir/build" -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON \
+  -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON -DCMAKE_DISABLE_FIND_PACKAGE_assimp=ON
 "$work_dir/build/consumer"
 
 # Again with assimp allowed: exactgeo::mesh_files is imported and loads files, by the
 # exact readers and through assimp (an ASCII STL tetrahedron, welded).
-cmake -S "$source_dir" -B "$work_dir/build-files" --no-warn-unused-cli \
-  -DCMAKE_PREFIX_PATH="$work_dir/prefix" \
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF \
-  -DCONSUMER_MESH_FILES=ON \
-  -DCMAKE_BUILD_TYPE="$build_type" \
-  -DCMAKE_CXX_COMPILER="$compiler" \
-  -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="$flags"
-cmake --build "$work_dir/build-files" ${build_type:+--config "$build_type"}
+build_consumer "$work_dir/build-files" -DCONSUMER_MESH_FILES=ON
 cat >"$work_dir/tetrahedron.stl" <<'STL'
 solid tetrahedron
 facet normal 0 0 -1
