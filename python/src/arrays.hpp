@@ -1,0 +1,62 @@
+#pragma once
+
+// NumPy arrays in and out of the extension: every batch function takes its arrays through
+// these checks, so a wrong shape, a non-finite coordinate or a bad option is a ValueError
+// that names the argument and the row, never a crash or a silent NaN label.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <initializer_list>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "exactgeo/predicates/arithmetic.hpp"
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo::python {
+
+namespace py = pybind11;
+
+/// A C-contiguous float64 array. As an argument type, pybind11 converts any other input
+/// (another dtype, a nested list, a strided view) into a fresh one on the way in.
+using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// The same for integer indices (faces). Float input is refused before this conversion
+/// (integer_array), so an index is never truncated.
+using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+/// "(5, 2)": an array's shape as Python prints it.
+std::string shape_text(const py::array& array);
+
+/// Throws ValueError "<name> must have shape (n, 3), got (5, 2)" unless the array has
+/// `shape`, where -1 stands for any length.
+void require_shape(const py::array& array, std::string_view name,
+                   std::initializer_list<py::ssize_t> shape);
+
+/// Throws ValueError naming the first row (index along the first axis) that holds a NaN or
+/// an infinity.
+void require_finite(const Doubles& array, std::string_view name);
+
+/// `object` as a C-contiguous int64 array; throws ValueError unless it holds integers
+/// (a float array would otherwise be truncated silently).
+Indices integer_array(const py::object& object, std::string_view name);
+
+/// The rows of an (n, 3) array as points. Precondition: require_shape(array, ..., {-1, 3}).
+std::span<const Point3> points_of(const Doubles& array);
+
+/// "exact" or "double"; throws ValueError listing the choices.
+Arithmetic arithmetic_named(std::string_view name);
+
+/// A thread count: 0 for one per hardware thread; throws ValueError when negative.
+unsigned thread_count(int threads);
+
+/// Throws OSError (FileNotFoundError, PermissionError, ...) with the path when the file
+/// cannot be opened for reading: Python code tells a missing file from a malformed one.
+void require_openable(const std::filesystem::path& path);
+
+}  // namespace exactgeo::python
