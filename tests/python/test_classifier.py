@@ -1,0 +1,159 @@
+"""exactgeo.Classifier: the same labels as `exactgeo inside`, exact on a known solid, every
+input form converted or refused with the row named, and the GIL released."""
+
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import exactgeo
+from conftest import MESHES, points_text
+from test_mesh import CUBE_QUADS, CUBE_VERTICES
+
+LABELS = {"outside": exactgeo.OUTSIDE, "inside": exactgeo.INSIDE, "boundary": exactgeo.BOUNDARY}
+SOLIDS = [MESHES / "spot" / "spot_quad_cc1.ply", MESHES / "spot" / "spot_quadrangulated.obj",
+          MESHES / "cgal" / "torus_quad.off", MESHES / "cgal" / "3torus.off"]
+
+
+def cube_classifier():
+    return exactgeo.Classifier(exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS))
+
+
+def box_points(mesh: exactgeo.Mesh, rng, n: int) -> np.ndarray:
+    """Uniform points in the mesh's box grown by 5%, plus every vertex and a few exact
+    copies of vertices (points on the surface)."""
+    lower, upper = mesh.vertices.min(axis=0), mesh.vertices.max(axis=0)
+    grow = 0.05 * (upper - lower)
+    uniform = rng.uniform(lower - grow, upper + grow, size=(n, 3))
+    return np.concatenate([uniform, mesh.vertices])
+
+
+@pytest.mark.parametrize("path", SOLIDS, ids=lambda p: p.name)
+@pytest.mark.parametrize("method", ["exact", "double"])
+def test_labels_match_the_command_line(cli, rng, path, method):
+    mesh = exactgeo.load_mesh(path)
+    points = box_points(mesh, rng, 3000)
+    labels = exactgeo.Classifier(mesh).classify(points, method=method)
+    done = cli.run("inside", path, "-", "--method", method, stdin=points_text(points))
+    assert done.returncode == 0, done.stderr
+    expected = np.array([LABELS[word] for word in done.stdout.split()], np.int8)
+    assert labels.dtype == np.int8 and labels.shape == (len(points),)
+    assert np.array_equal(labels, expected)
+    if method == "exact":  # every vertex lies on the surface
+        assert np.all(labels[-mesh.vertex_count:] == exactgeo.BOUNDARY)
+
+
+def test_known_solid_exactly(rng):
+    classifier = cube_classifier()
+    inner = rng.uniform(2.0**-60, 1 - 2.0**-53, size=(500, 3))
+    outer = inner.copy()
+    outer[:, 0] = np.where(rng.random(500) < 0.5, -inner[:, 0], 1 + inner[:, 0])
+    on_faces = inner.copy()
+    on_faces[:, 2] = rng.integers(0, 2, 500)  # z = 0 or z = 1 exactly
+    tiny_outside = np.array([[0.5, 0.5, -5e-324], [0.5, 0.5, np.nextafter(1, 2)]])
+    tiny_inside = np.array([[0.5, 0.5, 5e-324], [0.5, 0.5, np.nextafter(1, 0)]])
+    corners = CUBE_VERTICES
+    assert np.all(classifier.classify(inner) == exactgeo.INSIDE)
+    assert np.all(classifier.classify(outer) == exactgeo.OUTSIDE)
+    assert np.all(classifier.classify(on_faces) == exactgeo.BOUNDARY)
+    assert np.all(classifier.classify(corners) == exactgeo.BOUNDARY)
+    assert np.all(classifier.classify(tiny_outside) == exactgeo.OUTSIDE)
+    assert np.all(classifier.classify(tiny_inside) == exactgeo.INSIDE)
+
+
+def test_contains():
+    classifier = cube_classifier()
+    points = np.array([[0.5, 0.5, 0.5], [0.5, 0.5, 1.0], [2.0, 0.5, 0.5]])
+    assert classifier.contains(points).tolist() == [True, True, False]
+    assert classifier.contains(points, boundary=False).tolist() == [True, False, False]
+    assert classifier.contains(points).dtype == np.bool_
+
+
+def test_input_forms_are_converted(rng):
+    classifier = cube_classifier()
+    points = rng.uniform(-0.5, 1.5, size=(200, 3))
+    expected = classifier.classify(points)
+    wide = np.zeros((200, 6))
+    wide[:, ::2] = points
+    as_float32 = points.astype(np.float32)
+    assert np.array_equal(classifier.classify(wide[:, ::2]), expected)  # not contiguous
+    assert np.array_equal(classifier.classify(np.asfortranarray(points)), expected)
+    assert np.array_equal(classifier.classify(points.tolist()), expected)
+    assert np.array_equal(classifier.classify(as_float32),
+                          classifier.classify(as_float32.astype(np.float64)))
+    assert np.array_equal(classifier.classify(np.array([[2, 0, 0], [1, 1, 1]])),
+                          [exactgeo.OUTSIDE, exactgeo.BOUNDARY])
+    for threads in (1, 2, 7):
+        assert np.array_equal(classifier.classify(points, threads=threads), expected)
+
+
+def test_empty_input():
+    classifier = cube_classifier()
+    labels = classifier.classify(np.empty((0, 3)))
+    assert labels.shape == (0,) and labels.dtype == np.int8
+    assert classifier.contains(np.empty((0, 3))).shape == (0,)
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf])
+def test_non_finite_points_name_the_row(bad):
+    points = np.full((10, 3), 0.5)
+    points[7, 2] = bad
+    with pytest.raises(ValueError, match=r"points\[7\] has a non-finite coordinate"):
+        cube_classifier().classify(points)
+
+
+@pytest.mark.parametrize("shape", [(3,), (5, 2), (5, 4), (2, 3, 1)])
+def test_wrong_shapes(shape):
+    with pytest.raises(ValueError, match=r"points must have shape \(n, 3\)"):
+        cube_classifier().classify(np.zeros(shape))
+
+
+def test_bad_options():
+    classifier = cube_classifier()
+    with pytest.raises(ValueError, match="method must be 'exact' or 'double'"):
+        classifier.classify(np.zeros((1, 3)), method="rounded")
+    with pytest.raises(ValueError, match="threads must be"):
+        classifier.classify(np.zeros((1, 3)), threads=-1)
+    with pytest.raises(TypeError):
+        classifier.classify(np.array([["a", "b", "c"]], dtype=object))
+
+
+def test_a_mesh_that_bounds_no_solid_is_refused():
+    open_box = exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS[:5])
+    with pytest.raises(ValueError, match="boundary edge"):
+        exactgeo.Classifier(open_box)
+
+
+def test_the_gil_is_released_while_classifying():
+    """A second Python thread keeps running while one classifies: with the GIL held, it
+    would stall for the whole call."""
+    mesh = exactgeo.load_mesh(MESHES / "spot" / "spot_quad_cc1.ply")
+    classifier = exactgeo.Classifier(mesh)
+    points = box_points(mesh, np.random.default_rng(1), 200_000)
+    results = {}
+
+    def classify(name):
+        start = time.perf_counter()
+        results[name] = classifier.classify(points, threads=1)
+        results[name + " seconds"] = time.perf_counter() - start
+
+    worker = threading.Thread(target=classify, args=("worker",))
+    ticks = []
+    worker.start()
+    while worker.is_alive():
+        ticks.append(time.perf_counter())
+        time.sleep(0.001)
+    worker.join()
+    gaps = np.diff(ticks)
+    assert len(ticks) > 10, "the worker ended too fast to tell"
+    assert gaps.max() < 0.5 * results["worker seconds"], (gaps.max(), results["worker seconds"])
+
+    # Two threads classifying at once get the labels of one thread alone.
+    both = [threading.Thread(target=classify, args=(name,)) for name in ("a", "b")]
+    for t in both:
+        t.start()
+    for t in both:
+        t.join()
+    assert np.array_equal(results["a"], results["worker"])
+    assert np.array_equal(results["b"], results["worker"])
