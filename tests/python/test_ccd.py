@@ -1,0 +1,119 @@
+"""exactgeo.vertex_face_ccd / edge_edge_ccd and read_ccd_queries: the command line's
+answer for every bundled query and method, and every input form checked."""
+
+import csv
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import exactgeo
+from conftest import CCD
+
+QUERY_FILES = sorted(CCD.rglob("*.csv"))
+CCD_FUNCTIONS = {"vertex-face": exactgeo.vertex_face_ccd, "edge-edge": exactgeo.edge_edge_ccd}
+
+
+def cli_answers(cli, path, method, tmp_path):
+    """The command line's answer for every query of the file, in order."""
+    per_query = tmp_path / "per-query.csv"
+    done = cli.run("ccd", path, "--method", method, "--per-query", per_query)
+    assert done.returncode in (0, 1), done.stderr  # 1: some answer disagrees with the truth
+    with open(per_query) as f:
+        return np.array([row["result"] == "1" for row in csv.DictReader(f)])
+
+
+@pytest.mark.parametrize("path", QUERY_FILES, ids=lambda p: f"{p.parent.name}/{p.name}")
+@pytest.mark.parametrize("method", ["exact", "parity", "double", "cubic"])
+def test_answers_match_the_command_line(cli, tmp_path, path, method):
+    queries = exactgeo.read_ccd_queries(path)
+    assert queries.x0.shape == queries.x1.shape == (len(queries.x0), 4, 3)
+    answers = CCD_FUNCTIONS[queries.type](queries.x0, queries.x1, method=method)
+    assert answers.dtype == np.bool_
+    assert np.array_equal(answers, cli_answers(cli, path, method, tmp_path))
+    if method == "exact":  # exact: no false positive, no false negative
+        assert queries.truth is not None
+        assert np.array_equal(answers, queries.truth)
+
+
+def test_a_folder_reads_as_its_files_in_order():
+    folder = CCD / "sample-queries" / "unit-tests" / "edge-edge"
+    whole = exactgeo.read_ccd_queries(folder)
+    parts = [exactgeo.read_ccd_queries(p) for p in sorted(folder.glob("*.csv"))]
+    assert whole.type == "edge-edge"
+    assert np.array_equal(whole.x0, np.concatenate([p.x0 for p in parts]))
+    assert np.array_equal(whole.truth, np.concatenate([p.truth for p in parts]))
+    with pytest.raises(ValueError, match="both vertex-face and edge-edge"):
+        exactgeo.read_ccd_queries(CCD / "sample-queries" / "unit-tests")
+
+
+def test_time_of_impact_brackets():
+    queries = exactgeo.read_ccd_queries(CCD / "scalable-ccd-data" / "cloth-funnel" / "queries" /
+                                        "227vf.csv")
+    hits, brackets = exactgeo.vertex_face_ccd(queries.x0, queries.x1, toi_width=1e-4)
+    assert np.array_equal(hits, exactgeo.vertex_face_ccd(queries.x0, queries.x1))
+    assert brackets.shape == (len(hits), 2)
+    assert np.all(np.isnan(brackets[~hits]))
+    start, end = brackets[hits].T
+    assert np.all((0 <= start) & (start <= end) & (end <= 1) & (end - start <= 1e-4))
+    # The bracket's promise, checked on the step cut at its ends: no contact in [0, start],
+    # none missed, a contact in [0, end]. The cut positions x0 + t (x1 - x0) are used only
+    # where they are exact doubles (checked in rationals), so each cut step is the same
+    # motion as the original one.
+    checked = 0
+    for i in np.flatnonzero(hits & (brackets[:, 0] > 0)):
+        cuts = [exact_position(queries.x0[i], queries.x1[i], t) for t in brackets[i]]
+        if any(c is None for c in cuts):
+            continue
+        x0 = queries.x0[i][None]
+        assert not exactgeo.vertex_face_ccd(x0, cuts[0][None])[0]
+        assert exactgeo.vertex_face_ccd(x0, cuts[1][None])[0]
+        checked += 1
+    assert checked > 0
+
+
+def exact_position(x0: np.ndarray, x1: np.ndarray, t: float):
+    """x0 + t (x1 - x0) as doubles, or None where that is not exactly representable."""
+    t = Fraction(t)
+    exact = [Fraction(a) + t * (Fraction(b) - Fraction(a)) for a, b in zip(x0.ravel(), x1.ravel())]
+    rounded = np.array([float(x) for x in exact])
+    if any(Fraction(r) != x for r, x in zip(rounded, exact)):
+        return None
+    return rounded.reshape(x0.shape)
+
+
+def test_input_forms_and_errors():
+    queries = exactgeo.read_ccd_queries(CCD / "sample-queries" / "unit-tests" / "vertex-face")
+    expected = exactgeo.vertex_face_ccd(queries.x0, queries.x1)
+    assert np.array_equal(exactgeo.vertex_face_ccd(queries.x0.tolist(), queries.x1.tolist()),
+                          expected)
+    assert np.array_equal(exactgeo.vertex_face_ccd(np.asfortranarray(queries.x0), queries.x1,
+                                                   threads=1), expected)
+    empty = exactgeo.vertex_face_ccd(np.empty((0, 4, 3)), np.empty((0, 4, 3)))
+    assert empty.shape == (0,) and empty.dtype == np.bool_
+
+    x0 = queries.x0.copy()
+    x0[3, 1, 2] = np.nan
+    with pytest.raises(ValueError, match=r"x0\[3\] has a non-finite coordinate"):
+        exactgeo.vertex_face_ccd(x0, queries.x1)
+    with pytest.raises(ValueError, match=r"x1 must have shape \(n, 4, 3\), got"):
+        exactgeo.vertex_face_ccd(queries.x0, queries.x1[:, :3])
+    with pytest.raises(ValueError, match="x0 has .* queries, x1 has"):
+        exactgeo.edge_edge_ccd(queries.x0, queries.x1[1:])
+    with pytest.raises(ValueError, match="method must be"):
+        exactgeo.vertex_face_ccd(queries.x0, queries.x1, method="fast")
+    with pytest.raises(ValueError, match="toi_width needs method='exact'"):
+        exactgeo.vertex_face_ccd(queries.x0, queries.x1, method="parity", toi_width=1e-3)
+    with pytest.raises(ValueError, match="toi_width must be in"):
+        exactgeo.vertex_face_ccd(queries.x0, queries.x1, toi_width=0.0)
+
+
+def test_query_file_errors(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        exactgeo.read_ccd_queries(tmp_path / "missing-vf.csv")
+    bad = tmp_path / "bad_vf.csv"
+    bad.write_text("1,1,2,1,3,1\n" * 7 + "1,3,2,1,3,1\n")  # 1/3 is not a double
+    with pytest.raises(ValueError, match=r"bad_vf.csv:8: "):
+        exactgeo.read_ccd_queries(bad)
+    with pytest.raises(ValueError, match="type must be"):
+        exactgeo.read_ccd_queries(bad, type="vf")
