@@ -1,0 +1,46 @@
+"""The package as a whole: its version, its type stub, its docstrings."""
+
+import ast
+import inspect
+import re
+from pathlib import Path
+
+import exactgeo
+from exactgeo import _exactgeo
+
+
+def stub_names() -> dict:
+    """Top-level names of the stub, and the members of each class it declares."""
+    tree = ast.parse(Path(_exactgeo.__file__).with_name("_exactgeo.pyi").read_text())
+    names = {}
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            names[node.name] = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+        elif isinstance(node, ast.FunctionDef):
+            names[node.name] = None
+        elif isinstance(node, ast.AnnAssign):
+            names[node.target.id] = None
+    return names
+
+
+def test_version():
+    assert re.fullmatch(r"\d+\.\d+\.\d+", exactgeo.__version__)
+
+
+def test_the_stub_declares_exactly_what_the_module_defines():
+    stub = stub_names()
+    module = {n for n in dir(_exactgeo) if not n.startswith("__") or n == "__version__"}
+    assert set(stub) == module
+    for name, members in stub.items():
+        if members is None:
+            continue
+        defined = {n for n in vars(getattr(_exactgeo, name)) if not n.startswith("_")}
+        assert members - {"__init__"} == defined, name
+
+
+def test_every_public_name_is_documented():
+    for name in exactgeo.__all__:
+        obj = getattr(exactgeo, name)
+        if callable(obj):
+            assert inspect.getdoc(obj), name
+
