@@ -12,13 +12,13 @@
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/io/input_error.hpp"
-#include "exactgeo/io/numbers.hpp"
+#include "exactgeo/io/point_reader.hpp"
 #include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {
 
 using io::InputError;
-using io::RecordReader;
+using io::PointReader;
 using mesh::load_mesh;
 using mesh::LoadedMesh;
 namespace {
@@ -33,25 +33,28 @@ double seconds_since(Clock::time_point start) {
 /// stays flat (about 2 MB of points and labels).
 constexpr std::size_t kBlockPoints = std::size_t{1} << 16;
 
-/// Reads up to kBlockPoints points; an empty block means the input is exhausted.
-void read_block(RecordReader& reader, std::vector<Point3>& block) {
-  block.clear();
-  while (block.size() < kBlockPoints) {
-    const auto record = reader.next();
-    if (!record) return;
-    if (record->size() != 3) {
-      throw InputError(reader.source(), reader.line_number(),
-                       "expected 3 coordinates, found " + std::to_string(record->size()));
-    }
-    block.push_back({(*record)[0], (*record)[1], (*record)[2]});
-  }
-}
-
 struct Tally {
   std::size_t points = 0;
   std::array<std::size_t, 3> by_location{};  // indexed by inside::Location
   double seconds = 0.0;
+  double read_seconds = 0.0;
 };
+
+/// Appends `"labels": ["inside", ...]` to `out`, a few thousand labels per write.
+void print_json_labels(const std::vector<inside::Location>& labels, std::ostream& out) {
+  std::string text = ", \"labels\": [";
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    if (i > 0) text += ", ";
+    text.push_back('"');
+    text.append(to_string(labels[i]));
+    text.push_back('"');
+    if (text.size() > (std::size_t{1} << 16)) {
+      out << text;
+      text.clear();
+    }
+  }
+  out << text << "]";
+}
 
 }  // namespace
 
@@ -79,12 +82,21 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   }
 
   Tally tally;
-  RecordReader reader(in, points_source);
+  PointReader reader(in, points_source,
+                     options.points_format.value_or(io::default_point_format(options.points)));
+  const bool print_labels = !options.json;
+  const bool keep_labels = options.json && options.labels;  // printed with the counts, at the end
   std::vector<Point3> block;
   std::vector<inside::Location> locations;
+  std::vector<inside::Location> kept;
   std::string text;
+  const auto read_block = [&] {
+    const Clock::time_point start = Clock::now();
+    reader.read_block(block, kBlockPoints);
+    tally.read_seconds += seconds_since(start);
+  };
   try {
-    for (read_block(reader, block); !block.empty(); read_block(reader, block)) {
+    for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
       inside::classify_batch(*classifier, block, locations, options.arithmetic, options.threads);
@@ -93,8 +105,9 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       text.clear();
       for (const inside::Location l : locations) {
         ++tally.by_location[static_cast<std::size_t>(l)];
-        if (!options.json) text.append(to_string(l)).push_back('\n');
+        if (print_labels) text.append(to_string(l)).push_back('\n');
       }
+      if (keep_labels) kept.insert(kept.end(), locations.begin(), locations.end());
       out << text;
       if (options.progress) err << "\r" << tally.points << " points" << std::flush;
     }
@@ -114,7 +127,10 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
         << to_string(options.arithmetic) << "\""
-        << ", \"build_seconds\": " << build_seconds << ", \"seconds\": " << tally.seconds << "}\n";
+        << ", \"build_seconds\": " << build_seconds << ", \"read_seconds\": " << tally.read_seconds
+        << ", \"seconds\": " << tally.seconds;
+    if (keep_labels) print_json_labels(kept, out);
+    out << "}\n";
   }
   out << std::flush;
   return ExitCode::success;
@@ -124,8 +140,9 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
   CLI::App* sub = app.add_subcommand(
       "inside",
       "Classify points against a closed quad/triangle mesh, exactly: one word per point "
-      "(inside, outside or boundary), in input order. POINTS has three numbers per line "
-      "(decimal or hexfloat, separated by spaces and/or commas; '#' comments).");
+      "(inside, outside or boundary), in input order. POINTS is text (three numbers per line: "
+      "decimal or hexfloat, separated by spaces and/or commas; '#' comments), raw "
+      "little-endian float64 triples (f64), or a NumPy .npy array of shape (n, 3), float64.");
   sub->add_option("mesh", options.mesh, "OBJ, OFF or PLY (exact), or any format assimp reads")
       ->required();
   sub->add_option("points", options.points, "points file, or - for standard input (default)");
@@ -136,9 +153,19 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       ->check(CLI::IsMember({"exact", "double"}));
   sub->add_option("--threads", options.threads, "worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
-  sub->add_flag("--json", options.json,
-                "print one JSON object (counts, build and classification seconds) instead of "
-                "the labels");
+  sub->add_option_function<std::string>(
+         "--points-format",
+         [&options](const std::string& f) { options.points_format = io::parse_point_format(f); },
+         "text, f64 or npy (default: npy for a POINTS path ending in .npy, else text)")
+      ->check(CLI::IsMember({"text", "f64", "npy"}));
+  CLI::Option* json =
+      sub->add_flag("--json", options.json,
+                    "print one JSON object (counts; build, read and classification seconds) "
+                    "instead of the labels");
+  sub->add_flag("--labels", options.labels,
+                "with --json: the labels too, as \"labels\": [...] in input order (held in "
+                "memory until the end, one byte per point)")
+      ->needs(json);
   sub->add_flag("--weld", options.weld, "merge vertices with exactly equal coordinates");
   sub->add_flag("--split-polygons", options.split_polygons,
                 "split faces with more than four corners into triangle fans");

@@ -2,12 +2,15 @@
 
 // `exactgeo inside MESH [POINTS|-]`: classifies points against a closed mesh, one word
 // per point in input order (the command-line contract, README.md). Points stream through in blocks,
-// so memory stays flat however many there are.
+// so memory stays flat however many there are. They are text, raw float64 or .npy
+// (io/point_reader.hpp).
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 #include "cli/exit_code.hpp"
+#include "exactgeo/io/point_reader.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 
 namespace CLI {
@@ -19,9 +22,12 @@ namespace exactgeo::cli {
 struct InsideCommandOptions {
   std::string mesh;
   std::string points = "-";  ///< a file, or "-" for standard input
+  /// nullopt: npy for a path ending in ".npy", text otherwise (io::default_point_format)
+  std::optional<io::PointFormat> points_format;
   Arithmetic arithmetic = Arithmetic::exact;
   unsigned threads = 0;  ///< 0: one per hardware thread
   bool json = false;
+  bool labels = false;  ///< with json: the labels too, in input order
   bool weld = false;
   bool split_polygons = false;
   bool allow_non_manifold = false;
@@ -30,8 +36,9 @@ struct InsideCommandOptions {
 
 /// Loads and checks the mesh, builds the search structure, then classifies `in`'s points
 /// block by block. An input error stops the run with exit code 2: the mesh's errors
-/// before anything is printed, a bad point line after the labels of the blocks before it
-/// (each printed label is right; the message names the line).
+/// before anything is printed, a bad point after the labels of the blocks before it
+/// (each printed label is right; the message names the line, or the binary point). The
+/// JSON object is printed whole at the end, or not at all.
 ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                     const std::string& points_source, std::ostream& out, std::ostream& err);
 

@@ -173,6 +173,36 @@ expect_in "inside error names the line" "$message" '<stdin>:1: expected 3 coordi
 message=$(printf '0 0 0\n' | "$exe" inside "$meshes/negative/corner_with_hole.off" 2>&1 >/dev/null)
 expect_in "inside open mesh message" "$message" 'corner_with_hole.off: mesh is not closed: '
 
+# inside, binary points (tests/apps/inside_command_test.cpp has the formats in depth): f64
+# on stdin, 24 zero bytes a point; (0, 0, 0) is the cube's centre.
+zeros24='\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0'
+labels=$(printf '%b' "$zeros24$zeros24" | "$exe" inside --points-format f64 "$cube" | tr '\n' ' ')
+if [ "$labels" != "inside inside " ]; then
+  echo "FAIL: inside --points-format f64 on stdin: '$labels'"
+  failures=$((failures + 1))
+fi
+expect 0 "inside f64 empty stdin" "" inside --points-format f64 "$cube"
+expect 2 "inside f64 23 bytes" "${zeros24%\\0}" inside --points-format f64 "$cube"
+expect 2 "inside f64 25 bytes" "$zeros24\0" inside --points-format f64 "$cube" -
+expect 2 "inside npy on stdin, text" "0 0 0\n" inside --points-format npy "$cube"
+expect 2 "inside unknown points format" "0 0 0\n" inside --points-format f32 "$cube"
+expect 2 "inside --labels without --json" "0 0 0\n" inside --labels "$cube"
+message=$(printf '%b' "$zeros24\0" | "$exe" inside --points-format f64 "$cube" 2>&1 >/dev/null)
+expect_in "inside f64 error names the point" "$message" \
+  '<stdin>: point 1 (byte 24): the input ends 1 byte into this point'
+printf '0 0 0\n' >"$scratch/points.npy"
+expect 2 "inside .npy by name" "" inside "$cube" "$scratch/points.npy"
+expect 0 "inside .npy named, read as text" "" inside --points-format text "$cube" \
+  "$scratch/points.npy"
+json=$(printf '%b' "$points" | "$exe" inside --json --labels "$cube")
+expect_in "inside --json --labels" "$json" '"points": 3' '"read_seconds": ' \
+  '"labels": ["inside", "outside", "boundary"]}'
+if command -v python3 >/dev/null &&
+   ! printf '%s' "$json" | python3 -c 'import json, sys; json.load(sys.stdin)' 2>/dev/null; then
+  echo "FAIL: inside --json --labels is not valid JSON: $json"
+  failures=$((failures + 1))
+fi
+
 # ccd-mesh: two frames of one triangle mesh (the start and the end of a step); sorted pairs,
 # 0-based; 2 for anything that is not the same triangle mesh twice.
 # Face 0 stands on z = 0. vf: vertex 3 falls through it at t = 1/2 (its triangle's other

@@ -1,0 +1,275 @@
+// `exactgeo inside` end to end (run_inside on files, as the binary opens them): the same
+// random points as text, f64 and npy (versions 1 to 3, either byte order) give identical
+// labels; --json --labels carries them in input order; every malformed binary input gives
+// exit code 2, a message naming the file and the place, and nothing on stdout.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/inside_command.hpp"
+#include "exactgeo/mesh/load.hpp"
+#include "support/generators.hpp"
+#include "support/npy_bytes.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::float64_bytes;
+using testing::npy_file;
+using testing::npy_header;
+using testing::npy_points_dict;
+
+const std::string kMeshes = std::string(EXACTGEO_TEST_DATA_DIR) + "/meshes/";
+
+struct Outcome {
+  ExitCode code;
+  std::string out, err;
+};
+
+/// Runs on the file `points` the way the binary does (opened in binary mode, named by its path).
+Outcome run_file(InsideCommandOptions options, const fs::path& points) {
+  options.points = points.string();
+  options.threads = 2;
+  std::ifstream in(points, std::ios::binary);
+  std::ostringstream out, err;
+  const ExitCode code = run_inside(options, in, options.points, out, err);
+  return {code, out.str(), err.str()};
+}
+
+Outcome run_stdin(InsideCommandOptions options, const std::string& bytes) {
+  std::istringstream in(bytes);
+  std::ostringstream out, err;
+  const ExitCode code = run_inside(options, in, "<stdin>", out, err);
+  return {code, out.str(), err.str()};
+}
+
+void write_file(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::string as_text(const std::vector<Point3>& points) {
+  std::string text;
+  char line[96];
+  for (const Point3& p : points) {
+    std::snprintf(line, sizeof line, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    text += line;
+  }
+  return text;
+}
+
+/// The strings of the JSON array "labels" in `json` (one empty string if it is missing).
+std::vector<std::string> json_labels(const std::string& json) {
+  const std::size_t start = json.find("\"labels\": [");
+  if (start == std::string::npos) return {""};
+  const std::size_t end = json.find(']', start);
+  std::vector<std::string> labels;
+  for (std::size_t at = json.find('"', start + 10); at < end; at = json.find('"', at + 1)) {
+    const std::size_t close = json.find('"', at + 1);
+    labels.push_back(json.substr(at + 1, close - at - 1));
+    at = close;
+  }
+  return labels;
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+class InsideCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("exactgeo_inside_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path dir_;
+};
+
+TEST_F(InsideCommand, EveryPointFormatGivesTheSameLabels) {
+  const std::string mesh = kMeshes + "spot/spot_quadrangulated.obj";
+  const auto loaded = mesh::load_mesh(mesh);
+  // Uniform in the mesh's box grown by 5% per side, then every vertex (boundary): more
+  // than one block of the command's 65,536 points.
+  auto rng = testing::seeded_engine("InsideCommand.formats");
+  Point3 lo = loaded.mesh.vertices[0], hi = lo;
+  for (const Point3& v : loaded.mesh.vertices) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      lo[c] = std::min(lo[c], v[c]);
+      hi[c] = std::max(hi[c], v[c]);
+    }
+  }
+  std::vector<Point3> points;
+  for (int i = 0; i < 70000; ++i) {
+    Point3 p;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const double grow = 0.05 * (hi[c] - lo[c]);
+      p[c] = testing::uniform(rng, lo[c] - grow, hi[c] + grow);
+    }
+    points.push_back(p);
+  }
+  points.insert(points.end(), loaded.mesh.vertices.begin(), loaded.mesh.vertices.end());
+
+  InsideCommandOptions options;
+  options.mesh = mesh;
+  write_file(dir_ / "points.txt", as_text(points));
+  const Outcome text = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(text.code, ExitCode::success) << text.err;
+  const std::vector<std::string> labels = lines_of(text.out);
+  ASSERT_EQ(labels.size(), points.size());
+  for (const char* label : {"inside", "outside", "boundary"}) {
+    EXPECT_NE(std::find(labels.begin(), labels.end(), label), labels.end()) << label;
+  }
+
+  struct Case {
+    std::string file;
+    std::string bytes;
+    std::optional<io::PointFormat> format;  // nullopt: by the file name
+  };
+  const std::vector<Case> cases = {
+      {"points.f64", float64_bytes(points), io::PointFormat::f64},
+      {"points.npy", npy_file(points, 1, false), std::nullopt},
+      {"points_v2_big_endian.NPY", npy_file(points, 2, true), std::nullopt},
+      {"points_v3.npy", npy_file(points, 3, false), io::PointFormat::npy},
+      {"points_v1_big_endian.bin", npy_file(points, 1, true), io::PointFormat::npy},
+  };
+  for (const Case& c : cases) {
+    write_file(dir_ / c.file, c.bytes);
+    options.points_format = c.format;
+    const Outcome binary = run_file(options, dir_ / c.file);
+    ASSERT_EQ(binary.code, ExitCode::success) << c.file << ": " << binary.err;
+    EXPECT_TRUE(binary.out == text.out) << c.file << ": labels differ from the text input's";
+    EXPECT_EQ(binary.err, "") << c.file;
+  }
+
+  // --json --labels: the same labels, in input order, in one JSON object.
+  options.points_format = std::nullopt;
+  options.json = true;
+  options.labels = true;
+  const Outcome json = run_file(options, dir_ / "points.npy");
+  ASSERT_EQ(json.code, ExitCode::success) << json.err;
+  EXPECT_TRUE(json_labels(json.out) == labels) << "--json --labels differs from the labels";
+  for (const std::string& key :
+       {"{\"points\": " + std::to_string(points.size()) + ", ", std::string("\"build_seconds\": "),
+        std::string("\"read_seconds\": "), std::string("\"seconds\": ")}) {
+    EXPECT_NE(json.out.find(key), std::string::npos) << key;
+  }
+  EXPECT_EQ(json.out.substr(json.out.size() - 4), "\"]}\n");
+  EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1);
+  options.labels = false;
+  const Outcome counts = run_file(options, dir_ / "points.npy");
+  EXPECT_EQ(counts.out.find("labels"), std::string::npos) << counts.out;
+  EXPECT_NE(counts.out.find("\"read_seconds\": "), std::string::npos) << counts.out;
+}
+
+TEST_F(InsideCommand, MalformedBinaryInputIsRefusedNamingFileAndPlace) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Point3> two = {{0.5, 0.5, 0.5}, {3, 3, 3}};
+  const std::string f64 = float64_bytes(two);
+  const std::string npy = npy_file(two);  // 128 bytes of header, 48 of data
+  const auto header = [](const std::string& descr, const std::string& fortran,
+                         const std::string& shape) {
+    return npy_header("{'descr': '" + descr + "', 'fortran_order': " + fortran +
+                      ", 'shape': " + shape + ", }");
+  };
+  struct Case {
+    std::string file;
+    std::string bytes;
+    std::string place;  // the message after "exactgeo inside: <file>: "
+    std::optional<io::PointFormat> format = std::nullopt;
+  };
+  const std::vector<Case> cases = {
+      {"bad_magic.npy", "\x92NUMPY" + npy.substr(6), "header: not an .npy file"},
+      {"zip.npy", "PK\x03\x04", "header: not an .npy file"},
+      {"empty.npy", "", "header: the input is empty, not an .npy file"},
+      {"short_header.npy", npy.substr(0, 9), "header: the file ends within the header length"},
+      {"header_past_end.npy", npy.substr(0, 100),
+       "header: the header is 128 bytes long but the file ends at byte 100"},
+      {"bad_dict.npy", npy_header("{'descr': '<f8', 'fortran_order': False, 'shape': (2, 3)"),
+       "header: expected ',' or '}' after a value (at byte 128)"},
+      {"float32.npy", header("<f4", "False", "(2, 3)") + std::string(24, '\0'),
+       "header: descr is '<f4'; accepted: '<f8' or '>f8' (float64"},
+      {"int64.npy", header("<i8", "False", "(2, 3)") + f64, "header: descr is '<i8'"},
+      {"object.npy", header("|O", "False", "(2, 3)"), "header: descr is '|O'"},
+      {"fortran.npy", header("<f8", "True", "(2, 3)") + f64,
+       "header: fortran_order is True (the array is stored column by column); save a C-ordered "
+       "copy: np.save(path, np.ascontiguousarray(points))"},
+      {"one_d.npy", header("<f8", "False", "(6,)") + f64,
+       "header: shape is (6,); accepted: (n, 3), one row per point"},
+      {"four_columns.npy", header("<f8", "False", "(2, 4)") + f64 + std::string(16, '\0'),
+       "header: shape is (2, 4)"},
+      {"transposed.npy", header("<f8", "False", "(3, 2)") + f64, "header: shape is (3, 2)"},
+      {"truncated.npy", npy.substr(0, npy.size() - 8),
+       "point 1 (byte 152): the data ends 16 bytes into this point; the header's shape "
+       "declares 2 points"},
+      {"extra.npy", npy + std::string(8, '\0'),
+       "byte 176: data continues after the 2 points the header's shape declares"},
+      {"nan.npy", npy_file({{0, 0, 0}, {0, nan, 0}}, 2, true),
+       "point 1 (byte 152): y is nan; coordinates must be finite"},
+      {"nan.f64", float64_bytes({{0, 0, 0}, {0, 0, 0}, {nan, 0, 0}}),
+       "point 2 (byte 48): x is nan; coordinates must be finite", io::PointFormat::f64},
+      {"23.f64", f64.substr(0, 23), "point 0 (byte 0): the input ends 23 bytes into this point",
+       io::PointFormat::f64},
+      {"25.f64", f64.substr(0, 25), "point 1 (byte 24): the input ends 1 byte into this point",
+       io::PointFormat::f64},
+      {"text.txt", "0 0 0\n", "header: not an .npy file", io::PointFormat::npy},
+  };
+  for (const bool json : {false, true}) {
+    for (const Case& c : cases) {
+      InsideCommandOptions options;
+      options.mesh = kMeshes + "cgal/cube_quad.off";
+      options.points_format = c.format;
+      options.json = json;
+      options.labels = json;
+      write_file(dir_ / c.file, c.bytes);
+      const Outcome run = run_file(options, dir_ / c.file);
+      const std::string expected = "exactgeo inside: " + (dir_ / c.file).string() + ": " + c.place;
+      EXPECT_EQ(run.code, ExitCode::input_error) << c.file;
+      EXPECT_EQ(run.out, "") << c.file;
+      EXPECT_EQ(run.err.rfind(expected, 0), 0u) << run.err << "\nshould start with\n" << expected;
+      EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    }
+  }
+}
+
+TEST_F(InsideCommand, F64FromStandardInput) {
+  InsideCommandOptions options;
+  options.mesh = kMeshes + "cgal/cube_quad.off";
+  options.points_format = io::PointFormat::f64;
+  const std::string f64 = float64_bytes({{0, 0, 0}, {2, 0, 0}, {1, 0, 0}});
+  const Outcome labels = run_stdin(options, f64);
+  EXPECT_EQ(labels.code, ExitCode::success) << labels.err;
+  EXPECT_EQ(labels.out, "inside\noutside\nboundary\n");
+  const Outcome empty = run_stdin(options, "");
+  EXPECT_EQ(empty.code, ExitCode::success) << empty.err;
+  EXPECT_EQ(empty.out, "");
+  const Outcome truncated = run_stdin(options, f64.substr(0, 71));
+  EXPECT_EQ(truncated.code, ExitCode::input_error);
+  EXPECT_EQ(truncated.out, "");
+  EXPECT_EQ(truncated.err,
+            "exactgeo inside: <stdin>: point 2 (byte 48): the input ends 23 bytes into this point "
+            "(f64 input is 24 bytes per point: x, y, z)\n");
+  options.json = true;
+  options.labels = true;
+  const Outcome json = run_stdin(options, "");
+  EXPECT_EQ(json.out.rfind("{\"points\": 0, \"inside\": 0, ", 0), 0u) << json.out;
+  EXPECT_NE(json.out.find("\"labels\": []}"), std::string::npos) << json.out;
+}
+
+}  // namespace
+}  // namespace exactgeo::cli
