@@ -1,0 +1,122 @@
+"""exactgeo.dask on a real distributed.LocalCluster (two worker processes on loopback):
+the single-process labels, one classifier build per worker, and loader errors."""
+
+
+import numpy as np
+import pytest
+
+import exactgeo
+import exactgeo.dask
+
+da = pytest.importorskip("dask.array")
+distributed = pytest.importorskip("distributed")
+
+from conftest import CCD, write_obj  # noqa: E402
+
+
+def subdivided_cube(k: int):
+    """The unit cube with each face split into k x k quads: a closed quad mesh."""
+    index = {}
+    vertices, faces = [], []
+
+    def vertex(p):
+        if p not in index:
+            index[p] = len(vertices)
+            vertices.append(p)
+        return index[p]
+
+    ticks = [i / k for i in range(k + 1)]
+    for axis in range(3):
+        u, v = (axis + 1) % 3, (axis + 2) % 3
+        for side in (0.0, 1.0):
+            for i in range(k):
+                for j in range(k):
+                    corners = []
+                    for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                        p = [0.0, 0.0, 0.0]
+                        p[axis], p[u], p[v] = side, ticks[i + di], ticks[j + dj]
+                        corners.append(vertex(tuple(p)))
+                    faces.append(corners if side == 1.0 else corners[::-1])
+    return np.array(vertices), np.array(faces)
+
+
+def known_points(rng, n):
+    """Points with known labels: uniform in [-0.5, 1.5]^3, and points on the faces."""
+    points = rng.uniform(-0.5, 1.5, (n, 3))
+    on_face = rng.random(n) < 0.1
+    axis = rng.integers(0, 3, n)
+    points[on_face, axis[on_face]] = rng.integers(0, 2, on_face.sum())
+    on_face &= np.all((points >= 0) & (points <= 1), axis=1)
+    inside = np.all((points > 0) & (points < 1), axis=1)
+    truth = np.where(on_face, exactgeo.BOUNDARY,
+                     np.where(inside, exactgeo.INSIDE, exactgeo.OUTSIDE)).astype(np.int8)
+    return points, truth
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                       host="127.0.0.1", dashboard_address=None)
+    with distributed.Client(cluster) as client:
+        yield client
+    cluster.close()
+
+
+@pytest.fixture
+def cube_file(tmp_path):
+    path = tmp_path / "cube.obj"
+    write_obj(path, *subdivided_cube(4))
+    return path
+
+
+def test_labels_equal_the_single_process_ones(client, rng, cube_file):
+    points, truth = known_points(rng, 40_000)
+    local = exactgeo.Classifier(exactgeo.load_mesh(cube_file)).classify(points)
+    assert np.array_equal(local, truth)
+    labels = exactgeo.dask.classify(cube_file, da.from_array(points, chunks=(2_500, 3)))
+    assert labels.dtype == np.int8 and labels.shape == (len(points),)
+    assert np.array_equal(labels.compute(), truth)
+
+
+def test_each_worker_builds_the_classifier_once(client, rng, cube_file):
+    points, truth = known_points(rng, 20_000)
+    before = client.run(exactgeo.dask.worker_cache)
+    for _ in range(2):  # a second computation reuses the first one's classifiers
+        labels = exactgeo.dask.classify(cube_file, da.from_array(points, chunks=(1_000, 3)))
+        assert np.array_equal(labels.compute(), truth)
+    after = client.run(exactgeo.dask.worker_cache)
+    builds = {w: after[w]["builds"] - before[w]["builds"] for w in after}
+    blocks = {w: after[w]["blocks"] - before[w]["blocks"] for w in after}
+    assert sum(blocks.values()) == 40
+    assert all(b <= 1 for b in builds.values()), builds
+    assert sum(builds.values()) >= 1
+    # The cache is keyed by content: a changed file is loaded again.
+    vertices, faces = subdivided_cube(2)
+    write_obj(cube_file, vertices, faces)
+    labels = exactgeo.dask.classify(cube_file, da.from_array(points, chunks=(10_000, 3)))
+    assert np.array_equal(labels.compute(), truth)
+    rebuilt = client.run(exactgeo.dask.worker_cache)
+    assert sum(rebuilt[w]["builds"] - after[w]["builds"] for w in rebuilt) >= 1
+
+
+def test_a_bad_mesh_fails_with_the_loaders_message(client, tmp_path):
+    points = da.zeros((100, 3), chunks=(50, 3))
+    with pytest.raises(FileNotFoundError, match="no-such-mesh.obj"):
+        exactgeo.dask.classify(tmp_path / "no-such-mesh.obj", points).compute()
+    bad = tmp_path / "bad.obj"
+    bad.write_text("v 0 0 0\nv 1 0 zero\n")
+    with pytest.raises(ValueError, match="bad.obj:2: "):
+        exactgeo.dask.classify(bad, points).compute()
+    with pytest.raises(ValueError, match=r"points must have shape \(n, 3\)"):
+        exactgeo.dask.classify(bad, da.zeros((10, 2)))
+
+
+def test_ccd_files_count_as_the_command_line(client, cli):
+    folder = CCD / "sample-queries"
+    counts = exactgeo.dask.ccd_files([folder])
+    expected = cli.json("ccd", folder)
+    for kind, key in (("vertex-face", "vertex_face"), ("edge-edge", "edge_edge")):
+        for name in ("queries", "positives", "truth_positives", "false_positives",
+                     "false_negatives"):
+            assert counts[kind][name] == expected[key][name], (kind, name)
+    assert counts["vertex-face"]["queries"] > 0 and counts["edge-edge"]["queries"] > 0
