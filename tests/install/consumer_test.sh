@@ -85,3 +85,22 @@ endsolid tetrahedron
 STL
 "$work_dir/build-files/load_mesh_file" "$source_dir/../../data/meshes/cgal/cube_quad.off" \
   "$work_dir/tetrahedron.stl"
+
+# The Python package, when built: installed under the prefix, importable from there, and
+# its default place (relative to the prefix) is one Debian's python3 searches for the
+# default prefix /usr/local.
+python_dir=$(cache EXACTGEO_PYTHON_INSTALL_DIR)
+if [ "$(cache EXACTGEO_BUILD_PYTHON)" = ON ] && [ -n "$python_dir" ]; then
+  python=$(cache Python3_EXECUTABLE)
+  test -f "$work_dir/prefix/$python_dir/exactgeo/__init__.py"
+  "$python" -c "import sys; sys.exit('/usr/local/$python_dir' not in sys.path)" ||
+    { echo "$python does not search /usr/local/$python_dir" >&2; exit 1; }
+  if [ "$(cache EXACTGEO_SANITIZE)" != ON ]; then  # (an instrumented module needs the runtimes preloaded)
+    PYTHONPATH="$work_dir/prefix/$python_dir" "$python" -c "
+import exactgeo, sys
+assert exactgeo.__file__.startswith('$work_dir/prefix/'), exactgeo.__file__
+mesh = exactgeo.load_mesh('$source_dir/../../data/meshes/cgal/cube_quad.off')
+assert exactgeo.Classifier(mesh).classify([[0.5, 0.5, 0.5]])[0] == exactgeo.INSIDE
+"
+  fi
+fi
