@@ -59,19 +59,19 @@ std::vector<Face> faces_from(const py::object& faces, std::size_t vertex_count) 
   }
   std::size_t row = 0;
   for (const py::handle face : faces) {
-    std::int64_t corners[5] = {};
-    std::size_t count = 0;
+    std::int64_t corners[4] = {};
+    std::size_t count = 0;  // all of them, though only the first four are kept
     try {
       for (const py::handle corner : face) {
-        if (count == 5) break;  // too many either way; face_from reports it
-        corners[count++] = py::cast<std::int64_t>(corner);
+        const auto index = py::cast<std::int64_t>(corner);
+        if (count < 4) corners[count] = index;
+        ++count;
       }
     } catch (const py::error_already_set&) {
       throw py::value_error("faces[" + std::to_string(row) + "] is not a sequence of indices");
     } catch (const py::cast_error&) {
       throw py::value_error("faces[" + std::to_string(row) +
-                            "] holds a corner that is not an "
-                            "integer");
+                            "] holds a corner that is not an integer");
     }
     result.push_back(face_from(corners, count, row, vertex_count));
     ++row;

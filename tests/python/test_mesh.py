@@ -84,6 +84,8 @@ def test_coordinates_stay_exact(tmp_path):
         ([[0, 1, 2], [0, -1, 2]], r"faces\[1\] has corner index -1"),
         ([[0, 1]], r"faces\[0\] has 2 corners"),
         ([[0, 1, 2, 3, 4]], r"faces\[0\] has 5 corners"),
+        ([[0, 1, 2], list(range(7))], r"faces\[1\] has 7 corners"),
+        ([[0, 1, 2], 5], r"faces\[1\] is not a sequence"),
         ([[0, 1, 2.5]], r"faces\[0\] holds a corner that is not an integer"),
         (np.array([[0, 1, 2.0]]), r"faces must hold integers"),
         (np.zeros((2, 5), int), r"faces must have shape \(m, 3\) or \(m, 4\), got \(2, 5\)"),
