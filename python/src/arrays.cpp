@@ -1,6 +1,5 @@
 #include "arrays.hpp"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 
@@ -52,9 +51,7 @@ void require_finite(const Doubles& array, std::string_view name) {
   const auto size = static_cast<std::size_t>(array.size());
   for (std::size_t i = 0; i < size; ++i) {
     if (std::isfinite(values[i])) continue;
-    const std::size_t row_length = array.ndim() == 0 || array.shape(0) == 0
-                                       ? 1
-                                       : size / static_cast<std::size_t>(array.shape(0));
+    const std::size_t row_length = size / static_cast<std::size_t>(array.shape(0));
     throw py::value_error(std::string(name) + "[" + std::to_string(i / row_length) +
                           "] has a non-finite coordinate (" + std::to_string(values[i]) + ")");
   }

@@ -39,7 +39,7 @@ void require_shape(const py::array& array, std::string_view name,
                    std::initializer_list<py::ssize_t> shape);
 
 /// Throws ValueError naming the first row (index along the first axis) that holds a NaN or
-/// an infinity.
+/// an infinity. Precondition: the shape was checked (at least one axis).
 void require_finite(const Doubles& array, std::string_view name);
 
 /// `object` as a C-contiguous int64 array; throws ValueError unless it holds integers
