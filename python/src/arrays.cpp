@@ -57,6 +57,21 @@ void require_finite(const Doubles& array, std::string_view name) {
   }
 }
 
+Doubles coordinates(const py::object& object, std::string_view name,
+                    std::initializer_list<py::ssize_t> shape) {
+  const py::array array = py::array::ensure(object);
+  if (!array) throw py::type_error(std::string(name) + " must be an array of coordinates");
+  const char kind = array.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u') {
+    throw py::type_error(std::string(name) + " must hold real numbers, got dtype " +
+                         std::string(py::str(array.dtype())));
+  }
+  require_shape(array, name, shape);
+  Doubles doubles = Doubles::ensure(array);
+  require_finite(doubles, name);
+  return doubles;
+}
+
 Indices integer_array(const py::object& object, std::string_view name) {
   const py::array array = py::array::ensure(object);
   if (!array) throw py::value_error(std::string(name) + " must be an array of integers");

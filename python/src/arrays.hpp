@@ -30,6 +30,14 @@ using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 /// (integer_array), so an index is never truncated.
 using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
+/// `object` (an array or anything NumPy makes one of) as a C-contiguous float64 array of
+/// `shape` (-1: any length) with finite values. Real numbers only: integer and float
+/// dtypes are converted, every other one (complex, strings, booleans, objects) is a
+/// TypeError; a wrong shape or a NaN or infinity is a ValueError naming the argument and
+/// the row.
+Doubles coordinates(const py::object& object, std::string_view name,
+                    std::initializer_list<py::ssize_t> shape);
+
 /// "(5, 2)": an array's shape as Python prints it.
 std::string shape_text(const py::array& array);
 

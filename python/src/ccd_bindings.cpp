@@ -58,16 +58,14 @@ ccd::Options options_from(const std::string& method, std::optional<double> toi_w
 /// Runs one query type over (n, 4, 3) start and end positions: a bool array, and with
 /// toi_width an (n, 2) array of brackets (NaN rows where there is no collision).
 template <class Query, class Make, class Run>
-py::object run_queries(const Doubles& x0, const Doubles& x1, const ccd::Options& options,
-                       int threads, Make make, Run run) {
-  require_shape(x0, "x0", {-1, 4, 3});
-  require_shape(x1, "x1", {-1, 4, 3});
+py::object run_queries(const py::object& x0_in, const py::object& x1_in,
+                       const ccd::Options& options, int threads, Make make, Run run) {
+  const Doubles x0 = coordinates(x0_in, "x0", {-1, 4, 3});
+  const Doubles x1 = coordinates(x1_in, "x1", {-1, 4, 3});
   if (x0.shape(0) != x1.shape(0)) {
     throw py::value_error("x0 has " + std::to_string(x0.shape(0)) + " queries, x1 has " +
                           std::to_string(x1.shape(0)));
   }
-  require_finite(x0, "x0");
-  require_finite(x1, "x1");
   const unsigned workers = thread_count(threads);
   const auto n = static_cast<std::size_t>(x0.shape(0));
   const bool with_toi = options.time_of_impact_width.has_value();
@@ -99,7 +97,7 @@ py::object run_queries(const Doubles& x0, const Doubles& x1, const ccd::Options&
   return py::make_tuple(collisions, brackets);
 }
 
-py::object vertex_face(const Doubles& x0, const Doubles& x1, const std::string& method,
+py::object vertex_face(const py::object& x0, const py::object& x1, const std::string& method,
                        std::optional<double> toi_width, double cubic_tolerance, int threads) {
   return run_queries<ccd::VertexFaceQuery>(
       x0, x1, options_from(method, toi_width, cubic_tolerance), threads,
@@ -109,7 +107,7 @@ py::object vertex_face(const Doubles& x0, const Doubles& x1, const std::string& 
       });
 }
 
-py::object edge_edge(const Doubles& x0, const Doubles& x1, const std::string& method,
+py::object edge_edge(const py::object& x0, const py::object& x1, const std::string& method,
                      std::optional<double> toi_width, double cubic_tolerance, int threads) {
   return run_queries<ccd::EdgeEdgeQuery>(
       x0, x1, options_from(method, toi_width, cubic_tolerance), threads,

@@ -20,10 +20,10 @@ namespace {
 using inside::Location;
 
 /// The labels of `points` (validated), computed without the GIL.
-std::vector<Location> locations_of(const inside::Classifier& classifier, const Doubles& points,
-                                   const std::string& method, int threads) {
-  require_shape(points, "points", {-1, 3});
-  require_finite(points, "points");
+std::vector<Location> locations_of(const inside::Classifier& classifier,
+                                   const py::object& points_in, const std::string& method,
+                                   int threads) {
+  const Doubles points = coordinates(points_in, "points", {-1, 3});
   const Arithmetic arithmetic = arithmetic_named(method);
   const unsigned workers = thread_count(threads);
   const std::span<const Point3> rows = points_of(points);
@@ -33,7 +33,7 @@ std::vector<Location> locations_of(const inside::Classifier& classifier, const D
   return locations;
 }
 
-py::array_t<std::int8_t> classify(const inside::Classifier& classifier, const Doubles& points,
+py::array_t<std::int8_t> classify(const inside::Classifier& classifier, const py::object& points,
                                   const std::string& method, int threads) {
   const std::vector<Location> locations = locations_of(classifier, points, method, threads);
   py::array_t<std::int8_t> labels(static_cast<py::ssize_t>(locations.size()));
@@ -42,7 +42,7 @@ py::array_t<std::int8_t> classify(const inside::Classifier& classifier, const Do
   return labels;
 }
 
-py::array_t<bool> contains(const inside::Classifier& classifier, const Doubles& points,
+py::array_t<bool> contains(const inside::Classifier& classifier, const py::object& points,
                            bool boundary, const std::string& method, int threads) {
   const std::vector<Location> locations = locations_of(classifier, points, method, threads);
   py::array_t<bool> inside(static_cast<py::ssize_t>(locations.size()));

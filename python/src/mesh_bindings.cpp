@@ -79,9 +79,8 @@ std::vector<Face> faces_from(const py::object& faces, std::size_t vertex_count) 
   return result;
 }
 
-MeshObject mesh_from_arrays(const Doubles& vertices, const py::object& faces) {
-  require_shape(vertices, "vertices", {-1, 3});
-  require_finite(vertices, "vertices");
+MeshObject mesh_from_arrays(const py::object& vertices_in, const py::object& faces) {
+  const Doubles vertices = coordinates(vertices_in, "vertices", {-1, 3});
   MeshObject object;
   object.loaded.format = "arrays";
   const std::span<const Point3> points = points_of(vertices);

@@ -68,16 +68,16 @@ std::unique_ptr<MeshCcdObject> make(const py::object& faces_in,
   return std::make_unique<MeshCcdObject>(static_cast<std::size_t>(vertex_count), triangles);
 }
 
-StepResult step(MeshCcdObject& object, const Doubles& x0, const Doubles& x1,
+StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object& x1_in,
                 const std::string& method, const py::object& toi, int threads) {
   const std::size_t n = object.ccd.vertex_count();
+  const Doubles x0 = coordinates(x0_in, "x0", {-1, 3});
+  const Doubles x1 = coordinates(x1_in, "x1", {-1, 3});
   for (const auto& [array, name] : {std::pair{&x0, "x0"}, std::pair{&x1, "x1"}}) {
-    require_shape(*array, name, {-1, 3});
     if (static_cast<std::size_t>(array->shape(0)) != n) {
       throw py::value_error(std::string(name) + " has " + std::to_string(array->shape(0)) +
                             " rows, the mesh has " + std::to_string(n) + " vertices");
     }
-    require_finite(*array, name);
   }
   ccd::MeshCcdOptions options;
   const std::optional<ccd::Method> parsed = ccd::parse_method(method);

@@ -17,25 +17,25 @@ namespace {
 
 constexpr std::size_t kBlock = 4096;  // determinants per parallel block
 
-py::object orient3d_arrays(const Doubles& a, const Doubles& b, const Doubles& c, const Doubles& d,
-                           const std::string& method, int threads) {
+py::object orient3d_arrays(const py::object& a_in, const py::object& b_in, const py::object& c_in,
+                           const py::object& d_in, const std::string& method, int threads) {
   const Arithmetic arithmetic = arithmetic_named(method);
   const unsigned workers = thread_count(threads);
-  const bool single = a.ndim() == 1;
-  const char* names[] = {"a", "b", "c", "d"};
-  const Doubles* arrays[] = {&a, &b, &c, &d};
-  for (int k = 0; k < 4; ++k) {
-    if (single) {
-      require_shape(*arrays[k], names[k], {3});
-    } else {
-      require_shape(*arrays[k], names[k], {-1, 3});
-      if (arrays[k]->shape(0) != a.shape(0)) {
-        throw py::value_error(std::string(names[k]) + " has " +
-                              std::to_string(arrays[k]->shape(0)) + " rows, a has " +
-                              std::to_string(a.shape(0)));
-      }
+  // One point each, or one row per determinant.
+  const py::array first = py::array::ensure(a_in);
+  const bool single = first && first.ndim() == 1;
+  const auto points = [single](const py::object& x, const char* name) {
+    return single ? coordinates(x, name, {3}) : coordinates(x, name, {-1, 3});
+  };
+  const Doubles a = points(a_in, "a");
+  const Doubles b = points(b_in, "b");
+  const Doubles c = points(c_in, "c");
+  const Doubles d = points(d_in, "d");
+  for (const auto& [array, name] : {std::pair{&b, "b"}, std::pair{&c, "c"}, std::pair{&d, "d"}}) {
+    if (array->shape(0) != a.shape(0)) {
+      throw py::value_error(std::string(name) + " has " + std::to_string(array->shape(0)) +
+                            " rows, a has " + std::to_string(a.shape(0)));
     }
-    require_finite(*arrays[k], names[k]);
   }
   const auto point = [](const Doubles& x, std::size_t i) {
     return reinterpret_cast<const Point3*>(x.data())[i];
