@@ -6,6 +6,7 @@
 #include <chrono>
 #include <istream>
 #include <ostream>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -86,13 +87,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                      options.points_format.value_or(io::default_point_format(options.points)));
   const bool print_labels = !options.json;
   const bool keep_labels = options.json && options.labels;  // printed with the counts, at the end
-  std::vector<Point3> block;
+  std::span<const Point3> block;
   std::vector<inside::Location> locations;
   std::vector<inside::Location> kept;
   std::string text;
   const auto read_block = [&] {
     const Clock::time_point start = Clock::now();
-    reader.read_block(block, kBlockPoints);
+    block = reader.read_block(kBlockPoints);
     tally.read_seconds += seconds_since(start);
   };
   try {

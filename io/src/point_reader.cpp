@@ -69,26 +69,24 @@ PointFormat default_point_format(std::string_view path) noexcept {
 PointReader::PointReader(std::istream& in, std::string source, PointFormat format)
     : in_(in), source_(std::move(source)), format_(format), records_(in, source_) {}
 
-void PointReader::read_block(std::vector<PointXyz>& block, std::size_t max_points) {
-  block.clear();
-  if (format_ == PointFormat::text) {
-    read_text(block, max_points);
-    return;
-  }
+std::span<const PointXyz> PointReader::read_block(std::size_t max_points) {
+  if (format_ == PointFormat::text) return read_text(max_points);
   if (format_ == PointFormat::npy && !header_read_) read_npy_header();
-  read_binary(block, max_points);
+  return read_binary(max_points);
 }
 
-void PointReader::read_text(std::vector<PointXyz>& block, std::size_t max_points) {
-  while (block.size() < max_points) {
+std::span<const PointXyz> PointReader::read_text(std::size_t max_points) {
+  storage_.clear();
+  while (storage_.size() < max_points) {
     const auto record = records_.next();
-    if (!record) return;
+    if (!record) break;
     if (record->size() != 3) {
       throw InputError(source_, records_.line_number(),
                        "expected 3 coordinates, found " + std::to_string(record->size()));
     }
-    block.push_back({(*record)[0], (*record)[1], (*record)[2]});
+    storage_.push_back({(*record)[0], (*record)[1], (*record)[2]});
   }
+  return storage_;
 }
 
 void PointReader::read_npy_header() {
@@ -113,13 +111,12 @@ void PointReader::read_npy_header() {
   if (npy.points == 0) require_end_of_data();
 }
 
-void PointReader::read_binary(std::vector<PointXyz>& block, std::size_t max_points) {
+std::span<const PointXyz> PointReader::read_binary(std::size_t max_points) {
   std::uint64_t wanted = max_points;
   if (points_left_) wanted = std::min(wanted, *points_left_);
-  if (wanted == 0) return;
-  block.resize(static_cast<std::size_t>(wanted));
-  in_.read(reinterpret_cast<char*>(block.data()),
-           static_cast<std::streamsize>(block.size() * kPointBytes));
+  if (wanted == 0) return {};
+  PointXyz* const points = binary_destination(static_cast<std::size_t>(wanted));
+  in_.read(reinterpret_cast<char*>(points), static_cast<std::streamsize>(wanted * kPointBytes));
   const auto bytes = static_cast<std::size_t>(in_.gcount());
   if (in_.bad()) throw InputError(source_ + ": read error");
   const std::size_t whole = bytes / kPointBytes;
@@ -137,11 +134,10 @@ void PointReader::read_binary(std::vector<PointXyz>& block, std::size_t max_poin
                   "the input ends " + byte_count(partial) +
                       " into this point (f64 input is 24 bytes per point: x, y, z)");
   }
-  block.resize(whole);
   const bool swap = big_endian_ != (std::endian::native == std::endian::big);
   for (std::size_t i = 0; i < whole; ++i) {
     for (std::size_t c = 0; c < 3; ++c) {
-      double& x = block[i][c];
+      double& x = points[i][c];
       if (swap) x = byte_swapped(x);
       if (!std::isfinite(x)) {
         fail_at_point(points_read_ + i, std::string(1, "xyz"[c]) + " is " + non_finite_name(x) +
@@ -154,6 +150,25 @@ void PointReader::read_binary(std::vector<PointXyz>& block, std::size_t max_poin
     *points_left_ -= whole;
     if (*points_left_ == 0) require_end_of_data();
   }
+  return {points, whole};
+}
+
+PointXyz* PointReader::binary_destination(std::size_t max_points) {
+  // A large read(2) copies from the page cache at the stream position's offset in its page
+  // (for a file read from its start). A destination 8 to 24 bytes past that offset modulo
+  // 4096, which is where malloc puts a large vector's data when a file is read from offset
+  // 0, made the copy 6x slower (AMD EPYC: 0.13 s instead of 0.02 s for 240 MB), so the
+  // block starts at the point of storage_ that lies about half a page away from it.
+  constexpr std::size_t kPage = 4096;
+  constexpr std::size_t kSlack = kPage / 8;  // 24 k runs through every multiple of 8 mod 4096
+  if (storage_.size() < max_points + kSlack) storage_.resize(max_points + kSlack);
+  const std::uint64_t position = data_offset_ + points_read_ * kPointBytes;
+  const auto address = reinterpret_cast<std::uintptr_t>(storage_.data());
+  std::size_t first = 0;
+  const auto distance = [&] { return (address + first * kPointBytes - position) % kPage; };
+  while (distance() < kPage / 4 || distance() >= 3 * kPage / 4)
+    ++first;
+  return storage_.data() + first;
 }
 
 void PointReader::require_end_of_data() {

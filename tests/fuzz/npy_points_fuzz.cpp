@@ -48,10 +48,10 @@ std::optional<std::vector<PointXyz>> read_all(std::string_view bytes, PointForma
                                               std::size_t block_points) {
   std::istringstream in{std::string(bytes)};
   exactgeo::io::PointReader reader(in, kSource, format);
-  std::vector<PointXyz> all, block;
+  std::vector<PointXyz> all;
   try {
-    for (reader.read_block(block, block_points); !block.empty();
-         reader.read_block(block, block_points)) {
+    for (auto block = reader.read_block(block_points); !block.empty();
+         block = reader.read_block(block_points)) {
       check(block.size() <= block_points);
       all.insert(all.end(), block.begin(), block.end());
     }

@@ -31,8 +31,8 @@ using Points = std::vector<PointXyz>;
 Points read_all(const std::string& bytes, PointFormat format, std::size_t block = 5) {
   std::istringstream in(bytes);
   PointReader reader(in, "pts", format);
-  Points all, part;
-  for (reader.read_block(part, block); !part.empty(); reader.read_block(part, block)) {
+  Points all;
+  for (auto part = reader.read_block(block); !part.empty(); part = reader.read_block(block)) {
     EXPECT_LE(part.size(), block);
     all.insert(all.end(), part.begin(), part.end());
   }
@@ -207,12 +207,9 @@ TEST(PointReader, BlocksBeforeAnErrorAreReturned) {
   points[8][1] = std::numeric_limits<double>::quiet_NaN();
   std::istringstream in(npy_file(points));
   PointReader reader(in, "pts", PointFormat::npy);
-  Points block;
-  reader.read_block(block, 4);
-  EXPECT_EQ(block.size(), 4u);
-  reader.read_block(block, 4);
-  EXPECT_EQ(block.size(), 4u);
-  EXPECT_THROW(reader.read_block(block, 4), InputError);
+  EXPECT_EQ(reader.read_block(4).size(), 4u);
+  EXPECT_EQ(reader.read_block(4).size(), 4u);
+  EXPECT_THROW(reader.read_block(4), InputError);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <istream>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,17 +39,19 @@ class PointReader {
  public:
   PointReader(std::istream& in, std::string source, PointFormat format);
 
-  /// Replaces `block` by the next points, at most `max_points` (> 0) of them; an empty
-  /// block means the input is exhausted. Throws InputError naming the source and the place.
-  void read_block(std::vector<PointXyz>& block, std::size_t max_points);
+  /// The next points, at most `max_points` (> 0) of them, in storage the reader owns (valid
+  /// until the next call); empty when the input is exhausted. Throws InputError naming the
+  /// source and the place.
+  std::span<const PointXyz> read_block(std::size_t max_points);
 
   const std::string& source() const noexcept { return source_; }
 
  private:
-  void read_text(std::vector<PointXyz>& block, std::size_t max_points);
-  void read_binary(std::vector<PointXyz>& block, std::size_t max_points);
+  std::span<const PointXyz> read_text(std::size_t max_points);
+  std::span<const PointXyz> read_binary(std::size_t max_points);
   void read_npy_header();
   void require_end_of_data();
+  PointXyz* binary_destination(std::size_t max_points);
   [[noreturn]] void fail_at_point(std::uint64_t point, const std::string& what) const;
 
   std::istream& in_;
@@ -60,6 +63,7 @@ class PointReader {
   std::uint64_t data_offset_ = 0;             // binary: the byte offset of point 0
   bool big_endian_ = false;                   // binary: the data's byte order
   bool header_read_ = false;                  // npy
+  std::vector<PointXyz> storage_;             // the block returned
 };
 
 }  // namespace exactgeo::io
