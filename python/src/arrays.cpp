@@ -97,6 +97,16 @@ Arithmetic arithmetic_named(std::string_view name) {
   return *arithmetic;
 }
 
+ccd::Method ccd_method_named(std::string_view name) {
+  const std::optional<ccd::Method> method = ccd::parse_method(name);
+  if (!method) {
+    throw py::value_error(
+        "method must be 'exact', 'parity', 'double', 'rational' or 'cubic', got '" +
+        std::string(name) + "'");
+  }
+  return *method;
+}
+
 unsigned thread_count(int threads) {
   if (threads < 0) {
     throw py::value_error("threads must be 0 (all hardware threads) or positive, got " +

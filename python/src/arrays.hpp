@@ -1,8 +1,8 @@
 #pragma once
 
-// NumPy arrays in and out of the extension: every batch function takes its arrays through
-// these checks, so a wrong shape, a non-finite coordinate or a bad option is a ValueError
-// that names the argument and the row, never a crash or a silent NaN label.
+// NumPy arrays and options into the extension: every batch function takes its arrays and
+// its options through these checks, so a wrong shape, a non-finite coordinate or a bad option is a
+// ValueError that names the argument and the row, never a crash or a silent NaN label.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/point.hpp"
 
@@ -59,6 +60,9 @@ std::span<const Point3> points_of(const Doubles& array);
 
 /// "exact" or "double"; throws ValueError listing the choices.
 Arithmetic arithmetic_named(std::string_view name);
+
+/// "exact", "parity", "double", "rational" or "cubic"; throws ValueError listing them.
+ccd::Method ccd_method_named(std::string_view name);
 
 /// A thread count: 0 for one per hardware thread; throws ValueError when negative.
 unsigned thread_count(int threads);

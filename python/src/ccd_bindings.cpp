@@ -31,12 +31,7 @@ constexpr std::size_t kBlock = 256;  // queries per parallel block
 ccd::Options options_from(const std::string& method, std::optional<double> toi_width,
                           double cubic_tolerance) {
   ccd::Options options;
-  const std::optional<ccd::Method> parsed = ccd::parse_method(method);
-  if (!parsed) {
-    throw py::value_error(
-        "method must be 'exact', 'parity', 'double', 'rational' or 'cubic', got '" + method + "'");
-  }
-  options.method = *parsed;
+  options.method = ccd_method_named(method);
   if (toi_width) {
     if (options.method != ccd::Method::exact) {
       throw py::value_error(

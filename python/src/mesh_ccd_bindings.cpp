@@ -80,12 +80,7 @@ StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object
     }
   }
   ccd::MeshCcdOptions options;
-  const std::optional<ccd::Method> parsed = ccd::parse_method(method);
-  if (!parsed) {
-    throw py::value_error(
-        "method must be 'exact', 'parity', 'double', 'rational' or 'cubic', got '" + method + "'");
-  }
-  options.method = *parsed;
+  options.method = ccd_method_named(method);
   options.threads = thread_count(threads);
   // toi: False, True (brackets of width 1e-6, as the command line's --toi), or a width.
   if (py::isinstance<py::bool_>(toi)) {
