@@ -44,3 +44,27 @@ def test_every_public_name_is_documented():
         if callable(obj):
             assert inspect.getdoc(obj), name
 
+
+
+def test_the_tour_in_the_docs_runs(monkeypatch, capsys):
+    """docs/python.md's tour is executed as written, from the repository root."""
+    root = Path(__file__).resolve().parents[2]
+    text = (root / "docs" / "python.md").read_text()
+    tour = re.search(r"```python\n(import numpy as np\nimport exactgeo\n.*?)```", text, re.S)
+    assert tour, "docs/python.md has no tour"
+    monkeypatch.chdir(root)
+    exec(compile(tour.group(1), "docs/python.md", "exec"), {})
+    printed = capsys.readouterr().out.split("\n")
+    assert printed[0] == "True"
+    assert printed[-2].endswith(", 0.5)")  # contact at t = 0.5: the bracket ends there
+
+
+def test_the_readme_example_runs(monkeypatch):
+    root = Path(__file__).resolve().parents[2]
+    example = re.search(r"```python\n(.*?)```", (root / "README.md").read_text(), re.S)
+    assert example, "README.md has no Python example"
+    monkeypatch.chdir(root)
+    scope = {}
+    exec(compile(example.group(1), "README.md", "exec"), scope)
+    assert scope["labels"].shape == (1_000_000,)
+    assert set(scope["labels"].tolist()) == {exactgeo.OUTSIDE, exactgeo.INSIDE}
