@@ -80,12 +80,12 @@ struct Displacements {
 template <std::size_t N>
 Boxes boxes_of(std::span<const std::array<VertexIndex, N>> primitives,
                const std::vector<std::uint8_t>& moving_vertex, bool moving,
-               const MeshFrames& frames) {
+               const MeshFrames& frames, const StepScale& scale) {
   Boxes boxes;
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     if (any_moves(primitives[i], moving_vertex) != moving) continue;
     boxes.push_back(swept_box(primitives[i], static_cast<std::uint32_t>(i),
-                              frames.positions_t0.data(), frames.positions_t1.data()));
+                              frames.positions_t0.data(), frames.positions_t1.data(), scale));
   }
   return boxes;
 }
@@ -100,21 +100,24 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
 }
 
 bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
-                                        const MeshFrames& frames) const {
-  if (!standing_valid_ || moving != moving_) return false;
+                                        const MeshFrames& frames, const StepScale& scale) const {
+  if (!standing_valid_ || moving != moving_ || scale.exponent() != standing_scale_.exponent())
+    return false;
   for (std::size_t i = 0; i < 3 * vertex_count_; ++i) {
     if (moving_[i / 3] == 0 && frames.positions_t0[i] != standing_positions_[i]) return false;
   }
   return true;
 }
 
-void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames) {
+void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames,
+                                      const StepScale& scale) {
   moving_ = std::move(moving);
+  standing_scale_ = scale;
   standing_positions_.assign(frames.positions_t0.begin(), frames.positions_t0.end());
-  standing_vertices_ = BoxTree(
-      boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving_, false, frames));
-  standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames));
-  standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames));
+  standing_vertices_ = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_),
+                                        moving_, false, frames, scale));
+  standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames, scale));
+  standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames, scale));
   standing_valid_ = true;
 }
 
@@ -122,8 +125,10 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   MeshCandidates result;
   const Displacements motion(frames);
   const std::vector<std::uint8_t> moving = motion.moving();
-  if (!standing_unchanged(moving, frames)) {
-    rebuild_standing(moving, frames);
+  const StepScale scale(max_magnitude(frames.positions_t0.data(), frames.positions_t1.data(),
+                                      frames.positions_t0.size()));
+  if (!standing_unchanged(moving, frames, scale)) {
+    rebuild_standing(moving, frames, scale);
     result.standing_rebuilt = true;
   }
   // The three trees of moving primitives are built side by side. Queries run in tree
@@ -131,10 +136,10 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   std::array<BoxTree, 3> trees;
   parallel::for_each_block(3, threads, [&](std::size_t k) {
     if (k == 0)
-      trees[0] = BoxTree(
-          boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving, true, frames));
-    if (k == 1) trees[1] = BoxTree(boxes_of(edges_, moving, true, frames));
-    if (k == 2) trees[2] = BoxTree(boxes_of(faces_, moving, true, frames));
+      trees[0] = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving,
+                                  true, frames, scale));
+    if (k == 1) trees[1] = BoxTree(boxes_of(edges_, moving, true, frames, scale));
+    if (k == 2) trees[2] = BoxTree(boxes_of(faces_, moving, true, frames, scale));
   });
   const BoxTree &moving_vertex_tree = trees[0], &moving_edge_tree = trees[1],
                 &moving_face_tree = trees[2];

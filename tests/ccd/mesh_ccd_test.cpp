@@ -526,6 +526,28 @@ TEST(MeshCcdBroadPhase, ExtremeMagnitudesMatchExhaustivePairs) {
   }
 }
 
+/// The float boxes are made after an exact power-of-two scaling of the step, so a mesh
+/// scaled by 2^k has exactly the candidates of the original: at 2^±1000 the boxes prune as
+/// at 1 (without the scaling, a soup of a few thousand triangles went from thousands of
+/// candidates to millions there).
+TEST(MeshCcdBroadPhase, ExtremeMagnitudesPruneLikeScaleOne) {
+  Rng rng = testing::seeded_engine("mesh-ccd-magnitude-pruning");
+  const MovingMesh soup = triangle_soup(rng, 400, 0.15 * std::cbrt(400.0), 0.15, 0.3);
+  MeshCcd at_one(soup.vertex_count(), soup.faces);
+  const MeshCcdResult reference = at_one.step(soup.frames());
+  ASSERT_GT(reference.candidates(), 0u);
+  ASSERT_LT(reference.candidates(), 20u * soup.faces.size());
+  for (const int k : {-1000, -140, -120, 120, 140, 1000}) {
+    const MovingMesh scaled = scaled_mesh(soup, k);
+    MeshCcd ccd(scaled.vertex_count(), scaled.faces);
+    const MeshCcdResult result = ccd.step(scaled.frames());
+    EXPECT_EQ(result.vertex_face_candidates, reference.vertex_face_candidates) << "2^" << k;
+    EXPECT_EQ(result.edge_edge_candidates, reference.edge_edge_candidates) << "2^" << k;
+    EXPECT_EQ(result.vertex_face, reference.vertex_face) << "2^" << k;
+    EXPECT_EQ(result.edge_edge, reference.edge_edge) << "2^" << k;
+  }
+}
+
 /// Contacts at coordinates that are not floats: a standing triangle in the plane z = c; two
 /// triangles whose lowest (highest) corner reaches it exactly at t = 1 from above (below),
 /// one whose corner leaves it at t = 0; a standing edge at height c that a falling edge

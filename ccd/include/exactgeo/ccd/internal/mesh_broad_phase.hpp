@@ -3,7 +3,8 @@
 // The broad phase of mesh-level CCD (mesh_ccd.hpp): the vertex-face and edge-edge pairs
 // whose swept boxes overlap, without pairs sharing a vertex and without pairs whose
 // corners all stand still. Standing primitives live in their own trees, kept from step to
-// step while the same vertices stand at the same place.
+// step while the same vertices stand at the same place (and the step's scale, swept_box.hpp,
+// stays the same).
 
 #include <array>
 #include <cstddef>
@@ -42,8 +43,10 @@ class MeshBroadPhase {
  private:
   using Boxes = std::vector<SweptBox>;
 
-  bool standing_unchanged(const std::vector<std::uint8_t>& moving, const MeshFrames& frames) const;
-  void rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames);
+  bool standing_unchanged(const std::vector<std::uint8_t>& moving, const MeshFrames& frames,
+                          const StepScale& scale) const;
+  void rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames,
+                        const StepScale& scale);
 
   std::size_t vertex_count_;
   std::span<const Triangle> faces_;
@@ -53,6 +56,7 @@ class MeshBroadPhase {
   bool standing_valid_ = false;
   std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
   std::vector<double> standing_positions_;  // t0 positions then (standing ones compared)
+  StepScale standing_scale_;                // the scale their boxes were made in
   BoxTree standing_vertices_;               // a tree only for its spatial order of queries
   BoxTree standing_edges_, standing_faces_;
 };

@@ -7,12 +7,22 @@
 // primitive stays inside the box of its corners' t0 and t1 positions during the whole
 // step, in exact arithmetic: min and max of doubles are exact. Converting to float rounds
 // each lower bound down and each upper bound up (one nextafter when round-to-nearest went
-// the wrong way; beyond the float range the bound becomes infinite), so the float box
-// contains the double box and two boxes that could share a point overlap.
+// the wrong way), so the float box contains the double box and two boxes that could share
+// a point overlap.
+//
+// Before that conversion every coordinate of the step is scaled by one power of two
+// (StepScale), chosen so that the largest magnitude lands in [1/2, 1): floats cover
+// about 2^±126 and doubles 2^±1022, so without it a mesh at 1e300 or at 2^-1000 gets
+// infinite or zero-width-rounded boxes that prune nothing. Scaling by a power of two is
+// exact wherever the result is a normal double, and where it underflows it still rounds
+// monotonically; a monotone map keeps every inequality between bounds that the overlap
+// test compares, so it loses no overlap. A mesh and its copy scaled by 2^k get the same
+// float boxes, so a step at 2^±1000 prunes exactly like one at 1.
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -33,6 +43,35 @@ inline float float_above(double x) noexcept {
   return -float_below(-x);
 }
 
+/// x -> x 2^-e for one step: every |x| of the step below 2^e, the largest in [2^(e-1), 2^e).
+class StepScale {
+ public:
+  StepScale() = default;  ///< the identity (e = 0)
+  /// The scale for coordinates whose largest magnitude is `max_abs` (finite, >= 0).
+  explicit StepScale(double max_abs) noexcept {
+    if (max_abs > 0) std::frexp(max_abs, &exponent_);
+    // 2^-e as two factors, each a representable power of two (2^-e alone is not for
+    // |e| > 1022): x * first * second is then exact or monotonically rounded.
+    first_ = std::ldexp(1.0, -exponent_ / 2);
+    second_ = std::ldexp(1.0, -exponent_ - (-exponent_ / 2));
+  }
+  double operator()(double x) const noexcept { return x * first_ * second_; }
+  int exponent() const noexcept { return exponent_; }
+
+ private:
+  int exponent_ = 0;
+  double first_ = 1.0;
+  double second_ = 1.0;
+};
+
+/// The largest coordinate magnitude of both frames (3 * count finite values each).
+inline double max_magnitude(const double* t0, const double* t1, std::size_t values) noexcept {
+  double m = 0.0;
+  for (std::size_t i = 0; i < values; ++i)
+    m = std::max({m, std::fabs(t0[i]), std::fabs(t1[i])});
+  return m;
+}
+
 struct SweptBox {
   std::array<float, 3> lo;
   std::array<float, 3> hi;
@@ -47,11 +86,11 @@ inline bool overlap(const SweptBox& a, const SweptBox& b) noexcept {
   return true;
 }
 
-/// The swept box of the corners `ids` (vertex indices) of one primitive; positions are
-/// 3 doubles per vertex at t0 and at t1.
+/// The swept box of the corners `ids` (vertex indices) of one primitive, in the step's
+/// scale; positions are 3 doubles per vertex at t0 and at t1.
 template <std::size_t N>
 SweptBox swept_box(const std::array<std::uint32_t, N>& ids, std::uint32_t id, const double* t0,
-                   const double* t1) noexcept {
+                   const double* t1, const StepScale& scale = {}) noexcept {
   SweptBox box{};
   box.id = id;
   for (int k = 0; k < 3; ++k) {
@@ -63,8 +102,8 @@ SweptBox swept_box(const std::array<std::uint32_t, N>& ids, std::uint32_t id, co
         hi = std::max(hi, frame[3 * v + k]);
       }
     }
-    box.lo[k] = float_below(lo);
-    box.hi[k] = float_above(hi);
+    box.lo[k] = float_below(scale(lo));
+    box.hi[k] = float_above(scale(hi));
   }
   return box;
 }
