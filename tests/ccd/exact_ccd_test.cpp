@@ -146,6 +146,46 @@ TEST(ExactCcdData, SymmetriesChangeNothing) {
   EXPECT_GT(scaled, 100);
 }
 
+/// A query far from magnitude 1 is decided as its copy at magnitude 1 (largest coordinate
+/// in [1/2, 1)): the same stage, depth and time of impact, so the filters do their work at
+/// 2^±900 as at 1 instead of every sign falling through to expansions.
+TEST(ExactCcdData, ExtremeMagnitudesAreDecidedAsAtMagnitudeOne) {
+  int compared = 0;
+  const std::vector<DataQuery> data = bundled_queries();
+  Options toi;
+  toi.time_of_impact_width = 0x1p-20;
+  for (std::size_t i = 0; i < data.size(); i += 3) {
+    on_query(data[i], [&](const auto& q) {
+      double largest = 0;
+      auto copy = q;
+      for (Point3* p : points(copy))
+        for (const double x : *p)
+          largest = std::max(largest, std::fabs(x));
+      int e = 0;
+      std::frexp(largest, &e);
+      const auto unit = scaled_query(q, -e);
+      for (const int k : {-900, 900}) {
+        if (!exactly_scalable(unit, k)) continue;
+        const auto far = scaled_query(unit, k);
+        for (const Options& options : {Options{}, toi}) {
+          const Result a = exact(far, options), b = exact(unit, options);
+          EXPECT_EQ(a.collision, b.collision) << data[i].where << " 2^" << k;
+          EXPECT_EQ(a.decided_by, b.decided_by) << data[i].where << " 2^" << k;
+          EXPECT_EQ(a.depth, b.depth) << data[i].where << " 2^" << k;
+          EXPECT_EQ(a.time_of_impact.has_value(), b.time_of_impact.has_value());
+          if (a.time_of_impact && b.time_of_impact) {
+            EXPECT_EQ(a.time_of_impact->start, b.time_of_impact->start) << data[i].where;
+            EXPECT_EQ(a.time_of_impact->end, b.time_of_impact->end) << data[i].where;
+          }
+        }
+        ++compared;
+      }
+      return 0;
+    });
+  }
+  EXPECT_GT(compared, 400);
+}
+
 TEST(ExactCcd, RandomDyadicQueriesAgreeWithParityWhereParityDecides) {
   Rng rng = testing::seeded_engine("exact-ccd-dyadic");
   int even = 0;
