@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
+#include <vector>
 
 #include "cli/json.hpp"
 #include "exactgeo/ccd/query_files.hpp"
@@ -37,8 +39,13 @@ struct Tally {
   std::uint64_t false_negatives = 0;
   double seconds = 0.0;
   std::array<std::uint64_t, 6> stages{};
+  /// Each query's own time and stage (the per-query pass; empty when it did not run).
+  std::vector<double> query_ns;
+  std::vector<ccd::Stage> query_stage;
 
   void add(const Tally& o) {
+    query_ns.insert(query_ns.end(), o.query_ns.begin(), o.query_ns.end());
+    query_stage.insert(query_stage.end(), o.query_stage.begin(), o.query_stage.end());
     queries += o.queries;
     positives += o.positives;
     with_truth += o.with_truth;
@@ -63,10 +70,12 @@ std::string_view type_name(QueryType t) {
 }
 
 /// Runs every query of the file `repeat` times; `seconds` is the fastest pass (on a shared
-/// machine the least disturbed one). The answers do not depend on the pass.
+/// machine the least disturbed one). The answers do not depend on the pass. With
+/// `query_ns`, one more pass times each query on its own (each time then includes one
+/// reading of the clock, about 20-30 ns here), for the distribution of query times.
 template <class Query, class Make, class Run>
 std::vector<ccd::Result> run_timed(const QueryFile& file, Make make, Run run, int repeat,
-                                   double& seconds) {
+                                   double& seconds, std::vector<double>* query_ns) {
   std::vector<Query> queries;
   queries.reserve(file.records.size());
   for (const QueryRecord& r : file.records)
@@ -80,26 +89,43 @@ std::vector<ccd::Result> run_timed(const QueryFile& file, Make make, Run run, in
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     seconds = pass == 0 ? elapsed : std::min(seconds, elapsed);
   }
+  if (query_ns != nullptr) {
+    query_ns->resize(queries.size());
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const auto start = std::chrono::steady_clock::now();
+      results[i] = run(queries[i]);
+      (*query_ns)[i] =
+          std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
+              .count();
+    }
+  }
   return results;
 }
 
 std::vector<ccd::Result> run_file(const QueryFile& file, const ccd::Options& options, int repeat,
-                                  double& seconds) {
+                                  double& seconds, std::vector<double>* query_ns) {
   if (file.type == QueryType::vertex_face) {
     return run_timed<ccd::VertexFaceQuery>(
         file, vertex_face_query,
         [&](const ccd::VertexFaceQuery& q) { return ccd::vertex_face_ccd(q, options); }, repeat,
-        seconds);
+        seconds, query_ns);
   }
   return run_timed<ccd::EdgeEdgeQuery>(
       file, edge_edge_query,
-      [&](const ccd::EdgeEdgeQuery& q) { return ccd::edge_edge_ccd(q, options); }, repeat, seconds);
+      [&](const ccd::EdgeEdgeQuery& q) { return ccd::edge_edge_ccd(q, options); }, repeat, seconds,
+      query_ns);
 }
 
-Tally tally(const QueryFile& file, const std::vector<ccd::Result>& results, double seconds) {
+Tally tally(const QueryFile& file, const std::vector<ccd::Result>& results, double seconds,
+            std::vector<double> query_ns) {
   Tally t;
   t.queries = results.size();
   t.seconds = seconds;
+  t.query_ns = std::move(query_ns);
+  if (!t.query_ns.empty()) {
+    for (const ccd::Result& r : results)
+      t.query_stage.push_back(r.decided_by);
+  }
   for (std::size_t i = 0; i < results.size(); ++i) {
     const bool hit = results[i].collision;
     t.positives += hit;
@@ -112,6 +138,40 @@ Tally tally(const QueryFile& file, const std::vector<ccd::Result>& results, doub
     }
   }
   return t;
+}
+
+/// The nearest-rank p-quantile of `sorted` (ascending, not empty).
+double quantile(const std::vector<double>& sorted, double p) {
+  const auto rank = static_cast<std::size_t>(std::ceil(p * static_cast<double>(sorted.size())));
+  return sorted[std::max<std::size_t>(rank, 1) - 1];
+}
+
+/// {"queries": n, "median": .., "p99": .., "max": ..} of the times (ns), or null.
+void write_distribution(std::ostream& out, std::vector<double> ns) {
+  if (ns.empty()) {
+    out << "null";
+    return;
+  }
+  std::sort(ns.begin(), ns.end());
+  out << "{\"queries\": " << ns.size() << std::fixed << std::setprecision(0)
+      << ", \"median\": " << quantile(ns, 0.5) << ", \"p99\": " << quantile(ns, 0.99)
+      << ", \"max\": " << ns.back() << std::defaultfloat << "}";
+}
+
+/// Per-query times: all of them, and by the stage that decided each query.
+void write_query_times(std::ostream& out, const Tally& t) {
+  out << ", \"query_ns\": {\"all\": ";
+  write_distribution(out, t.query_ns);
+  for (const ccd::Stage stage : kStages) {
+    std::vector<double> ns;
+    for (std::size_t i = 0; i < t.query_ns.size(); ++i) {
+      if (t.query_stage[i] == stage) ns.push_back(t.query_ns[i]);
+    }
+    if (ns.empty()) continue;
+    out << ", " << json_string(ccd::to_string(stage)) << ": ";
+    write_distribution(out, std::move(ns));
+  }
+  out << "}";
 }
 
 void write_json_counts(std::ostream& out, const Tally& t) {
@@ -129,6 +189,7 @@ void write_json_counts(std::ostream& out, const Tally& t) {
         << t.stages[static_cast<std::size_t>(kStages[s])];
   }
   out << "}";
+  write_query_times(out, t);
 }
 
 void write_json(std::ostream& out, const ccd::Options& options, const Tally& vf, const Tally& ee,
@@ -170,15 +231,24 @@ void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf
 }
 
 void write_per_query(const std::string& path, const std::vector<QueryFile>& files,
-                     const std::vector<std::vector<ccd::Result>>& results) {
+                     const std::vector<std::vector<ccd::Result>>& results,
+                     const std::vector<std::vector<double>>& query_ns) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw InputError("cannot write '" + path + "'");
-  out << "path,index,type,result,truth\n";
+  out << "path,index,type,result,truth,decided_by,ns,toi_start,toi_end\n";
   for (std::size_t f = 0; f < files.size(); ++f) {
     for (std::size_t i = 0; i < results[f].size(); ++i) {
+      const ccd::Result& r = results[f][i];
       const auto truth = files[f].records[i].truth;
-      out << files[f].path << "," << i << "," << type_name(files[f].type) << ","
-          << results[f][i].collision << "," << (truth ? (*truth ? "1" : "0") : "") << "\n";
+      out << files[f].path << "," << i << "," << type_name(files[f].type) << "," << r.collision
+          << "," << (truth ? (*truth ? "1" : "0") : "") << "," << ccd::to_string(r.decided_by)
+          << "," << std::llround(query_ns[f][i]) << ",";
+      if (r.time_of_impact) {
+        out << shortest(r.time_of_impact->start) << "," << shortest(r.time_of_impact->end);
+      } else {
+        out << ",";
+      }
+      out << "\n";
     }
   }
   if (!out) throw InputError("error writing '" + path + "'");
@@ -187,6 +257,11 @@ void write_per_query(const std::string& path, const std::vector<QueryFile>& file
 }  // namespace
 
 ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.ccd.time_of_impact_width && options.ccd.method != ccd::Method::exact) {
+    err << "exactgeo ccd: --toi-width needs --method exact (the other methods only say "
+           "whether a query collides)\n";
+    return ExitCode::input_error;
+  }
   std::vector<QueryFile> files;
   try {
     files = read_query_files(options.paths, options.type, options.truth);
@@ -201,18 +276,24 @@ ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostre
   Tally vf;
   Tally ee;
   std::vector<std::vector<ccd::Result>> results;
+  std::vector<std::vector<double>> query_ns;  // per file, when timed one by one
+  const bool time_each = options.json || !options.per_query.empty();
   std::size_t done = 0;
   for (const QueryFile& file : files) {
     double seconds = 0.0;
-    results.push_back(run_file(file, options.ccd, options.repeat, seconds));
-    (file.type == QueryType::vertex_face ? vf : ee).add(tally(file, results.back(), seconds));
+    std::vector<double> ns;
+    results.push_back(
+        run_file(file, options.ccd, options.repeat, seconds, time_each ? &ns : nullptr));
+    query_ns.push_back(ns);
+    (file.type == QueryType::vertex_face ? vf : ee)
+        .add(tally(file, results.back(), seconds, std::move(ns)));
     done += file.records.size();
     if (options.progress) err << "\r" << done << " / " << total << " queries" << std::flush;
   }
   if (options.progress) err << "\r\033[K" << std::flush;
   if (!options.per_query.empty()) {
     try {
-      write_per_query(options.per_query, files, results);
+      write_per_query(options.per_query, files, results, query_ns);
     } catch (const InputError& e) {
       err << "exactgeo ccd: " << e.what() << "\n";
       return ExitCode::input_error;
@@ -234,7 +315,9 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
       "ccd",
       "Run CCD queries in the public benchmark CSV format (files, or directories searched "
       "for *.csv) and report results, false positives/negatives against ground truth and "
-      "time per query. Exit code 1 when a false negative is found.");
+      "time per query (with --json also the median, 99th percentile and maximum of each "
+      "query's own time, in all and by deciding stage). Exit code 1 when a false negative "
+      "is found.");
   sub->add_option("paths", options.paths, "query files or directories")->required();
   sub->add_option_function<std::string>(
          "--method",
@@ -254,10 +337,16 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
                   "ground truth JSON array for 6-column files (default: "
                   "<dir>/../mma_bool/<stem>_mma_bool.json when present)");
   sub->add_option("--per-query", options.per_query,
-                  "write path,index,type,result,truth for every query to this CSV file");
+                  "write path,index,type,result,truth,decided_by,ns,toi_start,toi_end for "
+                  "every query to this CSV file");
   sub->add_option("--tolerance", options.ccd.cubic_tolerance,
                   "cubic only: distance tolerance (default 1e-6)")
       ->check(CLI::PositiveNumber);
+  sub->add_option_function<double>(
+         "--toi-width", [&options](double w) { options.ccd.time_of_impact_width = w; },
+         "exact only: also bracket each colliding query's earliest contact to at most this "
+         "width (--per-query writes the brackets)")
+      ->check(CLI::Range(0x1p-60, 1.0));
   sub->add_option("--max-depth", options.ccd.max_depth,
                   "exact only: most halvings of the time step (default 64)")
       ->check(CLI::Range(0, 200));

@@ -59,9 +59,16 @@ expect 2 "ccd truth length mismatch" "" ccd --type vf --truth "$scratch/two.json
 echo "1,2,3,4,5,6,7" >"$scratch/bad.csv"
 expect 2 "ccd malformed row" "" ccd --type ee "$scratch/bad.csv"
 expect 2 "ccd zero timing passes" "" ccd --repeat 0 "$unit"
-# Timing passes change the time only: the counts are those of a single pass.
-once=$("$exe" ccd --json "$unit" | sed 's/"ns_per_query": [0-9.]*//g')
-thrice=$("$exe" ccd --json --repeat 3 "$unit" | sed 's/"ns_per_query": [0-9.]*//g')
+# Timing passes change the times only: the counts are those of a single pass.
+untimed() {
+  sed -E -e 's/"ns_per_query": [0-9.]*//g' \
+    -e 's/, "query_ns": \{("[a-z_]+": (\{[^}]*\}|null)(, )?)*\}//g'
+}
+once=$("$exe" ccd --json "$unit" | untimed)
+thrice=$("$exe" ccd --json --repeat 3 "$unit" | untimed)
+case "$once" in
+  *query_ns*|'') echo "FAIL: ccd --json timing fields not stripped: $once"; failures=$((failures + 1)) ;;
+esac
 if [ -z "$once" ] || [ "$once" != "$thrice" ]; then
   echo "FAIL: ccd --repeat 3 changed the counts: $thrice"
   failures=$((failures + 1))
@@ -81,8 +88,26 @@ if [ -z "$queries" ] || [ "$lines" != "$queries" ]; then
   echo "FAIL: --per-query wrote $lines lines for $queries queries"
   failures=$((failures + 1))
 fi
-if ! grep -q ',vf,1,1$' "$scratch/per-query.csv"; then
+if ! grep -q ',vf,1,1,' "$scratch/per-query.csv"; then
   echo "FAIL: --per-query lacks a vertex-face true positive line"
+  failures=$((failures + 1))
+fi
+for key in '"query_ns": {"all": {"queries": ' '"median": ' '"p99": ' '"max": '; do
+  case "$json" in
+    *"$key"*) ;;
+    *) echo "FAIL: ccd --json lacks $key: $json"; failures=$((failures + 1)) ;;
+  esac
+done
+
+# --toi-width: exact only; --per-query then holds a bracket [start, end] for every
+# collision (start <= end, width at most the one asked for) and none for the others.
+expect 2 "ccd toi width with parity" "" ccd --method parity --toi-width 0.001 "$unit"
+expect 2 "ccd toi width zero" "" ccd --toi-width 0 "$unit"
+"$exe" ccd --toi-width 0.001 --per-query "$scratch/toi.csv" "$unit" >/dev/null
+if ! awk -F, 'NR > 1 && $4 == 1 { if ($8 == "" || $8 > $9 || $9 - $8 > 0.001) bad++; n++ }
+              NR > 1 && $4 == 0 && ($8 != "" || $9 != "") { bad++ }
+              END { exit (bad > 0 || n == 0) }' "$scratch/toi.csv"; then
+  echo "FAIL: --toi-width brackets in --per-query"
   failures=$((failures + 1))
 fi
 
