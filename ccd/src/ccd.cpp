@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cmath>
 #include <optional>
 #include <tuple>
 
@@ -15,6 +14,7 @@
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/root_search.hpp"
 #include "exactgeo/ccd/internal/time_pieces.hpp"
+#include "exactgeo/ccd/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 
@@ -119,31 +119,13 @@ Result dispatch_as_given(const Query& query, const Options& options, ParityFn pa
   return {parity_fn(query, parity_arithmetic(options.method)).collision(), Stage::parity, 0, {}};
 }
 
-/// The query with every coordinate multiplied by the power of two 2^-e that brings its
-/// largest magnitude into [1/2, 1), when its largest magnitude lies outside [2^-64, 2^64]
-/// and the scaling is exact for every coordinate; else nullopt (run it as given).
-///
-/// Why: every polynomial the parity and exact methods take signs of is homogeneous in the
-/// coordinates, and times are not scaled, so their answers do not change. Their filters,
-/// though, are certified only where products neither overflow nor underflow; a query at
-/// 2^±900 misses every filter and pays expansion arithmetic for every sign (60-300x
-/// slower on the bundled queries). Inside [2^-64, 2^64] products of the degrees used stay
-/// far from both limits, and the check costs a pass over 24 doubles.
+/// The query at magnitude 1 (internal/unit_magnitude.hpp: why, and when), or nullopt when
+/// it is near 1 already or cannot be scaled exactly.
 template <class Query>
 std::optional<Query> at_unit_magnitude(const Query& query) noexcept {
   static_assert(sizeof(Query) == 24 * sizeof(double), "a query is 8 points, nothing else");
   auto x = std::bit_cast<std::array<double, 24>>(query);
-  double largest = 0.0;
-  for (const double v : x)
-    largest = std::max(largest, std::fabs(v));
-  if (largest == 0.0 || (largest >= 0x1p-64 && largest <= 0x1p64)) return std::nullopt;
-  int e = 0;
-  std::frexp(largest, &e);  // largest in [2^(e-1), 2^e)
-  for (double& v : x) {
-    const double scaled = std::ldexp(v, -e);
-    if (std::ldexp(scaled, e) != v) return std::nullopt;  // underflow lost bits of v
-    v = scaled;
-  }
+  if (!internal::scale_to_unit_magnitude(x)) return std::nullopt;
   return std::bit_cast<Query>(x);
 }
 

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
+#include "exactgeo/ccd/internal/unit_magnitude.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 
 namespace exactgeo::ccd {
@@ -133,6 +134,19 @@ std::span<const Edge> MeshCcd::edges() const noexcept {
 
 namespace {
 
+/// `frames`, or both frames scaled to magnitude 1 by one power of two, stored in `unit`,
+/// when they are far from it and the scaling is exact (internal/unit_magnitude.hpp).
+MeshFrames unit_magnitude_frames(const MeshFrames& frames, std::vector<double>& unit) {
+  const double largest = std::max(internal::largest_magnitude(frames.positions_t0),
+                                  internal::largest_magnitude(frames.positions_t1));
+  if (internal::near_unit_magnitude(largest)) return frames;
+  unit.assign(frames.positions_t0.begin(), frames.positions_t0.end());
+  unit.insert(unit.end(), frames.positions_t1.begin(), frames.positions_t1.end());
+  if (!internal::scale_to_unit_magnitude(unit)) return frames;
+  const std::span<const double> both(unit);
+  return {both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())};
+}
+
 /// The mesh's earliest root, bracketed to `width`, from every colliding pair's coarse
 /// bracket (result's pairs, in order: vertex-face, then edge-edge). Some pair has a root
 /// by E, the smallest bracket end, so a pair whose bracket starts after E has no root
@@ -173,8 +187,12 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   check_frame(frames.positions_t1, s.vertex_count, "positions_t1");
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
+  // A step far from magnitude 1 is brought there once for all its pairs, both frames by
+  // one power of two (internal/unit_magnitude.hpp); no answer or time changes.
+  std::vector<double> unit;
+  const MeshFrames scaled = unit_magnitude_frames(frames, unit);
 
-  const internal::MeshCandidates candidates = s.broad_phase.candidates(frames, options.threads);
+  const internal::MeshCandidates candidates = s.broad_phase.candidates(scaled, options.threads);
   result.standing_tree_rebuilt = candidates.standing_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();
@@ -200,7 +218,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
       const std::size_t end = std::min(candidates.vertex_face.size(), (b + 1) * kNarrowBlock);
       for (std::size_t i = b * kNarrowBlock; i < end; ++i) {
         const VertexFacePair pair = candidates.vertex_face[i];
-        if (note(vertex_face_ccd(vertex_face_query(frames, s.faces, pair), pair_options)))
+        if (note(vertex_face_ccd(vertex_face_query(scaled, s.faces, pair), pair_options)))
           out.vertex_face.push_back(pair);
       }
       return;
@@ -210,7 +228,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
     for (std::size_t i = first; i < end; ++i) {
       const internal::EdgeIndexPair pair = candidates.edge_edge[i];
       const EdgeEdgePair edges{s.edges[pair.a], s.edges[pair.b]};
-      if (note(edge_edge_ccd(edge_edge_query(frames, edges), pair_options)))
+      if (note(edge_edge_ccd(edge_edge_query(scaled, edges), pair_options)))
         out.edge_edge.push_back(pair);
     }
   });
@@ -224,7 +242,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
     brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
   }
   if (!brackets.empty()) {
-    result.time_of_impact = refine_earliest(result, brackets, frames, s.faces, *width, options);
+    result.time_of_impact = refine_earliest(result, brackets, scaled, s.faces, *width, options);
   }
   std::sort(result.vertex_face.begin(), result.vertex_face.end());
   std::sort(result.edge_edge.begin(), result.edge_edge.end());
