@@ -45,8 +45,10 @@ std::string corners_text(const mesh::Face& face) {
   return s;
 }
 
-/// Why `loaded` cannot be a frame: coordinates rounded by assimp, or quads.
-std::optional<std::string> frame_problem(const std::string& path, const LoadedMesh& loaded) {
+/// Why `loaded` cannot be a frame: coordinates rounded by assimp, or quads (unless they are
+/// split).
+std::optional<std::string> frame_problem(const std::string& path, const LoadedMesh& loaded,
+                                         bool split_quads) {
   if (loaded.coordinates_via_float) {
     return path +
            ": ccd-mesh reads OBJ, OFF and PLY files only (other formats come through assimp, "
@@ -55,11 +57,12 @@ std::optional<std::string> frame_problem(const std::string& path, const LoadedMe
   const std::vector<mesh::Face>& faces = loaded.mesh.faces;
   const auto first_quad = std::find_if(faces.begin(), faces.end(),
                                        [](const mesh::Face& f) { return !f.is_triangle(); });
-  if (first_quad == faces.end()) return std::nullopt;
+  if (first_quad == faces.end() || split_quads) return std::nullopt;
   const auto quads = static_cast<std::size_t>(
       std::count_if(first_quad, faces.end(), [](const mesh::Face& f) { return !f.is_triangle(); }));
   return "triangle meshes are needed: " + path + " has " + plural(quads, "quad", "quads") +
-         " (first: face " + std::to_string(first_quad - faces.begin()) + ")";
+         " (first: face " + std::to_string(first_quad - faces.begin()) +
+         "); --split-quads splits each along its diagonal c0-c2";
 }
 
 /// Where the frames stop holding the same mesh: vertex count, then the first differing
@@ -87,11 +90,16 @@ std::optional<std::string> connectivity_problem(const CcdMeshOptions& options,
   return std::nullopt;
 }
 
+/// The faces as triangles, in face order; a quad (c0, c1, c2, c3) becomes (c0, c1, c2) and
+/// (c0, c2, c3).
 std::vector<ccd::Triangle> triangles_of(const mesh::Mesh& mesh) {
   std::vector<ccd::Triangle> triangles;
   triangles.reserve(mesh.faces.size());
-  for (const mesh::Face& f : mesh.faces)
-    triangles.push_back({f.corners[0], f.corners[1], f.corners[2]});
+  for (const mesh::Face& f : mesh.faces) {
+    const auto& c = f.corners;
+    triangles.push_back({c[0], c[1], c[2]});
+    if (!f.is_triangle()) triangles.push_back({c[0], c[2], c[3]});
+  }
   return triangles;
 }
 
@@ -200,7 +208,9 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
     } catch (const std::exception& e) {  // InputError, or a failure inside a reader
       return fail(e.what());
     }
-    if (const auto problem = frame_problem(*paths[k], frames[k])) return fail(*problem);
+    if (const auto problem = frame_problem(*paths[k], frames[k], options.split_quads)) {
+      return fail(*problem);
+    }
   }
   const mesh::Mesh& mesh0 = frames[0].mesh;
   const mesh::Mesh& mesh1 = frames[1].mesh;
@@ -276,6 +286,10 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
       "the widest time-of-impact interval (implies --toi; default 1e-6)");
   sub->add_option("--threads", options.threads, "worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
+  sub->add_flag("--split-quads", options.split_quads,
+                "accept quads: each quad c0 c1 c2 c3 becomes the triangles c0 c1 c2 and c0 c2 c3 "
+                "(its diagonal c0-c2), in place, so face indices in the output count triangles "
+                "in file order");
   sub->add_flag("--split-polygons", options.split_polygons,
                 "split faces with more than four corners into triangle fans (the same split in "
                 "both frames) instead of refusing the files");

@@ -25,13 +25,16 @@ struct CcdMeshOptions {
   double time_of_impact_width = 1e-6;  ///< the widest bracket accepted
   unsigned threads = 0;                ///< 0: one per hardware thread
   bool split_polygons = false;
+  /// Split each quad (c0, c1, c2, c3) along its diagonal c0-c2 into (c0, c1, c2) and
+  /// (c0, c2, c3), in place in the face order, instead of refusing quads.
+  bool split_quads = false;
   bool json = false;
 };
 
 /// Loads both frames exactly (OBJ, OFF or PLY, no welding) and checks that they hold the
-/// same triangles over the same vertex count, then runs one step and reports on `out`.
-/// Collisions or not, ExitCode::success; any usage or input error prints nothing on `out`,
-/// the reason (naming the file) on `err`, and returns ExitCode::input_error.
+/// same triangles (or quads, with split_quads) over the same vertex count, then runs one step and
+/// reports on `out`. Collisions or not, ExitCode::success; any usage or input error prints nothing
+/// on `out`, the reason (naming the file) on `err`, and returns ExitCode::input_error.
 ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ostream& err);
 
 /// Registers the subcommand on `app`; `options` must outlive the parse.

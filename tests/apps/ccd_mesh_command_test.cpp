@@ -66,6 +66,22 @@ void write_obj(const fs::path& path, const std::vector<Point3>& vertices,
     out << "f " << c[0] + 1 << ' ' << c[1] + 1 << ' ' << c[2] + 1 << '\n';
 }
 
+/// The same sheet with each pair of triangles (a, b, c), (a, c, d) written as the quad
+/// (a, b, c, d): --split-quads must give the triangles back.
+void write_quad_obj(const fs::path& path, const std::vector<Point3>& vertices,
+                    const std::vector<Corners>& faces) {
+  std::ofstream out(path);
+  char line[128];
+  for (const Point3& p : vertices) {
+    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    out << line;
+  }
+  for (std::size_t f = 0; f + 1 < faces.size(); f += 2) {
+    const Corners &a = faces[f], &b = faces[f + 1];
+    out << "f " << a[0] + 1 << ' ' << a[1] + 1 << ' ' << a[2] + 1 << ' ' << b[2] + 1 << '\n';
+  }
+}
+
 /// The integer arrays of `key` in a JSON report: "key": [[1, 2], [3, 4]].
 std::vector<Pair> pairs_in(const std::string& json, const std::string& key) {
   std::vector<Pair> pairs;
@@ -151,6 +167,33 @@ TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
       EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << what;
     }
   }
+  fs::remove_all(dir);
+}
+
+TEST(CcdMeshCommand, SplitQuadsGivesTheTrianglesOfTheStatedDiagonal) {
+  auto rng = testing::seeded_engine("CcdMeshCommand.split-quads");
+  const fs::path dir =
+      fs::temp_directory_path() / ("exactgeo_ccd_mesh_quads_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const Frames frames = crumpling_sheet(6, rng);
+  write_quad_obj(dir / "t0.obj", frames.t0, frames.faces);
+  write_quad_obj(dir / "t1.obj", frames.t1, frames.faces);
+  CcdMeshOptions options;
+  options.frame0 = (dir / "t0.obj").string();
+  options.frame1 = (dir / "t1.obj").string();
+  options.json = true;
+  std::ostringstream refused_out, refused_err;
+  EXPECT_EQ(run_ccd_mesh(options, refused_out, refused_err), ExitCode::input_error);
+  EXPECT_TRUE(refused_out.str().empty());
+  EXPECT_NE(refused_err.str().find("--split-quads"), std::string::npos) << refused_err.str();
+
+  options.split_quads = true;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
+  const auto [vertex_face, edge_edge] = exhaustive(frames, ccd::Method::exact);
+  EXPECT_FALSE(vertex_face.empty() && edge_edge.empty()) << "the sheet should collide";
+  EXPECT_EQ(pairs_in(out.str(), "vertex_face"), vertex_face) << out.str();
+  EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << out.str();
   fs::remove_all(dir);
 }
 
