@@ -6,12 +6,14 @@
 //                   rescaling if the inputs' exponents demand one (exponent_range.hpp);
 //                   undecided (nullopt) only when no rescaling makes expansion arithmetic safe or
 //                   a narrowing does not fit;
-//   rational_sign   GMP rationals; always answers.
+//   rational_sign   exact rationals (dyadic: GMP integers times powers of two, dyadic.hpp);
+//                   always answers.
 
 #include <cmath>
 #include <cstddef>
 #include <optional>
 
+#include "exactgeo/predicates/kernel/dyadic.hpp"
 #include "exactgeo/predicates/kernel/expansion.hpp"
 #include "exactgeo/predicates/kernel/exponent_range.hpp"
 #include "exactgeo/predicates/kernel/formula_descriptors.hpp"
@@ -97,9 +99,27 @@ VectorArray<Rational, N> rational_vectors(const Offsets<N>& in) {
   return q;
 }
 
+/// The exact value of one coordinate of an input, as a dyadic rational.
+inline Dyadic dyadic_coordinate(const Offset& o, int axis) {
+  if (o.is_exact_vector()) {
+    const auto& e = o.exact_vector().exact[axis];
+    Dyadic sum(0.0);
+    for (int i = 0; i < e.size(); ++i)
+      sum = sum + Dyadic(e.data()[i]);
+    return sum;
+  }
+  return Dyadic(o.head(axis)) - Dyadic(o.tail(axis));
+}
+
 template <class Formula, std::size_t N>
 [[gnu::noinline, gnu::cold]] Sign rational_sign(const Offsets<N> in, int parameter) noexcept {
-  return Formula::evaluate(rational_vectors(in), parameter).sign();
+  VectorArray<Dyadic, N> q;
+  for (std::size_t v = 0; v < N; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (Formula::reads(axis, parameter)) q[v][axis] = dyadic_coordinate(in[v], axis);
+    }
+  }
+  return Formula::evaluate(q, parameter).sign();
 }
 
 }  // namespace exactgeo::kernel
