@@ -72,6 +72,24 @@ TEST(Dyadic, SumsDifferencesAndProductsAreExact) {
   }
 }
 
+TEST(Dyadic, SumOfComponentsIsExact) {
+  Rng rng = testing::seeded_engine("dyadic-sum-of");
+  for (int trial = 0; trial < 500; ++trial) {
+    const int count = testing::uniform_int(rng, 0, 6);
+    std::vector<double> c;
+    mpq_class exact = 0;
+    for (int i = 0; i < count; ++i) {
+      const double m =
+          testing::uniform(rng, 0, 1) < 0.2 ? 0.0 : testing::random_magnitude(rng, -1074, 1023);
+      c.push_back(testing::uniform(rng, 0, 1) < 0.5 ? -m : m);
+      exact += mpq_class(c.back());
+    }
+    const Dyadic d = Dyadic::sum_of(c.data(), count);
+    EXPECT_EQ(value_of(d), exact);
+    EXPECT_EQ(d.sign(), sign_of_q(exact));
+  }
+}
+
 /// A polynomial of degree 3 in several terms, with an exact cancellation to zero and a
 /// one-ulp remainder: the sign must be that of the rationals.
 TEST(Dyadic, SignsOfCancellingPolynomials) {

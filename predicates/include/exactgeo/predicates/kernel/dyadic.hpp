@@ -12,6 +12,7 @@
 
 #include <gmp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -41,6 +42,37 @@ class Dyadic {
     return *this;
   }
   ~Dyadic() { mpz_clear(m_); }
+
+  /// Exactly the sum of `count` finite doubles (an expansion's components, or a head and a
+  /// negated tail), built in one integer: no intermediate value per component.
+  static Dyadic sum_of(const double* components, int count) noexcept {
+    Dyadic r;
+    if (count == 0) return r;
+    // Each component is s_i 2^(x_i - 53) with s_i an integer below 2^53.
+    long lowest = 0;
+    bool any = false;
+    for (int i = 0; i < count; ++i) {
+      if (components[i] == 0.0) continue;
+      int exponent = 0;
+      std::frexp(components[i], &exponent);
+      lowest = any ? std::min<long>(lowest, exponent - 53) : exponent - 53;
+      any = true;
+    }
+    if (!any) return r;
+    mpz_t term;
+    mpz_init(term);
+    for (int i = 0; i < count; ++i) {
+      if (components[i] == 0.0) continue;
+      int exponent = 0;
+      const double fraction = std::frexp(components[i], &exponent);
+      mpz_set_d(term, std::ldexp(fraction, 53));
+      mpz_mul_2exp(term, term, static_cast<mp_bitcnt_t>(exponent - 53 - lowest));
+      mpz_add(r.m_, r.m_, term);
+    }
+    mpz_clear(term);
+    r.e_ = lowest;
+    return r;
+  }
 
   Sign sign() const noexcept { return static_cast<Sign>(mpz_sgn(m_)); }
 

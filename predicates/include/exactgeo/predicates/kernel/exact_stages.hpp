@@ -103,12 +103,10 @@ VectorArray<Rational, N> rational_vectors(const Offsets<N>& in) {
 inline Dyadic dyadic_coordinate(const Offset& o, int axis) {
   if (o.is_exact_vector()) {
     const auto& e = o.exact_vector().exact[axis];
-    Dyadic sum(0.0);
-    for (int i = 0; i < e.size(); ++i)
-      sum = sum + Dyadic(e.data()[i]);
-    return sum;
+    return Dyadic::sum_of(e.data(), e.size());
   }
-  return Dyadic(o.head(axis)) - Dyadic(o.tail(axis));
+  const double difference[2] = {o.head(axis), -o.tail(axis)};
+  return Dyadic::sum_of(difference, 2);
 }
 
 template <class Formula, std::size_t N>
