@@ -125,8 +125,8 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
   MeshCandidates result;
   const Displacements motion(frames);
   const std::vector<std::uint8_t> moving = motion.moving();
-  const StepScale scale(max_magnitude(frames.positions_t0.data(), frames.positions_t1.data(),
-                                      frames.positions_t0.size()));
+  const StepScale scale(
+      std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
   if (!standing_unchanged(moving, frames, scale)) {
     rebuild_standing(moving, frames, scale);
     result.standing_rebuilt = true;

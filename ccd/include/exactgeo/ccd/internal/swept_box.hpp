@@ -26,6 +26,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+
 namespace exactgeo::ccd::internal {
 
 /// The largest float <= x (x finite).
@@ -50,27 +52,15 @@ class StepScale {
   /// The scale for coordinates whose largest magnitude is `max_abs` (finite, >= 0).
   explicit StepScale(double max_abs) noexcept {
     if (max_abs > 0) std::frexp(max_abs, &exponent_);
-    // 2^-e as two factors, each a representable power of two (2^-e alone is not for
-    // |e| > 1022): x * first * second is then exact or monotonically rounded.
-    first_ = std::ldexp(1.0, -exponent_ / 2);
-    second_ = std::ldexp(1.0, -exponent_ - (-exponent_ / 2));
+    scale_ = PowerOfTwo(-exponent_);
   }
-  double operator()(double x) const noexcept { return x * first_ * second_; }
+  double operator()(double x) const noexcept { return scale_(x); }
   int exponent() const noexcept { return exponent_; }
 
  private:
   int exponent_ = 0;
-  double first_ = 1.0;
-  double second_ = 1.0;
+  PowerOfTwo scale_{0};
 };
-
-/// The largest coordinate magnitude of both frames (3 * count finite values each).
-inline double max_magnitude(const double* t0, const double* t1, std::size_t values) noexcept {
-  double m = 0.0;
-  for (std::size_t i = 0; i < values; ++i)
-    m = std::max({m, std::fabs(t0[i]), std::fabs(t1[i])});
-  return m;
-}
 
 struct SweptBox {
   std::array<float, 3> lo;

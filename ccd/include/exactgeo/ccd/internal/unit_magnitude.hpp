@@ -16,6 +16,17 @@
 
 namespace exactgeo::ccd::internal {
 
+/// 2^k as two factors, each a double (2^k alone is not one for k > 1023 or k < -1074):
+/// x * first * second is x 2^k, exact wherever that is a normal double (or a subnormal
+/// with no bits lost), else rounded, and monotone in x either way.
+struct PowerOfTwo {
+  explicit PowerOfTwo(int k) noexcept
+      : first(std::ldexp(1.0, k / 2)), second(std::ldexp(1.0, k - k / 2)) {}
+  double operator()(double x) const noexcept { return x * first * second; }
+  double first;
+  double second;
+};
+
 inline double largest_magnitude(std::span<const double> values) noexcept {
   double largest = 0.0;
   for (const double v : values)
@@ -37,15 +48,13 @@ inline bool scale_to_unit_magnitude(std::span<double> values) noexcept {
   if (near_unit_magnitude(largest)) return false;
   int e = 0;
   std::frexp(largest, &e);  // largest in [2^(e-1), 2^e)
-  // 2^-e and 2^e as two factors each (2^±e alone is not a double for |e| > 1022).
-  const double down_1 = std::ldexp(1.0, -(e / 2)), down_2 = std::ldexp(1.0, -(e - e / 2));
-  const double up_1 = std::ldexp(1.0, e / 2), up_2 = std::ldexp(1.0, e - e / 2);
+  const PowerOfTwo down(-e), up(e);
   bool exact = true;
   for (double& v : values) {
-    const double scaled = v * down_1 * down_2;
+    const double scaled = down(v);
     // Scaling back lands on v exactly unless the way down lost bits (the way back up, when
     // e > 0, cannot; when e < 0 the way down is an exact enlargement).
-    exact &= scaled * up_2 * up_1 == v;
+    exact &= up(scaled) == v;
     v = scaled;
   }
   return exact;
