@@ -54,14 +54,19 @@ Frames crumpling_sheet(int n, testing::Rng& rng) {
   return f;
 }
 
-void write_obj(const fs::path& path, const std::vector<Point3>& vertices,
-               const std::vector<Corners>& faces) {
-  std::ofstream out(path);
+/// OBJ vertex lines that read back exactly.
+void write_vertices(std::ostream& out, const std::vector<Point3>& vertices) {
   char line[128];
   for (const Point3& p : vertices) {
     std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
     out << line;
   }
+}
+
+void write_obj(const fs::path& path, const std::vector<Point3>& vertices,
+               const std::vector<Corners>& faces) {
+  std::ofstream out(path);
+  write_vertices(out, vertices);
   for (const Corners& c : faces)
     out << "f " << c[0] + 1 << ' ' << c[1] + 1 << ' ' << c[2] + 1 << '\n';
 }
@@ -71,11 +76,7 @@ void write_obj(const fs::path& path, const std::vector<Point3>& vertices,
 void write_quad_obj(const fs::path& path, const std::vector<Point3>& vertices,
                     const std::vector<Corners>& faces) {
   std::ofstream out(path);
-  char line[128];
-  for (const Point3& p : vertices) {
-    std::snprintf(line, sizeof line, "v %.17g %.17g %.17g\n", p[0], p[1], p[2]);
-    out << line;
-  }
+  write_vertices(out, vertices);
   for (std::size_t f = 0; f + 1 < faces.size(); f += 2) {
     const Corners &a = faces[f], &b = faces[f + 1];
     out << "f " << a[0] + 1 << ' ' << a[1] + 1 << ' ' << a[2] + 1 << ' ' << b[2] + 1 << '\n';
