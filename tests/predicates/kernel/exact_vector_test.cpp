@@ -11,6 +11,7 @@
 
 #include "exactgeo/predicates/internal/patch_frame.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
+#include "exactgeo/predicates/kernel/exact_stages.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 #include "support/generators.hpp"
 #include "support/rational_oracle.hpp"
@@ -153,6 +154,47 @@ TEST(ExactVector, RayPatchOnExactVectorCornersAgreesWithOracle) {
     if (d == Vector3{0, 0, 0}) continue;
     expect_exact_vector_corners_match_oracle(o, d, p);
   }
+}
+
+/// Exact vectors whose coordinates have at most two components are decided by the
+/// expansion stage, as differences of two doubles are, with the rational stage's sign;
+/// longer ones go to the rational stage. (The ray-patch test above checks signs on exact
+/// vectors against the independent oracle.)
+TEST(ExactVector, ExpansionStageDecidesShortExactVectors) {
+  Rng rng = testing::seeded_engine("exact-vector-expansion-stage");
+  int decided = 0;
+  for (int i = 0; i < 3000; ++i) {
+    // Nearly coplanar: c = a + b up to the last bits, so that the filter would defer.
+    const Point3 a = testing::random_point(rng), b = testing::random_point(rng);
+    const Point3 shift = testing::random_point(rng, 1e-3);
+    const ExactVector va = exact_difference(a, shift), vb = exact_difference(b, shift);
+    Point3 sum{};
+    for (int k = 0; k < 3; ++k)
+      sum[k] = a[k] + b[k];
+    const ExactVector vc = exact_difference(sum, shift);
+    const kernel::Offsets<3> in{Offset::exact(va), Offset::exact(vb), Offset::exact(vc)};
+    const auto by_expansions = kernel::expansion_sign<kernel::Det3Formula>(in, 0);
+    ASSERT_TRUE(by_expansions.has_value()) << i;
+    EXPECT_EQ(*by_expansions, kernel::rational_sign<kernel::Det3Formula>(in, 0)) << i;
+    ++decided;
+  }
+  EXPECT_EQ(decided, 3000);
+
+  // Three components in a coordinate: deferred, and the rational stage decides.
+  std::array<ExactVector::Coordinate, 3> long_coordinates;
+  long_coordinates[0] =
+      *(kernel::Expansion<2>::difference(1.0, 0x1p-60) + kernel::Expansion<1>(0x1p-130))
+           .template narrow<ExactVector::kCapacity>();
+  long_coordinates[1] = kernel::Expansion<2>::difference(2.0, 0.0);
+  long_coordinates[2] = kernel::Expansion<2>::difference(3.0, 0.0);
+  ASSERT_EQ(long_coordinates[0].size(), 3);
+  const ExactVector long_vector = kernel::make_exact_vector(long_coordinates);
+  const ExactVector unit_y = exact_difference({0, 1, 0}, {0, 0, 0});
+  const ExactVector unit_z = exact_difference({0, 0, 1}, {0, 0, 0});
+  const kernel::Offsets<3> in{Offset::exact(long_vector), Offset::exact(unit_y),
+                              Offset::exact(unit_z)};
+  EXPECT_FALSE(kernel::expansion_sign<kernel::Det3Formula>(in, 0).has_value());
+  EXPECT_EQ(kernel::rational_sign<kernel::Det3Formula>(in, 0), Sign::positive);
 }
 
 TEST(ExactVector, ExactEqualityAndParallelograms) {

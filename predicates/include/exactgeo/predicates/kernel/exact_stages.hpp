@@ -28,21 +28,29 @@ namespace exactgeo::kernel {
 template <class Formula, std::size_t N>
 [[gnu::noinline, gnu::cold]] std::optional<Sign> expansion_sign(const Offsets<N> in,
                                                                 int parameter) noexcept {
-  // Exact-vector inputs (exact_vector.hpp) are rare-path inputs of several components;
-  // their products would need far larger expansions, so rationals decide them.
-  for (const Offset& o : in) {
-    if (o.is_exact_vector()) return std::nullopt;
-  }
+  // Exact-vector inputs (exact_vector.hpp) are sums of up to eight components. Where every
+  // coordinate read has at most two, it is an input like head - tail (two components, the
+  // same exponent conditions) and is evaluated here; longer ones would need far larger
+  // expansions, so rationals decide them.
+  bool exact_vectors = false;
   ExponentRange range;
   for (const Offset& o : in) {
     for (int axis = 0; axis < 3; ++axis) {
       if (!Formula::reads(axis, parameter)) continue;
-      range.include(o.head(axis));
-      range.include(o.tail(axis));
+      if (o.is_exact_vector()) {
+        const auto& c = o.exact_vector().exact[axis];
+        if (c.size() > 2) return std::nullopt;
+        for (int i = 0; i < c.size(); ++i)
+          range.include(c.data()[i]);
+        exact_vectors = true;
+      } else {
+        range.include(o.head(axis));
+        range.include(o.tail(axis));
+      }
     }
   }
   const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
-  if (!scaling) return std::nullopt;
+  if (!scaling || (exact_vectors && *scaling != 0)) return std::nullopt;
   // Exact differences; when none of them needed a second component (dyadic grids, inputs
   // already relative to one another) the whole evaluation runs on one-component inputs,
   // with every product four times smaller.
@@ -51,6 +59,11 @@ template <class Formula, std::size_t N>
   for (std::size_t v = 0; v < N; ++v) {
     for (int axis = 0; axis < 3; ++axis) {
       if (!Formula::reads(axis, parameter)) continue;  // left zero
+      if (in[v].is_exact_vector()) {
+        e[v][axis] = *in[v].exact_vector().exact[axis].template narrow<2>();  // checked above
+        all_single &= e[v][axis].size() <= 1;
+        continue;
+      }
       const double head = in[v].head(axis);
       const double tail = in[v].tail(axis);
       e[v][axis] = *scaling == 0 ? Expansion<2>::difference(head, tail)
