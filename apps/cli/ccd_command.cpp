@@ -39,13 +39,8 @@ struct Tally {
   std::uint64_t false_negatives = 0;
   double seconds = 0.0;
   std::array<std::uint64_t, 6> stages{};
-  /// Each query's own time and stage (the per-query pass; empty when it did not run).
-  std::vector<double> query_ns;
-  std::vector<ccd::Stage> query_stage;
 
   void add(const Tally& o) {
-    query_ns.insert(query_ns.end(), o.query_ns.begin(), o.query_ns.end());
-    query_stage.insert(query_stage.end(), o.query_stage.begin(), o.query_stage.end());
     queries += o.queries;
     positives += o.positives;
     with_truth += o.with_truth;
@@ -116,16 +111,10 @@ std::vector<ccd::Result> run_file(const QueryFile& file, const ccd::Options& opt
       query_ns);
 }
 
-Tally tally(const QueryFile& file, const std::vector<ccd::Result>& results, double seconds,
-            std::vector<double> query_ns) {
+Tally tally(const QueryFile& file, const std::vector<ccd::Result>& results, double seconds) {
   Tally t;
   t.queries = results.size();
   t.seconds = seconds;
-  t.query_ns = std::move(query_ns);
-  if (!t.query_ns.empty()) {
-    for (const ccd::Result& r : results)
-      t.query_stage.push_back(r.decided_by);
-  }
   for (std::size_t i = 0; i < results.size(); ++i) {
     const bool hit = results[i].collision;
     t.positives += hit;
@@ -158,15 +147,30 @@ void write_distribution(std::ostream& out, std::vector<double> ns) {
       << ", \"max\": " << ns.back() << std::defaultfloat << "}";
 }
 
-/// Per-query times: all of them, and by the stage that decided each query.
-void write_query_times(std::ostream& out, const Tally& t) {
-  out << ", \"query_ns\": {\"all\": ";
-  write_distribution(out, t.query_ns);
-  for (const ccd::Stage stage : kStages) {
-    std::vector<double> ns;
-    for (std::size_t i = 0; i < t.query_ns.size(); ++i) {
-      if (t.query_stage[i] == stage) ns.push_back(t.query_ns[i]);
+/// What one run produced: per file, every query's result and own time (the per-query pass).
+struct RunResults {
+  const std::vector<QueryFile>& files;
+  std::vector<std::vector<ccd::Result>> results;
+  std::vector<std::vector<double>> query_ns;
+};
+
+/// The per-query times of the files of `type` (all files when none): all of them, and by
+/// the stage that decided each query.
+void write_query_times(std::ostream& out, const RunResults& run, std::optional<QueryType> type) {
+  std::vector<double> all;
+  std::array<std::vector<double>, 6> by_stage;
+  for (std::size_t f = 0; f < run.files.size(); ++f) {
+    if (type && run.files[f].type != *type) continue;
+    for (std::size_t i = 0; i < run.query_ns[f].size(); ++i) {
+      all.push_back(run.query_ns[f][i]);
+      by_stage[static_cast<std::size_t>(run.results[f][i].decided_by)].push_back(
+          run.query_ns[f][i]);
     }
+  }
+  out << ", \"query_ns\": {\"all\": ";
+  write_distribution(out, std::move(all));
+  for (const ccd::Stage stage : kStages) {
+    std::vector<double>& ns = by_stage[static_cast<std::size_t>(stage)];
     if (ns.empty()) continue;
     out << ", " << json_string(ccd::to_string(stage)) << ": ";
     write_distribution(out, std::move(ns));
@@ -174,7 +178,8 @@ void write_query_times(std::ostream& out, const Tally& t) {
   out << "}";
 }
 
-void write_json_counts(std::ostream& out, const Tally& t) {
+void write_json_counts(std::ostream& out, const Tally& t, const RunResults& run,
+                       std::optional<QueryType> type) {
   auto errors = [&](std::uint64_t n) {
     return t.with_truth == 0 ? std::string("null") : std::to_string(n);
   };
@@ -189,17 +194,17 @@ void write_json_counts(std::ostream& out, const Tally& t) {
         << t.stages[static_cast<std::size_t>(kStages[s])];
   }
   out << "}";
-  write_query_times(out, t);
+  write_query_times(out, run, type);
 }
 
 void write_json(std::ostream& out, const ccd::Options& options, const Tally& vf, const Tally& ee,
-                const Tally& all) {
+                const Tally& all, const RunResults& run) {
   out << "{\"method\": " << json_string(ccd::to_string(options.method)) << ", ";
-  write_json_counts(out, all);
+  write_json_counts(out, all, run, std::nullopt);
   out << ", \"vertex_face\": {";
-  write_json_counts(out, vf);
+  write_json_counts(out, vf, run, QueryType::vertex_face);
   out << "}, \"edge_edge\": {";
-  write_json_counts(out, ee);
+  write_json_counts(out, ee, run, QueryType::edge_edge);
   out << "}}\n";
 }
 
@@ -230,9 +235,10 @@ void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf
   out << "\n";
 }
 
-void write_per_query(const std::string& path, const std::vector<QueryFile>& files,
-                     const std::vector<std::vector<ccd::Result>>& results,
-                     const std::vector<std::vector<double>>& query_ns) {
+void write_per_query(const std::string& path, const RunResults& run) {
+  const std::vector<QueryFile>& files = run.files;
+  const auto& results = run.results;
+  const auto& query_ns = run.query_ns;
   std::ofstream out(path, std::ios::binary);
   if (!out) throw InputError("cannot write '" + path + "'");
   out << "path,index,type,result,truth,decided_by,ns,toi_start,toi_end\n";
@@ -275,25 +281,22 @@ ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostre
 
   Tally vf;
   Tally ee;
-  std::vector<std::vector<ccd::Result>> results;
-  std::vector<std::vector<double>> query_ns;  // per file, when timed one by one
+  RunResults run{files, {}, {}};
   const bool time_each = options.json || !options.per_query.empty();
   std::size_t done = 0;
   for (const QueryFile& file : files) {
     double seconds = 0.0;
-    std::vector<double> ns;
-    results.push_back(
-        run_file(file, options.ccd, options.repeat, seconds, time_each ? &ns : nullptr));
-    query_ns.push_back(ns);
-    (file.type == QueryType::vertex_face ? vf : ee)
-        .add(tally(file, results.back(), seconds, std::move(ns)));
+    run.query_ns.emplace_back();
+    run.results.push_back(run_file(file, options.ccd, options.repeat, seconds,
+                                   time_each ? &run.query_ns.back() : nullptr));
+    (file.type == QueryType::vertex_face ? vf : ee).add(tally(file, run.results.back(), seconds));
     done += file.records.size();
     if (options.progress) err << "\r" << done << " / " << total << " queries" << std::flush;
   }
   if (options.progress) err << "\r\033[K" << std::flush;
   if (!options.per_query.empty()) {
     try {
-      write_per_query(options.per_query, files, results, query_ns);
+      write_per_query(options.per_query, run);
     } catch (const InputError& e) {
       err << "exactgeo ccd: " << e.what() << "\n";
       return ExitCode::input_error;
@@ -303,7 +306,7 @@ ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostre
   all.add(vf);
   all.add(ee);
   if (options.json) {
-    write_json(out, options.ccd, vf, ee, all);
+    write_json(out, options.ccd, vf, ee, all, run);
   } else {
     write_table(out, options.ccd, vf, ee, all);
   }

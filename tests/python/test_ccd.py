@@ -117,3 +117,15 @@ def test_query_file_errors(tmp_path):
         exactgeo.read_ccd_queries(bad)
     with pytest.raises(ValueError, match="type must be"):
         exactgeo.read_ccd_queries(bad, type="vf")
+
+
+def test_command_line_query_times_cover_every_query_once(cli):
+    """`exactgeo ccd --json`: each type's time distribution counts that type's queries, and
+    the per-stage distributions count the queries each stage decided."""
+    report = cli.json("ccd", CCD)
+    for scope in (report, report["vertex_face"], report["edge_edge"]):
+        times = scope["query_ns"]
+        assert times["all"]["queries"] == scope["queries"]
+        for stage, count in scope["stages"].items():
+            assert (times[stage]["queries"] if stage in times else 0) == count, stage
+        assert times["all"]["median"] <= times["all"]["p99"] <= times["all"]["max"]
