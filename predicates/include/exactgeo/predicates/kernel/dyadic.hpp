@@ -23,14 +23,8 @@ namespace exactgeo::kernel {
 class Dyadic {
  public:
   Dyadic() noexcept { mpz_init(m_); }
-  /// Exactly x (finite): its 53-bit significand and exponent.
-  explicit Dyadic(double x) noexcept {
-    int exponent = 0;
-    const double fraction =
-        std::frexp(x, &exponent);  // x = fraction 2^exponent, |fraction| in [1/2, 1)
-    mpz_init_set_d(m_, std::ldexp(fraction, 53));  // an integer below 2^53: exact
-    e_ = exponent - 53;
-  }
+  /// Exactly x (finite).
+  explicit Dyadic(double x) noexcept : Dyadic(sum_of(&x, 1)) {}
   Dyadic(const Dyadic& o) noexcept : e_(o.e_) { mpz_init_set(m_, o.m_); }
   Dyadic(Dyadic&& o) noexcept : e_(o.e_) {
     mpz_init(m_);
@@ -47,7 +41,6 @@ class Dyadic {
   /// negated tail), built in one integer: no intermediate value per component.
   static Dyadic sum_of(const double* components, int count) noexcept {
     Dyadic r;
-    if (count == 0) return r;
     // Each component is s_i 2^(x_i - 53) with s_i an integer below 2^53.
     long lowest = 0;
     bool any = false;
