@@ -142,7 +142,7 @@ MeshFrames unit_magnitude_frames(const MeshFrames& frames, std::vector<double>& 
   if (internal::near_unit_magnitude(largest)) return frames;
   unit.assign(frames.positions_t0.begin(), frames.positions_t0.end());
   unit.insert(unit.end(), frames.positions_t1.begin(), frames.positions_t1.end());
-  if (!internal::scale_to_unit_magnitude(unit)) return frames;
+  if (!internal::scale_to_unit_magnitude(unit, largest)) return frames;
   const std::span<const double> both(unit);
   return {both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())};
 }

@@ -43,8 +43,8 @@ inline bool near_unit_magnitude(double largest) noexcept {
 /// [1/2, 1), when that largest magnitude is not near_unit_magnitude and every product is
 /// exact (none became subnormal and lost bits). Returns whether it did; on false the
 /// values may be partly scaled, so call it on a copy.
-inline bool scale_to_unit_magnitude(std::span<double> values) noexcept {
-  const double largest = largest_magnitude(values);
+/// `largest` must be largest_magnitude(values) (callers that know it pass it on).
+inline bool scale_to_unit_magnitude(std::span<double> values, double largest) noexcept {
   if (near_unit_magnitude(largest)) return false;
   int e = 0;
   std::frexp(largest, &e);  // largest in [2^(e-1), 2^e)
@@ -58,6 +58,10 @@ inline bool scale_to_unit_magnitude(std::span<double> values) noexcept {
     v = scaled;
   }
   return exact;
+}
+
+inline bool scale_to_unit_magnitude(std::span<double> values) noexcept {
+  return scale_to_unit_magnitude(values, largest_magnitude(values));
 }
 
 }  // namespace exactgeo::ccd::internal
