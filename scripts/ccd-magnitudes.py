@@ -16,11 +16,10 @@ import time
 import numpy as np
 
 import exactgeo
+from spot_points import default_spot
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(HERE, "tests", "data")
-SHARED_SPOT = os.path.join(HERE, "..", "shared", "data", "meshes", "spot", "spot_quad_cc3.ply")
-BUNDLED_SPOT = os.path.join(DATA, "meshes", "spot", "spot_quad_cc1.ply")
 QUERY_FILES = ["ccd/scalable-ccd-data/cloth-funnel/queries/227vf.csv",
                "ccd/scalable-ccd-data/cloth-funnel/queries/227ee.csv",
                "ccd/sample-queries/erleben-cube-cliff-edges/edge-edge"]
@@ -67,8 +66,7 @@ def mesh_step(path):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--mesh", default=SHARED_SPOT if os.path.exists(SHARED_SPOT)
-                        else BUNDLED_SPOT)
+    parser.add_argument("--mesh", default=default_spot())
     args = parser.parse_args()
     queries()
     mesh_step(args.mesh)

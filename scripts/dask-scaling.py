@@ -22,23 +22,19 @@ from distributed import Client, LocalCluster
 
 import exactgeo
 import exactgeo.dask
+from spot_points import box_points, default_spot
 
-HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SHARED_SPOT = os.path.join(HERE, "..", "shared", "data", "meshes", "spot", "spot_quad_cc3.ply")
-BUNDLED_SPOT = os.path.join(HERE, "tests", "data", "meshes", "spot", "spot_quad_cc1.ply")
 
 
 def write_chunks(folder, mesh, count, chunk, seed):
     """count points uniform in the mesh's box grown by 5%, as .npy files of `chunk` rows."""
-    lower, upper = mesh.vertices.min(axis=0), mesh.vertices.max(axis=0)
-    grow = 0.05 * (upper - lower)
     rng = np.random.default_rng(seed)
     os.makedirs(folder)
     files = []
     for start in range(0, count, chunk):
         rows = min(chunk, count - start)
         files.append(os.path.join(folder, f"points-{start // chunk:05d}.npy"))
-        np.save(files[-1], rng.uniform(lower - grow, upper + grow, (rows, 3)))
+        np.save(files[-1], box_points(mesh, rows, rng))
     return files
 
 
@@ -68,7 +64,7 @@ def timed_compute(mesh_path, files):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mesh", nargs="?",
-                        default=SHARED_SPOT if os.path.exists(SHARED_SPOT) else BUNDLED_SPOT)
+                        default=default_spot())
     parser.add_argument("--points", type=int, default=20_000_000)
     parser.add_argument("--chunk", type=int, default=1_000_000)
     parser.add_argument("--seed", type=int, default=1)

@@ -19,27 +19,23 @@ import time
 import numpy as np
 
 import exactgeo
+from spot_points import box_points, default_spot
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CLI = os.path.join(HERE, "build", "bin", "exactgeo")
-SHARED_SPOT = os.path.join(HERE, "..", "shared", "data", "meshes", "spot", "spot_quad_cc3.ply")
-BUNDLED_SPOT = os.path.join(HERE, "tests", "data", "meshes", "spot", "spot_quad_cc1.ply")
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mesh", nargs="?",
-                        default=SHARED_SPOT if os.path.exists(SHARED_SPOT) else BUNDLED_SPOT)
+                        default=default_spot())
     parser.add_argument("--points", type=int, default=1_000_000)
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
 
     mesh = exactgeo.load_mesh(args.mesh)
-    lower, upper = mesh.vertices.min(axis=0), mesh.vertices.max(axis=0)
-    grow = 0.05 * (upper - lower)
-    points = np.random.default_rng(args.seed).uniform(lower - grow, upper + grow,
-                                                      (args.points, 3))
+    points = box_points(mesh, args.points, np.random.default_rng(args.seed))
     classifier = exactgeo.Classifier(mesh)
 
     with tempfile.TemporaryDirectory() as tmp:
