@@ -52,9 +52,10 @@ ccd::Options options_from(const std::string& method, std::optional<double> toi_w
 
 /// Runs one query type over (n, 4, 3) start and end positions: a bool array, and with
 /// toi_width an (n, 2) array of brackets (NaN rows where there is no collision).
-template <class Query, class Make, class Run>
-py::object run_queries(const py::object& x0_in, const py::object& x1_in,
-                       const ccd::Options& options, int threads, Make make, Run run) {
+template <ccd::QueryType type>
+py::object run_queries(const py::object& x0_in, const py::object& x1_in, const std::string& method,
+                       std::optional<double> toi_width, double cubic_tolerance, int threads) {
+  const ccd::Options options = options_from(method, toi_width, cubic_tolerance);
   const Doubles x0 = coordinates(x0_in, "x0", {-1, 4, 3});
   const Doubles x1 = coordinates(x1_in, "x1", {-1, 4, 3});
   if (x0.shape(0) != x1.shape(0)) {
@@ -78,7 +79,12 @@ py::object run_queries(const py::object& x0_in, const py::object& x1_in,
       for (std::size_t i = block * kBlock; i < std::min(n, (block + 1) * kBlock); ++i) {
         std::copy_n(start + 4 * i, 4, record.points.begin());
         std::copy_n(end + 4 * i, 4, record.points.begin() + 4);
-        const ccd::Result result = run(make(record), options);
+        ccd::Result result;
+        if constexpr (type == QueryType::vertex_face) {
+          result = ccd::vertex_face_ccd(ccd::vertex_face_query(record), options);
+        } else {
+          result = ccd::edge_edge_ccd(ccd::edge_edge_query(record), options);
+        }
         hit[i] = result.collision;
         if (with_toi) {
           constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
@@ -90,24 +96,6 @@ py::object run_queries(const py::object& x0_in, const py::object& x1_in,
   }
   if (!with_toi) return collisions;
   return py::make_tuple(collisions, brackets);
-}
-
-py::object vertex_face(const py::object& x0, const py::object& x1, const std::string& method,
-                       std::optional<double> toi_width, double cubic_tolerance, int threads) {
-  return run_queries<ccd::VertexFaceQuery>(
-      x0, x1, options_from(method, toi_width, cubic_tolerance), threads,
-      [](const QueryRecord& r) { return ccd::vertex_face_query(r); },
-      [](const ccd::VertexFaceQuery& q, const ccd::Options& o) {
-        return ccd::vertex_face_ccd(q, o);
-      });
-}
-
-py::object edge_edge(const py::object& x0, const py::object& x1, const std::string& method,
-                     std::optional<double> toi_width, double cubic_tolerance, int threads) {
-  return run_queries<ccd::EdgeEdgeQuery>(
-      x0, x1, options_from(method, toi_width, cubic_tolerance), threads,
-      [](const QueryRecord& r) { return ccd::edge_edge_query(r); },
-      [](const ccd::EdgeEdgeQuery& q, const ccd::Options& o) { return ccd::edge_edge_ccd(q, o); });
 }
 
 const char* type_name(QueryType type) {
@@ -191,11 +179,11 @@ void bind_ccd(py::module_& module) {
       kCcdDoc;
   const std::string ee_doc =
       std::string("Continuous collision detection of moving edges against moving edges.") + kCcdDoc;
-  module.def("vertex_face_ccd", &vertex_face, py::arg("x0"), py::arg("x1"), py::kw_only(),
-             py::arg("method") = "exact", py::arg("toi_width") = py::none(),
+  module.def("vertex_face_ccd", &run_queries<QueryType::vertex_face>, py::arg("x0"), py::arg("x1"),
+             py::kw_only(), py::arg("method") = "exact", py::arg("toi_width") = py::none(),
              py::arg("cubic_tolerance") = 1e-6, py::arg("threads") = 0, vf_doc.c_str());
-  module.def("edge_edge_ccd", &edge_edge, py::arg("x0"), py::arg("x1"), py::kw_only(),
-             py::arg("method") = "exact", py::arg("toi_width") = py::none(),
+  module.def("edge_edge_ccd", &run_queries<QueryType::edge_edge>, py::arg("x0"), py::arg("x1"),
+             py::kw_only(), py::arg("method") = "exact", py::arg("toi_width") = py::none(),
              py::arg("cubic_tolerance") = 1e-6, py::arg("threads") = 0, ee_doc.c_str());
   module.def("_read_ccd_queries", &read_queries, py::arg("path"), py::arg("type") = py::none());
 }
