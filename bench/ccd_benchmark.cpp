@@ -56,7 +56,7 @@ Queries load(const std::string& set) {
   return q;
 }
 
-/// The two sets, and the targets for each (the most `exact` and `parity` may cost).
+/// One half of the public data, by name and folder.
 struct Set {
   const char* name;
   const char* folder;
