@@ -6,6 +6,11 @@ either.
 
 Usage (from the repository root, after the README's first command):
   PYTHONPATH=build/python /usr/bin/python3 scripts/ccd-magnitudes.py [--mesh MESH]
+      [--motion SIGMA] [--step-only K]
+
+--step-only K runs just the mesh step at 2^K, for counting its instructions:
+  valgrind --tool=callgrind --toggle-collect='exactgeo::ccd::*_ccd(*' /usr/bin/python3 \
+      scripts/ccd-magnitudes.py --mesh tests/data/meshes/spot/spot_quad_cc1.ply --step-only 1000
 
 MESH defaults to the Spot refinement cc3 of the shared data when present, else the
 bundled cc1; it is split into triangles and moved by a seeded random motion. One thread."""
@@ -48,16 +53,16 @@ def queries():
             print(f"| {name.split('/')[-1]} | {k} | {ns:,.0f} | {np.array_equal(hits, reference)} |")
 
 
-def mesh_step(path):
+def mesh_step(path, sigma, exponents):
     mesh = exactgeo.load_mesh(path)
     quads = mesh.faces
     triangles = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]])
     x0 = mesh.vertices
-    x1 = x0 + np.random.default_rng(1).normal(0, 2e-3, x0.shape)
+    x1 = x0 + np.random.default_rng(1).normal(0, sigma, x0.shape)
     print(f"\n{os.path.basename(path)}: {len(triangles)} triangles, random motion, one step")
     print("| 2^k | candidates | vertex-face | edge-edge | broad phase s | narrow phase s |")
     print("|---:|---:|---:|---:|---:|---:|")
-    for k in (0, 1000):
+    for k in exponents:
         r = exactgeo.MeshCcd(triangles).step(scaled(x0, k), scaled(x1, k), threads=1)
         print(f"| {k} | {r.vertex_face_candidates + r.edge_edge_candidates} | "
               f"{len(r.vertex_face)} | {len(r.edge_edge)} | {r.broad_phase_seconds:.2f} | "
@@ -67,9 +72,16 @@ def mesh_step(path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--mesh", default=default_spot())
+    parser.add_argument("--motion", type=float, default=2e-3,
+                        help="standard deviation of each coordinate's displacement")
+    parser.add_argument("--step-only", type=int, metavar="K",
+                        help="only the mesh step, at 2^K")
     args = parser.parse_args()
-    queries()
-    mesh_step(args.mesh)
+    if args.step_only is None:
+        queries()
+        mesh_step(args.mesh, args.motion, (0, 1000))
+    else:
+        mesh_step(args.mesh, args.motion, (args.step_only,))
 
 
 if __name__ == "__main__":
