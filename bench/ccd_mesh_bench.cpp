@@ -7,9 +7,13 @@
 // coordinate (uniform, seeded); with --standing F, the fraction F of vertices lowest on the
 // widest axis stands still. Quads are split into two triangles. Prints one JSON object: the
 // best of R runs of a fresh MeshCcd's first step, then the same MeshCcd's second step on the
-// same frames (standing boxes kept). With --compare, the broad-phase structures on the same
+// same frames (trees kept). Then the broad phase alone against the baseline
+// (baseline/mesh_broad_phase.hpp, the broad phase before refitted trees), best of R each,
+// on a following step: FRAME1 to FRAME1 plus a new random motion without FRAME1, the same
+// frames again with it; the library's trees were built on the first step and are refitted;
+// both candidate sets are compared. With --compare, the broad-phase structures on the same
 // boxes in the same run: testing every pair (small meshes only), sweep and prune along x
-// (sweep_and_prune.hpp), and the tree MeshCcd uses (box_tree.hpp).
+// (sweep_and_prune.hpp), and a tree queried once per box (baseline/box_tree.hpp).
 
 #include <algorithm>
 #include <chrono>
@@ -22,8 +26,9 @@
 #include <string>
 #include <vector>
 
-#include "exactgeo/ccd/internal/box_tree.hpp"
-#include "exactgeo/ccd/internal/swept_box.hpp"
+#include "baseline/box_tree.hpp"
+#include "baseline/mesh_broad_phase.hpp"
+#include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "sweep_and_prune.hpp"
@@ -121,8 +126,8 @@ struct StructureComparison {
 };
 
 StructureComparison compare_structures(const ccd::MeshCcd& mesh, const Frames& frames) {
-  using ccd::internal::swept_box;
-  using ccd::internal::SweptBox;
+  using ccd::bench::baseline::swept_box;
+  using ccd::bench::baseline::SweptBox;
   std::vector<SweptBox> vertices, edges, faces;
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
     vertices.push_back(
@@ -138,10 +143,10 @@ StructureComparison compare_structures(const ccd::MeshCcd& mesh, const Frames& f
     StructureTime t;
     for (const auto& v : vertices)
       for (const auto& f : faces)
-        t.overlaps += ccd::internal::overlap(v, f) ? 1 : 0;
+        t.overlaps += ccd::bench::baseline::overlap(v, f) ? 1 : 0;
     for (std::size_t a = 0; a < edges.size(); ++a)
       for (std::size_t b = a + 1; b < edges.size(); ++b)
-        t.overlaps += ccd::internal::overlap(edges[a], edges[b]) ? 1 : 0;
+        t.overlaps += ccd::bench::baseline::overlap(edges[a], edges[b]) ? 1 : 0;
     t.seconds = seconds(start);
     c.all_pairs = t;
   }
@@ -161,13 +166,59 @@ StructureComparison compare_structures(const ccd::MeshCcd& mesh, const Frames& f
   }
   {
     const auto start = std::chrono::steady_clock::now();
-    const ccd::internal::BoxTree face_tree(faces), edge_tree(edges);
+    const ccd::bench::baseline::BoxTree face_tree(faces), edge_tree(edges);
     std::size_t n = 0;
     for (const auto& v : vertices)
       face_tree.query(v, [&n](std::uint32_t) { ++n; });
     for (const auto& e : edges)
       edge_tree.query(e, [&n, &e](std::uint32_t other) { n += other > e.id ? 1 : 0; });
     c.tree = {n, seconds(start)};
+  }
+  return c;
+}
+
+/// The library's broad phase on a following step (its trees built on `first`, refitted)
+/// against the baseline's, on one thread count, best of `repeat` each.
+struct BroadPhaseComparison {
+  double baseline_seconds = INFINITY;
+  double refit_seconds = INFINITY;
+  bool rebuilt = false;  ///< the library rebuilt a tree on the following step
+  std::size_t candidates = 0;
+  bool same_candidates = false;
+};
+
+template <class Candidates>
+std::vector<std::array<std::uint32_t, 3>> sorted_pairs(const Candidates& c) {
+  std::vector<std::array<std::uint32_t, 3>> pairs;
+  for (const auto& p : c.vertex_face)
+    pairs.push_back({0, p.vertex, p.face});
+  for (const auto& p : c.edge_edge)
+    pairs.push_back({1, p.a, p.b});
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+BroadPhaseComparison compare_broad_phases(const ccd::MeshCcd& mesh, const ccd::MeshFrames& first,
+                                          const ccd::MeshFrames& next, unsigned threads,
+                                          int repeat) {
+  BroadPhaseComparison c;
+  ccd::internal::MeshBroadPhase library(mesh.vertex_count(), mesh.faces(), mesh.edges());
+  ccd::bench::baseline::MeshBroadPhase baseline(mesh.vertex_count(), mesh.faces(), mesh.edges());
+  library.candidates(first, threads);
+  baseline.candidates(first, threads);  // its standing trees, as a MeshCcd would keep them
+  std::vector<std::array<std::uint32_t, 3>> library_pairs, baseline_pairs;
+  for (int r = 0; r < repeat; ++r) {
+    auto start = std::chrono::steady_clock::now();
+    const auto base = baseline.candidates(next, threads);
+    c.baseline_seconds = std::min(c.baseline_seconds, seconds(start));
+    start = std::chrono::steady_clock::now();
+    const auto mine = library.candidates(next, threads);
+    c.refit_seconds = std::min(c.refit_seconds, seconds(start));
+    if (r == 0) {
+      c.rebuilt = mine.trees_rebuilt;
+      c.candidates = mine.vertex_face.size() + mine.edge_edge.size();
+      c.same_candidates = sorted_pairs(mine) == sorted_pairs(base);
+    }
   }
   return c;
 }
@@ -242,6 +293,16 @@ int main(int argc, char** argv) {
       second = mesh.step(view, options);
     }
   }
+  // The following step: from FRAME1 on by a new random motion, or the same frames again.
+  Frames following = frames;
+  if (paths.size() == 1) {
+    following.t0 = frames.t1;
+    random_motion(following, motion, standing, seed + 1);
+  }
+  const BroadPhaseComparison broad =
+      compare_broad_phases(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), view,
+                           ccd::MeshFrames{following.t0, following.t1}, threads, repeat);
+
   std::optional<StructureComparison> structures;
   if (compare)
     structures = compare_structures(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), frames);
@@ -253,7 +314,10 @@ int main(int argc, char** argv) {
       "\"edge_edge_candidates\": %zu, \"vertex_face\": %zu, \"edge_edge\": %zu, "
       "\"broad_phase_seconds\": %.6g, \"narrow_phase_seconds\": %.6g, "
       "\"ns_per_candidate\": %.6g, \"candidates_per_collision\": %.6g, "
-      "\"second_step_broad_phase_seconds\": %.6g, \"second_step_rebuilt\": %s",
+      "\"second_step_broad_phase_seconds\": %.6g, \"second_step_rebuilt\": %s, "
+      "\"next_step_candidates\": %zu, \"next_step_baseline_broad_phase_seconds\": %.6g, "
+      "\"next_step_broad_phase_seconds\": %.6g, \"next_step_rebuilt\": %s, "
+      "\"broad_phase_speedup\": %.4g, \"same_candidates_as_baseline\": %s",
       paths[0].c_str(), frames.faces.size(), frames.t0.size() / 3,
       std::string(ccd::to_string(method)).c_str(), threads, motion, standing,
       best.vertex_face_candidates, best.edge_edge_candidates, best.vertex_face.size(),
@@ -261,7 +325,9 @@ int main(int argc, char** argv) {
       best.candidates() ? 1e9 * best.narrow_phase_seconds / static_cast<double>(best.candidates())
                         : 0.0,
       collisions ? static_cast<double>(best.candidates()) / static_cast<double>(collisions) : 0.0,
-      second.broad_phase_seconds, second.standing_tree_rebuilt ? "true" : "false");
+      second.broad_phase_seconds, second.trees_rebuilt ? "true" : "false", broad.candidates,
+      broad.baseline_seconds, broad.refit_seconds, broad.rebuilt ? "true" : "false",
+      broad.baseline_seconds / broad.refit_seconds, broad.same_candidates ? "true" : "false");
   if (structures) {
     const auto print = [](const char* name, const StructureTime& t) {
       std::printf(", \"%s_overlaps\": %zu, \"%s_seconds\": %.6g", name, t.overlaps, name,

@@ -21,12 +21,12 @@
 #include <span>
 #include <vector>
 
-#include "exactgeo/ccd/internal/swept_box.hpp"
+#include "baseline/swept_box.hpp"
 
 namespace exactgeo::ccd::bench {
 
-using internal::overlap;
-using internal::SweptBox;
+using baseline::overlap;
+using baseline::SweptBox;
 
 enum class Scan { after_self, from_equal, from_above };
 

@@ -108,12 +108,12 @@ void print_summary(const Options& o, const exactgeo::cloth::Scene& scene, const 
         "\"vertices\": %zu, \"cloth_vertices\": %zu, \"candidates_total\": %zu, "
         "\"collisions_total\": %zu, \"self_collisions_total\": %zu, "
         "\"obstacle_collisions_total\": %zu, \"rounds_total\": %zu, \"frozen_total\": %zu, "
-        "\"standing_rebuilt_total\": %zu, "
+        "\"trees_rebuilt_total\": %zu, "
         "\"ccd_seconds\": %.6f, \"broad_phase_seconds\": %.6f, \"narrow_phase_seconds\": %.6f, "
         "\"verify_seconds\": %.6f}\n",
         steps, o.resolution, o.toi ? "toi" : "freeze", scene.faces.size(),
         scene.positions.size() / 3, scene.cloth_vertices, f.candidates, f.collisions(),
-        f.self_pairs, f.obstacle_pairs, f.rounds, f.frozen, f.standing_rebuilt, f.seconds,
+        f.self_pairs, f.obstacle_pairs, f.rounds, f.frozen, f.trees_rebuilt, f.seconds,
         f.broad_phase_seconds, f.narrow_phase_seconds, t.verify_seconds);
     return;
   }
@@ -121,9 +121,9 @@ void print_summary(const Options& o, const exactgeo::cloth::Scene& scene, const 
               scene.positions.size() / 3, scene.cloth_vertices, scene.faces.size(),
               scene.cloth_faces);
   std::printf(
-      "ccd: %zu rounds (at most %zu in a step; %zu rebuilt the standing tree), %.3f s "
+      "ccd: %zu rounds (at most %zu in a step; %zu built a tree anew), %.3f s "
       "(broad phase %.3f s, narrow phase %.3f s), %.3f ms per step\n",
-      f.rounds, t.max_rounds, f.standing_rebuilt, f.seconds, f.broad_phase_seconds,
+      f.rounds, t.max_rounds, f.trees_rebuilt, f.seconds, f.broad_phase_seconds,
       f.narrow_phase_seconds, steps > 0 ? 1e3 * f.seconds / static_cast<double>(steps) : 0.0);
   std::printf(
       "collisions: %zu pairs (self %zu, obstacle %zu; vertex-face %zu, edge-edge %zu) "

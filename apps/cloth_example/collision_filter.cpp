@@ -101,7 +101,7 @@ FilterStats CollisionFilter::filter(std::span<const double> x0, std::span<double
     stats.broad_phase_seconds += result.broad_phase_seconds;
     stats.narrow_phase_seconds += result.narrow_phase_seconds;
     ++stats.rounds;
-    if (result.standing_tree_rebuilt) ++stats.standing_rebuilt;
+    if (result.trees_rebuilt) ++stats.trees_rebuilt;
     if (first_t1 != nullptr && stats.rounds == 1) first_t1->assign(end.begin(), end.end());
     count(result, stats);
 

@@ -62,8 +62,8 @@ struct FilterStats {
   std::size_t obstacle_pairs = 0;  ///< ... some corner an obstacle vertex
   std::size_t frozen = 0;          ///< sheet vertices of colliding pairs: frozen, or (TOI) stopped
   std::size_t scaled = 0;          ///< TOI rounds that scaled the step
-  std::size_t standing_rebuilt = 0;  ///< rounds that rebuilt the standing primitives' tree
-  double seconds = 0.0;              ///< wall time in MeshCcd::step
+  std::size_t trees_rebuilt = 0;   ///< rounds that built a broad-phase tree anew
+  double seconds = 0.0;            ///< wall time in MeshCcd::step
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
 
@@ -78,7 +78,7 @@ struct FilterStats {
     obstacle_pairs += s.obstacle_pairs;
     frozen += s.frozen;
     scaled += s.scaled;
-    standing_rebuilt += s.standing_rebuilt;
+    trees_rebuilt += s.trees_rebuilt;
     seconds += s.seconds;
     broad_phase_seconds += s.broad_phase_seconds;
     narrow_phase_seconds += s.narrow_phase_seconds;

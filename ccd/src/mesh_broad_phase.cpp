@@ -1,8 +1,10 @@
 #include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "exactgeo/ccd/internal/tree_pairs.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/kernel/error_free.hpp"
 
@@ -10,19 +12,16 @@ namespace exactgeo::ccd::internal {
 
 namespace {
 
-using Boxes = std::vector<SweptBox>;
+constexpr std::size_t kVertexBlock = 1 << 14;  // vertices per job when making their boxes
 
-enum class PairKind { vertex_face, edge_edge };
+/// Node pairs each tree walk is split into (tree_pairs.hpp): enough for threads to share
+/// the work evenly, few enough that opening them costs nothing next to the walk.
+constexpr std::size_t kWalkPairs = 256;
 
-/// One pass of the broad phase: every query box against a tree.
-struct TreePass {
-  std::span<const SweptBox> queries;
-  const BoxTree* tree;
-  PairKind kind;
-  bool same_set;  ///< queries and tree hold the same primitives: keep each pair once
-};
-
-constexpr std::size_t kQueryBlock = 1024;  // query boxes per job
+/// A refitted tree is rebuilt once looseness() exceeds this factor times its value when
+/// the tree was built. A refitted tree is never wrong, only slower; this factor only
+/// trades the cost of a build (a few refits' worth) against a slower walk.
+constexpr double kRebuildLooseness = 1.5;
 
 bool shares_vertex(const Edge& a, const Edge& b) noexcept {
   return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
@@ -32,40 +31,41 @@ bool is_corner(VertexIndex v, const Triangle& f) noexcept {
   return v == f[0] || v == f[1] || v == f[2];
 }
 
-template <std::size_t N>
-bool any_moves(const std::array<VertexIndex, N>& corners, const std::vector<std::uint8_t>& moving) {
-  return std::any_of(corners.begin(), corners.end(), [&](VertexIndex v) { return moving[v] != 0; });
-}
-
-/// Each vertex's displacement p_t1 - p_t0, whether every coordinate of it is exactly a
-/// double, and whether the vertex moves at all (the rounded difference of two finite
-/// doubles is zero only when they are equal).
-struct Displacements {
+/// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
+/// displacement is exactly a double, and whether the vertex moves at all (the rounded
+/// difference of two finite doubles is zero only when they are equal).
+struct VertexMotion {
+  VertexBoxes boxes;
   std::vector<Vector3> d;
   std::vector<std::uint8_t> exact;
 
-  explicit Displacements(const MeshFrames& frames) {
+  VertexMotion(const MeshFrames& frames, unsigned threads) {
     const std::size_t n = frames.positions_t0.size() / 3;
+    boxes.box.resize(n);
+    boxes.moving.resize(n);
     d.resize(n);
-    exact.assign(n, 1);
-    for (std::size_t i = 0; i < 3 * n; ++i) {
-      const auto diff = exactgeo::kernel::two_diff(frames.positions_t1[i], frames.positions_t0[i]);
-      d[i / 3][i % 3] = diff.head;
-      if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[i / 3] = 0;
-    }
-  }
-
-  std::vector<std::uint8_t> moving() const {
-    std::vector<std::uint8_t> m(d.size());
-    for (std::size_t v = 0; v < d.size(); ++v)
-      m[v] = d[v] != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
-    return m;
+    exact.resize(n);
+    const double* t0 = frames.positions_t0.data();
+    const double* t1 = frames.positions_t1.data();
+    const StepScale scale(
+        std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
+    parallel::for_each_block((n + kVertexBlock - 1) / kVertexBlock, threads, [&](std::size_t b) {
+      for (std::size_t v = b * kVertexBlock; v < std::min(n, (b + 1) * kVertexBlock); ++v) {
+        boxes.box[v] = vertex_swept_box(t0, t1, v, scale);
+        exact[v] = 1;
+        for (std::size_t k = 0; k < 3; ++k) {
+          const auto diff = exactgeo::kernel::two_diff(t1[3 * v + k], t0[3 * v + k]);
+          d[v][k] = diff.head;
+          if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[v] = 0;
+        }
+        boxes.moving[v] = d[v] != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
+      }
+    });
   }
 
   /// True when all `vertices` move by one and the same vector (standing still included):
   /// their relative positions, hence all their distances, stay the same during the step.
-  template <std::size_t N>
-  bool rigid(const std::array<VertexIndex, N>& vertices) const noexcept {
+  bool rigid(const std::array<VertexIndex, 4>& vertices) const noexcept {
     const VertexIndex first = vertices[0];
     if (exact[first] == 0) return false;
     for (const VertexIndex v : vertices) {
@@ -75,126 +75,80 @@ struct Displacements {
   }
 };
 
-/// The swept boxes of the primitives whose corners move (`moving` true) or all stand
-/// still (`moving` false).
-template <std::size_t N>
-Boxes boxes_of(std::span<const std::array<VertexIndex, N>> primitives,
-               const std::vector<std::uint8_t>& moving_vertex, bool moving,
-               const MeshFrames& frames, const StepScale& scale) {
-  Boxes boxes;
-  for (std::size_t i = 0; i < primitives.size(); ++i) {
-    if (any_moves(primitives[i], moving_vertex) != moving) continue;
-    boxes.push_back(swept_box(primitives[i], static_cast<std::uint32_t>(i),
-                              frames.positions_t0.data(), frames.positions_t1.data(), scale));
-  }
-  return boxes;
-}
-
 }  // namespace
 
 MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangle> faces,
                                std::span<const Edge> edges)
-    : vertex_count_(vertex_count), faces_(faces), edges_(edges), vertices_(vertex_count) {
+    : faces_(faces), edges_(edges), vertices_(vertex_count) {
   for (std::size_t v = 0; v < vertex_count; ++v)
     vertices_[v] = {static_cast<VertexIndex>(v)};
 }
 
-bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
-                                        const MeshFrames& frames, const StepScale& scale) const {
-  if (!standing_valid_ || moving != moving_ || scale.exponent() != standing_scale_.exponent())
-    return false;
-  for (std::size_t i = 0; i < 3 * vertex_count_; ++i) {
-    if (moving_[i / 3] == 0 && frames.positions_t0[i] != standing_positions_[i]) return false;
-  }
-  return true;
-}
-
-void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames,
-                                      const StepScale& scale) {
-  moving_ = std::move(moving);
-  standing_scale_ = scale;
-  standing_positions_.assign(frames.positions_t0.begin(), frames.positions_t0.end());
-  standing_vertices_ = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_),
-                                        moving_, false, frames, scale));
-  standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames, scale));
-  standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames, scale));
-  standing_valid_ = true;
+bool MeshBroadPhase::fit_trees(const VertexBoxes& boxes, unsigned threads) {
+  bool built = false;
+  const auto fit = [&]<std::size_t N>(BoxTree<N>& tree,
+                                      std::span<const std::array<VertexIndex, N>> primitives) {
+    if (built_) {
+      tree.refit(boxes, threads);
+      if (tree.looseness() <= kRebuildLooseness * tree.built_looseness()) return;
+    }
+    tree = BoxTree<N>(primitives, boxes);
+    built = true;
+  };
+  fit(vertex_tree_, std::span<const std::array<VertexIndex, 1>>(vertices_));
+  fit(edge_tree_, edges_);
+  fit(face_tree_, faces_);
+  built_ = true;
+  return built;
 }
 
 MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
   MeshCandidates result;
-  const Displacements motion(frames);
-  const std::vector<std::uint8_t> moving = motion.moving();
-  const StepScale scale(
-      std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
-  if (!standing_unchanged(moving, frames, scale)) {
-    rebuild_standing(moving, frames, scale);
-    result.standing_rebuilt = true;
-  }
-  // The three trees of moving primitives are built side by side. Queries run in tree
-  // order (BoxTree::boxes), which keeps them spatially coherent.
-  std::array<BoxTree, 3> trees;
-  parallel::for_each_block(3, threads, [&](std::size_t k) {
-    if (k == 0)
-      trees[0] = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving,
-                                  true, frames, scale));
-    if (k == 1) trees[1] = BoxTree(boxes_of(edges_, moving, true, frames, scale));
-    if (k == 2) trees[2] = BoxTree(boxes_of(faces_, moving, true, frames, scale));
-  });
-  const BoxTree &moving_vertex_tree = trees[0], &moving_edge_tree = trees[1],
-                &moving_face_tree = trees[2];
-  const auto moving_vertices = moving_vertex_tree.boxes();
-  const auto moving_edges = moving_edge_tree.boxes();
+  const VertexMotion motion(frames, threads);
+  result.trees_rebuilt = fit_trees(motion.boxes, threads);
 
-  // Every pair with at least one moving primitive, each once, except pairs moving rigidly.
-  const TreePass passes[] = {
-      {moving_vertices, &moving_face_tree, PairKind::vertex_face, false},
-      {moving_vertices, &standing_faces_, PairKind::vertex_face, false},
-      {standing_vertices_.boxes(), &moving_face_tree, PairKind::vertex_face, false},
-      {moving_edges, &moving_edge_tree, PairKind::edge_edge, true},
-      {moving_edges, &standing_edges_, PairKind::edge_edge, false},
-  };
-  struct Candidates {
+  // Both walks split into node pairs, vertex-face first; each pair's candidates in its
+  // own list, joined in order, so the order does not depend on the thread count.
+  const std::vector<NodePair> vertex_face =
+      split_pairs(vertex_tree_, face_tree_, false, kWalkPairs);
+  const std::vector<NodePair> edge_edge = split_pairs(edge_tree_, edge_tree_, true, kWalkPairs);
+  struct Found {
     std::vector<VertexFacePair> vertex_face;
     std::vector<EdgeIndexPair> edge_edge;
   };
-  struct QueryJob {
-    const TreePass* pass;
-    std::size_t begin, end;
-  };
-  std::vector<QueryJob> jobs;
-  for (const TreePass& pass : passes) {
-    if (pass.tree->empty()) continue;
-    for (std::size_t b = 0; b < pass.queries.size(); b += kQueryBlock)
-      jobs.push_back({&pass, b, std::min(pass.queries.size(), b + kQueryBlock)});
-  }
-  std::vector<Candidates> found(jobs.size());
-  parallel::for_each_block(jobs.size(), threads, [&](std::size_t j) {
-    const QueryJob& job = jobs[j];
-    Candidates& out = found[j];
-    for (std::size_t q = job.begin; q < job.end; ++q) {
-      const SweptBox& box = job.pass->queries[q];
-      const std::uint32_t mine = box.id;
-      if (job.pass->kind == PairKind::vertex_face) {
-        job.pass->tree->query(box, [&](std::uint32_t face) {
-          const Triangle& f = faces_[face];
-          if (is_corner(mine, f) || motion.rigid(std::array{mine, f[0], f[1], f[2]})) return;
-          out.vertex_face.push_back({mine, face});
-        });
-      } else {
-        job.pass->tree->query(box, [&](std::uint32_t other) {
-          if (job.pass->same_set && other <= mine) return;
-          const Edge &a = edges_[mine], &b = edges_[other];
-          if (shares_vertex(a, b) || motion.rigid(std::array{a[0], a[1], b[0], b[1]})) return;
-          out.edge_edge.push_back({std::min(mine, other), std::max(mine, other)});
-        });
-      }
+  std::vector<Found> found(vertex_face.size() + edge_edge.size());
+  std::vector<NodePair> stack;  // each worker's copy of the lambda has its own
+  parallel::for_each_block(found.size(), threads, [&, stack](std::size_t j) mutable {
+    Found& out = found[j];
+    if (j < vertex_face.size()) {
+      overlapping_pairs(vertex_tree_, face_tree_, false, vertex_face[j], stack,
+                        [&](const BoxTree<1>::Slot& v, const BoxTree<3>::Slot& f) {
+                          const VertexIndex p = v.corners[0];
+                          const Triangle& c = f.corners;
+                          if (is_corner(p, c) || motion.rigid({p, c[0], c[1], c[2]})) return;
+                          out.vertex_face.push_back({p, f.id});
+                        });
+      return;
     }
+    overlapping_pairs(edge_tree_, edge_tree_, true, edge_edge[j - vertex_face.size()], stack,
+                      [&](const BoxTree<2>::Slot& a, const BoxTree<2>::Slot& b) {
+                        const Edge &ea = a.corners, &eb = b.corners;
+                        if (shares_vertex(ea, eb) || motion.rigid({ea[0], ea[1], eb[0], eb[1]}))
+                          return;
+                        out.edge_edge.push_back({std::min(a.id, b.id), std::max(a.id, b.id)});
+                      });
   });
-  for (Candidates& c : found) {
-    result.vertex_face.insert(result.vertex_face.end(), c.vertex_face.begin(), c.vertex_face.end());
-    result.edge_edge.insert(result.edge_edge.end(), c.edge_edge.begin(), c.edge_edge.end());
-    c = {};
+  std::size_t vf = 0, ee = 0;
+  for (const Found& f : found) {
+    vf += f.vertex_face.size();
+    ee += f.edge_edge.size();
+  }
+  result.vertex_face.reserve(vf);
+  result.edge_edge.reserve(ee);
+  for (Found& f : found) {
+    result.vertex_face.insert(result.vertex_face.end(), f.vertex_face.begin(), f.vertex_face.end());
+    result.edge_edge.insert(result.edge_edge.end(), f.edge_edge.begin(), f.edge_edge.end());
+    f = {};
   }
   return result;
 }

@@ -193,7 +193,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   const MeshFrames scaled = unit_magnitude_frames(frames, unit);
 
   const internal::MeshCandidates candidates = s.broad_phase.candidates(scaled, options.threads);
-  result.standing_tree_rebuilt = candidates.standing_rebuilt;
+  result.trees_rebuilt = candidates.trees_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();
   result.broad_phase_seconds = seconds_since(broad_start);

@@ -9,13 +9,14 @@
 //
 //   broad phase   swept boxes (the box of a primitive's corners at t0 and t1 contains the
 //                 primitive at every time in between, because each corner moves on a
-//                 segment and a box is convex), rounded outward to float, in a box tree
-//                 (internal/box_tree.hpp; docs/ccd.md says why this structure). Pairs
+//                 segment and a box is convex), rounded outward to float, in one box tree
+//                 per kind of primitive (internal/box_tree.hpp), built on the first step
+//                 and refitted on later ones; the vertex tree is walked against the face
+//                 tree and the edge tree against itself (docs/ccd.md says why). Pairs
 //                 sharing a vertex are skipped, and so are rigid pairs: all four corners
 //                 move by exactly the same vector p_t1 - p_t0 (standing still, the zero
 //                 vector, included), so their distance is constant over the step and a
-//                 contact between them is not a collision of this step. The tree of
-//                 standing primitives is built once and kept while they stay where they are.
+//                 contact between them is not a collision of this step.
 //   narrow phase  vertex_face_ccd / edge_edge_ccd (ccd.hpp) on every candidate, in
 //                 parallel. The output is sorted, so it is the same for every thread count.
 //
@@ -79,8 +80,9 @@ struct MeshCcdResult {
   std::size_t edge_edge_candidates = 0;
   /// With time_of_impact_width and a collision: no root before start, a root by end.
   std::optional<TimeInterval> time_of_impact;
-  /// True when the tree of standing primitives was rebuilt in this step.
-  bool standing_tree_rebuilt = false;
+  /// True when the broad phase built a tree in this step (the first step, or one after
+  /// the mesh moved so far that refitting the trees would have made them slow).
+  bool trees_rebuilt = false;
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
 
@@ -99,7 +101,7 @@ class MeshCcd {
 
   /// Every colliding pair over the step. Throws std::invalid_argument when a frame does not
   /// hold 3 * vertex_count() values or holds a non-finite one (naming the vertex).
-  /// Not const: it keeps the tree of standing primitives for the next step. One
+  /// Not const: it keeps the broad phase's trees for the next step. One
   /// MeshCcd per thread; different MeshCcd objects are independent.
   MeshCcdResult step(const MeshFrames& frames, const MeshCcdOptions& options = {});
 

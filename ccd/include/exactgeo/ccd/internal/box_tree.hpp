@@ -1,16 +1,24 @@
 #pragma once
 
-// A bounding-volume hierarchy over swept boxes: the broad phase of mesh-level CCD.
+// A bounding-volume hierarchy over the swept boxes of one kind of mesh primitive
+// (vertices, edges or faces): built once, refitted every step.
 //
-// Built top down: the boxes of a node are split at the median of their centres along the
-// axis where the centres spread the most, down to leaves of at most kLeafSize boxes. A
-// query visits every node whose box overlaps the query box and reports every stored box
-// that overlaps it (closed boxes: touching counts), so it finds exactly the overlapping
-// boxes, in an order fixed by the tree, which depends only on the input boxes.
+// Build: top down, the primitives of a node are split at the median of their box centres
+// along the axis where the centres spread the most, down to leaves of at most four
+// primitives. Nodes are stored depth first: a node's left child follows it, and it keeps
+// the index of its right child. A leaf's boxes are stored as one packet, coordinate by
+// coordinate (BoxPacket), so one box is compared with all four of them at once.
 //
-// docs/ccd.md compares it with sweep and prune and with testing every pair, measured on
-// the same meshes: sweep and prune scans every box that overlaps on the sweep axis, which
-// on a surface grows like n^1.5; the tree stays near n log n.
+// Refit: the mesh's connectivity is fixed, so the same tree serves every step. Each leaf
+// box is made anew from its corners' swept boxes, then each node box is the union of its
+// children's (children come after their parent, so one backward pass does it). A node's
+// box contains every box below it in any such tree, so a refitted tree finds exactly the
+// overlapping pairs a fresh one finds; it only gets slower when the mesh has moved far
+// from where the tree was built. looseness() measures that, and the owner rebuilds when
+// it has grown (mesh_broad_phase.cpp).
+//
+// Each node also knows whether any primitive below it moves in this step: two subtrees
+// that both stand still hold no pair of this step (their pairs are rigid, mesh_ccd.hpp).
 
 #include <algorithm>
 #include <array>
@@ -21,119 +29,228 @@
 #include <vector>
 
 #include "exactgeo/ccd/internal/swept_box.hpp"
+#include "exactgeo/parallel/blocks.hpp"
+#include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::ccd::internal {
 
+/// Every vertex's swept box in the step's scale, and whether it moves.
+struct VertexBoxes {
+  std::vector<FloatBox> box;
+  std::vector<std::uint8_t> moving;
+};
+
+/// Boxes per leaf.
+inline constexpr std::size_t kPacketLanes = 8;
+
+/// Up to kPacketLanes boxes, coordinate by coordinate. An unused lane holds the empty box
+/// (lo = +inf, hi = -inf), which overlaps nothing.
+struct BoxPacket {
+  std::array<std::array<float, kPacketLanes>, 3> lo;
+  std::array<std::array<float, kPacketLanes>, 3> hi;
+  unsigned moving;  ///< bit j: the primitive in lane j moves
+
+  FloatBox box(std::size_t j) const noexcept {
+    return {{lo[0][j], lo[1][j], lo[2][j]}, {hi[0][j], hi[1][j], hi[2][j]}};
+  }
+  void set(std::size_t j, const FloatBox& b) noexcept {
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[k][j] = b.lo[k];
+      hi[k][j] = b.hi[k];
+    }
+  }
+};
+
+/// Bit j set when `a` overlaps the packet's box j (closed boxes), four lanes per vector
+/// compare (GCC and Clang vector extensions, which every target lowers to its own SIMD).
+inline unsigned overlap_mask(const FloatBox& a, const BoxPacket& p) noexcept {
+  using Float4 = float __attribute__((vector_size(16)));
+  using Int4 = std::int32_t __attribute__((vector_size(16)));
+  const auto load = [](const float* f) {
+    Float4 v;
+    __builtin_memcpy(&v, f, sizeof v);
+    return v;
+  };
+  unsigned mask = 0;
+  for (std::size_t q = 0; q < kPacketLanes; q += 4) {
+    Int4 in = (a.lo[0] <= load(&p.hi[0][q])) & (load(&p.lo[0][q]) <= a.hi[0]);
+    in &= (a.lo[1] <= load(&p.hi[1][q])) & (load(&p.lo[1][q]) <= a.hi[1]);
+    in &= (a.lo[2] <= load(&p.hi[2][q])) & (load(&p.lo[2][q]) <= a.hi[2]);
+    const Int4 bits = in & Int4{1, 2, 4, 8};
+    mask |= static_cast<unsigned>(bits[0] | bits[1] | bits[2] | bits[3]) << q;
+  }
+  return mask;
+}
+
+template <std::size_t N>
 class BoxTree {
  public:
+  using Corners = std::array<VertexIndex, N>;
+  static constexpr std::size_t kLeafSize = kPacketLanes;  // one BoxPacket
+
+  /// A primitive: its index and its corners (lane j of a leaf's packet is its slot j).
+  struct Slot {
+    std::uint32_t id;
+    Corners corners;
+  };
+
+  struct Node {
+    FloatBox box;
+    float extent = 0;         ///< half_perimeter(box), which of two nodes to open first
+    std::uint32_t first = 0;  ///< leaf: its packet; inner node: its right child
+    std::uint8_t count = 0;   ///< primitives of a leaf; 0 for an inner node
+    bool moving = false;      ///< some primitive below moves
+
+    bool is_leaf() const noexcept { return count > 0; }
+  };
+
   BoxTree() = default;
-  /// Takes the boxes (their order is not kept).
-  explicit BoxTree(std::vector<SweptBox> boxes) : boxes_(std::move(boxes)) {
-    if (boxes_.empty()) return;
-    nodes_.reserve(2 * boxes_.size() / kLeafSize + 1);
-    build_all();
+
+  /// The tree over `primitives` (primitive i has corners primitives[i]) on this step's boxes.
+  BoxTree(std::span<const Corners> primitives, const VertexBoxes& vertices) {
+    if (primitives.empty()) return;
+    std::vector<Built> order(primitives.size());
+    for (std::size_t i = 0; i < primitives.size(); ++i) {
+      order[i].slot = {static_cast<std::uint32_t>(i), primitives[i]};
+      order[i].box = leaf_box(primitives[i], vertices);
+    }
+    nodes_.reserve(primitives.size());  // leaves hold at least 2 primitives
+    build(order, 0, order.size());
+    refit(vertices, 1);
+    built_looseness_ = looseness_;
   }
 
-  bool empty() const noexcept { return boxes_.empty(); }
-  std::size_t size() const noexcept { return boxes_.size(); }
-  /// The stored boxes in the tree's leaf order: neighbours in space are mostly neighbours
-  /// here, so querying in this order keeps the nodes a query visits in cache for the next.
-  std::span<const SweptBox> boxes() const noexcept { return boxes_; }
+  /// This step's boxes for the same primitives.
+  void refit(const VertexBoxes& vertices, unsigned threads) {
+    constexpr std::size_t kBlock = 1 << 12;  // packets per job
+    parallel::for_each_block((packets_.size() + kBlock - 1) / kBlock, threads, [&](std::size_t b) {
+      const std::size_t end = std::min(packets_.size(), (b + 1) * kBlock);
+      for (std::size_t i = b * kBlock; i < end; ++i)
+        fit_packet(i, vertices);
+    });
+    fit_nodes();
+  }
 
-  /// Calls visit(id) for every stored box overlapping `query`.
-  template <class Visit>
-  void query(const SweptBox& query, Visit&& visit) const {
-    if (nodes_.empty()) return;
-    // Depth is at most log2(n / kLeafSize) + 1 < 64 for any n that fits in memory.
-    std::array<std::uint32_t, 64> stack;
-    std::size_t top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& node = nodes_[stack[--top]];
-      if (!overlap(node.bounds, query)) continue;
-      if (node.count > 0) {
-        for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
-          if (overlap(boxes_[i], query)) visit(boxes_[i].id);
-        }
-        continue;
-      }
-      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
-      stack[top++] = node.first;  // right child
-      stack[top++] = self + 1;    // left child, stored right after its parent
-    }
+  /// The nodes' half-perimeters summed, over the primitives' summed plus the root's: the
+  /// walk's work per primitive, roughly. It grows when refitted boxes drift apart.
+  double looseness() const noexcept { return looseness_; }
+  /// looseness() when the tree was built.
+  double built_looseness() const noexcept { return built_looseness_; }
+
+  bool empty() const noexcept { return nodes_.empty(); }
+  const Node& node(std::uint32_t i) const noexcept { return nodes_[i]; }
+  const BoxPacket& packet(const Node& leaf) const noexcept { return packets_[leaf.first]; }
+  const Slot& slot(const Node& leaf, std::size_t j) const noexcept {
+    return slots_[kLeafSize * leaf.first + j];
   }
 
  private:
-  static constexpr std::size_t kLeafSize = 4;
-
-  struct Node {
-    SweptBox bounds;          ///< bounds.id unused
-    std::uint32_t first = 0;  ///< leaf: first box; inner node: the right child
-    std::uint32_t count = 0;  ///< boxes in a leaf; 0 for an inner node
+  struct Built {
+    Slot slot;
+    FloatBox box;
   };
 
-  /// A box with its centre (twice the centre, finite even for boxes reaching infinity,
-  /// so the median split always sees a strict weak order).
-  struct Item {
-    SweptBox box;
-    std::array<float, 3> centre;
-  };
-
-  static Item item(const SweptBox& b) noexcept {
-    constexpr float kMax = std::numeric_limits<float>::max() / 2;
-    Item it{b, {}};
-    for (int k = 0; k < 3; ++k)
-      it.centre[k] = std::clamp(b.lo[k], -kMax, kMax) + std::clamp(b.hi[k], -kMax, kMax);
-    return it;
+  static FloatBox leaf_box(const Corners& corners, const VertexBoxes& vertices) noexcept {
+    FloatBox box = vertices.box[corners[0]];
+    for (std::size_t c = 1; c < N; ++c)
+      box = united(box, vertices.box[corners[c]]);
+    return box;
   }
 
-  void build_all() {
-    std::vector<Item> items(boxes_.size());
-    for (std::size_t i = 0; i < boxes_.size(); ++i)
-      items[i] = item(boxes_[i]);
-    build(items, 0, items.size());
-    for (std::size_t i = 0; i < items.size(); ++i)
-      boxes_[i] = items[i].box;
+  /// A box's centre on one axis (halves first: finite even for boxes reaching infinity, so
+  /// the median split always sees a strict weak order).
+  static float centre(const FloatBox& b, int axis) noexcept {
+    return b.lo[axis] / 2 + b.hi[axis] / 2;
   }
 
-  std::uint32_t build(std::vector<Item>& items, std::size_t begin, std::size_t end) {
+  /// Makes order[begin, end) a subtree and returns its root's index.
+  std::uint32_t build(std::vector<Built>& order, std::size_t begin, std::size_t end) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({});
-    SweptBox bounds = items[begin].box;
-    std::array<float, 3> lo = items[begin].centre, hi = lo;
-    for (std::size_t i = begin; i < end; ++i) {
-      for (int k = 0; k < 3; ++k) {
-        bounds.lo[k] = std::min(bounds.lo[k], items[i].box.lo[k]);
-        bounds.hi[k] = std::max(bounds.hi[k], items[i].box.hi[k]);
-        lo[k] = std::min(lo[k], items[i].centre[k]);
-        hi[k] = std::max(hi[k], items[i].centre[k]);
-      }
-    }
-    nodes_[index].bounds = bounds;
     if (end - begin <= kLeafSize) {
-      nodes_[index].first = static_cast<std::uint32_t>(begin);
-      nodes_[index].count = static_cast<std::uint32_t>(end - begin);
+      nodes_[index].first = static_cast<std::uint32_t>(packets_.size());
+      nodes_[index].count = static_cast<std::uint8_t>(end - begin);
+      packets_.emplace_back();
+      for (std::size_t j = 0; j < kLeafSize; ++j)
+        slots_.push_back(begin + j < end ? order[begin + j].slot : Slot{kUnused, {}});
       return index;
+    }
+    std::array<float, 3> lo{}, hi{};
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = hi[k] = centre(order[begin].box, k);
+      for (std::size_t i = begin + 1; i < end; ++i) {
+        lo[k] = std::min(lo[k], centre(order[i].box, k));
+        hi[k] = std::max(hi[k], centre(order[i].box, k));
+      }
     }
     int axis = 0;
     for (int k = 1; k < 3; ++k) {
       if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
     }
     const std::size_t middle = begin + (end - begin) / 2;
-    const auto by_centre = [axis](const Item& a, const Item& b) {
-      return a.centre[axis] != b.centre[axis] ? a.centre[axis] < b.centre[axis]
-                                              : a.box.id < b.box.id;
+    const auto by_centre = [axis](const Built& a, const Built& b) {
+      const float ca = centre(a.box, axis), cb = centre(b.box, axis);
+      return ca != cb ? ca < cb : a.slot.id < b.slot.id;
     };
-    std::nth_element(items.begin() + static_cast<std::ptrdiff_t>(begin),
-                     items.begin() + static_cast<std::ptrdiff_t>(middle),
-                     items.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
-    build(items, begin, middle);  // the left child is index + 1
-    nodes_[index].first = build(items, middle, end);
+    std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                     order.begin() + static_cast<std::ptrdiff_t>(middle),
+                     order.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
+    build(order, begin, middle);  // the left child is index + 1
+    nodes_[index].first = build(order, middle, end);
     return index;
   }
 
-  std::vector<SweptBox> boxes_;
+  void fit_packet(std::size_t i, const VertexBoxes& vertices) noexcept {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    BoxPacket& p = packets_[i];
+    p.moving = 0;
+    for (std::size_t j = 0; j < kLeafSize; ++j) {
+      const Slot& s = slots_[kLeafSize * i + j];
+      if (s.id == kUnused) {
+        p.set(j, {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}});
+        continue;
+      }
+      p.set(j, leaf_box(s.corners, vertices));
+      bool moving = false;
+      for (const VertexIndex v : s.corners)
+        moving = moving || vertices.moving[v] != 0;
+      p.moving |= static_cast<unsigned>(moving) << j;
+    }
+  }
+
+  /// Every node's box, extent and moving flag, and looseness_.
+  void fit_nodes() noexcept {
+    double node_sum = 0.0, leaf_sum = 0.0;
+    for (std::size_t i = nodes_.size(); i-- > 0;) {
+      Node& n = nodes_[i];
+      if (n.is_leaf()) {
+        const BoxPacket& p = packets_[n.first];
+        n.box = p.box(0);
+        leaf_sum += half_perimeter(n.box);
+        for (std::size_t j = 1; j < n.count; ++j) {
+          n.box = united(n.box, p.box(j));
+          leaf_sum += half_perimeter(p.box(j));
+        }
+        n.moving = p.moving != 0;
+      } else {
+        const Node &left = nodes_[i + 1], &right = nodes_[n.first];
+        n.box = united(left.box, right.box);
+        n.moving = left.moving || right.moving;
+      }
+      n.extent = static_cast<float>(half_perimeter(n.box));
+      node_sum += half_perimeter(n.box);
+    }
+    const double root = nodes_.empty() ? 0.0 : half_perimeter(nodes_[0].box);
+    looseness_ = leaf_sum + root > 0.0 ? node_sum / (leaf_sum + root) : 0.0;
+  }
+
+  static constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
+
   std::vector<Node> nodes_;
+  std::vector<BoxPacket> packets_;  // one per leaf
+  std::vector<Slot> slots_;         // kLeafSize per leaf, unused ones with id kUnused
+  double looseness_ = 0.0;
+  double built_looseness_ = 0.0;
 };
 
 }  // namespace exactgeo::ccd::internal

@@ -1,10 +1,12 @@
 #pragma once
 
 // The broad phase of mesh-level CCD (mesh_ccd.hpp): the vertex-face and edge-edge pairs
-// whose swept boxes overlap, without pairs sharing a vertex and without pairs whose
-// corners all stand still. Standing primitives live in their own trees, kept from step to
-// step while the same vertices stand at the same place (and the step's scale, swept_box.hpp,
-// stays the same).
+// whose swept boxes overlap, without pairs sharing a vertex and without rigid pairs.
+//
+// One box tree per kind of primitive (box_tree.hpp), built on the first step and refitted
+// on the next ones; rebuilt when refitting has made it too loose. The pairs come from
+// walking the vertex tree against the face tree and the edge tree against itself
+// (tree_pairs.hpp).
 
 #include <array>
 #include <cstddef>
@@ -13,7 +15,6 @@
 #include <vector>
 
 #include "exactgeo/ccd/internal/box_tree.hpp"
-#include "exactgeo/ccd/internal/swept_box.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 
 namespace exactgeo::ccd::internal {
@@ -27,7 +28,7 @@ struct EdgeIndexPair {
 struct MeshCandidates {
   std::vector<VertexFacePair> vertex_face;
   std::vector<EdgeIndexPair> edge_edge;
-  bool standing_rebuilt = false;  ///< the standing trees were (re)built in this call
+  bool trees_rebuilt = false;  ///< the trees were built in this call, not refitted
 };
 
 class MeshBroadPhase {
@@ -36,29 +37,22 @@ class MeshBroadPhase {
   MeshBroadPhase(std::size_t vertex_count, std::span<const Triangle> faces,
                  std::span<const Edge> edges);
 
-  /// Every candidate pair of the step, in an order that depends only on the input.
+  /// Every candidate pair of the step, in an order that depends only on the input and on
+  /// the steps before (through the trees), never on the thread count.
   /// Precondition: frames hold 3 * vertex_count finite values each.
   MeshCandidates candidates(const MeshFrames& frames, unsigned threads);
 
  private:
-  using Boxes = std::vector<SweptBox>;
+  /// Refits the trees to this step's boxes, or builds them; returns whether it built.
+  bool fit_trees(const VertexBoxes& boxes, unsigned threads);
 
-  bool standing_unchanged(const std::vector<std::uint8_t>& moving, const MeshFrames& frames,
-                          const StepScale& scale) const;
-  void rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames,
-                        const StepScale& scale);
-
-  std::size_t vertex_count_;
   std::span<const Triangle> faces_;
   std::span<const Edge> edges_;
   std::vector<std::array<VertexIndex, 1>> vertices_;  // {0}, {1}, ...: vertices as primitives
-
-  bool standing_valid_ = false;
-  std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
-  std::vector<double> standing_positions_;  // t0 positions then (standing ones compared)
-  StepScale standing_scale_;                // the scale their boxes were made in
-  BoxTree standing_vertices_;               // a tree only for its spatial order of queries
-  BoxTree standing_edges_, standing_faces_;
+  bool built_ = false;
+  BoxTree<1> vertex_tree_;
+  BoxTree<2> edge_tree_;
+  BoxTree<3> face_tree_;
 };
 
 }  // namespace exactgeo::ccd::internal

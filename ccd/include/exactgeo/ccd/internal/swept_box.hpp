@@ -62,38 +62,47 @@ class StepScale {
   PowerOfTwo scale_{0};
 };
 
-struct SweptBox {
+/// An axis-aligned box in single precision, closed.
+struct FloatBox {
   std::array<float, 3> lo;
   std::array<float, 3> hi;
-  std::uint32_t id;  ///< the vertex, edge or face the box belongs to
 };
 
 /// Closed boxes: touching counts as overlapping.
-inline bool overlap(const SweptBox& a, const SweptBox& b) noexcept {
+inline bool overlap(const FloatBox& a, const FloatBox& b) noexcept {
   for (int k = 0; k < 3; ++k) {
     if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
   }
   return true;
 }
 
-/// The swept box of the corners `ids` (vertex indices) of one primitive, in the step's
-/// scale; positions are 3 doubles per vertex at t0 and at t1.
-template <std::size_t N>
-SweptBox swept_box(const std::array<std::uint32_t, N>& ids, std::uint32_t id, const double* t0,
-                   const double* t1, const StepScale& scale = {}) noexcept {
-  SweptBox box{};
-  box.id = id;
+inline FloatBox united(FloatBox a, const FloatBox& b) noexcept {
   for (int k = 0; k < 3; ++k) {
-    double lo = t0[3 * ids[0] + k];
-    double hi = lo;
-    for (const double* frame : {t0, t1}) {
-      for (const std::uint32_t v : ids) {
-        lo = std::min(lo, frame[3 * v + k]);
-        hi = std::max(hi, frame[3 * v + k]);
-      }
-    }
-    box.lo[k] = float_below(scale(lo));
-    box.hi[k] = float_above(scale(hi));
+    a.lo[k] = std::min(a.lo[k], b.lo[k]);
+    a.hi[k] = std::max(a.hi[k], b.hi[k]);
+  }
+  return a;
+}
+
+/// Width plus height plus depth (in double: no overflow for any finite float box).
+inline double half_perimeter(const FloatBox& b) noexcept {
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k)
+    sum += static_cast<double>(b.hi[k]) - static_cast<double>(b.lo[k]);
+  return sum;
+}
+
+/// The swept box of vertex v in the step's scale; positions are 3 doubles per vertex at
+/// t0 and at t1. A primitive's swept box is the union of its corners' boxes: rounding
+/// outward after the scaling is monotone, so the union of the rounded corner boxes is
+/// exactly the rounded box of all corners.
+inline FloatBox vertex_swept_box(const double* t0, const double* t1, std::size_t v,
+                                 const StepScale& scale) noexcept {
+  FloatBox box{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const double a = t0[3 * v + k], b = t1[3 * v + k];
+    box.lo[k] = float_below(scale(std::min(a, b)));
+    box.hi[k] = float_above(scale(std::max(a, b)));
   }
   return box;
 }

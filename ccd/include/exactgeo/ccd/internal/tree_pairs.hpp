@@ -1,0 +1,116 @@
+#pragma once
+
+// The pairs of overlapping primitive boxes between two box trees, or within one, found by
+// walking both trees at once.
+//
+// A pair of nodes whose boxes are disjoint, or below which nothing moves, holds no pair
+// and is dropped whole. Otherwise the larger node (by half-perimeter) is opened, until
+// two leaves meet and their primitives are compared one by one. Within one tree, a node
+// paired with itself opens into its two children each with itself, plus the children
+// with each other, so every unordered pair is met once. Against one query per primitive
+// this drops whole groups of pairs at once and walks each tree path once per group
+// instead of once per primitive.
+//
+// For threads, the walk is first opened breadth first into a fixed number of node pairs
+// (split_pairs); each is then walked on its own. The split does not depend on the thread
+// count, so neither does the order in which pairs come out.
+
+#include <array>
+#include <bit>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "exactgeo/ccd/internal/box_tree.hpp"
+
+namespace exactgeo::ccd::internal {
+
+/// Node a of the first tree with node b of the second; with one tree, a == b stands for
+/// the pairs within node a.
+struct NodePair {
+  std::uint32_t a;
+  std::uint32_t b;
+};
+
+/// What one node pair holds: nothing, primitives to compare, or up to three smaller pairs.
+struct Opened {
+  enum class Kind { nothing, leaves, children } kind;
+  std::array<NodePair, 3> children;
+  std::size_t count = 0;
+};
+
+template <std::size_t NA, std::size_t NB>
+Opened open_pair(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair p) {
+  const auto& a = ta.node(p.a);
+  const auto& b = tb.node(p.b);
+  if (one_tree && p.a == p.b) {
+    if (!a.moving) return {Opened::Kind::nothing, {}, 0};
+    if (a.is_leaf()) return {Opened::Kind::leaves, {}, 0};
+    const std::uint32_t left = p.a + 1, right = a.first;
+    return {Opened::Kind::children, {{{left, left}, {right, right}, {left, right}}}, 3};
+  }
+  if (!(a.moving || b.moving) || !overlap(a.box, b.box)) return {Opened::Kind::nothing, {}, 0};
+  if (a.is_leaf() && b.is_leaf()) return {Opened::Kind::leaves, {}, 0};
+  if (!a.is_leaf() && (b.is_leaf() || a.extent >= b.extent))
+    return {Opened::Kind::children, {{{p.a + 1, p.b}, {a.first, p.b}}}, 2};
+  return {Opened::Kind::children, {{{p.a, p.b + 1}, {p.a, b.first}}}, 2};
+}
+
+/// The root pair opened breadth first until there are at least `wanted` pairs or nothing
+/// left to open; pairs that hold nothing are dropped.
+template <std::size_t NA, std::size_t NB>
+std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree,
+                                  std::size_t wanted) {
+  std::vector<NodePair> pairs;
+  if (ta.empty() || tb.empty()) return pairs;
+  pairs.push_back({0, 0});
+  bool opened_any = true;
+  while (pairs.size() < wanted && opened_any) {
+    opened_any = false;
+    std::vector<NodePair> next;
+    next.reserve(3 * pairs.size());
+    for (const NodePair p : pairs) {
+      const Opened o = open_pair(ta, tb, one_tree, p);
+      if (o.kind == Opened::Kind::leaves) next.push_back(p);
+      if (o.kind != Opened::Kind::children) continue;
+      next.insert(next.end(), o.children.begin(),
+                  o.children.begin() + static_cast<std::ptrdiff_t>(o.count));
+      opened_any = true;
+    }
+    pairs = std::move(next);
+  }
+  return pairs;
+}
+
+/// Calls visit(slot_a, slot_b) for every pair of primitives below `start` whose boxes
+/// overlap and of which at least one moves; with one tree, each unordered pair once.
+template <std::size_t NA, std::size_t NB, class Visit>
+void overlapping_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair start,
+                       std::vector<NodePair>& stack, Visit&& visit) {
+  stack.assign(1, start);
+  while (!stack.empty()) {
+    const NodePair p = stack.back();
+    stack.pop_back();
+    const Opened o = open_pair(ta, tb, one_tree, p);
+    if (o.kind == Opened::Kind::children) {
+      stack.insert(stack.end(), o.children.begin(),
+                   o.children.begin() + static_cast<std::ptrdiff_t>(o.count));
+      continue;
+    }
+    if (o.kind == Opened::Kind::nothing) continue;
+    const auto& a = ta.node(p.a);
+    const auto& b = tb.node(p.b);
+    const BoxPacket& pa = ta.packet(a);
+    const BoxPacket& pb = tb.packet(b);
+    const bool within = one_tree && p.a == p.b;
+    for (std::size_t i = 0; i < a.count; ++i) {
+      unsigned hits = overlap_mask(pa.box(i), pb);
+      if ((pa.moving >> i & 1) == 0) hits &= pb.moving;
+      if (within) hits &= ~((2u << i) - 1);  // each pair once: lanes after i only
+      for (; hits != 0; hits &= hits - 1)
+        visit(ta.slot(a, i), tb.slot(b, static_cast<std::size_t>(std::countr_zero(hits))));
+    }
+  }
+}
+
+}  // namespace exactgeo::ccd::internal
