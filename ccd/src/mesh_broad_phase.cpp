@@ -23,14 +23,6 @@ constexpr std::size_t kWalkPairs = 256;
 /// trades the cost of a build (a few refits' worth) against a slower walk.
 constexpr double kRebuildLooseness = 1.5;
 
-bool shares_vertex(const Edge& a, const Edge& b) noexcept {
-  return a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1];
-}
-
-bool is_corner(VertexIndex v, const Triangle& f) noexcept {
-  return v == f[0] || v == f[1] || v == f[2];
-}
-
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
@@ -122,21 +114,21 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
     Found& out = found[j];
     if (j < vertex_face.size()) {
       overlapping_pairs(vertex_tree_, face_tree_, false, vertex_face[j], stack,
-                        [&](const BoxTree<1>::Slot& v, const BoxTree<3>::Slot& f) {
-                          const VertexIndex p = v.corners[0];
-                          const Triangle& c = f.corners;
-                          if (is_corner(p, c) || motion.rigid({p, c[0], c[1], c[2]})) return;
-                          out.vertex_face.push_back({p, f.id});
+                        [&](const Packet<1>& v, std::size_t i, const Packet<3>& f, std::size_t k) {
+                          const VertexIndex p = v.id[i];
+                          const Triangle c = f.corners(k);
+                          if (motion.rigid({p, c[0], c[1], c[2]})) return;
+                          out.vertex_face.push_back({p, f.id[k]});
                         });
       return;
     }
-    overlapping_pairs(edge_tree_, edge_tree_, true, edge_edge[j - vertex_face.size()], stack,
-                      [&](const BoxTree<2>::Slot& a, const BoxTree<2>::Slot& b) {
-                        const Edge &ea = a.corners, &eb = b.corners;
-                        if (shares_vertex(ea, eb) || motion.rigid({ea[0], ea[1], eb[0], eb[1]}))
-                          return;
-                        out.edge_edge.push_back({std::min(a.id, b.id), std::max(a.id, b.id)});
-                      });
+    overlapping_pairs(
+        edge_tree_, edge_tree_, true, edge_edge[j - vertex_face.size()], stack,
+        [&](const Packet<2>& a, std::size_t i, const Packet<2>& b, std::size_t k) {
+          const Edge ea = a.corners(i), eb = b.corners(k);
+          if (motion.rigid({ea[0], ea[1], eb[0], eb[1]})) return;
+          out.edge_edge.push_back({std::min(a.id[i], b.id[k]), std::max(a.id[i], b.id[k])});
+        });
   });
   std::size_t vf = 0, ee = 0;
   for (const Found& f : found) {

@@ -4,10 +4,9 @@
 // (vertices, edges or faces): built once, refitted every step.
 //
 // Build: top down, the primitives of a node are split at the median of their box centres
-// along the axis where the centres spread the most, down to leaves of at most four
+// along the axis where the centres spread the most, down to leaves of at most eight
 // primitives. Nodes are stored depth first: a node's left child follows it, and it keeps
-// the index of its right child. A leaf's boxes are stored as one packet, coordinate by
-// coordinate (BoxPacket), so one box is compared with all four of them at once.
+// the index of its right child. A leaf's primitives are one Packet (box_packet.hpp).
 //
 // Refit: the mesh's connectivity is fixed, so the same tree serves every step. Each leaf
 // box is made anew from its corners' swept boxes, then each node box is the union of its
@@ -28,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include "exactgeo/ccd/internal/box_packet.hpp"
 #include "exactgeo/ccd/internal/swept_box.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/point.hpp"
@@ -40,64 +40,17 @@ struct VertexBoxes {
   std::vector<std::uint8_t> moving;
 };
 
-/// Boxes per leaf.
-inline constexpr std::size_t kPacketLanes = 8;
-
-/// Up to kPacketLanes boxes, coordinate by coordinate. An unused lane holds the empty box
-/// (lo = +inf, hi = -inf), which overlaps nothing.
-struct BoxPacket {
-  std::array<std::array<float, kPacketLanes>, 3> lo;
-  std::array<std::array<float, kPacketLanes>, 3> hi;
-  unsigned moving;  ///< bit j: the primitive in lane j moves
-
-  FloatBox box(std::size_t j) const noexcept {
-    return {{lo[0][j], lo[1][j], lo[2][j]}, {hi[0][j], hi[1][j], hi[2][j]}};
-  }
-  void set(std::size_t j, const FloatBox& b) noexcept {
-    for (std::size_t k = 0; k < 3; ++k) {
-      lo[k][j] = b.lo[k];
-      hi[k][j] = b.hi[k];
-    }
-  }
-};
-
-/// Bit j set when `a` overlaps the packet's box j (closed boxes), four lanes per vector
-/// compare (GCC and Clang vector extensions, which every target lowers to its own SIMD).
-inline unsigned overlap_mask(const FloatBox& a, const BoxPacket& p) noexcept {
-  using Float4 = float __attribute__((vector_size(16)));
-  using Int4 = std::int32_t __attribute__((vector_size(16)));
-  const auto load = [](const float* f) {
-    Float4 v;
-    __builtin_memcpy(&v, f, sizeof v);
-    return v;
-  };
-  unsigned mask = 0;
-  for (std::size_t q = 0; q < kPacketLanes; q += 4) {
-    Int4 in = (a.lo[0] <= load(&p.hi[0][q])) & (load(&p.lo[0][q]) <= a.hi[0]);
-    in &= (a.lo[1] <= load(&p.hi[1][q])) & (load(&p.lo[1][q]) <= a.hi[1]);
-    in &= (a.lo[2] <= load(&p.hi[2][q])) & (load(&p.lo[2][q]) <= a.hi[2]);
-    const Int4 bits = in & Int4{1, 2, 4, 8};
-    mask |= static_cast<unsigned>(bits[0] | bits[1] | bits[2] | bits[3]) << q;
-  }
-  return mask;
-}
-
 template <std::size_t N>
 class BoxTree {
  public:
   using Corners = std::array<VertexIndex, N>;
-  static constexpr std::size_t kLeafSize = kPacketLanes;  // one BoxPacket
 
-  /// A primitive: its index and its corners (lane j of a leaf's packet is its slot j).
-  struct Slot {
-    std::uint32_t id;
-    Corners corners;
-  };
+  using Leaf = Packet<N>;
 
   struct Node {
     FloatBox box;
     float extent = 0;         ///< half_perimeter(box), which of two nodes to open first
-    std::uint32_t first = 0;  ///< leaf: its packet; inner node: its right child
+    std::uint32_t first = 0;  ///< leaf: its Packet; inner node: its right child
     std::uint8_t count = 0;   ///< primitives of a leaf; 0 for an inner node
     bool moving = false;      ///< some primitive below moves
 
@@ -110,12 +63,10 @@ class BoxTree {
   BoxTree(std::span<const Corners> primitives, const VertexBoxes& vertices) {
     if (primitives.empty()) return;
     std::vector<Built> order(primitives.size());
-    for (std::size_t i = 0; i < primitives.size(); ++i) {
-      order[i].slot = {static_cast<std::uint32_t>(i), primitives[i]};
-      order[i].box = leaf_box(primitives[i], vertices);
-    }
+    for (std::size_t i = 0; i < primitives.size(); ++i)
+      order[i] = {static_cast<std::uint32_t>(i), leaf_box(primitives[i], vertices)};
     nodes_.reserve(primitives.size());  // leaves hold at least 2 primitives
-    build(order, 0, order.size());
+    build(order, primitives, 0, order.size());
     refit(vertices, 1);
     built_looseness_ = looseness_;
   }
@@ -123,10 +74,10 @@ class BoxTree {
   /// This step's boxes for the same primitives.
   void refit(const VertexBoxes& vertices, unsigned threads) {
     constexpr std::size_t kBlock = 1 << 12;  // packets per job
-    parallel::for_each_block((packets_.size() + kBlock - 1) / kBlock, threads, [&](std::size_t b) {
-      const std::size_t end = std::min(packets_.size(), (b + 1) * kBlock);
+    parallel::for_each_block((leaves_.size() + kBlock - 1) / kBlock, threads, [&](std::size_t b) {
+      const std::size_t end = std::min(leaves_.size(), (b + 1) * kBlock);
       for (std::size_t i = b * kBlock; i < end; ++i)
-        fit_packet(i, vertices);
+        fit_leaf(leaves_[i], vertices);
     });
     fit_nodes();
   }
@@ -139,14 +90,11 @@ class BoxTree {
 
   bool empty() const noexcept { return nodes_.empty(); }
   const Node& node(std::uint32_t i) const noexcept { return nodes_[i]; }
-  const BoxPacket& packet(const Node& leaf) const noexcept { return packets_[leaf.first]; }
-  const Slot& slot(const Node& leaf, std::size_t j) const noexcept {
-    return slots_[kLeafSize * leaf.first + j];
-  }
+  const Leaf& leaf(const Node& n) const noexcept { return leaves_[n.first]; }
 
  private:
   struct Built {
-    Slot slot;
+    std::uint32_t id;
     FloatBox box;
   };
 
@@ -164,15 +112,20 @@ class BoxTree {
   }
 
   /// Makes order[begin, end) a subtree and returns its root's index.
-  std::uint32_t build(std::vector<Built>& order, std::size_t begin, std::size_t end) {
+  std::uint32_t build(std::vector<Built>& order, std::span<const Corners> primitives,
+                      std::size_t begin, std::size_t end) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({});
-    if (end - begin <= kLeafSize) {
-      nodes_[index].first = static_cast<std::uint32_t>(packets_.size());
+    if (end - begin <= kPacketLanes) {
+      nodes_[index].first = static_cast<std::uint32_t>(leaves_.size());
       nodes_[index].count = static_cast<std::uint8_t>(end - begin);
-      packets_.emplace_back();
-      for (std::size_t j = 0; j < kLeafSize; ++j)
-        slots_.push_back(begin + j < end ? order[begin + j].slot : Slot{kUnused, {}});
+      Leaf& leaf = leaves_.emplace_back();
+      for (std::size_t j = 0; j < kPacketLanes; ++j) {
+        const bool used = begin + j < end;
+        leaf.id[j] = used ? order[begin + j].id : kNoVertex;
+        for (std::size_t k = 0; k < N; ++k)
+          leaf.corner[k][j] = used ? primitives[leaf.id[j]][k] : kNoVertex;
+      }
       return index;
     }
     std::array<float, 3> lo{}, hi{};
@@ -190,31 +143,30 @@ class BoxTree {
     const std::size_t middle = begin + (end - begin) / 2;
     const auto by_centre = [axis](const Built& a, const Built& b) {
       const float ca = centre(a.box, axis), cb = centre(b.box, axis);
-      return ca != cb ? ca < cb : a.slot.id < b.slot.id;
+      return ca != cb ? ca < cb : a.id < b.id;
     };
     std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
                      order.begin() + static_cast<std::ptrdiff_t>(middle),
                      order.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
-    build(order, begin, middle);  // the left child is index + 1
-    nodes_[index].first = build(order, middle, end);
+    build(order, primitives, begin, middle);  // the left child is index + 1
+    nodes_[index].first = build(order, primitives, middle, end);
     return index;
   }
 
-  void fit_packet(std::size_t i, const VertexBoxes& vertices) noexcept {
+  static void fit_leaf(Leaf& leaf, const VertexBoxes& vertices) noexcept {
     constexpr float kInf = std::numeric_limits<float>::infinity();
-    BoxPacket& p = packets_[i];
-    p.moving = 0;
-    for (std::size_t j = 0; j < kLeafSize; ++j) {
-      const Slot& s = slots_[kLeafSize * i + j];
-      if (s.id == kUnused) {
-        p.set(j, {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}});
+    leaf.moving = 0;
+    for (std::size_t j = 0; j < kPacketLanes; ++j) {
+      if (leaf.id[j] == kNoVertex) {
+        leaf.set_box(j, {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}});
         continue;
       }
-      p.set(j, leaf_box(s.corners, vertices));
+      const Corners corners = leaf.corners(j);
+      leaf.set_box(j, leaf_box(corners, vertices));
       bool moving = false;
-      for (const VertexIndex v : s.corners)
+      for (const VertexIndex v : corners)
         moving = moving || vertices.moving[v] != 0;
-      p.moving |= static_cast<unsigned>(moving) << j;
+      leaf.moving |= static_cast<unsigned>(moving) << j;
     }
   }
 
@@ -224,7 +176,7 @@ class BoxTree {
     for (std::size_t i = nodes_.size(); i-- > 0;) {
       Node& n = nodes_[i];
       if (n.is_leaf()) {
-        const BoxPacket& p = packets_[n.first];
+        const Leaf& p = leaves_[n.first];
         n.box = p.box(0);
         leaf_sum += half_perimeter(n.box);
         for (std::size_t j = 1; j < n.count; ++j) {
@@ -244,11 +196,8 @@ class BoxTree {
     looseness_ = leaf_sum + root > 0.0 ? node_sum / (leaf_sum + root) : 0.0;
   }
 
-  static constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
-
   std::vector<Node> nodes_;
-  std::vector<BoxPacket> packets_;  // one per leaf
-  std::vector<Slot> slots_;         // kLeafSize per leaf, unused ones with id kUnused
+  std::vector<Leaf> leaves_;  // one Packet per leaf node
   double looseness_ = 0.0;
   double built_looseness_ = 0.0;
 };

@@ -82,8 +82,10 @@ std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, 
   return pairs;
 }
 
-/// Calls visit(slot_a, slot_b) for every pair of primitives below `start` whose boxes
-/// overlap and of which at least one moves; with one tree, each unordered pair once.
+/// Calls visit(leaf_a, i, leaf_b, j) for every pair of primitives below `start` (lane i
+/// of a leaf of the first tree, lane j of one of the second) whose boxes overlap, which
+/// share no corner, and of which at least one moves; with one tree, each unordered pair
+/// once.
 template <std::size_t NA, std::size_t NB, class Visit>
 void overlapping_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair start,
                        std::vector<NodePair>& stack, Visit&& visit) {
@@ -99,16 +101,15 @@ void overlapping_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tr
     }
     if (o.kind == Opened::Kind::nothing) continue;
     const auto& a = ta.node(p.a);
-    const auto& b = tb.node(p.b);
-    const BoxPacket& pa = ta.packet(a);
-    const BoxPacket& pb = tb.packet(b);
+    const auto& la = ta.leaf(a);
+    const auto& lb = tb.leaf(tb.node(p.b));
     const bool within = one_tree && p.a == p.b;
     for (std::size_t i = 0; i < a.count; ++i) {
-      unsigned hits = overlap_mask(pa.box(i), pb);
-      if ((pa.moving >> i & 1) == 0) hits &= pb.moving;
+      unsigned hits = overlap_mask(la.box(i), lb) & ~shared_corner_mask(la.corners(i), lb);
+      if ((la.moving >> i & 1) == 0) hits &= lb.moving;
       if (within) hits &= ~((2u << i) - 1);  // each pair once: lanes after i only
       for (; hits != 0; hits &= hits - 1)
-        visit(ta.slot(a, i), tb.slot(b, static_cast<std::size_t>(std::countr_zero(hits))));
+        visit(la, i, lb, static_cast<std::size_t>(std::countr_zero(hits)));
     }
   }
 }
