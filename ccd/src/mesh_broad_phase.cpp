@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 #include "exactgeo/ccd/internal/tree_pairs.hpp"
@@ -23,6 +24,15 @@ constexpr std::size_t kWalkPairs = 256;
 /// trades the cost of a build (a few refits' worth) against a slower walk.
 constexpr double kRebuildLooseness = 1.5;
 
+/// A digest of an exact displacement: equal vectors give equal digests (-0 and +0 are
+/// made one first), never 0.
+std::uint32_t motion_digest(const Vector3& d) noexcept {
+  std::uint64_t h = 0;
+  for (const double x : d)
+    h = (h ^ std::bit_cast<std::uint64_t>(x + 0.0)) * 0x9E3779B97F4A7C15u;
+  return static_cast<std::uint32_t>(h >> 32) | 1u;
+}
+
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
@@ -35,6 +45,7 @@ struct VertexMotion {
     const std::size_t n = frames.positions_t0.size() / 3;
     boxes.box.resize(n);
     boxes.moving.resize(n);
+    boxes.motion.resize(n);
     d.resize(n);
     exact.resize(n);
     const double* t0 = frames.positions_t0.data();
@@ -51,6 +62,7 @@ struct VertexMotion {
           if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[v] = 0;
         }
         boxes.moving[v] = d[v] != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
+        boxes.motion[v] = exact[v] != 0 ? motion_digest(d[v]) : 0;
       }
     });
   }
@@ -117,7 +129,9 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
                         [&](const Packet<1>& v, std::size_t i, const Packet<3>& f, std::size_t k) {
                           const VertexIndex p = v.id[i];
                           const Triangle c = f.corners(k);
-                          if (motion.rigid({p, c[0], c[1], c[2]})) return;
+                          if (v.motion[i] != 0 && v.motion[i] == f.motion[k] &&
+                              motion.rigid({p, c[0], c[1], c[2]}))
+                            return;
                           out.vertex_face.push_back({p, f.id[k]});
                         });
       return;

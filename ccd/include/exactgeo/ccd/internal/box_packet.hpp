@@ -14,6 +14,10 @@
 #include <cstdint>
 #include <cstring>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "exactgeo/ccd/internal/swept_box.hpp"
 #include "exactgeo/predicates/point.hpp"
 
@@ -32,7 +36,10 @@ struct Packet {
   std::array<std::array<float, kPacketLanes>, 3> hi;
   std::array<std::array<VertexIndex, kPacketLanes>, N> corner;
   std::array<std::uint32_t, kPacketLanes> id;  ///< the primitive's index; kNoVertex if none
-  unsigned moving = 0;                         ///< bit j: the primitive in lane j moves
+  /// The motion digest its corners share (VertexBoxes::motion, box_tree.hpp), or 0: two
+  /// primitives can only move rigidly together when their digests are equal and nonzero.
+  std::array<std::uint32_t, kPacketLanes> motion;
+  unsigned moving = 0;  ///< bit j: the primitive in lane j moves
 
   FloatBox box(std::size_t j) const noexcept {
     return {{lo[0][j], lo[1][j], lo[2][j]}, {hi[0][j], hi[1][j], hi[2][j]}};
@@ -66,8 +73,14 @@ Vector load(const T* four) noexcept {
 
 /// Bit j set for each lane j whose comparison result is true (all ones).
 inline unsigned bits(Int4 in) noexcept {
-  const Int4 b = in & Int4{1, 2, 4, 8};
-  return static_cast<unsigned>(b[0] | b[1] | b[2] | b[3]);
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(reinterpret_cast<__m128i>(in))));
+#else
+  Int4 b = in & Int4{1, 2, 4, 8};
+  b |= __builtin_shufflevector(b, b, 2, 3, 0, 1);
+  b |= __builtin_shufflevector(b, b, 1, 0, 3, 2);
+  return static_cast<unsigned>(b[0]);
+#endif
 }
 
 }  // namespace lanes

@@ -34,10 +34,13 @@
 
 namespace exactgeo::ccd::internal {
 
-/// Every vertex's swept box in the step's scale, and whether it moves.
+/// Every vertex's swept box in the step's scale, whether it moves, and a digest of its
+/// displacement p_t1 - p_t0 (mesh_broad_phase.cpp): equal displacements, exactly known,
+/// have equal nonzero digests; 0 when the displacement is not exactly a double vector.
 struct VertexBoxes {
   std::vector<FloatBox> box;
   std::vector<std::uint8_t> moving;
+  std::vector<std::uint32_t> motion;
 };
 
 template <std::size_t N>
@@ -164,9 +167,13 @@ class BoxTree {
       const Corners corners = leaf.corners(j);
       leaf.set_box(j, leaf_box(corners, vertices));
       bool moving = false;
-      for (const VertexIndex v : corners)
+      std::uint32_t motion = vertices.motion[corners[0]];
+      for (const VertexIndex v : corners) {
         moving = moving || vertices.moving[v] != 0;
+        if (vertices.motion[v] != motion) motion = 0;
+      }
       leaf.moving |= static_cast<unsigned>(moving) << j;
+      leaf.motion[j] = motion;
     }
   }
 
