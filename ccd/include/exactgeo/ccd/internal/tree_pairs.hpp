@@ -32,28 +32,41 @@ struct NodePair {
   std::uint32_t b;
 };
 
-/// What one node pair holds: nothing, primitives to compare, or up to three smaller pairs.
-struct Opened {
-  enum class Kind { nothing, leaves, children } kind;
-  std::array<NodePair, 3> children;
-  std::size_t count = 0;
-};
-
+/// Whether node pair p can hold a pair of primitives at all: with one tree and a == b,
+/// when something below moves; else when the boxes overlap and one side moves.
 template <std::size_t NA, std::size_t NB>
-Opened open_pair(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair p) {
+bool holds_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair p) {
+  const auto& a = ta.node(p.a);
+  if (one_tree && p.a == p.b) return a.moving;
+  const auto& b = tb.node(p.b);
+  return (a.moving || b.moving) && overlap(a.box, b.box);
+}
+
+/// For a pair that holds_pairs: true when both nodes are leaves, whose primitives are then
+/// to be compared; otherwise calls push(q) for each smaller pair q that holds pairs (the
+/// children are tested here, next to their parent in memory) and returns false.
+template <std::size_t NA, std::size_t NB, class Push>
+bool open_pair(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair p,
+               Push&& push) {
   const auto& a = ta.node(p.a);
   const auto& b = tb.node(p.b);
+  const auto push_live = [&](NodePair q) {
+    if (holds_pairs(ta, tb, one_tree, q)) push(q);
+  };
+  if (a.is_leaf() && b.is_leaf()) return true;
   if (one_tree && p.a == p.b) {
-    if (!a.moving) return {Opened::Kind::nothing, {}, 0};
-    if (a.is_leaf()) return {Opened::Kind::leaves, {}, 0};
     const std::uint32_t left = p.a + 1, right = a.first;
-    return {Opened::Kind::children, {{{left, left}, {right, right}, {left, right}}}, 3};
+    push_live({left, left});
+    push_live({right, right});
+    push_live({left, right});
+  } else if (!a.is_leaf() && (b.is_leaf() || a.extent >= b.extent)) {
+    push_live({p.a + 1, p.b});
+    push_live({a.first, p.b});
+  } else {
+    push_live({p.a, p.b + 1});
+    push_live({p.a, b.first});
   }
-  if (!(a.moving || b.moving) || !overlap(a.box, b.box)) return {Opened::Kind::nothing, {}, 0};
-  if (a.is_leaf() && b.is_leaf()) return {Opened::Kind::leaves, {}, 0};
-  if (!a.is_leaf() && (b.is_leaf() || a.extent >= b.extent))
-    return {Opened::Kind::children, {{{p.a + 1, p.b}, {a.first, p.b}}}, 2};
-  return {Opened::Kind::children, {{{p.a, p.b + 1}, {p.a, b.first}}}, 2};
+  return false;
 }
 
 /// The root pair opened breadth first until there are at least `wanted` pairs or nothing
@@ -62,7 +75,7 @@ template <std::size_t NA, std::size_t NB>
 std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree,
                                   std::size_t wanted) {
   std::vector<NodePair> pairs;
-  if (ta.empty() || tb.empty()) return pairs;
+  if (ta.empty() || tb.empty() || !holds_pairs(ta, tb, one_tree, {0, 0})) return pairs;
   pairs.push_back({0, 0});
   bool opened_any = true;
   while (pairs.size() < wanted && opened_any) {
@@ -70,22 +83,20 @@ std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, 
     std::vector<NodePair> next;
     next.reserve(3 * pairs.size());
     for (const NodePair p : pairs) {
-      const Opened o = open_pair(ta, tb, one_tree, p);
-      if (o.kind == Opened::Kind::leaves) next.push_back(p);
-      if (o.kind != Opened::Kind::children) continue;
-      next.insert(next.end(), o.children.begin(),
-                  o.children.begin() + static_cast<std::ptrdiff_t>(o.count));
-      opened_any = true;
+      if (open_pair(ta, tb, one_tree, p, [&](NodePair q) { next.push_back(q); }))
+        next.push_back(p);
+      else
+        opened_any = true;
     }
     pairs = std::move(next);
   }
   return pairs;
 }
 
-/// Calls visit(leaf_a, i, leaf_b, j) for every pair of primitives below `start` (lane i
-/// of a leaf of the first tree, lane j of one of the second) whose boxes overlap, which
-/// share no corner, and of which at least one moves; with one tree, each unordered pair
-/// once.
+/// Calls visit(leaf_a, i, leaf_b, j) for every pair of primitives below `start` (a pair
+/// that holds_pairs; lane i of a leaf of the first tree, lane j of one of the second) whose
+/// boxes overlap, which share no corner, and of which at least one moves; with one tree,
+/// each unordered pair once.
 template <std::size_t NA, std::size_t NB, class Visit>
 void overlapping_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair start,
                        std::vector<NodePair>& stack, Visit&& visit) {
@@ -93,18 +104,14 @@ void overlapping_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tr
   while (!stack.empty()) {
     const NodePair p = stack.back();
     stack.pop_back();
-    const Opened o = open_pair(ta, tb, one_tree, p);
-    if (o.kind == Opened::Kind::children) {
-      stack.insert(stack.end(), o.children.begin(),
-                   o.children.begin() + static_cast<std::ptrdiff_t>(o.count));
-      continue;
-    }
-    if (o.kind == Opened::Kind::nothing) continue;
-    const auto& a = ta.node(p.a);
-    const auto& la = ta.leaf(a);
-    const auto& lb = tb.leaf(tb.node(p.b));
+    if (!open_pair(ta, tb, one_tree, p, [&](NodePair q) { stack.push_back(q); })) continue;
+    const auto& la = ta.leaf(ta.node(p.a));
+    const auto& b = tb.node(p.b);
+    const auto& lb = tb.leaf(b);
     const bool within = one_tree && p.a == p.b;
-    for (std::size_t i = 0; i < a.count; ++i) {
+    // Only the lanes of a whose box meets b's leaf box can meet one of b's boxes.
+    for (unsigned lanes = overlap_mask(b.box, la); lanes != 0; lanes &= lanes - 1) {
+      const auto i = static_cast<std::size_t>(std::countr_zero(lanes));
       unsigned hits = overlap_mask(la.box(i), lb) & ~shared_corner_mask(la.corners(i), lb);
       if ((la.moving >> i & 1) == 0) hits &= lb.moving;
       if (within) hits &= ~((2u << i) - 1);  // each pair once: lanes after i only
