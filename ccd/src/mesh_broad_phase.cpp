@@ -89,21 +89,26 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
 }
 
 bool MeshBroadPhase::fit_trees(const VertexBoxes& boxes, unsigned threads) {
-  bool built = false;
+  // One job per tree, the largest (edges) first: on two threads the edge tree takes as
+  // long as the other two together.
+  std::array<bool, 3> built{};
   const auto fit = [&]<std::size_t N>(BoxTree<N>& tree,
                                       std::span<const std::array<VertexIndex, N>> primitives) {
     if (built_) {
-      tree.refit(boxes, threads);
-      if (tree.looseness() <= kRebuildLooseness * tree.built_looseness()) return;
+      tree.refit(boxes);
+      if (tree.looseness() <= kRebuildLooseness * tree.built_looseness()) return false;
     }
     tree = BoxTree<N>(primitives, boxes);
-    built = true;
+    return true;
   };
-  fit(vertex_tree_, std::span<const std::array<VertexIndex, 1>>(vertices_));
-  fit(edge_tree_, edges_);
-  fit(face_tree_, faces_);
+  parallel::for_each_block(3, threads, [&](std::size_t k) {
+    if (k == 0) built[0] = fit(edge_tree_, edges_);
+    if (k == 1) built[1] = fit(face_tree_, faces_);
+    if (k == 2)
+      built[2] = fit(vertex_tree_, std::span<const std::array<VertexIndex, 1>>(vertices_));
+  });
   built_ = true;
-  return built;
+  return built[0] || built[1] || built[2];
 }
 
 MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
@@ -144,18 +149,19 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
           out.edge_edge.push_back({std::min(a.id[i], b.id[k]), std::max(a.id[i], b.id[k])});
         });
   });
-  std::size_t vf = 0, ee = 0;
-  for (const Found& f : found) {
-    vf += f.vertex_face.size();
-    ee += f.edge_edge.size();
-  }
-  result.vertex_face.reserve(vf);
-  result.edge_edge.reserve(ee);
-  for (Found& f : found) {
-    result.vertex_face.insert(result.vertex_face.end(), f.vertex_face.begin(), f.vertex_face.end());
-    result.edge_edge.insert(result.edge_edge.end(), f.edge_edge.begin(), f.edge_edge.end());
-    f = {};
-  }
+  // Joined in parallel: each list copied to its offset.
+  std::vector<std::array<std::size_t, 2>> offset(found.size() + 1);
+  for (std::size_t j = 0; j < found.size(); ++j)
+    offset[j + 1] = {offset[j][0] + found[j].vertex_face.size(),
+                     offset[j][1] + found[j].edge_edge.size()};
+  result.vertex_face.resize(offset.back()[0]);
+  result.edge_edge.resize(offset.back()[1]);
+  parallel::for_each_block(found.size(), threads, [&](std::size_t j) {
+    std::copy(found[j].vertex_face.begin(), found[j].vertex_face.end(),
+              result.vertex_face.begin() + static_cast<std::ptrdiff_t>(offset[j][0]));
+    std::copy(found[j].edge_edge.begin(), found[j].edge_edge.end(),
+              result.edge_edge.begin() + static_cast<std::ptrdiff_t>(offset[j][1]));
+  });
   return result;
 }
 

@@ -29,7 +29,6 @@
 
 #include "exactgeo/ccd/internal/box_packet.hpp"
 #include "exactgeo/ccd/internal/swept_box.hpp"
-#include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::ccd::internal {
@@ -70,18 +69,14 @@ class BoxTree {
       order[i] = {static_cast<std::uint32_t>(i), leaf_box(primitives[i], vertices)};
     nodes_.reserve(primitives.size());  // leaves hold at least 2 primitives
     build(order, primitives, 0, order.size());
-    refit(vertices, 1);
+    refit(vertices);
     built_looseness_ = looseness_;
   }
 
   /// This step's boxes for the same primitives.
-  void refit(const VertexBoxes& vertices, unsigned threads) {
-    constexpr std::size_t kBlock = 1 << 12;  // packets per job
-    parallel::for_each_block((leaves_.size() + kBlock - 1) / kBlock, threads, [&](std::size_t b) {
-      const std::size_t end = std::min(leaves_.size(), (b + 1) * kBlock);
-      for (std::size_t i = b * kBlock; i < end; ++i)
-        fit_leaf(leaves_[i], vertices);
-    });
+  void refit(const VertexBoxes& vertices) {
+    for (Leaf& leaf : leaves_)
+      fit_leaf(leaf, vertices);
     fit_nodes();
   }
 
