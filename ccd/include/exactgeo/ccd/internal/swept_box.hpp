@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -30,14 +31,23 @@
 
 namespace exactgeo::ccd::internal {
 
+/// The float next below f, for a finite f above the lowest float (std::nextafter toward
+/// -inf, without the library call: floats of one sign are ordered like their bit patterns).
+inline float next_float_down(float f) noexcept {
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  if (f > 0) return std::bit_cast<float>(bits - 1);
+  if (f == 0) return -std::numeric_limits<float>::denorm_min();
+  return std::bit_cast<float>(bits + 1);
+}
+
 /// The largest float <= x (x finite).
 inline float float_below(double x) noexcept {
   constexpr double kMax = std::numeric_limits<float>::max();
   if (x > kMax) return std::numeric_limits<float>::max();
   if (x < -kMax) return -std::numeric_limits<float>::infinity();
+  // Here -kMax <= x, so when f rounded above x, f > -kMax and the float below it is finite.
   const float f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity())
-                                    : f;
+  return static_cast<double>(f) > x ? next_float_down(f) : f;
 }
 
 /// The smallest float >= x (x finite).
