@@ -36,48 +36,52 @@ std::uint32_t motion_digest(const Vector3& d) noexcept {
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
-struct VertexMotion {
-  VertexBoxes boxes;
-  std::vector<Vector3> d;
-  std::vector<std::uint8_t> exact;
-
-  VertexMotion(const MeshFrames& frames, unsigned threads) {
-    const std::size_t n = frames.positions_t0.size() / 3;
-    boxes.box.resize(n);
-    boxes.moving.resize(n);
-    boxes.motion.resize(n);
-    d.resize(n);
-    exact.resize(n);
-    const double* t0 = frames.positions_t0.data();
-    const double* t1 = frames.positions_t1.data();
-    const StepScale scale(
-        std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
-    parallel::for_each_block((n + kVertexBlock - 1) / kVertexBlock, threads, [&](std::size_t b) {
-      for (std::size_t v = b * kVertexBlock; v < std::min(n, (b + 1) * kVertexBlock); ++v) {
-        boxes.box[v] = vertex_swept_box(t0, t1, v, scale);
-        exact[v] = 1;
-        for (std::size_t k = 0; k < 3; ++k) {
-          const auto diff = exactgeo::kernel::two_diff(t1[3 * v + k], t0[3 * v + k]);
-          d[v][k] = diff.head;
-          if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[v] = 0;
-        }
-        boxes.moving[v] = d[v] != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
-        boxes.motion[v] = exact[v] != 0 ? motion_digest(d[v]) : 0;
+VertexSweep sweep_of(const MeshFrames& frames, unsigned threads) {
+  const std::size_t n = frames.positions_t0.size() / 3;
+  VertexSweep s;
+  s.box.resize(n);
+  s.displacement.resize(n);
+  s.exact.resize(n);
+  s.moving.resize(n);
+  s.motion.resize(n);
+  const double* t0 = frames.positions_t0.data();
+  const double* t1 = frames.positions_t1.data();
+  const StepScale scale(
+      std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
+  parallel::for_each_block((n + kVertexBlock - 1) / kVertexBlock, threads, [&](std::size_t b) {
+    for (std::size_t v = b * kVertexBlock; v < std::min(n, (b + 1) * kVertexBlock); ++v) {
+      s.box[v] = vertex_swept_box(t0, t1, v, scale);
+      Vector3& d = s.displacement[v];
+      bool exact = true;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto diff = exactgeo::kernel::two_diff(t1[3 * v + k], t0[3 * v + k]);
+        d[k] = diff.head;
+        exact = exact && diff.tail == 0.0 && std::isfinite(diff.head);
       }
-    });
-  }
-
-  /// True when all `vertices` move by one and the same vector (standing still included):
-  /// their relative positions, hence all their distances, stay the same during the step.
-  bool rigid(const std::array<VertexIndex, 4>& vertices) const noexcept {
-    const VertexIndex first = vertices[0];
-    if (exact[first] == 0) return false;
-    for (const VertexIndex v : vertices) {
-      if (exact[v] == 0 || d[v] != d[first]) return false;
+      s.exact[v] = exact ? 1 : 0;
+      s.moving[v] = d != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
+      s.motion[v] = exact ? motion_digest(d) : 0;
     }
-    return true;
+  });
+  return s;
+}
+
+/// True when two primitives (lane i of leaf a, lane k of leaf b) move by one and the same
+/// vector, standing still included: their relative positions, hence all their distances,
+/// stay the same during the step. Unequal digests rule it out without reading vertices.
+template <std::size_t NA, std::size_t NB>
+bool rigid(const Packet<NA>& a, std::size_t i, const Packet<NB>& b, std::size_t k,
+           const VertexSweep& sweep) noexcept {
+  if (a.motion[i] == 0 || a.motion[i] != b.motion[k]) return false;
+  const VertexIndex first = a.corner[0][i];
+  for (std::size_t c = 0; c < NA; ++c) {
+    if (!sweep.move_together(first, a.corner[c][i])) return false;
   }
-};
+  for (std::size_t c = 0; c < NB; ++c) {
+    if (!sweep.move_together(first, b.corner[c][k])) return false;
+  }
+  return true;
+}
 
 }  // namespace
 
@@ -88,17 +92,17 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
     vertices_[v] = {static_cast<VertexIndex>(v)};
 }
 
-bool MeshBroadPhase::fit_trees(const VertexBoxes& boxes, unsigned threads) {
+bool MeshBroadPhase::fit_trees(const VertexSweep& sweep, unsigned threads) {
   // One job per tree, the largest (edges) first: on two threads the edge tree takes as
   // long as the other two together.
   std::array<bool, 3> built{};
   const auto fit = [&]<std::size_t N>(BoxTree<N>& tree,
                                       std::span<const std::array<VertexIndex, N>> primitives) {
     if (built_) {
-      tree.refit(boxes);
+      tree.refit(sweep);
       if (tree.looseness() <= kRebuildLooseness * tree.built_looseness()) return false;
     }
-    tree = BoxTree<N>(primitives, boxes);
+    tree = BoxTree<N>(primitives, sweep);
     return true;
   };
   parallel::for_each_block(3, threads, [&](std::size_t k) {
@@ -113,39 +117,35 @@ bool MeshBroadPhase::fit_trees(const VertexBoxes& boxes, unsigned threads) {
 
 MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
   MeshCandidates result;
-  const VertexMotion motion(frames, threads);
-  result.trees_rebuilt = fit_trees(motion.boxes, threads);
+  const VertexSweep sweep = sweep_of(frames, threads);
+  result.trees_rebuilt = fit_trees(sweep, threads);
 
   // Both walks split into node pairs, vertex-face first; each pair's candidates in its
   // own list, joined in order, so the order does not depend on the thread count.
-  const std::vector<NodePair> vertex_face =
-      split_pairs(vertex_tree_, face_tree_, false, kWalkPairs);
-  const std::vector<NodePair> edge_edge = split_pairs(edge_tree_, edge_tree_, true, kWalkPairs);
+  const Walk<1, 3> vertex_face{vertex_tree_, face_tree_, false, sweep};
+  const Walk<2, 2> edge_edge{edge_tree_, edge_tree_, true, sweep};
+  const std::vector<NodePair> vertex_face_pairs = split_pairs(vertex_face, kWalkPairs);
+  const std::vector<NodePair> edge_edge_pairs = split_pairs(edge_edge, kWalkPairs);
   struct Found {
     std::vector<VertexFacePair> vertex_face;
     std::vector<EdgeIndexPair> edge_edge;
   };
-  std::vector<Found> found(vertex_face.size() + edge_edge.size());
+  std::vector<Found> found(vertex_face_pairs.size() + edge_edge_pairs.size());
   std::vector<NodePair> stack;  // each worker's copy of the lambda has its own
   parallel::for_each_block(found.size(), threads, [&, stack](std::size_t j) mutable {
     Found& out = found[j];
-    if (j < vertex_face.size()) {
-      overlapping_pairs(vertex_tree_, face_tree_, false, vertex_face[j], stack,
+    if (j < vertex_face_pairs.size()) {
+      overlapping_pairs(vertex_face, vertex_face_pairs[j], stack,
                         [&](const Packet<1>& v, std::size_t i, const Packet<3>& f, std::size_t k) {
-                          const VertexIndex p = v.id[i];
-                          const Triangle c = f.corners(k);
-                          if (v.motion[i] != 0 && v.motion[i] == f.motion[k] &&
-                              motion.rigid({p, c[0], c[1], c[2]}))
-                            return;
-                          out.vertex_face.push_back({p, f.id[k]});
+                          if (!rigid(v, i, f, k, sweep))
+                            out.vertex_face.push_back({v.id[i], f.id[k]});
                         });
       return;
     }
     overlapping_pairs(
-        edge_tree_, edge_tree_, true, edge_edge[j - vertex_face.size()], stack,
+        edge_edge, edge_edge_pairs[j - vertex_face_pairs.size()], stack,
         [&](const Packet<2>& a, std::size_t i, const Packet<2>& b, std::size_t k) {
-          const Edge ea = a.corners(i), eb = b.corners(k);
-          if (motion.rigid({ea[0], ea[1], eb[0], eb[1]})) return;
+          if (rigid(a, i, b, k, sweep)) return;
           out.edge_edge.push_back({std::min(a.id[i], b.id[k]), std::max(a.id[i], b.id[k])});
         });
   });

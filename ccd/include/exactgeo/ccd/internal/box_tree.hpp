@@ -16,8 +16,9 @@
 // from where the tree was built. looseness() measures that, and the owner rebuilds when
 // it has grown (mesh_broad_phase.cpp).
 //
-// Each node also knows whether any primitive below it moves in this step: two subtrees
-// that both stand still hold no pair of this step (their pairs are rigid, mesh_ccd.hpp).
+// Each node also knows whether all vertices below it move by one and the same vector
+// (standing still included): two subtrees that move together hold no pair of this step
+// (their pairs are rigid, mesh_ccd.hpp), nor does one such subtree with itself.
 
 #include <algorithm>
 #include <array>
@@ -33,13 +34,20 @@
 
 namespace exactgeo::ccd::internal {
 
-/// Every vertex's swept box in the step's scale, whether it moves, and a digest of its
-/// displacement p_t1 - p_t0 (mesh_broad_phase.cpp): equal displacements, exactly known,
-/// have equal nonzero digests; 0 when the displacement is not exactly a double vector.
-struct VertexBoxes {
-  std::vector<FloatBox> box;
-  std::vector<std::uint8_t> moving;
+/// One step's motion of every vertex, as the trees see it (made in mesh_broad_phase.cpp).
+struct VertexSweep {
+  std::vector<FloatBox> box;          ///< the swept box, in the step's scale
+  std::vector<Vector3> displacement;  ///< p_t1 - p_t0, rounded
+  std::vector<std::uint8_t> exact;    ///< ... and that rounding was exact
+  std::vector<std::uint8_t> moving;   ///< p_t1 != p_t0
+  /// A digest of the displacement: equal exact displacements have equal nonzero digests;
+  /// 0 when the displacement is not exact.
   std::vector<std::uint32_t> motion;
+
+  /// Whether a and b move by one and the same exactly known vector (standing included).
+  bool move_together(VertexIndex a, VertexIndex b) const noexcept {
+    return exact[a] != 0 && exact[b] != 0 && displacement[a] == displacement[b];
+  }
 };
 
 template <std::size_t N>
@@ -54,7 +62,9 @@ class BoxTree {
     float extent = 0;         ///< half_perimeter(box), which of two nodes to open first
     std::uint32_t first = 0;  ///< leaf: its Packet; inner node: its right child
     std::uint8_t count = 0;   ///< primitives of a leaf; 0 for an inner node
-    bool moving = false;      ///< some primitive below moves
+    /// A vertex whose exact displacement every vertex below shares, or kNoVertex. Pairs
+    /// of primitives that all move by one vector (or all stand) are rigid, not candidates.
+    VertexIndex together = kNoVertex;
 
     bool is_leaf() const noexcept { return count > 0; }
   };
@@ -62,7 +72,7 @@ class BoxTree {
   BoxTree() = default;
 
   /// The tree over `primitives` (primitive i has corners primitives[i]) on this step's boxes.
-  BoxTree(std::span<const Corners> primitives, const VertexBoxes& vertices) {
+  BoxTree(std::span<const Corners> primitives, const VertexSweep& vertices) {
     if (primitives.empty()) return;
     std::vector<Built> order(primitives.size());
     for (std::size_t i = 0; i < primitives.size(); ++i)
@@ -74,10 +84,10 @@ class BoxTree {
   }
 
   /// This step's boxes for the same primitives.
-  void refit(const VertexBoxes& vertices) {
+  void refit(const VertexSweep& vertices) {
     for (Leaf& leaf : leaves_)
       fit_leaf(leaf, vertices);
-    fit_nodes();
+    fit_nodes(vertices);
   }
 
   /// The nodes' half-perimeters summed, over the primitives' summed plus the root's: the
@@ -96,7 +106,7 @@ class BoxTree {
     FloatBox box;
   };
 
-  static FloatBox leaf_box(const Corners& corners, const VertexBoxes& vertices) noexcept {
+  static FloatBox leaf_box(const Corners& corners, const VertexSweep& vertices) noexcept {
     FloatBox box = vertices.box[corners[0]];
     for (std::size_t c = 1; c < N; ++c)
       box = united(box, vertices.box[corners[c]]);
@@ -151,7 +161,7 @@ class BoxTree {
     return index;
   }
 
-  static void fit_leaf(Leaf& leaf, const VertexBoxes& vertices) noexcept {
+  static void fit_leaf(Leaf& leaf, const VertexSweep& vertices) noexcept {
     constexpr float kInf = std::numeric_limits<float>::infinity();
     leaf.moving = 0;
     for (std::size_t j = 0; j < kPacketLanes; ++j) {
@@ -172,8 +182,22 @@ class BoxTree {
     }
   }
 
-  /// Every node's box, extent and moving flag, and looseness_.
-  void fit_nodes() noexcept {
+  /// The vertex every corner of the leaf moves together with, or kNoVertex.
+  static VertexIndex together(const Leaf& leaf, std::size_t count, const VertexSweep& vertices) {
+    for (std::size_t j = 0; j < count; ++j) {
+      if (leaf.motion[j] == 0 || leaf.motion[j] != leaf.motion[0]) return kNoVertex;
+    }
+    const VertexIndex first = leaf.corner[0][0];
+    for (std::size_t j = 0; j < count; ++j) {
+      for (std::size_t k = 0; k < N; ++k) {
+        if (!vertices.move_together(first, leaf.corner[k][j])) return kNoVertex;
+      }
+    }
+    return first;
+  }
+
+  /// Every node's box, extent and `together`, and looseness_.
+  void fit_nodes(const VertexSweep& vertices) noexcept {
     double node_sum = 0.0, leaf_sum = 0.0;
     for (std::size_t i = nodes_.size(); i-- > 0;) {
       Node& n = nodes_[i];
@@ -185,11 +209,13 @@ class BoxTree {
           n.box = united(n.box, p.box(j));
           leaf_sum += half_perimeter(p.box(j));
         }
-        n.moving = p.moving != 0;
+        n.together = together(p, n.count, vertices);
       } else {
         const Node &left = nodes_[i + 1], &right = nodes_[n.first];
         n.box = united(left.box, right.box);
-        n.moving = left.moving || right.moving;
+        const bool same = left.together != kNoVertex && right.together != kNoVertex &&
+                          vertices.move_together(left.together, right.together);
+        n.together = same ? left.together : kNoVertex;
       }
       n.extent = static_cast<float>(half_perimeter(n.box));
       node_sum += half_perimeter(n.box);

@@ -44,7 +44,7 @@ class MeshBroadPhase {
 
  private:
   /// Refits the trees to this step's boxes, or builds them; returns whether it built.
-  bool fit_trees(const VertexBoxes& boxes, unsigned threads);
+  bool fit_trees(const VertexSweep& sweep, unsigned threads);
 
   std::span<const Triangle> faces_;
   std::span<const Edge> edges_;

@@ -32,29 +32,40 @@ struct NodePair {
   std::uint32_t b;
 };
 
-/// Whether node pair p can hold a pair of primitives at all: with one tree and a == b,
-/// when something below moves; else when the boxes overlap and one side moves.
+/// The two trees of a walk, and the vertices' motion in this step.
 template <std::size_t NA, std::size_t NB>
-bool holds_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair p) {
-  const auto& a = ta.node(p.a);
-  if (one_tree && p.a == p.b) return a.moving;
-  const auto& b = tb.node(p.b);
-  return (a.moving || b.moving) && overlap(a.box, b.box);
+struct Walk {
+  const BoxTree<NA>& a;
+  const BoxTree<NB>& b;
+  bool one_tree;  ///< a and b are the same tree
+  const VertexSweep& sweep;
+};
+
+/// Whether node pair p can hold a pair of primitives at all: with one tree and a == b,
+/// unless everything below moves together; else when the boxes overlap, unless both
+/// sides move together.
+template <std::size_t NA, std::size_t NB>
+bool holds_pairs(const Walk<NA, NB>& w, NodePair p) {
+  const auto& a = w.a.node(p.a);
+  if (w.one_tree && p.a == p.b) return a.together == kNoVertex;
+  const auto& b = w.b.node(p.b);
+  if (!overlap(a.box, b.box)) return false;
+  return a.together == kNoVertex || b.together == kNoVertex ||
+         !w.sweep.move_together(a.together, b.together);
 }
 
 /// For a pair that holds_pairs: true when both nodes are leaves, whose primitives are then
 /// to be compared; otherwise calls push(q) for each smaller pair q that holds pairs (the
 /// children are tested here, next to their parent in memory) and returns false.
 template <std::size_t NA, std::size_t NB, class Push>
-bool open_pair(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair p,
-               Push&& push) {
-  const auto& a = ta.node(p.a);
-  const auto& b = tb.node(p.b);
+bool open_pair(const Walk<NA, NB>& w, NodePair p, Push&& push) {
+  const auto& a = w.a.node(p.a);
+  const auto& b = w.b.node(p.b);
   const auto push_live = [&](NodePair q) {
-    if (holds_pairs(ta, tb, one_tree, q)) push(q);
+    if (holds_pairs(w, q)) push(q);
   };
   if (a.is_leaf() && b.is_leaf()) return true;
-  if (one_tree && p.a == p.b) {
+  if (w.one_tree && p.a == p.b) {
     const std::uint32_t left = p.a + 1, right = a.first;
     push_live({left, left});
     push_live({right, right});
@@ -72,10 +83,9 @@ bool open_pair(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, Node
 /// The root pair opened breadth first until there are at least `wanted` pairs or nothing
 /// left to open; pairs that hold nothing are dropped.
 template <std::size_t NA, std::size_t NB>
-std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree,
-                                  std::size_t wanted) {
+std::vector<NodePair> split_pairs(const Walk<NA, NB>& w, std::size_t wanted) {
   std::vector<NodePair> pairs;
-  if (ta.empty() || tb.empty() || !holds_pairs(ta, tb, one_tree, {0, 0})) return pairs;
+  if (w.a.empty() || w.b.empty() || !holds_pairs(w, {0, 0})) return pairs;
   pairs.push_back({0, 0});
   bool opened_any = true;
   while (pairs.size() < wanted && opened_any) {
@@ -83,7 +93,7 @@ std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, 
     std::vector<NodePair> next;
     next.reserve(3 * pairs.size());
     for (const NodePair p : pairs) {
-      if (open_pair(ta, tb, one_tree, p, [&](NodePair q) { next.push_back(q); }))
+      if (open_pair(w, p, [&](NodePair q) { next.push_back(q); }))
         next.push_back(p);
       else
         opened_any = true;
@@ -98,17 +108,17 @@ std::vector<NodePair> split_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, 
 /// boxes overlap, which share no corner, and of which at least one moves; with one tree,
 /// each unordered pair once.
 template <std::size_t NA, std::size_t NB, class Visit>
-void overlapping_pairs(const BoxTree<NA>& ta, const BoxTree<NB>& tb, bool one_tree, NodePair start,
-                       std::vector<NodePair>& stack, Visit&& visit) {
+void overlapping_pairs(const Walk<NA, NB>& w, NodePair start, std::vector<NodePair>& stack,
+                       Visit&& visit) {
   stack.assign(1, start);
   while (!stack.empty()) {
     const NodePair p = stack.back();
     stack.pop_back();
-    if (!open_pair(ta, tb, one_tree, p, [&](NodePair q) { stack.push_back(q); })) continue;
-    const auto& la = ta.leaf(ta.node(p.a));
-    const auto& b = tb.node(p.b);
-    const auto& lb = tb.leaf(b);
-    const bool within = one_tree && p.a == p.b;
+    if (!open_pair(w, p, [&](NodePair q) { stack.push_back(q); })) continue;
+    const auto& la = w.a.leaf(w.a.node(p.a));
+    const auto& b = w.b.node(p.b);
+    const auto& lb = w.b.leaf(b);
+    const bool within = w.one_tree && p.a == p.b;
     // Only the lanes of a whose box meets b's leaf box can meet one of b's boxes.
     for (unsigned lanes = overlap_mask(b.box, la); lanes != 0; lanes &= lanes - 1) {
       const auto i = static_cast<std::size_t>(std::countr_zero(lanes));
