@@ -7,13 +7,15 @@ Usage:
   scripts/ccd-mesh-bench.py run [--motion A] [--seed S] > ccd-mesh.jsonl
   scripts/ccd-mesh-bench.py report ccd-mesh.jsonl docs/ccd-mesh-bench.svg > table.md
 
-`run` needs build-bench/bin/ccd_mesh_bench (`cmake -S . -B build-bench
--DEXACTGEO_BUILD_BENCHMARKS=ON && cmake --build build-bench --target ccd_mesh_bench`) and
-build/bin/exactgeo-cloth. Spot: every vertex moves by up to A mean edge lengths per
+`run` needs ccd_mesh_bench in build-bench/bin (`cmake -S . -B build-bench
+-DEXACTGEO_BUILD_BENCHMARKS=ON && cmake --build build-bench --target ccd_mesh_bench`) or
+build/bin, and build/bin/exactgeo-cloth. Spot: every vertex moves by up to A mean edge lengths per
 coordinate (uniform, seeded); the quads are split into two triangles. Cloth: the example
 writes the predicted step (before collision filtering) of its last step at each
 resolution, which ccd_mesh_bench then times. Times are the tools' own clocks (the best of
-3 runs; loading excluded). Standard library only."""
+3 runs; loading excluded). Each row also times the broad phase alone on a following step
+against the previous broad phase (bench/baseline/), in the same process, and says whether
+both found the same candidates. Standard library only."""
 import json
 import os
 import subprocess
@@ -23,7 +25,9 @@ import tempfile
 from loglog_svg import loglog_svg
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BENCH = os.path.join(HERE, "build-bench", "bin", "ccd_mesh_bench")
+# build-bench/ as the docs build it, or build/ when that was configured with benchmarks.
+BENCH = next((p for p in (os.path.join(HERE, d, "bin", "ccd_mesh_bench") for d in ("build-bench", "build"))
+              if os.path.exists(p)), os.path.join(HERE, "build-bench", "bin", "ccd_mesh_bench"))
 CLOTH = os.path.join(HERE, "build", "bin", "exactgeo-cloth")
 SPOT = os.path.join(HERE, "..", "shared", "data", "meshes", "spot")
 SPOT_MESHES = ["spot_quadrangulated.obj", "spot_quad_cc1.ply", "spot_quad_cc2.ply",
@@ -94,6 +98,19 @@ def report(jsonl, svg_path):
               f"{1e3 * step:.1f} | {1e3 * r['broad_phase_seconds']:.1f} | "
               f"{1e3 * r['narrow_phase_seconds']:.1f} | {r['ns_per_candidate']:.0f} | "
               f"{candidates:,} | {collisions:,} | {r['candidates_per_collision']:.1f} |")
+    print()
+    print("| scene | triangles | threads | candidates | baseline broad ms | broad ms | speedup | "
+          "same candidates | rebuilt |")
+    print("|---|---:|---:|---:|---:|---:|---:|---|---|")
+    for r in runs:
+        if r["method"] != "exact":
+            continue
+        print(f"| {r['scene']} | {r['triangles']:,} | {r['threads']} | "
+              f"{r['next_step_candidates']:,} | "
+              f"{1e3 * r['next_step_baseline_broad_phase_seconds']:.1f} | "
+              f"{1e3 * r['next_step_broad_phase_seconds']:.1f} | {r['broad_phase_speedup']:.2f} | "
+              f"{'yes' if r['same_candidates_as_baseline'] else 'NO'} | "
+              f"{'yes' if r['next_step_rebuilt'] else 'no'} |")
     print()
     print("| scene | triangles | box overlaps | all pairs ms | sweep and prune ms | tree ms |")
     print("|---|---:|---:|---:|---:|---:|")

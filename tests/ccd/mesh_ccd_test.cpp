@@ -880,6 +880,43 @@ TEST(MeshCcdDegenerate, PairsTranslatingTogetherAreSkipped) {
   EXPECT_GT(expect_matches_oracle(touching_pair(apart, d), "one ulp apart"), 0u);
 }
 
+/// A grid sheet at `origin` whose vertices all move to t1 = t0 + d, with t0 z replaced by
+/// `z0` (to make the displacement inexact when asked).
+MovingMesh translating_sheet(const Point3& origin, const Vector3& d, double z0) {
+  MovingMesh m = grid_sheet(5, 0.5, origin);
+  for (VertexIndex v = 0; v < m.vertex_count(); ++v) {
+    Point3 p = position(m.t0, v);
+    set_position(m.t1, v, plus(p, d));
+    p[2] = z0;
+    set_position(m.t0, v, p);
+  }
+  return m;
+}
+
+TEST(MeshCcdDegenerate, RigidlyMovingSheetsMatchExhaustivePairs) {
+  // Whole sheets, each moving by one vector, so the broad phase can drop node pairs whole
+  // (box_tree.hpp): a and c lie in one plane and move together (their contacts are
+  // rigid, dropped), b crosses both. Sheet d ends where a
+  // ends, but starts 2^-60 above z = 0: its displacement 1 - 2^-60 rounds to a's 1.0, yet
+  // it is not exact, so d must not count as moving with a; they meet at t = 1.
+  MovingMesh m = translating_sheet({0, 0, 0}, {0, 0, 1}, 0.0);
+  m.append(translating_sheet({0.1, 0.2, 0}, {0, 0, -1}, 0.75));
+  m.append(translating_sheet({0.3, 0.1, 0}, {0, 0, 1}, 0.0));
+  MovingMesh d = translating_sheet({0.2, 0.05, 0}, {0, 0, 1}, 0x1p-60);
+  for (VertexIndex v = 0; v < d.vertex_count(); ++v) {
+    Point3 p = position(d.t1, v);
+    p[2] = 1.0;
+    set_position(d.t1, v, p);
+  }
+  m.append(d);
+  EXPECT_GT(expect_matches_oracle(m, "rigid sheets"), 0u);
+  const Expected with_rigid = exhaustive(m, Method::exact, /*skip_rigid=*/false);
+  const Expected without = exhaustive(m, Method::exact);
+  EXPECT_GT(with_rigid.vertex_face.size() + with_rigid.edge_edge.size(),
+            without.vertex_face.size() + without.edge_edge.size())
+      << "some pairs are rigid, so skipping them is visible";
+}
+
 TEST(MeshCcdDegenerate, StandingPairsAreSkippedMovingAgainstStandingAreNot) {
   const MovingMesh m = floor_and_falling_sheet();
   // The standing parts do intersect each other, so skipping them is visible.
