@@ -180,7 +180,9 @@ TEST(ExactVector, ExpansionStageDecidesShortExactVectors) {
   }
   EXPECT_EQ(decided, 3000);
 
-  // Three components in a coordinate: deferred, and the rational stage decides.
+  // Three components in a coordinate: decided by four-component expansions for det3,
+  // deferred for the tetrahedron volume (its differences would double them), and five
+  // components are deferred everywhere; the rational stage decides all of them.
   std::array<ExactVector::Coordinate, 3> long_coordinates;
   long_coordinates[0] =
       *(kernel::Expansion<2>::difference(1.0, 0x1p-60) + kernel::Expansion<1>(0x1p-130))
@@ -193,8 +195,75 @@ TEST(ExactVector, ExpansionStageDecidesShortExactVectors) {
   const ExactVector unit_z = exact_difference({0, 0, 1}, {0, 0, 0});
   const kernel::Offsets<3> in{Offset::exact(long_vector), Offset::exact(unit_y),
                               Offset::exact(unit_z)};
-  EXPECT_FALSE(kernel::expansion_sign<kernel::Det3Formula>(in, 0).has_value());
+  EXPECT_EQ(kernel::expansion_sign<kernel::Det3Formula>(in, 0), Sign::positive);
   EXPECT_EQ(kernel::rational_sign<kernel::Det3Formula>(in, 0), Sign::positive);
+  const ExactVector origin = exact_difference({0, 0, 0}, {0, 0, 0});
+  const kernel::Offsets<4> tetrahedron{Offset::exact(origin), Offset::exact(long_vector),
+                                       Offset::exact(unit_y), Offset::exact(unit_z)};
+  EXPECT_FALSE(kernel::expansion_sign<kernel::TetrahedronVolumeFormula>(tetrahedron, 0));
+  EXPECT_EQ(kernel::rational_sign<kernel::TetrahedronVolumeFormula>(tetrahedron, 0),
+            Sign::positive);
+
+  long_coordinates[0] =
+      *(long_coordinates[0] + kernel::Expansion<1>(0x1p-200) + kernel::Expansion<1>(0x1p-270))
+           .template narrow<ExactVector::kCapacity>();
+  ASSERT_EQ(long_coordinates[0].size(), 5);
+  const ExactVector longer_vector = kernel::make_exact_vector(long_coordinates);
+  const kernel::Offsets<3> longer{Offset::exact(longer_vector), Offset::exact(unit_y),
+                                  Offset::exact(unit_z)};
+  EXPECT_FALSE(kernel::expansion_sign<kernel::Det3Formula>(longer, 0).has_value());
+  EXPECT_EQ(kernel::rational_sign<kernel::Det3Formula>(longer, 0), Sign::positive);
+}
+
+/// An exact vector whose coordinates are sums of `components` doubles spread over
+/// `spread` binades around x (nonoverlapping by construction: each next component is
+/// below half an ulp of the previous one).
+ExactVector long_exact_vector(Rng& rng, const Point3& x, int components) {
+  std::array<ExactVector::Coordinate, 3> c;
+  for (int k = 0; k < 3; ++k) {
+    kernel::Expansion<ExactVector::kCapacity> sum;
+    double part = x[k];
+    for (int i = 0; i < components && part != 0.0; ++i) {
+      sum = *(sum + kernel::Expansion<1>(part)).template narrow<ExactVector::kCapacity>();
+      part = std::ldexp(testing::uniform(rng, -1, 1),
+                        std::ilogb(part) - 54 - testing::uniform_int(rng, 0, 20));
+    }
+    c[k] = sum;
+  }
+  return kernel::make_exact_vector(c);
+}
+
+TEST(ExactVector, LongExactVectorsAgreeWithRationals) {
+  // det3, cross2 and dot3 of three- and four-component coordinates, nearly degenerate
+  // (the third vector is the sum of the first two up to the last components): the
+  // expansion stage answers and agrees with the rational stage.
+  Rng rng = testing::seeded_engine("exact-vector-long");
+  int decided = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const int components = testing::uniform_int(rng, 3, 4);
+    const Point3 a = testing::random_point(rng), b = testing::random_point(rng);
+    Point3 sum{};
+    for (int k = 0; k < 3; ++k)
+      sum[k] = a[k] + b[k];
+    const ExactVector va = long_exact_vector(rng, a, components);
+    const ExactVector vb = long_exact_vector(rng, b, components);
+    const ExactVector vc = long_exact_vector(rng, sum, components);
+    const kernel::Offsets<3> in{Offset::exact(va), Offset::exact(vb), Offset::exact(vc)};
+    const auto det = kernel::expansion_sign<kernel::Det3Formula>(in, 0);
+    ASSERT_TRUE(det.has_value()) << i;
+    EXPECT_EQ(*det, kernel::rational_sign<kernel::Det3Formula>(in, 0)) << i;
+    const kernel::Offsets<2> pair{Offset::exact(va), Offset::exact(vc)};
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto cross = kernel::expansion_sign<kernel::Cross2Formula>(pair, axis);
+      ASSERT_TRUE(cross.has_value()) << i;
+      EXPECT_EQ(*cross, kernel::rational_sign<kernel::Cross2Formula>(pair, axis)) << i;
+    }
+    const auto dot = kernel::expansion_sign<kernel::Dot3Formula>(pair, 0);
+    ASSERT_TRUE(dot.has_value()) << i;
+    EXPECT_EQ(*dot, kernel::rational_sign<kernel::Dot3Formula>(pair, 0)) << i;
+    ++decided;
+  }
+  EXPECT_EQ(decided, 2000);
 }
 
 TEST(ExactVector, ExactEqualityAndParallelograms) {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
+#include <utility>
 
 #include "exactgeo/predicates/kernel/dyadic.hpp"
 #include "exactgeo/predicates/kernel/expansion.hpp"
@@ -23,6 +24,18 @@
 
 namespace exactgeo::kernel {
 
+/// The most components per coordinate of an exact-vector input the expansion stage takes.
+inline constexpr int kLongExactVector = 4;
+
+/// Whether Formula's exact value on K-component inputs fits in 16 KB of stack: true for
+/// det3, cross2, dot3 and the triangle normal on four-component inputs (det3: six triple
+/// products of at most 2 * (2 * 4 * 4) * 4 = 256 components, 1,536 in all); not for the
+/// tetrahedron volume, whose differences double the inputs first, nor for phi.
+template <class Formula, std::size_t N, int K>
+inline constexpr bool kFitsOnStack =
+    sizeof(decltype(Formula::evaluate(std::declval<VectorArray<Expansion<K>, N>>(), 0))) <=
+    16 * 1024;
+
 // The exact stages are kept out of line and marked cold, so that their kilobytes of
 // stack-allocated expansions are not part of the frame of every (filtered) sign.
 template <class Formula, std::size_t N>
@@ -30,16 +43,19 @@ template <class Formula, std::size_t N>
                                                                 int parameter) noexcept {
   // Exact-vector inputs (exact_vector.hpp) are sums of up to eight components. Where every
   // coordinate read has at most two, it is an input like head - tail (two components, the
-  // same exponent conditions) and is evaluated here; longer ones would need far larger
-  // expansions, so rationals decide them.
+  // same exponent conditions, which bound each component) and is evaluated here; up to
+  // four, as four-component inputs where the formula's value then fits (kFitsOnStack);
+  // longer ones are left to rationals.
   bool exact_vectors = false;
+  int longest = 0;  // components of the longest exact-vector coordinate read
   ExponentRange range;
   for (const Offset& o : in) {
     for (int axis = 0; axis < 3; ++axis) {
       if (!Formula::reads(axis, parameter)) continue;
       if (o.is_exact_vector()) {
         const auto& c = o.exact_vector().exact[axis];
-        if (c.size() > 2) return std::nullopt;
+        if (c.size() > kLongExactVector) return std::nullopt;
+        longest = std::max(longest, c.size());
         for (int i = 0; i < c.size(); ++i)
           range.include(c.data()[i]);
         exact_vectors = true;
@@ -49,29 +65,34 @@ template <class Formula, std::size_t N>
       }
     }
   }
+  constexpr bool kTakesLong = kFitsOnStack<Formula, N, kLongExactVector>;
+  if (longest > 2 && !kTakesLong) return std::nullopt;
   const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
   if (!scaling || (exact_vectors && *scaling != 0)) return std::nullopt;
   // Exact differences; when none of them needed a second component (dyadic grids, inputs
   // already relative to one another) the whole evaluation runs on one-component inputs,
   // with every product four times smaller.
-  VectorArray<Expansion<2>, N> e;
-  bool all_single = true;
-  for (std::size_t v = 0; v < N; ++v) {
-    for (int axis = 0; axis < 3; ++axis) {
-      if (!Formula::reads(axis, parameter)) continue;  // left zero
-      if (in[v].is_exact_vector()) {
-        e[v][axis] = *in[v].exact_vector().exact[axis].template narrow<2>();  // checked above
+  const auto exact_inputs = [&]<int K>(bool& all_single) {
+    VectorArray<Expansion<K>, N> e;
+    all_single = true;
+    for (std::size_t v = 0; v < N; ++v) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (!Formula::reads(axis, parameter)) continue;  // left zero
+        if (in[v].is_exact_vector()) {
+          e[v][axis] = *in[v].exact_vector().exact[axis].template narrow<K>();  // checked above
+        } else {
+          const double head = in[v].head(axis);
+          const double tail = in[v].tail(axis);
+          e[v][axis] = *(*scaling == 0 ? Expansion<2>::difference(head, tail)
+                                       : Expansion<2>::difference(std::ldexp(head, *scaling),
+                                                                  std::ldexp(tail, *scaling)))
+                            .template narrow<K>();
+        }
         all_single &= e[v][axis].size() <= 1;
-        continue;
       }
-      const double head = in[v].head(axis);
-      const double tail = in[v].tail(axis);
-      e[v][axis] = *scaling == 0 ? Expansion<2>::difference(head, tail)
-                                 : Expansion<2>::difference(std::ldexp(head, *scaling),
-                                                            std::ldexp(tail, *scaling));
-      all_single &= e[v][axis].size() <= 1;
     }
-  }
+    return e;
+  };
   auto evaluate = [parameter](const auto& inputs) -> std::optional<Sign> {
     if constexpr (requires { Formula::expansion_sign(inputs, parameter); }) {
       return Formula::expansion_sign(inputs, parameter);
@@ -79,6 +100,14 @@ template <class Formula, std::size_t N>
       return Formula::evaluate(inputs, parameter).sign();
     }
   };
+  if constexpr (kTakesLong) {
+    if (longest > 2) {
+      bool all_single = false;
+      return evaluate(exact_inputs.template operator()<kLongExactVector>(all_single));
+    }
+  }
+  bool all_single = false;
+  const VectorArray<Expansion<2>, N> e = exact_inputs.template operator()<2>(all_single);
   if (all_single) {
     VectorArray<Expansion<1>, N> single;
     for (std::size_t v = 0; v < N; ++v) {
