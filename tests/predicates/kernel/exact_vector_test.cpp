@@ -180,9 +180,9 @@ TEST(ExactVector, ExpansionStageDecidesShortExactVectors) {
   }
   EXPECT_EQ(decided, 3000);
 
-  // Three components in a coordinate: decided by four-component expansions for det3,
-  // deferred for the tetrahedron volume (its differences would double them), and five
-  // components are deferred everywhere; the rational stage decides all of them.
+  // Three components in a coordinate: decided by four-component expansions (for the
+  // tetrahedron volume after narrowing its differences); five components are deferred;
+  // the rational stage decides all of them.
   std::array<ExactVector::Coordinate, 3> long_coordinates;
   long_coordinates[0] =
       *(kernel::Expansion<2>::difference(1.0, 0x1p-60) + kernel::Expansion<1>(0x1p-130))
@@ -200,7 +200,8 @@ TEST(ExactVector, ExpansionStageDecidesShortExactVectors) {
   const ExactVector origin = exact_difference({0, 0, 0}, {0, 0, 0});
   const kernel::Offsets<4> tetrahedron{Offset::exact(origin), Offset::exact(long_vector),
                                        Offset::exact(unit_y), Offset::exact(unit_z)};
-  EXPECT_FALSE(kernel::expansion_sign<kernel::TetrahedronVolumeFormula>(tetrahedron, 0));
+  EXPECT_EQ(kernel::expansion_sign<kernel::TetrahedronVolumeFormula>(tetrahedron, 0),
+            Sign::positive);
   EXPECT_EQ(kernel::rational_sign<kernel::TetrahedronVolumeFormula>(tetrahedron, 0),
             Sign::positive);
 
@@ -234,11 +235,12 @@ ExactVector long_exact_vector(Rng& rng, const Point3& x, int components) {
 }
 
 TEST(ExactVector, LongExactVectorsAgreeWithRationals) {
-  // det3, cross2 and dot3 of three- and four-component coordinates, nearly degenerate
-  // (the third vector is the sum of the first two up to the last components): the
-  // expansion stage answers and agrees with the rational stage.
+  // det3, cross2, dot3, the triangle normal and the tetrahedron volume of three- and
+  // four-component coordinates, nearly degenerate (the third vector is the sum of the
+  // first two up to the last components): the expansion stage answers and agrees with
+  // the rational stage.
   Rng rng = testing::seeded_engine("exact-vector-long");
-  int decided = 0;
+  int decided = 0, volumes = 0;
   for (int i = 0; i < 2000; ++i) {
     const int components = testing::uniform_int(rng, 3, 4);
     const Point3 a = testing::random_point(rng), b = testing::random_point(rng);
@@ -261,9 +263,29 @@ TEST(ExactVector, LongExactVectorsAgreeWithRationals) {
     const auto dot = kernel::expansion_sign<kernel::Dot3Formula>(pair, 0);
     ASSERT_TRUE(dot.has_value()) << i;
     EXPECT_EQ(*dot, kernel::rational_sign<kernel::Dot3Formula>(pair, 0)) << i;
+    // Four points, the fourth nearly in the plane of the others (vd = va + vb - vc is
+    // coplanar with them up to the last components).
+    Point3 fourth{};
+    for (int k = 0; k < 3; ++k)
+      fourth[k] = a[k] + b[k] - 0.5 * sum[k];
+    const ExactVector vd = long_exact_vector(rng, fourth, components);
+    const kernel::Offsets<4> four{Offset::exact(va), Offset::exact(vb), Offset::exact(vc),
+                                  Offset::exact(vd)};
+    const auto volume = kernel::expansion_sign<kernel::TetrahedronVolumeFormula>(four, 0);
+    if (volume) {  // deferred only when a difference does not narrow to four components
+      EXPECT_EQ(*volume, kernel::rational_sign<kernel::TetrahedronVolumeFormula>(four, 0)) << i;
+      ++volumes;
+    }
+    const kernel::Offsets<3> triangle{Offset::exact(va), Offset::exact(vb), Offset::exact(vd)};
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto normal = kernel::expansion_sign<kernel::TriangleNormalFormula>(triangle, axis);
+      ASSERT_TRUE(normal.has_value()) << i;
+      EXPECT_EQ(*normal, kernel::rational_sign<kernel::TriangleNormalFormula>(triangle, axis)) << i;
+    }
     ++decided;
   }
   EXPECT_EQ(decided, 2000);
+  EXPECT_GT(volumes, 1000);  // most differences of nearby long coordinates are short
 }
 
 TEST(ExactVector, ExactEqualityAndParallelograms) {

@@ -30,7 +30,8 @@ inline constexpr int kLongExactVector = 4;
 /// Whether Formula's exact value on K-component inputs fits in 16 KB of stack: true for
 /// det3, cross2, dot3 and the triangle normal on four-component inputs (det3: six triple
 /// products of at most 2 * (2 * 4 * 4) * 4 = 256 components, 1,536 in all); not for the
-/// tetrahedron volume, whose differences double the inputs first, nor for phi.
+/// tetrahedron volume, whose differences double the inputs first, nor for phi (both
+/// narrow their intermediate values instead, formula_descriptors.hpp).
 template <class Formula, std::size_t N, int K>
 inline constexpr bool kFitsOnStack =
     sizeof(decltype(Formula::evaluate(std::declval<VectorArray<Expansion<K>, N>>(), 0))) <=
@@ -44,8 +45,9 @@ template <class Formula, std::size_t N>
   // Exact-vector inputs (exact_vector.hpp) are sums of up to eight components. Where every
   // coordinate read has at most two, it is an input like head - tail (two components, the
   // same exponent conditions, which bound each component) and is evaluated here; up to
-  // four, as four-component inputs where the formula's value then fits (kFitsOnStack);
-  // longer ones are left to rationals.
+  // four, as four-component inputs where the formula's value then fits (kFitsOnStack) or
+  // the formula narrows its intermediate values itself (its own expansion_sign); longer
+  // ones are left to rationals.
   bool exact_vectors = false;
   int longest = 0;  // components of the longest exact-vector coordinate read
   ExponentRange range;
@@ -65,7 +67,10 @@ template <class Formula, std::size_t N>
       }
     }
   }
-  constexpr bool kTakesLong = kFitsOnStack<Formula, N, kLongExactVector>;
+  constexpr bool kTakesLong = kFitsOnStack<Formula, N, kLongExactVector> ||
+                              requires(const VectorArray<Expansion<kLongExactVector>, N>& v) {
+    Formula::expansion_sign(v, parameter);
+  };
   if (longest > 2 && !kTakesLong) return std::nullopt;
   const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
   if (!scaling || (exact_vectors && *scaling != 0)) return std::nullopt;

@@ -79,6 +79,27 @@ struct TetrahedronVolumeFormula : ReadsAllCoordinates {
   static constexpr auto evaluate(const VectorArray<T, 4>& v, int /*unused*/) {
     return tetrahedron_volume(v[0], v[1], v[2], v[3]);
   }
+
+  /// On inputs of more than two components the three differences are compressed and
+  /// narrowed to four components before det3 (differences of nearby points are short),
+  /// which keeps the value within 1,536 components instead of 12,288.
+  template <int C>
+  static std::optional<Sign> expansion_sign(const VectorArray<Expansion<C>, 4>& v, int) noexcept {
+    if constexpr (C <= 2) {
+      return tetrahedron_volume(v[0], v[1], v[2], v[3]).sign();
+    } else {
+      VectorArray<Expansion<4>, 3> d;
+      for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t k = 0; k < 3; ++k) {
+          auto difference = v[i + 1][k] - v[0][k];
+          const auto narrowed = difference.compress().template narrow<4>();
+          if (!narrowed) return std::nullopt;
+          d[i][k] = *narrowed;
+        }
+      }
+      return det3(d[0], d[1], d[2]).sign();
+    }
+  }
 };
 
 /// A normal component of a triangle given relative to an origin; the parameter is the
