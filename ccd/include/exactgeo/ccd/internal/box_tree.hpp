@@ -77,7 +77,7 @@ class BoxTree {
     std::vector<Built> order(primitives.size());
     for (std::size_t i = 0; i < primitives.size(); ++i)
       order[i] = {static_cast<std::uint32_t>(i), leaf_box(primitives[i], vertices)};
-    nodes_.reserve(primitives.size());  // leaves hold at least 2 primitives
+    nodes_.reserve(primitives.size());  // 2 n / 4 at most: leaves hold 4 to 8 primitives
     build(order, primitives, 0, order.size());
     refit(vertices);
     built_looseness_ = looseness_;

@@ -3,8 +3,9 @@
 // The pairs of overlapping primitive boxes between two box trees, or within one, found by
 // walking both trees at once.
 //
-// A pair of nodes whose boxes are disjoint, or below which nothing moves, holds no pair
-// and is dropped whole. Otherwise the larger node (by half-perimeter) is opened, until
+// A pair of nodes whose boxes are disjoint, or below which every vertex moves by one and
+// the same exact vector (standing still included, box_tree.hpp), holds no pair of the
+// step and is dropped whole. Otherwise the larger node (by half-perimeter) is opened, until
 // two leaves meet and their primitives are compared one by one. Within one tree, a node
 // paired with itself opens into its two children each with itself, plus the children
 // with each other, so every unordered pair is met once. Against one query per primitive
