@@ -88,12 +88,12 @@ class NamedSigns {
 };
 
 /// Where the filter's bound did not certify: the rest of stage 1 (a vanishing group), then
-/// stages 2 and 3, expansions and rationals. Out of line and cold, so that their stack of
-/// expansions never enlarges the hot path's frame. The inputs are views (a few pointers),
-/// passed by value.
+/// stages 2 and 3, expansions and rationals. Out of line, so that their stack of
+/// expansions never enlarges the hot path's frame (not cold: exact_stages.hpp says why). The inputs
+/// are views (a few pointers), passed by value.
 template <class Formula, Grouping grouping, std::size_t N>
-[[gnu::noinline, gnu::cold]] Sign sign_after_filter(const Offsets<N> in, int parameter,
-                                                    StageCounts* counts) noexcept {
+[[gnu::noinline]] Sign sign_after_filter(const Offsets<N> in, int parameter,
+                                         StageCounts* counts) noexcept {
   if (vanishing_group<Formula, grouping>(in, parameter)) {
     if (counts) ++counts->filter;
     return Sign::zero;
