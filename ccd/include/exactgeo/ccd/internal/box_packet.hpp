@@ -36,7 +36,7 @@ struct Packet {
   std::array<std::array<float, kPacketLanes>, 3> hi;
   std::array<std::array<VertexIndex, kPacketLanes>, N> corner;
   std::array<std::uint32_t, kPacketLanes> id;  ///< the primitive's index; kNoVertex if none
-  /// The motion digest its corners share (VertexBoxes::motion, box_tree.hpp), or 0: two
+  /// The motion digest its corners share (VertexSweep::motion, box_tree.hpp), or 0: two
   /// primitives can only move rigidly together when their digests are equal and nonzero.
   std::array<std::uint32_t, kPacketLanes> motion;
   unsigned moving = 0;  ///< bit j: the primitive in lane j moves

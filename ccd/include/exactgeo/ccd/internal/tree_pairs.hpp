@@ -6,8 +6,8 @@
 // A pair of nodes whose boxes are disjoint, or below which every vertex moves by one and
 // the same exact vector (standing still included, box_tree.hpp), holds no pair of the
 // step and is dropped whole. Otherwise the larger node (by half-perimeter) is opened, until
-// two leaves meet and their primitives are compared one by one. Within one tree, a node
-// paired with itself opens into its two children each with itself, plus the children
+// two leaves meet and their primitives are compared, eight at a time (box_packet.hpp). Within one
+// tree, a node paired with itself opens into its two children each with itself, plus the children
 // with each other, so every unordered pair is met once. Against one query per primitive
 // this drops whole groups of pairs at once and walks each tree path once per group
 // instead of once per primitive.
@@ -16,7 +16,6 @@
 // (split_pairs); each is then walked on its own. The split does not depend on the thread
 // count, so neither does the order in which pairs come out.
 
-#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
