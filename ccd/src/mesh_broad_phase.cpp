@@ -41,7 +41,6 @@ VertexSweep sweep_of(const MeshFrames& frames, unsigned threads) {
   VertexSweep s;
   s.box.resize(n);
   s.displacement.resize(n);
-  s.exact.resize(n);
   s.moving.resize(n);
   s.motion.resize(n);
   const double* t0 = frames.positions_t0.data();
@@ -58,7 +57,6 @@ VertexSweep sweep_of(const MeshFrames& frames, unsigned threads) {
         d[k] = diff.head;
         exact = exact && diff.tail == 0.0 && std::isfinite(diff.head);
       }
-      s.exact[v] = exact ? 1 : 0;
       s.moving[v] = d != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
       s.motion[v] = exact ? motion_digest(d) : 0;
     }

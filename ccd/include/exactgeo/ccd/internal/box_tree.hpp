@@ -38,15 +38,14 @@ namespace exactgeo::ccd::internal {
 struct VertexSweep {
   std::vector<FloatBox> box;          ///< the swept box, in the step's scale
   std::vector<Vector3> displacement;  ///< p_t1 - p_t0, rounded
-  std::vector<std::uint8_t> exact;    ///< ... and that rounding was exact
   std::vector<std::uint8_t> moving;   ///< p_t1 != p_t0
   /// A digest of the displacement: equal exact displacements have equal nonzero digests;
-  /// 0 when the displacement is not exact.
+  /// 0 exactly when the rounded displacement is not exact.
   std::vector<std::uint32_t> motion;
 
   /// Whether a and b move by one and the same exactly known vector (standing included).
   bool move_together(VertexIndex a, VertexIndex b) const noexcept {
-    return exact[a] != 0 && exact[b] != 0 && displacement[a] == displacement[b];
+    return motion[a] != 0 && motion[a] == motion[b] && displacement[a] == displacement[b];
   }
 };
 
