@@ -120,8 +120,8 @@ MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned thr
 
   // Both walks split into node pairs, vertex-face first; each pair's candidates in its
   // own list, joined in order, so the order does not depend on the thread count.
-  const Walk<1, 3> vertex_face{vertex_tree_, face_tree_, false, sweep};
-  const Walk<2, 2> edge_edge{edge_tree_, edge_tree_, true, sweep};
+  const Walk<1, 3> vertex_face{vertex_tree_, face_tree_, sweep};
+  const Walk<2, 2> edge_edge{edge_tree_, edge_tree_, sweep};
   const std::vector<NodePair> vertex_face_pairs = split_pairs(vertex_face, kWalkPairs);
   const std::vector<NodePair> edge_edge_pairs = split_pairs(edge_edge, kWalkPairs);
   struct Found {

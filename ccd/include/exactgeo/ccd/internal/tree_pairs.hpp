@@ -32,13 +32,22 @@ struct NodePair {
   std::uint32_t b;
 };
 
-/// The two trees of a walk, and the vertices' motion in this step.
+/// The two trees of a walk (the same tree twice for a walk of a tree with itself), and
+/// the vertices' motion in this step.
 template <std::size_t NA, std::size_t NB>
 struct Walk {
   const BoxTree<NA>& a;
   const BoxTree<NB>& b;
-  bool one_tree;  ///< a and b are the same tree
   const VertexSweep& sweep;
+
+  /// Whether p stands for the pairs within one node of a tree walked with itself.
+  bool within(NodePair p) const noexcept {
+    if constexpr (NA == NB) {
+      return &a == &b && p.a == p.b;
+    } else {
+      return false;
+    }
+  }
 };
 
 /// Whether node pair p can hold a pair of primitives at all: with one tree and a == b,
@@ -47,7 +56,7 @@ struct Walk {
 template <std::size_t NA, std::size_t NB>
 bool holds_pairs(const Walk<NA, NB>& w, NodePair p) {
   const auto& a = w.a.node(p.a);
-  if (w.one_tree && p.a == p.b) return a.together == kNoVertex;
+  if (w.within(p)) return a.together == kNoVertex;
   const auto& b = w.b.node(p.b);
   if (!overlap(a.box, b.box)) return false;
   return a.together == kNoVertex || b.together == kNoVertex ||
@@ -65,7 +74,7 @@ bool open_pair(const Walk<NA, NB>& w, NodePair p, Push&& push) {
     if (holds_pairs(w, q)) push(q);
   };
   if (a.is_leaf() && b.is_leaf()) return true;
-  if (w.one_tree && p.a == p.b) {
+  if (w.within(p)) {
     const std::uint32_t left = p.a + 1, right = a.first;
     push_live({left, left});
     push_live({right, right});
@@ -118,7 +127,7 @@ void overlapping_pairs(const Walk<NA, NB>& w, NodePair start, std::vector<NodePa
     const auto& la = w.a.leaf(w.a.node(p.a));
     const auto& b = w.b.node(p.b);
     const auto& lb = w.b.leaf(b);
-    const bool within = w.one_tree && p.a == p.b;
+    const bool within = w.within(p);
     // Only the lanes of a whose box meets b's leaf box can meet one of b's boxes.
     for (unsigned lanes = overlap_mask(b.box, la); lanes != 0; lanes &= lanes - 1) {
       const auto i = static_cast<std::size_t>(std::countr_zero(lanes));
