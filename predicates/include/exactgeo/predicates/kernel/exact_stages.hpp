@@ -76,26 +76,23 @@ template <class Formula, std::size_t N>
   if (longest > 2 && !kTakesLong) return std::nullopt;
   const std::optional<int> scaling = range.exact_scaling(Formula::kDegree);
   if (!scaling || (exact_vectors && *scaling != 0)) return std::nullopt;
-  // Exact differences; when none of them needed a second component (dyadic grids, inputs
-  // already relative to one another) the whole evaluation runs on one-component inputs,
-  // with every product four times smaller.
-  const auto exact_inputs = [&]<int K>(bool& all_single) {
+  // The exact inputs with capacity K: exact-vector coordinates as they are (at most K
+  // components, checked above), the others as exact differences head - tail.
+  const auto exact_inputs = [&]<int K>() {
     VectorArray<Expansion<K>, N> e;
-    all_single = true;
     for (std::size_t v = 0; v < N; ++v) {
       for (int axis = 0; axis < 3; ++axis) {
         if (!Formula::reads(axis, parameter)) continue;  // left zero
         if (in[v].is_exact_vector()) {
-          e[v][axis] = *in[v].exact_vector().exact[axis].template narrow<K>();  // checked above
-        } else {
-          const double head = in[v].head(axis);
-          const double tail = in[v].tail(axis);
-          e[v][axis] = *(*scaling == 0 ? Expansion<2>::difference(head, tail)
-                                       : Expansion<2>::difference(std::ldexp(head, *scaling),
-                                                                  std::ldexp(tail, *scaling)))
-                            .template narrow<K>();
+          e[v][axis] = *in[v].exact_vector().exact[axis].template narrow<K>();
+          continue;
         }
-        all_single &= e[v][axis].size() <= 1;
+        const double head = in[v].head(axis);
+        const double tail = in[v].tail(axis);
+        e[v][axis] = *(*scaling == 0 ? Expansion<2>::difference(head, tail)
+                                     : Expansion<2>::difference(std::ldexp(head, *scaling),
+                                                                std::ldexp(tail, *scaling)))
+                          .template narrow<K>();
       }
     }
     return e;
@@ -108,22 +105,21 @@ template <class Formula, std::size_t N>
     }
   };
   if constexpr (kTakesLong) {
-    if (longest > 2) {
-      bool all_single = false;
-      return evaluate(exact_inputs.template operator()<kLongExactVector>(all_single));
+    if (longest > 2) return evaluate(exact_inputs.template operator()<kLongExactVector>());
+  }
+  // When no input needed a second component (dyadic grids, inputs already relative to one
+  // another) the whole evaluation runs on one-component inputs, with every product four
+  // times smaller.
+  const VectorArray<Expansion<2>, N> e = exact_inputs.template operator()<2>();
+  VectorArray<Expansion<1>, N> single;
+  for (std::size_t v = 0; v < N; ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::optional<Expansion<1>> one = e[v][axis].template narrow<1>();
+      if (!one) return evaluate(e);
+      single[v][axis] = *one;
     }
   }
-  bool all_single = false;
-  const VectorArray<Expansion<2>, N> e = exact_inputs.template operator()<2>(all_single);
-  if (all_single) {
-    VectorArray<Expansion<1>, N> single;
-    for (std::size_t v = 0; v < N; ++v) {
-      for (int axis = 0; axis < 3; ++axis)
-        single[v][axis] = *e[v][axis].template narrow<1>();
-    }
-    return evaluate(single);
-  }
-  return evaluate(e);
+  return evaluate(single);
 }
 
 /// The exact value of one coordinate of an input, as a rational.

@@ -80,25 +80,23 @@ struct TetrahedronVolumeFormula : ReadsAllCoordinates {
     return tetrahedron_volume(v[0], v[1], v[2], v[3]);
   }
 
-  /// On inputs of more than two components the three differences are compressed and
-  /// narrowed to four components before det3 (differences of nearby points are short),
-  /// which keeps the value within 1,536 components instead of 12,288.
+  /// On inputs of more than two components (shorter ones use evaluate) the three
+  /// differences are compressed and narrowed to four components before det3 (differences
+  /// of nearby points are short), which keeps the value within 1,536 components instead
+  /// of 12,288.
   template <int C>
-  static std::optional<Sign> expansion_sign(const VectorArray<Expansion<C>, 4>& v, int) noexcept {
-    if constexpr (C <= 2) {
-      return tetrahedron_volume(v[0], v[1], v[2], v[3]).sign();
-    } else {
-      VectorArray<Expansion<4>, 3> d;
-      for (std::size_t i = 0; i < 3; ++i) {
-        for (std::size_t k = 0; k < 3; ++k) {
-          auto difference = v[i + 1][k] - v[0][k];
-          const auto narrowed = difference.compress().template narrow<4>();
-          if (!narrowed) return std::nullopt;
-          d[i][k] = *narrowed;
-        }
+  requires(C > 2) static std::optional<Sign> expansion_sign(const VectorArray<Expansion<C>, 4>& v,
+                                                            int) noexcept {
+    VectorArray<Expansion<4>, 3> d;
+    for (std::size_t i = 0; i < 3; ++i) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        auto difference = v[i + 1][k] - v[0][k];
+        const auto narrowed = difference.compress().template narrow<4>();
+        if (!narrowed) return std::nullopt;
+        d[i][k] = *narrowed;
       }
-      return det3(d[0], d[1], d[2]).sign();
     }
+    return det3(d[0], d[1], d[2]).sign();
   }
 };
 
