@@ -36,7 +36,7 @@ std::uint32_t motion_digest(const Vector3& d) noexcept {
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
-VertexSweep sweep_of(const MeshFrames& frames, unsigned threads) {
+VertexSweep sweep_of(const MeshFrames& frames, double largest, unsigned threads) {
   const std::size_t n = frames.positions_t0.size() / 3;
   VertexSweep s;
   s.box.resize(n);
@@ -45,8 +45,7 @@ VertexSweep sweep_of(const MeshFrames& frames, unsigned threads) {
   s.motion.resize(n);
   const double* t0 = frames.positions_t0.data();
   const double* t1 = frames.positions_t1.data();
-  const StepScale scale(
-      std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
+  const StepScale scale(largest);
   parallel::for_each_block((n + kVertexBlock - 1) / kVertexBlock, threads, [&](std::size_t b) {
     for (std::size_t v = b * kVertexBlock; v < std::min(n, (b + 1) * kVertexBlock); ++v) {
       s.box[v] = vertex_swept_box(t0, t1, v, scale);
@@ -113,9 +112,10 @@ bool MeshBroadPhase::fit_trees(const VertexSweep& sweep, unsigned threads) {
   return built[0] || built[1] || built[2];
 }
 
-MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
+MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, double largest,
+                                          unsigned threads) {
   MeshCandidates result;
-  const VertexSweep sweep = sweep_of(frames, threads);
+  const VertexSweep sweep = sweep_of(frames, largest, threads);
   result.trees_rebuilt = fit_trees(sweep, threads);
 
   // Both walks split into node pairs, vertex-face first; each pair's candidates in its

@@ -134,17 +134,25 @@ std::span<const Edge> MeshCcd::edges() const noexcept {
 
 namespace {
 
+/// A step's frames as the pairs see them, and their largest coordinate magnitude.
+struct StepFrames {
+  MeshFrames frames;
+  double largest;
+};
+
 /// `frames`, or both frames scaled to magnitude 1 by one power of two, stored in `unit`,
 /// when they are far from it and the scaling is exact (internal/unit_magnitude.hpp).
-MeshFrames unit_magnitude_frames(const MeshFrames& frames, std::vector<double>& unit) {
+StepFrames unit_magnitude_frames(const MeshFrames& frames, std::vector<double>& unit) {
   const double largest = std::max(internal::largest_magnitude(frames.positions_t0),
                                   internal::largest_magnitude(frames.positions_t1));
-  if (internal::near_unit_magnitude(largest)) return frames;
+  if (internal::near_unit_magnitude(largest)) return {frames, largest};
   unit.assign(frames.positions_t0.begin(), frames.positions_t0.end());
   unit.insert(unit.end(), frames.positions_t1.begin(), frames.positions_t1.end());
-  if (!internal::scale_to_unit_magnitude(unit, largest)) return frames;
+  if (!internal::scale_to_unit_magnitude(unit, largest)) return {frames, largest};
   const std::span<const double> both(unit);
-  return {both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())};
+  int exponent = 0;  // the scaling took largest to its significand in [1/2, 1), exactly
+  return {{both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())},
+          std::frexp(largest, &exponent)};
 }
 
 /// The mesh's earliest root, bracketed to `width`, from every colliding pair's coarse
@@ -190,9 +198,11 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   // A step far from magnitude 1 is brought there once for all its pairs, both frames by
   // one power of two (internal/unit_magnitude.hpp); no answer or time changes.
   std::vector<double> unit;
-  const MeshFrames scaled = unit_magnitude_frames(frames, unit);
+  const StepFrames step_frames = unit_magnitude_frames(frames, unit);
+  const MeshFrames& scaled = step_frames.frames;
 
-  const internal::MeshCandidates candidates = s.broad_phase.candidates(scaled, options.threads);
+  const internal::MeshCandidates candidates =
+      s.broad_phase.candidates(scaled, step_frames.largest, options.threads);
   result.trees_rebuilt = candidates.trees_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();

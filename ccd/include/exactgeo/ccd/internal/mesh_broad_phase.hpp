@@ -39,8 +39,9 @@ class MeshBroadPhase {
 
   /// Every candidate pair of the step, in an order that depends only on the input and on
   /// the steps before (through the trees), never on the thread count.
-  /// Precondition: frames hold 3 * vertex_count finite values each.
-  MeshCandidates candidates(const MeshFrames& frames, unsigned threads);
+  /// Preconditions: frames hold 3 * vertex_count finite values each; `largest` is their
+  /// largest magnitude (MeshCcd::step has it already; it sets the boxes' StepScale).
+  MeshCandidates candidates(const MeshFrames& frames, double largest, unsigned threads);
 
  private:
   /// Refits the trees to this step's boxes, or builds them; returns whether it built.
