@@ -1,7 +1,8 @@
 // The lane masks of box tree leaves (internal/box_packet.hpp) against the scalar tests
-// they replace: overlap_mask bit j is overlap(a, box j) for closed boxes (touching, equal,
-// nested, disjoint by one float ulp on one axis), unused lanes never overlap, and
-// shared_corner_mask bit j says whether lane j's primitive has one of the given corners.
+// they replace (and the SSE2 lane bits against the portable ones): overlap_mask bit j is overlap(a,
+// box j) for closed boxes (touching, equal, nested, disjoint by one float ulp on one axis), unused
+// lanes never overlap, and shared_corner_mask bit j says whether lane j's primitive has one of the
+// given corners.
 
 #include "exactgeo/ccd/internal/box_packet.hpp"
 
@@ -40,6 +41,17 @@ FloatBox random_box(testing::Rng& rng) {
     b.hi[k] = std::max(x, y);
   }
   return b;
+}
+
+TEST(BoxPacket, LaneBitsAreTheSameOnEveryPath) {
+  // The SSE2 movemask (when compiled in) and the portable shuffles, on every mask.
+  for (unsigned expected = 0; expected < 16; ++expected) {
+    lanes::Int4 in{};
+    for (int j = 0; j < 4; ++j)
+      in[j] = (expected >> j & 1) != 0 ? -1 : 0;
+    EXPECT_EQ(lanes::portable_bits(in), expected);
+    EXPECT_EQ(lanes::bits(in), expected);
+  }
 }
 
 TEST(BoxPacket, OverlapMaskIsTheScalarTestLaneByLane) {

@@ -7,7 +7,8 @@
 // The comparisons use the GCC and Clang vector extensions, four 32-bit lanes per vector,
 // which every target lowers to its own SIMD instructions (SSE on x86-64, NEON on ARM).
 // They are comparisons of floats and integers only: exact, so the masks are the same as
-// the scalar tests would give.
+// the scalar tests would give. The one target-specific piece, gathering lane results into
+// bits (SSE2's movemask), has a portable form, which the tests compare with it.
 
 #include <array>
 #include <cstddef>
@@ -71,15 +72,20 @@ Vector load(const T* four) noexcept {
   return v;
 }
 
-/// Bit j set for each lane j whose comparison result is true (all ones).
-inline unsigned bits(Int4 in) noexcept {
-#if defined(__SSE2__)
-  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(reinterpret_cast<__m128i>(in))));
-#else
+/// Bit j set for each lane j whose comparison result is true (all ones), on any target.
+inline unsigned portable_bits(Int4 in) noexcept {
   Int4 b = in & Int4{1, 2, 4, 8};
   b |= __builtin_shufflevector(b, b, 2, 3, 0, 1);
   b |= __builtin_shufflevector(b, b, 1, 0, 3, 2);
   return static_cast<unsigned>(b[0]);
+}
+
+/// portable_bits, in one instruction where SSE2 has it (movemask).
+inline unsigned bits(Int4 in) noexcept {
+#if defined(__SSE2__)
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(reinterpret_cast<__m128i>(in))));
+#else
+  return portable_bits(in);
 #endif
 }
 
