@@ -19,17 +19,13 @@
 
 #include "baseline/box_tree.hpp"
 #include "baseline/swept_box.hpp"
+#include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 
 namespace exactgeo::ccd::bench::baseline {
 
+using internal::EdgeIndexPair;  // the library's: the candidates of both are compared
 using internal::StepScale;
-
-/// Two edges by their index in the mesh's sorted edge list, a < b.
-struct EdgeIndexPair {
-  std::uint32_t a;
-  std::uint32_t b;
-};
 
 struct MeshCandidates {
   std::vector<VertexFacePair> vertex_face;
