@@ -4,6 +4,7 @@
 
 #include "exactgeo/ccd/root_parity.hpp"
 
+#include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/cubic.hpp"
 
 #include <gtest/gtest.h>
@@ -273,6 +274,36 @@ TEST(RootParity, RationalArithmeticAgreesWhenTheRayGrazesAnEdge) {
   EXPECT_GT(double_differs, 0);
 }
 
+// --- the parity method: the building block behind a cull -------------------------------
+
+/// The parity method of vertex_face_ccd / edge_edge_ccd culls before it counts crossings.
+/// A cull proves that there is no root at all, so its answer must be root parity's on
+/// every query, the culled ones included (tested on the benchmark data below too).
+TEST(RootParity, ParityMethodAnswersAsRootParity) {
+  Rng rng = testing::seeded_engine("ccd-parity-method");
+  Options parity;
+  parity.method = Method::parity;
+  int culled = 0, counted = 0;
+  for (int i = 0; i < 5000; ++i) {
+    const auto v = varied_query<VertexFaceQuery>(rng, i);
+    const Result rv = vertex_face_ccd(v, parity);
+    ASSERT_EQ(rv.collision, vertex_face_root_parity(v).collision()) << "vertex-face case " << i;
+    const auto e = varied_query<EdgeEdgeQuery>(rng, i);
+    const Result re = edge_edge_ccd(e, parity);
+    ASSERT_EQ(re.collision, edge_edge_root_parity(e).collision()) << "edge-edge case " << i;
+    for (const Result& r : {rv, re}) {
+      culled += r.decided_by == Stage::culled;
+      counted += r.decided_by == Stage::parity;
+      if (r.decided_by == Stage::culled) {
+        ASSERT_FALSE(r.collision);
+      }
+    }
+  }
+  std::printf("[ info     ] parity method: %d culled, %d counted\n", culled, counted);
+  EXPECT_GT(culled, 0);  // both paths were taken
+  EXPECT_GT(counted, 0);
+}
+
 // --- benchmark data ---------------------------------------------------------------------
 
 struct Tally {
@@ -292,6 +323,12 @@ Tally run_file(const ccd::QueryFile& file, bool check_rational) {
     const RootParityResult r = edge_edge
                                    ? edge_edge_root_parity(ccd::edge_edge_query(records[i]))
                                    : vertex_face_root_parity(ccd::vertex_face_query(records[i]));
+    Options parity;
+    parity.method = Method::parity;
+    const bool method = edge_edge
+                            ? edge_edge_ccd(ccd::edge_edge_query(records[i]), parity).collision
+                            : vertex_face_ccd(ccd::vertex_face_query(records[i]), parity).collision;
+    EXPECT_EQ(method, r.collision()) << csv << " query " << i << ": the parity method's cull";
     if (check_rational) {
       const RootParityResult q =
           edge_edge

@@ -10,7 +10,9 @@
 //                of the step resolves): decided_by == depth_limit says so. It can also
 //                bracket the earliest root (time of impact).
 //   parity       the 2012 root parity algorithm: a boundary root or an odd number of
-//                interior roots (root_parity.hpp). Blind to two roots, by design.
+//                interior roots (root_parity.hpp). Blind to two roots, by design. The
+//                exact method's cheap cull runs first (decided_by == culled): it proves
+//                that there is no root, so the answer is root parity's.
 //   plain_double the same parity algorithm with plain double signs (no filter, no exact
 //                fallback): the non-exact baseline.
 //   rational     the parity algorithm with every sign in GMP rationals: the slow reference.
@@ -36,7 +38,7 @@ std::optional<Method> parse_method(std::string_view name) noexcept;
 
 /// What decided a query.
 enum class Stage : std::uint8_t {
-  culled,       ///< exact: the corner images provably do not surround the origin
+  culled,       ///< exact, parity: the corner images provably do not surround the origin
   parity,       ///< the root parity count (for exact: a boundary root or odd parity)
   subdivision,  ///< exact: even parity, decided by splitting time
   depth_limit,  ///< exact: even parity, a piece left undecided at the depth limit (reported

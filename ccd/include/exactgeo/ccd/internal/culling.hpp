@@ -215,6 +215,16 @@ bool separated_by_closest_direction(const kernel::Offsets<C>& a) noexcept {
   return usable(closest) && on_one_side(a, closest, Certify::filter_only);
 }
 
+/// The cull that runs before root parity, in the exact and the parity methods: the
+/// bounding box (exact coordinate signs, a few nanoseconds), then the closest direction's
+/// plane. Either proves that the origin is outside the hull of the corner images, so
+/// there is no root in the closed domain: no collision, and an even root parity with no
+/// boundary root, so the parity method's answer is the same with or without it.
+template <std::size_t C>
+bool culled_before_parity(const kernel::Offsets<C>& a) noexcept {
+  return outside_bounding_box(a) || separated_by_closest_direction(a);
+}
+
 /// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
 /// (edge-edge). Candidate separating planes through the origin: orthogonal to the
 /// direction of the slice's point closest to the origin, parallel to the slice's plane
