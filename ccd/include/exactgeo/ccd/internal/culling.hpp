@@ -8,7 +8,7 @@
 // Two tests, cheapest first, each decided by certified signs only:
 //
 //  * bounding box: on some axis all corners are strictly positive (or all strictly
-//    negative). Coordinate signs are exact for every input kind.
+//    negative). The rounded coordinates have the exact signs.
 //  * slice planes: a plane through the origin with every corner strictly on one side,
 //    from a few candidate normals, then a plane turning with time
 //    (separated_by_slice_planes, separated_by_turning_plane).
@@ -32,15 +32,17 @@ namespace exactgeo::ccd::internal {
 
 template <std::size_t C>
 bool outside_bounding_box(const kernel::Offsets<C>& a) noexcept {
+  // fl(head - tail) has the sign of head - tail (a difference of doubles rounds to zero
+  // only when it is zero), so the rounded coordinates' extremes decide exactly.
   for (int axis = 0; axis < 3; ++axis) {
-    int positive = 0;
-    int negative = 0;
-    for (const kernel::Offset& o : a) {
-      const Sign s = kernel::coordinate_sign(o, axis);
-      positive += s == Sign::positive;
-      negative += s == Sign::negative;
+    double lowest = a[0].head(axis) - a[0].tail(axis);
+    double highest = lowest;
+    for (std::size_t k = 1; k < C; ++k) {
+      const double x = a[k].head(axis) - a[k].tail(axis);
+      lowest = std::min(lowest, x);
+      highest = std::max(highest, x);
     }
-    if (positive == static_cast<int>(C) || negative == static_cast<int>(C)) return true;
+    if (lowest > 0.0 || highest < 0.0) return true;
   }
   return false;
 }
@@ -90,32 +92,24 @@ inline std::optional<kernel::Expansion<48>> expansion_dot(const kernel::Offset& 
   return terms[0] + terms[1] + terms[2];
 }
 
-/// How a side is certified: by the filter alone (cheap, may leave it undecided), or by the
-/// filter and then, where it cannot decide, expansions.
-enum class Certify { filter_only, filter_then_expansion };
-
-/// The sign of n . p: the filter's, else (filter_then_expansion) the expansion's, else
-/// undecided.
-inline std::optional<Sign> dot_sign(const kernel::Offset& p, const Vector3& n,
-                                    Certify how = Certify::filter_then_expansion) noexcept {
+/// The sign of n . p: the filter's, else the expansion's, else undecided.
+inline std::optional<Sign> dot_sign(const kernel::Offset& p, const Vector3& n) noexcept {
   const kernel::Offset normal = kernel::Offset::vector(n);
   if (const auto s = kernel::filtered_sign<kernel::Dot3Formula, kernel::Grouping::by_vector>(
           kernel::Offsets<2>{p, normal}, 0)) {
     return s;
   }
-  if (how == Certify::filter_only) return std::nullopt;
   if (const auto d = expansion_dot(p, n)) return d->sign();
   return std::nullopt;
 }
 
 /// Every corner strictly on the positive side of the plane n . x = 0, or every corner on
-/// the negative side, each side certified as `how` says.
+/// the negative side, each side certified (filter, then expansions).
 template <std::size_t C>
-bool on_one_side(const kernel::Offsets<C>& a, const Vector3& n,
-                 Certify how = Certify::filter_then_expansion) noexcept {
+bool on_one_side(const kernel::Offsets<C>& a, const Vector3& n) noexcept {
   StrictSide side;
   for (std::size_t k = 0; k < C && side.holds(); ++k)
-    side.add(dot_sign(a[k], n, how));
+    side.add(dot_sign(a[k], n));
   return side.holds();
 }
 
@@ -205,14 +199,37 @@ Vector3 closest_direction(const std::array<Vector3, H>& x) noexcept {
 }
 
 /// The cheapest slice plane alone: orthogonal to the direction of the t0 slice's closest
-/// point, each side certified by the filter only. It settles most near misses
-/// (primitives that stay apart side by side) for one filtered dot product per corner, so
-/// it runs before root parity; where the filter cannot decide (a collision, a touch) it
-/// gives up at once. The other planes, with exact fallbacks, wait for an even parity.
+/// point, every corner strictly on its positive side, certified by the filter only. It
+/// settles most near misses (primitives that stay apart side by side) for one dot product
+/// and one compare per corner, so it runs before root parity; at the first corner the
+/// filter cannot place (a collision, a touch) it gives up. The other planes, with exact
+/// fallbacks, wait for an even parity.
 template <std::size_t C>
 bool separated_by_closest_direction(const kernel::Offsets<C>& a) noexcept {
-  const Vector3 closest = closest_direction(slice_corners(a, 0));
-  return usable(closest) && on_one_side(a, closest, Certify::filter_only);
+  const Vector3 n = closest_direction(slice_corners(a, 0));
+  if (!usable(n)) return false;
+  // The dot product's filter with one bound for all corners: its analysis holds for any
+  // upper bounds on the two groups' magnitudes within the guard (kernel/roundoff.hpp), so
+  // the largest coordinate of all corners serves every corner. A corner it leaves
+  // undecided means "no proof", as with a bound per corner.
+  kernel::VectorArray<double, C> x;
+  double largest = 0.0;
+  for (std::size_t k = 0; k < C; ++k) {
+    x[k] = a[k].rounded();
+    largest = std::max({largest, std::fabs(x[k][0]), std::fabs(x[k][1]), std::fabs(x[k][2])});
+  }
+  const std::array<double, 2> maxima{largest,
+                                     std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])})};
+  // The t0 slice's corners lie on the plane's positive side (up to rounding: the slice is
+  // convex and the normal points to its closest point); the t1 corners decide, first.
+  for (std::size_t i = 0; i < C; ++i) {
+    const std::size_t k = (C / 2 + i) % C;
+    const double value = kernel::Dot3Formula::evaluate(kernel::VectorArray<double, 2>{x[k], n}, 0);
+    constexpr auto& dot3 =
+        kernel::kFilterConstant<kernel::Dot3Formula, kernel::Grouping::by_vector>;
+    if (!(value > 0.0) || !kernel::filter_certifies<dot3>(value, maxima)) return false;
+  }
+  return true;
 }
 
 /// The cull that runs before root parity, in the exact and the parity methods: the
