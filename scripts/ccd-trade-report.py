@@ -36,39 +36,83 @@ for r in rows:
               f"{part['false_positives']} | {part['false_negatives']} | "
               f"{part['ns_per_query']:.0f} | {stages} |")
 
-# The plot: one panel per data set, x = log10(ns per query), y = errors.
-width, height, margin = 720, 300, 60
+# The plot: one panel per data set, x = ns per query (log), y = errors (FP + FN). Points
+# carry no text (labels of nearby methods overlapped); a legend under the panels names
+# the marks.
+width, height = 760, 380
+left, right, top, bottom, gap = 70, 20, 50, 110, 50
 sets = sorted({r["data"] for r in rows})
-panel_w = (width - margin) / len(sets)
+panel_w = (width - left - right - gap * (len(sets) - 1)) / len(sets)
+plot_h = height - top - bottom
 colours = {"exact": "#1b7837", "parity": "#2166ac", "double": "#b2182b",
            "cubic": "#e08214", "rational": "#762a83"}
+shapes = {"exact": "circle", "parity": "square", "double": "diamond", "cubic": "triangle",
+          "rational": "circle"}
+
+
+def marker(kind, x, y, colour, size=6):
+    """An open square (so that a mark under it stays visible), or a filled shape."""
+    if kind == "square":
+        return (f'<rect x="{x - size:.1f}" y="{y - size:.1f}" width="{2 * size}" '
+                f'height="{2 * size}" fill="none" stroke="{colour}" stroke-width="2"/>')
+    if kind == "diamond":
+        return (f'<polygon points="{x:.1f},{y - size:.1f} {x + size:.1f},{y:.1f} '
+                f'{x:.1f},{y + size:.1f} {x - size:.1f},{y:.1f}" fill="{colour}"/>')
+    if kind == "triangle":
+        return (f'<polygon points="{x:.1f},{y - size:.1f} {x + size:.1f},{y + size:.1f} '
+                f'{x - size:.1f},{y + size:.1f}" fill="{colour}"/>')
+    return f'<circle cx="{x:.1f}" cy="{y:.1f}" r="{size * 0.8:.1f}" fill="{colour}"/>'
+
+
+def error_ticks(max_err):
+    """0 and at most four round steps (1, 2 or 5 times a power of ten) up to max_err."""
+    scale = 10 ** math.floor(math.log10(max(max_err, 1)))
+    step = next(m * scale for m in (1, 2, 5, 10) if max(max_err, 1) / (m * scale) <= 4)
+    step = max(1, int(step))
+    return list(range(0, step * math.ceil(max(max_err, 1) / step) + 1, step))
+
+
 svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" '
-       f'font-family="sans-serif" font-size="11">',
-       f'<rect width="{width}" height="{height}" fill="white"/>']
+       f'font-family="sans-serif" font-size="12">',
+       f'<rect width="{width}" height="{height}" fill="white"/>',
+       f'<text x="{width / 2}" y="20" text-anchor="middle" font-size="14" font-weight="bold">'
+       f'CCD methods: time per query against wrong answers (one run)</text>']
 lo = math.floor(math.log10(min(r["ns_per_query"] for r in rows)))
 hi = math.ceil(math.log10(max(r["ns_per_query"] for r in rows)))
 for i, name in enumerate(sets):
-    x0 = margin + i * panel_w
-    plot_w, plot_h, top = panel_w - 30, height - 90, 30
+    x0 = left + i * (panel_w + gap)
     mine = [r for r in rows if r["data"] == name]
-    max_err = max(1, max(r["false_positives"] + r["false_negatives"] for r in mine))
-    svg.append(f'<text x="{x0 + plot_w / 2}" y="18" text-anchor="middle">{name}</text>')
-    svg.append(f'<rect x="{x0}" y="{top}" width="{plot_w}" height="{plot_h}" fill="none" stroke="#888"/>')
+    ticks = error_ticks(max(r["false_positives"] + r["false_negatives"] for r in mine))
+    y_max = ticks[-1]
+    svg.append(f'<text x="{x0 + panel_w / 2}" y="{top - 8}" text-anchor="middle">{name}</text>')
+    svg.append(f'<rect x="{x0}" y="{top}" width="{panel_w}" height="{plot_h}" fill="none" '
+               f'stroke="#888"/>')
     for e in range(lo, hi + 1):
-        x = x0 + (e - lo) / (hi - lo) * plot_w
-        svg.append(f'<text x="{x}" y="{top + plot_h + 14}" text-anchor="middle">1e{e}</text>')
-    svg.append(f'<text x="{x0 + plot_w / 2}" y="{top + plot_h + 30}" text-anchor="middle">'
-               f'ns per query (log)</text>')
-    svg.append(f'<text x="{x0 - 6}" y="{top + 4}" text-anchor="end">{max_err}</text>')
-    svg.append(f'<text x="{x0 - 6}" y="{top + plot_h}" text-anchor="end">0</text>')
+        x = x0 + (e - lo) / (hi - lo) * panel_w
+        svg.append(f'<line x1="{x:.1f}" y1="{top + plot_h}" x2="{x:.1f}" y2="{top + plot_h + 4}" '
+                   f'stroke="#888"/>')
+        svg.append(f'<text x="{x:.1f}" y="{top + plot_h + 18}" text-anchor="middle">'
+                   f'10<tspan dy="-5" font-size="9">{e}</tspan></text>')
+    for t in ticks:
+        y = top + plot_h - t / y_max * plot_h
+        svg.append(f'<line x1="{x0 - 4}" y1="{y:.1f}" x2="{x0}" y2="{y:.1f}" stroke="#888"/>')
+        svg.append(f'<text x="{x0 - 7}" y="{y + 4:.1f}" text-anchor="end">{t}</text>')
+    svg.append(f'<text x="{x0 + panel_w / 2}" y="{top + plot_h + 38}" text-anchor="middle">'
+               f'ns per query (log scale)</text>')
     for r in mine:
         err = r["false_positives"] + r["false_negatives"]
-        x = x0 + (math.log10(r["ns_per_query"]) - lo) / (hi - lo) * plot_w
-        y = top + plot_h - err / max_err * plot_h
-        c = colours.get(r["method"], "black")
-        svg.append(f'<circle cx="{x:.1f}" cy="{y:.1f}" r="5" fill="{c}"/>')
-        svg.append(f'<text x="{x + 7:.1f}" y="{y - 6:.1f}" fill="{c}">{r["method"]} ({err})</text>')
-svg.append(f'<text x="14" y="{height / 2}" transform="rotate(-90 14 {height / 2})" '
+        x = x0 + (math.log10(r["ns_per_query"]) - lo) / (hi - lo) * panel_w
+        y = top + plot_h - err / y_max * plot_h
+        svg.append(marker(shapes.get(r["method"], "circle"), x, y,
+                          colours.get(r["method"], "black")))
+svg.append(f'<text x="18" y="{top + plot_h / 2}" transform="rotate(-90 18 {top + plot_h / 2})" '
            f'text-anchor="middle">false positives + false negatives</text>')
+methods = [m for m in colours if any(r["method"] == m for r in rows)]
+legend_y = height - 28
+step = (width - left - right) / max(1, len(methods))
+for k, m in enumerate(methods):
+    x = left + k * step + 10
+    svg.append(marker(shapes[m], x, legend_y - 4, colours[m]))
+    svg.append(f'<text x="{x + 12}" y="{legend_y}">{m}</text>')
 svg.append("</svg>")
 open(sys.argv[2], "w").write("\n".join(svg) + "\n")
