@@ -68,6 +68,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     const Clock::time_point start = Clock::now();
     inside::ClassifierOptions classifier_options;
     classifier_options.allow_non_manifold = options.allow_non_manifold;
+    classifier_options.space_cells = options.space_cells;
     classifier.emplace(std::move(loaded.mesh), classifier_options);
     build_seconds = seconds_since(start);
   } catch (const InputError& e) {
@@ -130,6 +131,12 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
         << to_string(options.arithmetic) << "\""
         << ", \"build_seconds\": " << build_seconds << ", \"read_seconds\": " << tally.read_seconds
         << ", \"seconds\": " << tally.seconds;
+    if (const auto cells = classifier->space_cells()) {
+      out << ", \"space_cells\": {\"resolution\": [" << cells->resolution[0] << ", "
+          << cells->resolution[1] << ", " << cells->resolution[2] << "], \"cells\": " << cells->cells
+          << ", \"surface_cells\": " << cells->surface_cells
+          << ", \"components\": " << cells->components << "}";
+    }
     if (keep_labels) print_json_labels(kept, out);
     out << "}\n";
   }
@@ -172,6 +179,9 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
                 "split faces with more than four corners into triangle fans");
   sub->add_flag("--allow-non-manifold", options.allow_non_manifold,
                 "accept edges shared by 4, 6, ... faces (parity is still defined)");
+  sub->add_flag("!--no-space-cells", options.space_cells,
+                "cast a ray for every point, also where the certified space cells already "
+                "know the label (for measuring them)");
   return *sub;
 }
 

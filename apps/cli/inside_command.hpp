@@ -31,6 +31,7 @@ struct InsideCommandOptions {
   bool weld = false;
   bool split_polygons = false;
   bool allow_non_manifold = false;
+  bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
 };
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "exactgeo/inside/internal/candidates.hpp"
+#include "exactgeo/inside/internal/space_cells.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/crossing_parity.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
@@ -73,46 +74,17 @@ struct Classifier::State {
   std::vector<PatchFrame> exact_frames;
   std::vector<PatchFrame> double_frames;
   std::optional<internal::EmbreeCandidates> embree;
+  std::optional<internal::SpaceCells> cells;
 
   PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
     return {faces, arithmetic == Arithmetic::plain_double ? double_frames : exact_frames};
   }
 };
 
-Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
-    : state_(std::make_unique<State>()) {
-  const mesh::MeshCheck check = mesh::check_mesh(mesh);
-  if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
-    throw std::invalid_argument(*problem);
-  }
-  State& s = *state_;
-  s.box = *check.bounding_box;
-  s.mesh = std::move(mesh);
-  s.faces = surface_faces(s.mesh);
-  s.exact_frames = frames_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
-  s.double_frames = frames_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
-  if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh);
-}
-
-Classifier::~Classifier() = default;
-Classifier::Classifier(Classifier&&) noexcept = default;
-Classifier& Classifier::operator=(Classifier&&) noexcept = default;
-
-const mesh::Mesh& Classifier::mesh() const noexcept {
-  return state_->mesh;
-}
-
-Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const {
-  ClassifierScratch scratch;
-  return classify(point, arithmetic, scratch);
-}
-
-Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
-                              ClassifierScratch& scratch) const {
-  // The solid lies in the convex hull of its surface, hence in the box.
-  const State& s = *state_;
-  if (strictly_outside(s.box, point)) return Location::outside;
-
+/// The location of `point` by crossing parity along the ray sequence, Embree proposing
+/// the candidate faces. Precondition: point in the mesh's closed box.
+Location Classifier::cast_rays(const State& s, const Point3& point, Arithmetic arithmetic,
+                               ClassifierScratch& scratch) {
   const PreparedFaces faces = s.prepared(arithmetic);
   const auto corner = [&](VertexIndex i) {
     return kernel::Offset::between(point, s.mesh.vertices[i]);
@@ -141,6 +113,56 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
       break;
   }
   return Location::boundary;
+}
+
+Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
+    : state_(std::make_unique<State>()) {
+  const mesh::MeshCheck check = mesh::check_mesh(mesh);
+  if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
+    throw std::invalid_argument(*problem);
+  }
+  State& s = *state_;
+  s.box = *check.bounding_box;
+  s.mesh = std::move(mesh);
+  s.faces = surface_faces(s.mesh);
+  s.exact_frames = frames_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
+  s.double_frames = frames_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
+  if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh);
+  if (options.space_cells) {
+    ClassifierScratch scratch;
+    s.cells.emplace(s.mesh, s.box,
+                    [&](const Point3& p) { return cast_rays(s, p, Arithmetic::exact, scratch); });
+  }
+}
+
+Classifier::~Classifier() = default;
+Classifier::Classifier(Classifier&&) noexcept = default;
+Classifier& Classifier::operator=(Classifier&&) noexcept = default;
+
+const mesh::Mesh& Classifier::mesh() const noexcept {
+  return state_->mesh;
+}
+
+std::optional<Classifier::CellSummary> Classifier::space_cells() const noexcept {
+  if (!state_->cells) return std::nullopt;
+  const internal::SpaceCells& c = *state_->cells;
+  return CellSummary{c.resolution(), c.cells(), c.surface_cells(), c.components()};
+}
+
+Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const {
+  ClassifierScratch scratch;
+  return classify(point, arithmetic, scratch);
+}
+
+Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
+                              ClassifierScratch& scratch) const {
+  // The solid lies in the convex hull of its surface, hence in the box.
+  const State& s = *state_;
+  if (strictly_outside(s.box, point)) return Location::outside;
+  if (s.cells && arithmetic != Arithmetic::plain_double) {
+    if (const auto known = s.cells->lookup(point)) return *known;
+  }
+  return cast_rays(s, point, arithmetic, scratch);
 }
 
 }  // namespace exactgeo::inside

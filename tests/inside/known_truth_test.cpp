@@ -99,8 +99,11 @@ std::string describe(const Mesh& mesh) {
   return s.str();
 }
 
+/// Embree candidates with the space cells on; brute force, the reference, without them:
+/// every comparison of the two checks the cells' labels too.
 ClassifierOptions search(CandidateSearch candidates) {
-  return {candidates, /*allow_non_manifold=*/true};
+  return {candidates, /*allow_non_manifold=*/true,
+          /*space_cells=*/candidates == CandidateSearch::embree};
 }
 
 // ---------------------------------------------------------------------------------------

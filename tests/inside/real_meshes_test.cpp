@@ -67,7 +67,7 @@ void expect_embree_matches_brute_force(const std::string& path, std::size_t coun
   SCOPED_TRACE(path);
   const Mesh mesh = mesh::load_mesh(path, load).mesh;
   const Classifier embree(mesh);
-  const Classifier brute(mesh, {CandidateSearch::brute_force, false});
+  const Classifier brute(mesh, {CandidateSearch::brute_force, false, /*space_cells=*/false});
   auto rng =
       testing::seeded_engine("inside.real_meshes." + std::filesystem::path(path).stem().string());
   const std::vector<Point3> points =
@@ -92,7 +92,7 @@ void expect_embree_matches_brute_force(const std::string& path, std::size_t coun
 /// of the command-line example, with Embree and with every face as candidates.
 TEST(RealMeshes, ReadmeExamples) {
   mesh::LoadedMesh spot = mesh::load_mesh(kMeshes + "spot/spot_quadrangulated.obj");
-  const Classifier brute(spot.mesh, {CandidateSearch::brute_force});
+  const Classifier brute(spot.mesh, {CandidateSearch::brute_force, false, /*space_cells=*/false});
   const Classifier classifier(std::move(spot.mesh));
   for (const Classifier* c : {&classifier, &brute}) {
     EXPECT_EQ(c->classify({0, 0.2, 0}), Location::inside);

@@ -10,8 +10,11 @@
 // guarantees ends. Embree proposes candidate faces along each ray; the exact predicates
 // (ray_patch_parity, classify_ray_triangle) decide every one.
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +38,10 @@ struct ClassifierOptions {
   /// Accept edges shared by four, six, ... faces (parity is still well defined when every
   /// edge has an even number of faces); by default only closed manifold meshes are accepted.
   bool allow_non_manifold = false;
+  /// Certified space cells (internal/space_cells.hpp): points in a cell that no face
+  /// reaches get that cell's exact label without a ray. Exact and rational arithmetic
+  /// only; the plain double baseline always casts rays.
+  bool space_cells = true;
 };
 
 /// Scratch memory for one thread's queries (the candidate list), reused between calls.
@@ -62,8 +69,20 @@ class Classifier {
 
   const mesh::Mesh& mesh() const noexcept;
 
+  /// The space cells' size, when they are on: the grid's cells, those some face reaches
+  /// (their points cast rays), and the components of the others (one exact ray each).
+  struct CellSummary {
+    std::array<std::size_t, 3> resolution;
+    std::size_t cells;
+    std::size_t surface_cells;
+    std::size_t components;
+  };
+  std::optional<CellSummary> space_cells() const noexcept;
+
  private:
   struct State;
+  static Location cast_rays(const State& s, const Point3& point, Arithmetic arithmetic,
+                            ClassifierScratch& scratch);
   std::unique_ptr<State> state_;
 };
 

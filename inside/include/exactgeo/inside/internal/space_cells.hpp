@@ -1,0 +1,101 @@
+#pragma once
+
+// Certified space cells: a uniform grid over the mesh's box in which every cell that no
+// face can reach carries the label of all of its points, so that most points of a uniform
+// query set need a lookup instead of a ray.
+//
+// Why a cell's label is certified. Each face lies in the convex hull of its corners,
+// hence in the box of its corners. A closed cell box that meets no face's corner box is
+// disjoint from the surface; it is convex, so connected, and the label (inside or
+// outside, by crossing parity) is constant on every connected set that misses the
+// surface. Two such cells that share a closed facet form a connected set missing the
+// surface too, so a whole face-connected component of them has one label: it is found
+// once, by the exact classifier at one point of one of its cells.
+//
+// No rounding enters. The grid's planes are any doubles b_0 <= b_1 <= ... <= b_n per
+// axis, with b_0 and b_n the box's own bounds; cell k is the closed interval
+// [b_k, b_k+1]. A face marks every cell whose closed box meets its corners' box, found by
+// comparing doubles with doubles (exact). A point finds a cell containing it the same way:
+// a division proposes an index, exact comparisons confirm it (or a binary search finds
+// it). A point on a plane between two cells lies in both closed cells, and either one's
+// label is right for it.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::inside::internal {
+
+class SpaceCells {
+ public:
+  /// The exact location of a point that lies on no face (inside or outside).
+  using ExactLabel = std::function<Location(const Point3&)>;
+
+  /// The grid over `box` (the mesh's bounding box) with about `kCellsPerFace` cells per
+  /// face, between kMinCells and kMaxCells, shaped like the box; `label` is called once
+  /// per component of cells no face reaches.
+  SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactLabel& label);
+
+  /// The label of every point of a cell containing `p`, or nullopt when a face may reach
+  /// that cell (cast a ray). Precondition: p in the closed box.
+  std::optional<Location> lookup(const Point3& p) const noexcept;
+
+  std::array<std::size_t, 3> resolution() const noexcept {
+    return {axes_[0].cells(), axes_[1].cells(), axes_[2].cells()};
+  }
+  std::size_t cells() const noexcept { return labels_.size(); }
+  /// Cells some face reaches.
+  std::size_t surface_cells() const noexcept { return surface_cells_; }
+  /// Connected components of the other cells (one exact label each).
+  std::size_t components() const noexcept { return components_; }
+  std::size_t memory_bytes() const noexcept;
+  /// The grid's planes on `axis`: b_0 (the box's lower bound) to b_n (its upper bound).
+  const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
+
+  static constexpr std::size_t kCellsPerFace = 16;
+  static constexpr std::size_t kMinCells = std::size_t{1} << 15;  // 32^3
+  static constexpr std::size_t kMaxCells = std::size_t{1} << 23;  // 203^3
+
+ private:
+  /// One axis of the grid: its planes and the division that proposes a cell.
+  class Axis {
+   public:
+    Axis() = default;
+    Axis(double lower, double upper, std::size_t cells);
+    std::size_t cells() const noexcept { return planes_.size() - 1; }
+    /// A cell k with planes[k] <= x <= planes[k + 1]. Precondition: x in [lower, upper].
+    std::size_t cell_of(double x) const noexcept;
+    /// The cells whose closed interval meets [lo, hi] (lo <= hi): first and last.
+    std::array<std::size_t, 2> cells_meeting(double lo, double hi) const noexcept;
+    /// A point of cell k's closed interval.
+    double point_in(std::size_t k) const noexcept;
+    const std::vector<double>& planes() const noexcept { return planes_; }
+
+   private:
+    std::vector<double> planes_;
+    double lower_ = 0.0;
+    double cells_per_unit_ = 0.0;  // 0: no usable division, search only
+  };
+
+  enum class Label : std::uint8_t { unknown, surface, inside, outside };
+
+  std::size_t index(std::size_t i, std::size_t j, std::size_t k) const noexcept {
+    return (k * axes_[1].cells() + j) * axes_[0].cells() + i;
+  }
+  void mark_faces(const mesh::Mesh& mesh);
+  void label_components(const ExactLabel& label);
+
+  std::array<Axis, 3> axes_;
+  std::vector<Label> labels_;
+  std::size_t surface_cells_ = 0;
+  std::size_t components_ = 0;
+};
+
+}  // namespace exactgeo::inside::internal

@@ -1,0 +1,173 @@
+#include "exactgeo/inside/internal/space_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace exactgeo::inside::internal {
+namespace {
+
+/// Cells per axis: about `target` in all, in proportion to the box's extents. An extent
+/// below 1/1024 of the largest counts as 1/1024, so that a flat box still gets a grid.
+std::array<std::size_t, 3> resolution_for(const mesh::Box& box, std::size_t target) {
+  std::array<double, 3> extent{};
+  for (int i = 0; i < 3; ++i)
+    extent[i] = box.upper[i] / 2 - box.lower[i] / 2;  // halves: cannot overflow
+  const double largest = std::max({extent[0], extent[1], extent[2]});
+  if (!(largest > 0.0)) return {1, 1, 1};
+  std::array<double, 3> relative{};
+  for (int i = 0; i < 3; ++i)
+    relative[i] = std::max(extent[i] / largest, 1.0 / 1024);
+  const double scale =
+      std::cbrt(static_cast<double>(target) / (relative[0] * relative[1] * relative[2]));
+  std::array<std::size_t, 3> cells{};
+  for (int i = 0; i < 3; ++i)
+    cells[i] = static_cast<std::size_t>(std::clamp(std::llround(relative[i] * scale), 1LL, 1024LL));
+  return cells;
+}
+
+}  // namespace
+
+SpaceCells::Axis::Axis(double lower, double upper, std::size_t cells)
+    : planes_(cells + 1), lower_(lower) {
+  // Any nondecreasing planes from lower to upper make a valid grid; these are evenly
+  // spaced up to rounding, and clamped so that rounding cannot break the order.
+  const double width = upper - lower;  // infinite for a box wider than DBL_MAX
+  planes_[0] = lower;
+  for (std::size_t k = 1; k < cells; ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(cells);
+    const double x =
+        std::isfinite(width) ? lower + width * t : 2 * (lower / 2 + (upper / 2 - lower / 2) * t);
+    planes_[k] = std::clamp(x, planes_[k - 1], upper);
+  }
+  planes_[cells] = upper;
+  const double per_unit = static_cast<double>(cells) / width;
+  cells_per_unit_ = width > 0.0 && std::isfinite(per_unit) ? per_unit : 0.0;
+}
+
+std::size_t SpaceCells::Axis::cell_of(double x) const noexcept {
+  const std::size_t n = cells();
+  if (cells_per_unit_ > 0.0) {
+    // A proposal, confirmed exactly below (x - lower_ is finite: the width is).
+    const double g = (x - lower_) * cells_per_unit_;
+    const std::size_t k = g < static_cast<double>(n) ? static_cast<std::size_t>(g) : n - 1;
+    if (planes_[k] <= x && x <= planes_[k + 1]) return k;
+  }
+  // The last plane at or below x (planes_[0] = lower <= x), within the cells.
+  const auto above = std::upper_bound(planes_.begin(), planes_.end(), x);
+  return std::min(static_cast<std::size_t>(above - planes_.begin()) - 1, n - 1);
+}
+
+std::array<std::size_t, 2> SpaceCells::Axis::cells_meeting(double lo, double hi) const noexcept {
+  const std::size_t n = cells();
+  // First: the first cell whose upper plane is at or above lo.
+  const auto first_plane = std::lower_bound(planes_.begin() + 1, planes_.end(), lo);
+  const std::size_t first =
+      std::min(static_cast<std::size_t>(first_plane - planes_.begin()) - 1, n - 1);
+  // Last: the last cell whose lower plane is at or below hi.
+  const auto above = std::upper_bound(planes_.begin(), planes_.end() - 1, hi);
+  const auto last = static_cast<std::size_t>(above - planes_.begin());
+  return {first, last == 0 ? 0 : last - 1};
+}
+
+double SpaceCells::Axis::point_in(std::size_t k) const noexcept {
+  // Halves: the sum could overflow. The clamp keeps the rounded midpoint in the cell.
+  return std::clamp(planes_[k] / 2 + planes_[k + 1] / 2, planes_[k], planes_[k + 1]);
+}
+
+SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactLabel& label) {
+  const std::size_t target = std::clamp(kCellsPerFace * mesh.faces.size(), kMinCells, kMaxCells);
+  const auto cells = resolution_for(box, target);
+  for (int i = 0; i < 3; ++i)
+    axes_[i] = Axis(box.lower[i], box.upper[i], cells[i]);
+  labels_.assign(cells[0] * cells[1] * cells[2], Label::unknown);
+  mark_faces(mesh);
+  label_components(label);
+}
+
+void SpaceCells::mark_faces(const mesh::Mesh& mesh) {
+  for (const mesh::Face& face : mesh.faces) {
+    Point3 lo = mesh.vertices[face.corners[0]];
+    Point3 hi = lo;
+    for (std::size_t c = 1; c < face.size(); ++c) {
+      const Point3& v = mesh.vertices[face.corners[c]];
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], v[i]);
+        hi[i] = std::max(hi[i], v[i]);
+      }
+    }
+    const auto x = axes_[0].cells_meeting(lo[0], hi[0]);
+    const auto y = axes_[1].cells_meeting(lo[1], hi[1]);
+    const auto z = axes_[2].cells_meeting(lo[2], hi[2]);
+    for (std::size_t k = z[0]; k <= z[1]; ++k) {
+      for (std::size_t j = y[0]; j <= y[1]; ++j) {
+        for (std::size_t i = x[0]; i <= x[1]; ++i)
+          labels_[index(i, j, k)] = Label::surface;
+      }
+    }
+  }
+}
+
+void SpaceCells::label_components(const ExactLabel& label) {
+  const std::array<std::size_t, 3> n{axes_[0].cells(), axes_[1].cells(), axes_[2].cells()};
+  std::vector<std::uint32_t> stack;
+  for (std::size_t seed = 0; seed < labels_.size(); ++seed) {
+    if (labels_[seed] != Label::unknown) continue;
+    // One exact label for the seed's whole component (a point of the seed cell lies on no
+    // face; a boundary answer would be a broken invariant: the cells then stay "surface",
+    // which only costs rays).
+    const std::size_t i = seed % n[0];
+    const std::size_t j = (seed / n[0]) % n[1];
+    const std::size_t k = seed / (n[0] * n[1]);
+    const Location l = label({axes_[0].point_in(i), axes_[1].point_in(j), axes_[2].point_in(k)});
+    const Label fill = l == Location::inside    ? Label::inside
+                       : l == Location::outside ? Label::outside
+                                                : Label::surface;
+    ++components_;
+    labels_[seed] = fill;
+    stack.assign(1, static_cast<std::uint32_t>(seed));
+    while (!stack.empty()) {
+      const std::size_t c = stack.back();
+      stack.pop_back();
+      const std::size_t ci = c % n[0];
+      const std::size_t cj = (c / n[0]) % n[1];
+      const std::size_t ck = c / (n[0] * n[1]);
+      const auto visit = [&](bool exists, std::size_t neighbour) {
+        if (exists && labels_[neighbour] == Label::unknown) {
+          labels_[neighbour] = fill;
+          stack.push_back(static_cast<std::uint32_t>(neighbour));
+        }
+      };
+      visit(ci > 0, c - 1);
+      visit(ci + 1 < n[0], c + 1);
+      visit(cj > 0, c - n[0]);
+      visit(cj + 1 < n[1], c + n[0]);
+      visit(ck > 0, c - n[0] * n[1]);
+      visit(ck + 1 < n[2], c + n[0] * n[1]);
+    }
+  }
+  surface_cells_ =
+      static_cast<std::size_t>(std::count(labels_.begin(), labels_.end(), Label::surface));
+}
+
+std::optional<Location> SpaceCells::lookup(const Point3& p) const noexcept {
+  switch (labels_[index(axes_[0].cell_of(p[0]), axes_[1].cell_of(p[1]), axes_[2].cell_of(p[2]))]) {
+    case Label::inside:
+      return Location::inside;
+    case Label::outside:
+      return Location::outside;
+    case Label::surface:
+    case Label::unknown:
+      break;
+  }
+  return std::nullopt;
+}
+
+std::size_t SpaceCells::memory_bytes() const noexcept {
+  std::size_t bytes = labels_.size() * sizeof(Label);
+  for (const Axis& a : axes_)
+    bytes += (a.cells() + 1) * sizeof(double);
+  return bytes;
+}
+
+}  // namespace exactgeo::inside::internal
