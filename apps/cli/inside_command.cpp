@@ -12,8 +12,10 @@
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/float_ray_parity.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/point_reader.hpp"
+#include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {
@@ -62,14 +64,26 @@ void print_json_labels(const std::vector<inside::Location>& labels, std::ostream
 ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                     const std::string& points_source, std::ostream& out, std::ostream& err) {
   std::optional<inside::Classifier> classifier;
+  std::optional<inside::FloatRayParity> float_rays;
   double build_seconds = 0.0;
   try {
     LoadedMesh loaded = load_mesh(options.mesh, {options.weld, options.split_polygons});
     const Clock::time_point start = Clock::now();
-    inside::ClassifierOptions classifier_options;
-    classifier_options.allow_non_manifold = options.allow_non_manifold;
-    classifier_options.space_cells = options.space_cells;
-    classifier.emplace(std::move(loaded.mesh), classifier_options);
+    if (options.float_rays) {
+      // The same meshes as the classifier accepts, so that the two are compared on them.
+      const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
+      if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
+        throw std::invalid_argument(*problem);
+      }
+      float_rays.emplace(loaded.mesh);
+    } else {
+      inside::ClassifierOptions classifier_options;
+      classifier_options.allow_non_manifold = options.allow_non_manifold;
+      // The plain double baseline casts a ray for every point (classifier.hpp).
+      classifier_options.space_cells =
+          options.space_cells && options.arithmetic != Arithmetic::plain_double;
+      classifier.emplace(std::move(loaded.mesh), classifier_options);
+    }
     build_seconds = seconds_since(start);
   } catch (const InputError& e) {
     err << "exactgeo inside: " << e.what() << "\n";
@@ -101,7 +115,11 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
-      inside::classify_batch(*classifier, block, locations, options.arithmetic, options.threads);
+      if (float_rays) {
+        inside::classify_batch(*float_rays, block, locations, options.threads);
+      } else {
+        inside::classify_batch(*classifier, block, locations, options.arithmetic, options.threads);
+      }
       tally.seconds += seconds_since(start);
       tally.points += block.size();
       text.clear();
@@ -128,13 +146,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     out << "{\"points\": " << tally.points << ", \"inside\": " << count(inside::Location::inside)
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
-        << to_string(options.arithmetic) << "\""
+        << (options.float_rays ? "embree" : to_string(options.arithmetic)) << "\""
         << ", \"build_seconds\": " << build_seconds << ", \"read_seconds\": " << tally.read_seconds
         << ", \"seconds\": " << tally.seconds;
-    if (const auto cells = classifier->space_cells()) {
+    if (const auto cells = classifier ? classifier->space_cells() : std::nullopt) {
       out << ", \"space_cells\": {\"resolution\": [" << cells->resolution[0] << ", "
-          << cells->resolution[1] << ", " << cells->resolution[2] << "], \"cells\": " << cells->cells
-          << ", \"surface_cells\": " << cells->surface_cells
+          << cells->resolution[1] << ", " << cells->resolution[2]
+          << "], \"cells\": " << cells->cells << ", \"surface_cells\": " << cells->surface_cells
           << ", \"components\": " << cells->components << "}";
     }
     if (keep_labels) print_json_labels(kept, out);
@@ -156,9 +174,15 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
   sub->add_option("points", options.points, "points file, or - for standard input (default)");
   sub->add_option_function<std::string>(
          "--method",
-         [&options](const std::string& m) { options.arithmetic = *parse_arithmetic(m); },
-         "exact (default) or double (the same traversal in plain doubles: fast, not exact)")
-      ->check(CLI::IsMember({"exact", "double"}));
+         [&options](const std::string& m) {
+           options.float_rays = m == "embree";
+           if (!options.float_rays) options.arithmetic = *parse_arithmetic(m);
+         },
+         "exact (default), double (the same traversal in plain doubles: fast, not exact) or "
+         "embree (one float ray per point through Embree's own quads and triangles, hits "
+         "counted: what float ray-casting tools do; a baseline, wrong on grazing rays, never "
+         "boundary)")
+      ->check(CLI::IsMember({"exact", "double", "embree"}));
   sub->add_option("--threads", options.threads, "worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
   sub->add_option_function<std::string>(

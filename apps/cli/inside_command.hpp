@@ -25,6 +25,8 @@ struct InsideCommandOptions {
   /// nullopt: npy for a path ending in ".npy", text otherwise (io::default_point_format)
   std::optional<io::PointFormat> points_format;
   Arithmetic arithmetic = Arithmetic::exact;
+  /// The float ray baseline (inside/float_ray_parity.hpp) instead of the classifier.
+  bool float_rays = false;
   unsigned threads = 0;  ///< 0: one per hardware thread
   bool json = false;
   bool labels = false;  ///< with json: the labels too, in input order
@@ -32,7 +34,7 @@ struct InsideCommandOptions {
   bool split_polygons = false;
   bool allow_non_manifold = false;
   bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
-  bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
+  bool progress = false;    ///< a progress line on `err` (the binary sets it for a terminal)
 };
 
 /// Loads and checks the mesh, builds the search structure, then classifies `in`'s points

@@ -7,9 +7,9 @@
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
-#include <string>
 
 #include "exactgeo/inside/internal/candidates.hpp"
+#include "exactgeo/inside/internal/embree_error.hpp"
 #include "exactgeo/inside/internal/float_frame.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 
@@ -50,16 +50,6 @@ void record_intersect(const RTCIntersectFunctionNArguments* args) {
 
 void record_occluded(const RTCOccludedFunctionNArguments* args) {
   record(args->valid[0], args->context, args->primID);
-}
-
-[[noreturn]] void fail(RTCDevice device, const char* what) {
-  const RTCError code = device != nullptr ? rtcGetDeviceError(device) : RTC_ERROR_UNKNOWN;
-  std::string message = "Embree: ";
-  message.append(what)
-      .append(" (error ")
-      .append(std::to_string(static_cast<int>(code)))
-      .append(")");
-  throw std::runtime_error(message);
 }
 
 }  // namespace
@@ -114,14 +104,14 @@ EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh) : scene_(std::make_un
 
   Scene& s = *scene_;
   s.device = rtcNewDevice(nullptr);
-  if (s.device == nullptr) fail(nullptr, "cannot create a device");
+  if (s.device == nullptr) throw_embree_error(nullptr, "cannot create a device");
   s.scene = rtcNewScene(s.device);
-  if (s.scene == nullptr) fail(s.device, "cannot create a scene");
+  if (s.scene == nullptr) throw_embree_error(s.device, "cannot create a scene");
   rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(s.scene, RTC_BUILD_QUALITY_HIGH);
 
   RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_USER);
-  if (geometry == nullptr) fail(s.device, "cannot create user geometry");
+  if (geometry == nullptr) throw_embree_error(s.device, "cannot create user geometry");
   rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(s.boxes.size()));
   rtcSetGeometryUserData(geometry, s.boxes.data());
   rtcSetGeometryBoundsFunction(geometry, face_bounds, nullptr);
@@ -131,7 +121,8 @@ EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh) : scene_(std::make_un
   rtcAttachGeometry(s.scene, geometry);
   rtcReleaseGeometry(geometry);
   rtcCommitScene(s.scene);
-  if (rtcGetDeviceError(s.device) != RTC_ERROR_NONE) fail(s.device, "cannot build the scene");
+  const RTCError error = rtcGetDeviceError(s.device);
+  if (error != RTC_ERROR_NONE) throw_embree_error(error, "cannot build the scene");
 }
 
 EmbreeCandidates::~EmbreeCandidates() = default;

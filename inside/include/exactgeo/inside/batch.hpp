@@ -6,6 +6,7 @@
 #include <span>
 
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/float_ray_parity.hpp"
 
 namespace exactgeo::inside {
 
@@ -14,5 +15,10 @@ namespace exactgeo::inside {
 /// Rethrows the first exception a worker threw (only std::bad_alloc is possible).
 void classify_batch(const Classifier& classifier, std::span<const Point3> points,
                     std::span<Location> locations, Arithmetic arithmetic, unsigned threads = 0);
+
+/// The same with the inexact float ray-casting baseline (float_ray_parity.hpp), for
+/// measuring it against the exact classifier on the same points.
+void classify_batch(const FloatRayParity& baseline, std::span<const Point3> points,
+                    std::span<Location> locations, unsigned threads = 0);
 
 }  // namespace exactgeo::inside

@@ -26,7 +26,7 @@ inline void all_faces(const mesh::Mesh& mesh, std::vector<FaceIndex>& out) {
 
 /// Embree over user geometry: one primitive per face, bounded by the corners' box rounded
 /// outward to float and padded. The intersection callback only records the face and lets
-/// traversal go on. This class is the only place that includes Embree.
+/// traversal go on. Embree stays out of every public header.
 class EmbreeCandidates {
  public:
   /// Builds the BVH over `mesh` (which must outlive this object). Throws
