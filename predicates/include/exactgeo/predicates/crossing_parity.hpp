@@ -38,6 +38,7 @@
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
 #include "exactgeo/predicates/internal/ray_triangle_core.hpp"
 #include "exactgeo/predicates/kernel/offset.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
 #include "exactgeo/predicates/point.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
 
@@ -135,18 +136,23 @@ constexpr Crossing crossing_of(RayPatch parity) noexcept {
 }
 
 /// How the ray from corner(.)'s origin along `direction` (nonzero) crosses one face.
+/// Exact signs go behind one static det3 bound for the face (kernel::with_static_filter):
+/// every det3 sign of its ray test is on its corners and the direction, so one bound
+/// from their magnitudes serves them all. A policy that has a static bound already (the
+/// CCD's, per ray), and the others, are used as they are.
 template <class Signs, class CornerOffset>
 Crossing cross_face(const Signs& signs, const SurfaceFace& face, const PatchFrame& frame,
                     const CornerOffset& corner, const kernel::Offset& direction) noexcept {
   const auto& c = face.corners;
   if (face.is_triangle()) {
-    return crossing_of(internal::classify_ray_triangle_offsets(signs, corner(c[0]), corner(c[1]),
-                                                               corner(c[2]), direction)
-                           .kind);
+    const kernel::Offsets<3> x{corner(c[0]), corner(c[1]), corner(c[2])};
+    const auto face_signs = kernel::with_static_filter(signs, x, direction.rounded());
+    return crossing_of(
+        internal::classify_ray_triangle_offsets(face_signs, x[0], x[1], x[2], direction).kind);
   }
-  return crossing_of(internal::ray_patch_parity_offsets(
-      signs, frame, kernel::Offsets<4>{corner(c[0]), corner(c[1]), corner(c[2]), corner(c[3])},
-      direction));
+  const kernel::Offsets<4> x{corner(c[0]), corner(c[1]), corner(c[2]), corner(c[3])};
+  const auto face_signs = kernel::with_static_filter(signs, x, direction.rounded());
+  return crossing_of(internal::ray_patch_parity_offsets(face_signs, frame, x, direction));
 }
 
 /// What one ray says about a set of faces.
