@@ -61,7 +61,7 @@ class SpaceCells {
 
   static constexpr std::size_t kCellsPerFace = 16;
   static constexpr std::size_t kMinCells = std::size_t{1} << 15;  // 32^3
-  static constexpr std::size_t kMaxCells = std::size_t{1} << 23;  // 203^3
+  static constexpr std::size_t kMaxCells = std::size_t{1} << 21;  // 128^3
 
  private:
   /// One axis of the grid: its planes and the division that proposes a cell.
