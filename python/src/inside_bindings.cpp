@@ -52,9 +52,10 @@ py::array_t<bool> contains(const inside::Classifier& classifier, const py::objec
   return inside;
 }
 
-inside::Classifier build(const MeshObject& mesh, bool allow_non_manifold) {
+inside::Classifier build(const MeshObject& mesh, bool allow_non_manifold, bool space_cells) {
   inside::ClassifierOptions options;
   options.allow_non_manifold = allow_non_manifold;
+  options.space_cells = space_cells;
   mesh::Mesh copy = mesh.loaded.mesh;
   py::gil_scoped_release release;
   return inside::Classifier(std::move(copy), options);
@@ -74,9 +75,12 @@ A point is BOUNDARY when it lies exactly on a face, else INSIDE or OUTSIDE by th
 of a ray's crossings with the faces; every crossing is decided by exact predicates, so
 the labels are exact for every finite point.)doc")
       .def(py::init(&build), py::arg("mesh"), py::kw_only(), py::arg("allow_non_manifold") = false,
+           py::arg("space_cells") = true,
            R"doc(Checks the mesh and builds the search structure once (the GIL is released).
 
 allow_non_manifold: accept edges shared by 4, 6, ... faces (parity stays defined).
+space_cells: label the cells of a grid that no face reaches once, exactly, so that
+    points in them need no ray (method "exact" only; False: a ray for every point).
 
 Raises ValueError when the mesh does not bound a solid: open, non-manifold, degenerate
 faces, with the counts and the first few offending edges or faces.)doc")

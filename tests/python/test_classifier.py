@@ -44,6 +44,15 @@ def test_labels_match_the_command_line(cli, rng, path, method):
         assert np.all(labels[-mesh.vertex_count:] == exactgeo.BOUNDARY)
 
 
+@pytest.mark.parametrize("path", SOLIDS, ids=lambda p: p.name)
+def test_space_cells_keep_the_labels(rng, path):
+    mesh = exactgeo.load_mesh(path)
+    points = box_points(mesh, rng, 3000)
+    with_cells = exactgeo.Classifier(mesh).classify(points)
+    without = exactgeo.Classifier(mesh, space_cells=False).classify(points)
+    np.testing.assert_array_equal(with_cells, without)
+
+
 def test_known_solid_exactly(rng):
     classifier = cube_classifier()
     inner = rng.uniform(2.0**-60, 1 - 2.0**-53, size=(500, 3))
