@@ -45,19 +45,6 @@ SpaceCells::Axis::Axis(double lower, double upper, std::size_t cells)
   cells_per_unit_ = width > 0.0 && std::isfinite(per_unit) ? per_unit : 0.0;
 }
 
-std::size_t SpaceCells::Axis::cell_of(double x) const noexcept {
-  const std::size_t n = cells();
-  if (cells_per_unit_ > 0.0) {
-    // A proposal, confirmed exactly below (x - lower_ is finite: the width is).
-    const double g = (x - lower_) * cells_per_unit_;
-    const std::size_t k = g < static_cast<double>(n) ? static_cast<std::size_t>(g) : n - 1;
-    if (planes_[k] <= x && x <= planes_[k + 1]) return k;
-  }
-  // The last plane at or below x (planes_[0] = lower <= x), within the cells.
-  const auto above = std::upper_bound(planes_.begin(), planes_.end(), x);
-  return std::min(static_cast<std::size_t>(above - planes_.begin()) - 1, n - 1);
-}
-
 std::array<std::size_t, 2> SpaceCells::Axis::cells_meeting(double lo, double hi) const noexcept {
   const std::size_t n = cells();
   // First: the first cell whose upper plane is at or above lo.

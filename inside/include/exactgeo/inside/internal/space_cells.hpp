@@ -16,10 +16,11 @@
 // axis, with b_0 and b_n the box's own bounds; cell k is the closed interval
 // [b_k, b_k+1]. A face marks every cell whose closed box meets its corners' box, found by
 // comparing doubles with doubles (exact). A point finds a cell containing it the same way:
-// a division proposes an index, exact comparisons confirm it (or a binary search finds
+// a multiplication proposes an index, exact comparisons confirm it (or a binary search finds
 // it). A point on a plane between two cells lies in both closed cells, and either one's
 // label is right for it.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -71,7 +72,19 @@ class SpaceCells {
     Axis(double lower, double upper, std::size_t cells);
     std::size_t cells() const noexcept { return planes_.size() - 1; }
     /// A cell k with planes[k] <= x <= planes[k + 1]. Precondition: x in [lower, upper].
-    std::size_t cell_of(double x) const noexcept;
+    /// Inline: it runs three times for every point.
+    std::size_t cell_of(double x) const noexcept {
+      const std::size_t n = cells();
+      if (cells_per_unit_ > 0.0) {
+        // A proposal, confirmed exactly below (x - lower_ is finite: the width is).
+        const double g = (x - lower_) * cells_per_unit_;
+        const std::size_t k = g < static_cast<double>(n) ? static_cast<std::size_t>(g) : n - 1;
+        if (planes_[k] <= x && x <= planes_[k + 1]) return k;
+      }
+      // The last plane at or below x (planes_[0] = lower <= x), within the cells.
+      const auto above = std::upper_bound(planes_.begin(), planes_.end(), x);
+      return std::min(static_cast<std::size_t>(above - planes_.begin()) - 1, n - 1);
+    }
     /// The cells whose closed interval meets [lo, hi] (lo <= hi): first and last.
     std::array<std::size_t, 2> cells_meeting(double lo, double hi) const noexcept;
     /// A point of cell k's closed interval.
