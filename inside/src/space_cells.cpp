@@ -67,7 +67,17 @@ SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const Exact
   const auto cells = resolution_for(box, target);
   for (int i = 0; i < 3; ++i)
     axes_[i] = Axis(box.lower[i], box.upper[i], cells[i]);
-  labels_.assign(cells[0] * cells[1] * cells[2], Label::unknown);
+  labels_.assign(padded(0) * padded(1) * padded(2), Label::unknown);
+  for (std::size_t k = 0; k < padded(2); ++k) {
+    for (std::size_t j = 0; j < padded(1); ++j) {
+      for (std::size_t i = 0; i < padded(0); ++i) {
+        if (i == 0 || j == 0 || k == 0 || i + 1 == padded(0) || j + 1 == padded(1) ||
+            k + 1 == padded(2)) {
+          labels_[(k * padded(1) + j) * padded(0) + i] = Label::margin;
+        }
+      }
+    }
+  }
   mark_faces(mesh);
   label_components(label);
 }
@@ -96,41 +106,48 @@ void SpaceCells::mark_faces(const mesh::Mesh& mesh) {
 }
 
 void SpaceCells::label_components(const ExactLabel& label) {
-  const std::array<std::size_t, 3> n{axes_[0].cells(), axes_[1].cells(), axes_[2].cells()};
+  const std::size_t row = padded(0);
+  const std::size_t slice = padded(0) * padded(1);
   std::vector<std::uint32_t> stack;
   for (std::size_t seed = 0; seed < labels_.size(); ++seed) {
     if (labels_[seed] != Label::unknown) continue;
     // One exact label for the seed's whole component (a point of the seed cell lies on no
     // face; a boundary answer would be a broken invariant: the cells then stay "surface",
     // which only costs rays).
-    const std::size_t i = seed % n[0];
-    const std::size_t j = (seed / n[0]) % n[1];
-    const std::size_t k = seed / (n[0] * n[1]);
+    const std::size_t i = seed % row - 1;
+    const std::size_t j = seed / row % padded(1) - 1;
+    const std::size_t k = seed / slice - 1;
     const Location l = label({axes_[0].point_in(i), axes_[1].point_in(j), axes_[2].point_in(k)});
     const Label fill = l == Location::inside    ? Label::inside
                        : l == Location::outside ? Label::outside
                                                 : Label::surface;
     ++components_;
-    labels_[seed] = fill;
+    // A scanline fill: a popped cell grows into its whole unknown run along x; the runs
+    // beside it (four neighbouring rows) are pushed once per run. The margin is never
+    // unknown, so the fill stays in the grid without bounds checks.
     stack.assign(1, static_cast<std::uint32_t>(seed));
     while (!stack.empty()) {
-      const std::size_t c = stack.back();
+      const std::size_t start = stack.back();
       stack.pop_back();
-      const std::size_t ci = c % n[0];
-      const std::size_t cj = (c / n[0]) % n[1];
-      const std::size_t ck = c / (n[0] * n[1]);
-      const auto visit = [&](bool exists, std::size_t neighbour) {
-        if (exists && labels_[neighbour] == Label::unknown) {
-          labels_[neighbour] = fill;
-          stack.push_back(static_cast<std::uint32_t>(neighbour));
+      if (labels_[start] != Label::unknown) continue;
+      std::size_t first = start;
+      std::size_t last = start;
+      while (labels_[first - 1] == Label::unknown)
+        --first;
+      while (labels_[last + 1] == Label::unknown)
+        ++last;
+      std::fill(labels_.begin() + static_cast<std::ptrdiff_t>(first),
+                labels_.begin() + static_cast<std::ptrdiff_t>(last) + 1, fill);
+      for (const std::size_t offset : {row, slice}) {
+        for (const std::size_t beside : {first - offset, first + offset}) {
+          bool in_run = false;
+          for (std::size_t cell = beside; cell <= beside + (last - first); ++cell) {
+            const bool unknown = labels_[cell] == Label::unknown;
+            if (unknown && !in_run) stack.push_back(static_cast<std::uint32_t>(cell));
+            in_run = unknown;
+          }
         }
-      };
-      visit(ci > 0, c - 1);
-      visit(ci + 1 < n[0], c + 1);
-      visit(cj > 0, c - n[0]);
-      visit(cj + 1 < n[1], c + n[0]);
-      visit(ck > 0, c - n[0] * n[1]);
-      visit(ck + 1 < n[2], c + n[0] * n[1]);
+      }
     }
   }
   surface_cells_ =
@@ -145,6 +162,7 @@ std::optional<Location> SpaceCells::lookup(const Point3& p) const noexcept {
       return Location::outside;
     case Label::surface:
     case Label::unknown:
+    case Label::margin:
       break;
   }
   return std::nullopt;

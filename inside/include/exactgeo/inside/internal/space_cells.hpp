@@ -51,7 +51,9 @@ class SpaceCells {
   std::array<std::size_t, 3> resolution() const noexcept {
     return {axes_[0].cells(), axes_[1].cells(), axes_[2].cells()};
   }
-  std::size_t cells() const noexcept { return labels_.size(); }
+  std::size_t cells() const noexcept {
+    return axes_[0].cells() * axes_[1].cells() * axes_[2].cells();
+  }
   /// Cells some face reaches.
   std::size_t surface_cells() const noexcept { return surface_cells_; }
   /// Connected components of the other cells (one exact label each).
@@ -97,10 +99,14 @@ class SpaceCells {
     double cells_per_unit_ = 0.0;  // 0: no usable division, search only
   };
 
-  enum class Label : std::uint8_t { unknown, surface, inside, outside };
+  /// `margin`: a layer of cells around the grid, so that the flood fill needs no bounds
+  /// checks (and no divisions to find them); never looked up.
+  enum class Label : std::uint8_t { unknown, surface, inside, outside, margin };
 
+  /// Cells per axis with the margin.
+  std::size_t padded(int axis) const noexcept { return axes_[axis].cells() + 2; }
   std::size_t index(std::size_t i, std::size_t j, std::size_t k) const noexcept {
-    return (k * axes_[1].cells() + j) * axes_[0].cells() + i;
+    return ((k + 1) * padded(1) + (j + 1)) * padded(0) + (i + 1);
   }
   void mark_faces(const mesh::Mesh& mesh);
   void label_components(const ExactLabel& label);
