@@ -207,8 +207,10 @@ class StaticDet3Signs : public NamedSigns<StaticDet3Signs> {
         exact_.count_filter();
         return sign_of(value);
       }
+      return exact_sign<Formula, grouping>(in, parameter);
+    } else {
+      return exact_.sign<Formula, grouping>(in, parameter);
     }
-    return exact_.sign<Formula, grouping>(in, parameter);
   }
 
   template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
@@ -222,6 +224,13 @@ class StaticDet3Signs : public NamedSigns<StaticDet3Signs> {
   }
 
  private:
+  /// Where the static bound cannot certify: the per-sign filter and the exact stages, out
+  /// of line, so that the one compare above stays small enough to inline.
+  template <class Formula, Grouping grouping, std::size_t N>
+  [[gnu::noinline]] Sign exact_sign(const Offsets<N>& in, int parameter) const noexcept {
+    return exact_.sign<Formula, grouping>(in, parameter);
+  }
+
   ExactSigns exact_;
   Det3Bounds bounds_;
 };
