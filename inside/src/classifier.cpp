@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "exactgeo/inside/internal/candidates.hpp"
+#include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/inside/internal/space_cells.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/crossing_parity.hpp"
@@ -41,13 +42,6 @@ std::vector<PatchFrame> frames_of(const Signs& signs, const std::vector<SurfaceF
   for (std::size_t f = 0; f < faces.size(); ++f)
     frames[f] = frame_of(signs, faces[f], points);
   return frames;
-}
-
-bool strictly_outside(const mesh::Box& box, const Point3& p) noexcept {
-  for (int i = 0; i < 3; ++i) {
-    if (p[i] < box.lower[i] || p[i] > box.upper[i]) return true;
-  }
-  return false;
 }
 
 }  // namespace
@@ -158,7 +152,7 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
                               ClassifierScratch& scratch) const {
   // The solid lies in the convex hull of its surface, hence in the box.
   const State& s = *state_;
-  if (strictly_outside(s.box, point)) return Location::outside;
+  if (internal::strictly_outside(s.box, point)) return Location::outside;
   if (s.cells && arithmetic != Arithmetic::plain_double) {
     if (const auto known = s.cells->lookup(point)) return *known;
   }

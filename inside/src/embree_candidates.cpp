@@ -9,7 +9,8 @@
 #include <stdexcept>
 
 #include "exactgeo/inside/internal/candidates.hpp"
-#include "exactgeo/inside/internal/embree_error.hpp"
+#include "exactgeo/inside/internal/corner_boxes.hpp"
+#include "exactgeo/inside/internal/embree_scene.hpp"
 #include "exactgeo/inside/internal/float_frame.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 
@@ -57,72 +58,39 @@ void record_occluded(const RTCOccludedFunctionNArguments* args) {
 struct EmbreeCandidates::Scene {
   FloatFrame frame;
   std::vector<FloatBox> boxes;
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-
-  ~Scene() {
-    if (scene != nullptr) rtcReleaseScene(scene);
-    if (device != nullptr) rtcReleaseDevice(device);
-  }
+  EmbreeScene embree;
 };
 
 EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh) : scene_(std::make_unique<Scene>()) {
   if (mesh.faces.size() > std::numeric_limits<FaceIndex>::max()) {
     throw std::runtime_error("Embree: too many faces");
   }
-  Point3 lower{}, upper{};
-  lower.fill(std::numeric_limits<double>::infinity());
-  upper.fill(-std::numeric_limits<double>::infinity());
-  for (const mesh::Face& f : mesh.faces) {
-    for (std::size_t k = 0; k < f.size(); ++k) {
-      const Point3& p = mesh.vertices[f.corners[k]];
-      for (int i = 0; i < 3; ++i) {
-        lower[i] = std::min(lower[i], p[i]);
-        upper[i] = std::max(upper[i], p[i]);
-      }
-    }
-  }
-  if (mesh.faces.empty()) lower = upper = Point3{};
-  const FloatFrame frame(lower, upper);
+  const mesh::Box all = corner_box(mesh).value_or(mesh::Box{});
+  const FloatFrame frame(all.lower, all.upper);
   scene_->frame = frame;
 
   scene_->boxes.resize(mesh.faces.size());
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const mesh::Face& face = mesh.faces[f];
-    FloatBox& box = scene_->boxes[f];
+    const mesh::Box b = corner_box(mesh, mesh.faces[f]);
     for (int i = 0; i < 3; ++i) {
-      double lo = std::numeric_limits<double>::infinity();
-      double hi = -lo;
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        lo = std::min(lo, mesh.vertices[face.corners[k]][i]);
-        hi = std::max(hi, mesh.vertices[face.corners[k]][i]);
-      }
-      box.lower[i] = frame.lower_bound(i, lo);
-      box.upper[i] = frame.upper_bound(i, hi);
+      scene_->boxes[f].lower[i] = frame.lower_bound(i, b.lower[i]);
+      scene_->boxes[f].upper[i] = frame.upper_bound(i, b.upper[i]);
     }
   }
 
   Scene& s = *scene_;
-  s.device = rtcNewDevice(nullptr);
-  if (s.device == nullptr) throw_embree_error(nullptr, "cannot create a device");
-  s.scene = rtcNewScene(s.device);
-  if (s.scene == nullptr) throw_embree_error(s.device, "cannot create a scene");
-  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(s.scene, RTC_BUILD_QUALITY_HIGH);
-
-  RTCGeometry geometry = rtcNewGeometry(s.device, RTC_GEOMETRY_TYPE_USER);
-  if (geometry == nullptr) throw_embree_error(s.device, "cannot create user geometry");
+  rtcSetSceneBuildQuality(s.embree.scene(), RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geometry = rtcNewGeometry(s.embree.device(), RTC_GEOMETRY_TYPE_USER);
+  if (geometry == nullptr) throw_embree_error(s.embree.device(), "cannot create user geometry");
   rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(s.boxes.size()));
   rtcSetGeometryUserData(geometry, s.boxes.data());
   rtcSetGeometryBoundsFunction(geometry, face_bounds, nullptr);
   rtcSetGeometryIntersectFunction(geometry, record_intersect);
   rtcSetGeometryOccludedFunction(geometry, record_occluded);
   rtcCommitGeometry(geometry);
-  rtcAttachGeometry(s.scene, geometry);
+  rtcAttachGeometry(s.embree.scene(), geometry);
   rtcReleaseGeometry(geometry);
-  rtcCommitScene(s.scene);
-  const RTCError error = rtcGetDeviceError(s.device);
-  if (error != RTC_ERROR_NONE) throw_embree_error(error, "cannot build the scene");
+  s.embree.commit();
 }
 
 EmbreeCandidates::~EmbreeCandidates() = default;
@@ -151,7 +119,7 @@ void EmbreeCandidates::find(const Point3& origin, std::size_t direction_index,
   RecordingContext context{};
   rtcInitIntersectContext(&context.embree);
   context.faces = &out;
-  rtcOccluded1(scene_->scene, &context.embree, &ray);
+  rtcOccluded1(scene_->embree.scene(), &context.embree, &ray);
   // A primitive may be visited more than once; parity must count it once.
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

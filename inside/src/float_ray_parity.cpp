@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
-#include "exactgeo/inside/internal/embree_error.hpp"
+#include "exactgeo/inside/internal/corner_boxes.hpp"
+#include "exactgeo/inside/internal/embree_scene.hpp"
 #include "exactgeo/inside/internal/float_frame.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
@@ -32,20 +34,6 @@ void count_and_reject(const RTCFilterFunctionNArguments* args) {
   if (args->valid[0] == 0) return;
   ++reinterpret_cast<HitCountingContext*>(args->context)->hits;
   args->valid[0] = 0;
-}
-
-/// The box of the faces' corners; empty (lower > upper) for a mesh without faces.
-mesh::Box corner_box(const mesh::Mesh& mesh) {
-  mesh::Box box;
-  box.lower.fill(std::numeric_limits<double>::infinity());
-  box.upper.fill(-std::numeric_limits<double>::infinity());
-  for (const mesh::Face& f : mesh.faces)
-    for (std::size_t k = 0; k < f.size(); ++k)
-      for (int i = 0; i < 3; ++i) {
-        box.lower[i] = std::min(box.lower[i], mesh.vertices[f.corners[k]][i]);
-        box.upper[i] = std::max(box.upper[i], mesh.vertices[f.corners[k]][i]);
-      }
-  return box;
 }
 
 void require_valid_indices(const mesh::Mesh& mesh) {
@@ -101,42 +89,29 @@ void attach_faces(RTCDevice device, RTCScene scene, const mesh::Mesh& mesh,
 }  // namespace
 
 struct FloatRayParity::Scene {
-  mesh::Box box;
+  std::optional<mesh::Box> box;  ///< of the faces' corners; none without faces
   internal::FloatFrame frame;
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-
-  ~Scene() {
-    if (scene != nullptr) rtcReleaseScene(scene);
-    if (device != nullptr) rtcReleaseDevice(device);
-  }
+  internal::EmbreeScene embree;
 };
 
 FloatRayParity::FloatRayParity(const mesh::Mesh& mesh) : scene_(std::make_unique<Scene>()) {
   require_valid_indices(mesh);
   Scene& s = *scene_;
-  s.box = corner_box(mesh);
-  s.frame =
-      mesh.faces.empty() ? internal::FloatFrame{} : internal::FloatFrame(s.box.lower, s.box.upper);
+  s.box = internal::corner_box(mesh);
+  if (s.box) s.frame = internal::FloatFrame(s.box->lower, s.box->upper);
 
   std::vector<std::array<float, 3>> vertices(mesh.vertices.size());
   for (std::size_t v = 0; v < vertices.size(); ++v)
     for (int i = 0; i < 3; ++i)
       vertices[v][static_cast<std::size_t>(i)] = s.frame.origin(i, mesh.vertices[v][i]);
 
-  s.device = rtcNewDevice(nullptr);
-  if (s.device == nullptr) internal::throw_embree_error(nullptr, "cannot create a device");
-  if (rtcGetDeviceProperty(s.device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) == 0) {
+  const RTCDevice device = s.embree.device();
+  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) == 0) {
     throw std::runtime_error("Embree: this build has no filter functions");
   }
-  s.scene = rtcNewScene(s.device);
-  if (s.scene == nullptr) internal::throw_embree_error(s.device, "cannot create a scene");
-  rtcSetSceneFlags(s.scene, RTC_SCENE_FLAG_ROBUST);
-  attach_faces(s.device, s.scene, mesh, vertices, 4);
-  attach_faces(s.device, s.scene, mesh, vertices, 3);
-  rtcCommitScene(s.scene);
-  const RTCError error = rtcGetDeviceError(s.device);
-  if (error != RTC_ERROR_NONE) internal::throw_embree_error(error, "cannot build the scene");
+  attach_faces(device, s.embree.scene(), mesh, vertices, 4);
+  attach_faces(device, s.embree.scene(), mesh, vertices, 3);
+  s.embree.commit();
 }
 
 FloatRayParity::~FloatRayParity() = default;
@@ -145,8 +120,7 @@ FloatRayParity& FloatRayParity::operator=(FloatRayParity&&) noexcept = default;
 
 Location FloatRayParity::classify(const Point3& point) const {
   const Scene& s = *scene_;
-  for (int i = 0; i < 3; ++i)
-    if (point[i] < s.box.lower[i] || point[i] > s.box.upper[i]) return Location::outside;
+  if (!s.box || internal::strictly_outside(*s.box, point)) return Location::outside;
 
   // Exact in float: the first direction of the sequence is (1, 3/16, 9/256).
   const Vector3 d = ray_direction(0);
@@ -165,7 +139,7 @@ Location FloatRayParity::classify(const Point3& point) const {
 
   HitCountingContext context{};
   rtcInitIntersectContext(&context.embree);
-  rtcIntersect1(s.scene, &context.embree, &rayhit);
+  rtcIntersect1(s.embree.scene(), &context.embree, &rayhit);
   return context.hits % 2 == 1 ? Location::inside : Location::outside;
 }
 
