@@ -90,10 +90,6 @@ def near_points(vertices, faces, count, rng):
     return on_face + radius[:, None] * direction
 
 
-def labels_of(out):
-    return out.split()
-
-
 def run(args):
     import numpy as np
     import exactgeo
@@ -144,7 +140,7 @@ def run(args):
                     cgal_labels = os.path.join(tmp, "cgal.txt")
                     out, rss = run_measured([anchor, mesh_path, text, cgal_labels])
                     r = json.loads(out)
-                    labels = labels_of(open(cgal_labels).read())
+                    labels = open(cgal_labels).read().split()
                     differ = sum(a != b for a, b in zip(labels, exact_labels))
                     print(json.dumps({**base, "tool": "cgal", "method": "Side_of_triangle_mesh",
                                       "threads": 1, "build_seconds": r["build_seconds"],

@@ -1,5 +1,7 @@
 #include "exactgeo/inside/internal/space_cells.hpp"
 
+#include "exactgeo/inside/internal/corner_boxes.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -67,15 +69,12 @@ SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const Exact
   const auto cells = resolution_for(box, target);
   for (int i = 0; i < 3; ++i)
     axes_[i] = Axis(box.lower[i], box.upper[i], cells[i]);
-  labels_.assign(padded(0) * padded(1) * padded(2), Label::unknown);
-  for (std::size_t k = 0; k < padded(2); ++k) {
-    for (std::size_t j = 0; j < padded(1); ++j) {
-      for (std::size_t i = 0; i < padded(0); ++i) {
-        if (i == 0 || j == 0 || k == 0 || i + 1 == padded(0) || j + 1 == padded(1) ||
-            k + 1 == padded(2)) {
-          labels_[(k * padded(1) + j) * padded(0) + i] = Label::margin;
-        }
-      }
+  // Everything margin, then each row's inner cells unknown.
+  labels_.assign(padded(0) * padded(1) * padded(2), Label::margin);
+  for (std::size_t k = 0; k < cells[2]; ++k) {
+    for (std::size_t j = 0; j < cells[1]; ++j) {
+      const auto row = labels_.begin() + static_cast<std::ptrdiff_t>(index(0, j, k));
+      std::fill(row, row + static_cast<std::ptrdiff_t>(cells[0]), Label::unknown);
     }
   }
   mark_faces(mesh);
@@ -84,15 +83,7 @@ SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const Exact
 
 void SpaceCells::mark_faces(const mesh::Mesh& mesh) {
   for (const mesh::Face& face : mesh.faces) {
-    Point3 lo = mesh.vertices[face.corners[0]];
-    Point3 hi = lo;
-    for (std::size_t c = 1; c < face.size(); ++c) {
-      const Point3& v = mesh.vertices[face.corners[c]];
-      for (int i = 0; i < 3; ++i) {
-        lo[i] = std::min(lo[i], v[i]);
-        hi[i] = std::max(hi[i], v[i]);
-      }
-    }
+    const auto [lo, hi] = corner_box(mesh, face);
     const auto x = axes_[0].cells_meeting(lo[0], hi[0]);
     const auto y = axes_[1].cells_meeting(lo[1], hi[1]);
     const auto z = axes_[2].cells_meeting(lo[2], hi[2]);
@@ -166,13 +157,6 @@ std::optional<Location> SpaceCells::lookup(const Point3& p) const noexcept {
       break;
   }
   return std::nullopt;
-}
-
-std::size_t SpaceCells::memory_bytes() const noexcept {
-  std::size_t bytes = labels_.size() * sizeof(Label);
-  for (const Axis& a : axes_)
-    bytes += (a.cells() + 1) * sizeof(double);
-  return bytes;
 }
 
 }  // namespace exactgeo::inside::internal

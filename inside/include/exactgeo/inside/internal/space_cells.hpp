@@ -58,7 +58,6 @@ class SpaceCells {
   std::size_t surface_cells() const noexcept { return surface_cells_; }
   /// Connected components of the other cells (one exact label each).
   std::size_t components() const noexcept { return components_; }
-  std::size_t memory_bytes() const noexcept;
   /// The grid's planes on `axis`: b_0 (the box's lower bound) to b_n (its upper bound).
   const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
 
