@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -38,7 +39,7 @@ struct Tally {
   std::uint64_t false_positives = 0;
   std::uint64_t false_negatives = 0;
   double seconds = 0.0;
-  std::array<std::uint64_t, 6> stages{};
+  std::array<std::uint64_t, 8> stages{};
 
   void add(const Tally& o) {
     queries += o.queries;
@@ -58,7 +59,8 @@ struct Tally {
 
 constexpr std::array kStages{ccd::Stage::culled,      ccd::Stage::parity,
                              ccd::Stage::polynomials, ccd::Stage::subdivision,
-                             ccd::Stage::depth_limit, ccd::Stage::cubic};
+                             ccd::Stage::depth_limit, ccd::Stage::cubic,
+                             ccd::Stage::separation,  ccd::Stage::separation_roots};
 
 std::string_view type_name(QueryType t) {
   return t == QueryType::vertex_face ? "vf" : "ee";
@@ -199,7 +201,8 @@ void write_json_counts(std::ostream& out, const Tally& t, const RunResults& run,
 
 void write_json(std::ostream& out, const ccd::Options& options, const Tally& vf, const Tally& ee,
                 const Tally& all, const RunResults& run) {
-  out << "{\"method\": " << json_string(ccd::to_string(options.method)) << ", ";
+  out << "{\"method\": " << json_string(ccd::to_string(options.method))
+      << ", \"min_separation\": " << shortest(options.min_separation) << ", ";
   write_json_counts(out, all, run, std::nullopt);
   out << ", \"vertex_face\": {";
   write_json_counts(out, vf, run, QueryType::vertex_face);
@@ -210,7 +213,9 @@ void write_json(std::ostream& out, const ccd::Options& options, const Tally& vf,
 
 void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf, const Tally& ee,
                  const Tally& all) {
-  out << "method " << ccd::to_string(options.method) << "\n";
+  out << "method " << ccd::to_string(options.method);
+  if (options.min_separation > 0.0) out << ", min separation " << shortest(options.min_separation);
+  out << "\n";
   out << std::left << std::setw(12) << "type" << std::right << std::setw(10) << "queries"
       << std::setw(11) << "positives" << std::setw(11) << "truth_pos" << std::setw(11)
       << "false_pos" << std::setw(11) << "false_neg" << std::setw(12) << "ns/query"
@@ -233,6 +238,16 @@ void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf
     if (count) out << " " << ccd::to_string(kStages[s]) << " " << count;
   }
   out << "\n";
+}
+
+/// A separation as typed: a whole decimal or hexadecimal floating-point number, finite and
+/// >= 0 (so not "nan", "inf", "-1" or "1e999"), else nullopt.
+std::optional<double> parse_min_separation(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  if (!ccd::is_valid_min_separation(value)) return std::nullopt;
+  return value;
 }
 
 void write_per_query(const std::string& path, const RunResults& run) {
@@ -262,7 +277,25 @@ void write_per_query(const std::string& path, const RunResults& run) {
 
 }  // namespace
 
-ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err) {
+ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream& err) {
+  CcdCommandOptions options = given;
+  if (!options.min_separation.empty()) {
+    const auto delta = parse_min_separation(options.min_separation);
+    if (!delta) {
+      err << "exactgeo ccd: --min-separation must be a finite number >= 0, got '"
+          << options.min_separation << "'\n";
+      return ExitCode::input_error;
+    }
+    if (*delta > 0.0 && options.ccd.method != ccd::Method::exact) {
+      err << "exactgeo ccd: --min-separation needs --method exact\n";
+      return ExitCode::input_error;
+    }
+    if (*delta > 0.0 && options.ccd.time_of_impact_width) {
+      err << "exactgeo ccd: --toi-width with --min-separation > 0 is not supported yet\n";
+      return ExitCode::input_error;
+    }
+    options.ccd.min_separation = *delta;
+  }
   if (options.ccd.time_of_impact_width && options.ccd.method != ccd::Method::exact) {
     err << "exactgeo ccd: --toi-width needs --method exact (the other methods only say "
            "whether a query collides)\n";
@@ -274,6 +307,13 @@ ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostre
   } catch (const InputError& e) {
     err << "exactgeo ccd: " << e.what() << "\n";
     return ExitCode::input_error;
+  }
+  // The files' ground truth is about contact (δ = 0); at a larger δ it does not apply.
+  if (options.ccd.min_separation > 0.0) {
+    for (QueryFile& f : files) {
+      for (QueryRecord& r : f.records)
+        r.truth.reset();
+    }
   }
   std::size_t total = 0;
   for (const QueryFile& f : files)
@@ -350,6 +390,10 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
          "exact only: also bracket each colliding query's earliest contact to at most this "
          "width (--per-query writes the brackets)")
       ->check(CLI::Range(0x1p-60, 1.0));
+  sub->add_option("--min-separation", options.min_separation,
+                  "exact only: a collision is a time at which the primitives' Euclidean "
+                  "distance is at most this (default 0: contact); the files' ground truth, "
+                  "about contact, is then not compared");
   sub->add_option("--max-depth", options.ccd.max_depth,
                   "exact only: most halvings of the time step (default 64)")
       ->check(CLI::Range(0, 200));

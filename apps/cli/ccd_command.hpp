@@ -25,6 +25,7 @@ struct CcdCommandOptions {
   std::string truth;                   ///< a `*_mma_bool.json` for 6-column files, or empty
   std::string per_query;               ///< a CSV file to write, or empty
   int repeat = 1;                      ///< timing passes per file; the fastest is reported
+  std::string min_separation;          ///< --min-separation as given (checked by run_ccd)
   bool json = false;
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   std::vector<std::string> paths;

@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 #include "exactgeo/ccd/cubic.hpp"
 #include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/coplanarity.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
+#include "exactgeo/ccd/internal/min_separation.hpp"
 #include "exactgeo/ccd/internal/polynomial_decision.hpp"
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/root_search.hpp"
@@ -94,6 +97,37 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
                    {found->start, found->end});
 }
 
+Stage stage_of(internal::SeparationStage s) noexcept {
+  switch (s) {
+    case internal::SeparationStage::boxes:
+      return Stage::culled;
+    case internal::SeparationStage::bounded_doubles:
+      return Stage::separation;
+    case internal::SeparationStage::exact_roots:
+      break;
+  }
+  return Stage::separation_roots;
+}
+
+internal::SeparationVerdict within(const VertexFaceQuery& q, double delta) noexcept {
+  return internal::vertex_face_within(q, delta);
+}
+internal::SeparationVerdict within(const EdgeEdgeQuery& q, double delta) noexcept {
+  return internal::edge_edge_within(q, delta);
+}
+
+/// Minimum separation δ > 0 (internal/min_separation.hpp). A contact is within every δ,
+/// so the contact question goes first: its culls and parity settle most collisions.
+template <class Query>
+Result separation_ccd(const Query& query, const Options& options) noexcept {
+  Options contact = options;
+  contact.min_separation = 0.0;
+  const Result touch = exact_ccd(query, contact);
+  if (touch.collision) return touch;
+  const internal::SeparationVerdict verdict = within(query, options.min_separation);
+  return {verdict.within, stage_of(verdict.stage), 0, {}};
+}
+
 /// The 2012 method with exact signs, behind the exact method's cheap cull: the cull
 /// proves that there is no root at all, so the answer is the one parity alone gives, for
 /// far less on queries whose corner images are degenerate but far from the origin (on
@@ -111,6 +145,7 @@ Result dispatch_as_given(const Query& query, const Options& options, ParityFn pa
                          CubicFn cubic_fn) noexcept {
   switch (options.method) {
     case Method::exact:
+      if (options.min_separation > 0.0) return separation_ccd(query, options);
       return exact_ccd(query, options);
     case Method::parity:
       return parity_ccd(query);
@@ -126,14 +161,23 @@ Result dispatch_as_given(const Query& query, const Options& options, ParityFn pa
           {}};
 }
 
-/// The query at magnitude 1 (internal/unit_magnitude.hpp: why, and when), or nullopt when
-/// it is near 1 already or cannot be scaled exactly.
+/// The query at magnitude 1 (internal/unit_magnitude.hpp: why, and when), with the
+/// separation scaled alike (distances scale with the coordinates), or nullopt when it is
+/// near 1 already or cannot be scaled exactly.
 template <class Query>
-std::optional<Query> at_unit_magnitude(const Query& query) noexcept {
+std::optional<std::pair<Query, Options>> at_unit_magnitude(const Query& query,
+                                                           const Options& options) noexcept {
   static_assert(sizeof(Query) == 24 * sizeof(double), "a query is 8 points, nothing else");
-  auto x = std::bit_cast<std::array<double, 24>>(query);
+  std::array<double, 25> x;
+  const auto coordinates = std::bit_cast<std::array<double, 24>>(query);
+  std::copy(coordinates.begin(), coordinates.end(), x.begin());
+  x[24] = options.min_separation;
   if (!internal::scale_to_unit_magnitude(x)) return std::nullopt;
-  return std::bit_cast<Query>(x);
+  std::array<double, 24> scaled;
+  std::copy(x.begin(), x.begin() + 24, scaled.begin());
+  Options o = options;
+  o.min_separation = x[24];
+  return std::pair{std::bit_cast<Query>(scaled), o};
 }
 
 template <class Query, class ParityFn, class CubicFn>
@@ -145,14 +189,18 @@ Result dispatch(const Query& query, const Options& options, ParityFn parity_fn,
                                options.method == Method::parity ||
                                options.method == Method::rational;
   if (scale_invariant) {
-    if (const auto unit = at_unit_magnitude(query)) {
-      return dispatch_as_given(*unit, options, parity_fn, cubic_fn);
+    if (const auto unit = at_unit_magnitude(query, options)) {
+      return dispatch_as_given(unit->first, unit->second, parity_fn, cubic_fn);
     }
   }
   return dispatch_as_given(query, options, parity_fn, cubic_fn);
 }
 
 }  // namespace
+
+bool is_valid_min_separation(double delta) noexcept {
+  return std::isfinite(delta) && delta >= 0.0;
+}
 
 Result vertex_face_ccd(const VertexFaceQuery& query, const Options& options) noexcept {
   return dispatch(query, options, vertex_face_root_parity, vertex_face_cubic);
@@ -200,6 +248,10 @@ std::string_view to_string(Stage s) noexcept {
       return "cubic";
     case Stage::polynomials:
       return "polynomials";
+    case Stage::separation:
+      return "separation";
+    case Stage::separation_roots:
+      return "separation_roots";
   }
   return "?";
 }

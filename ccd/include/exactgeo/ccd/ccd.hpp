@@ -38,14 +38,17 @@ std::optional<Method> parse_method(std::string_view name) noexcept;
 
 /// What decided a query.
 enum class Stage : std::uint8_t {
-  culled,       ///< exact, parity: the corner images provably do not surround the origin
-  parity,       ///< the root parity count (for exact: a boundary root or odd parity)
-  subdivision,  ///< exact: even parity, decided by splitting time
-  depth_limit,  ///< exact: even parity, a piece left undecided at the depth limit (reported
-                ///< as a collision)
-  cubic,        ///< the cubic baseline
-  polynomials,  ///< exact: the coplanarity cubic and the slice's side quartics, split in
-                ///< time, proved a root or its absence (no parity computed)
+  culled,            ///< exact, parity: the corner images provably do not surround the origin
+  parity,            ///< the root parity count (for exact: a boundary root or odd parity)
+  subdivision,       ///< exact: even parity, decided by splitting time
+  depth_limit,       ///< exact: even parity, a piece left undecided at the depth limit (reported
+                     ///< as a collision)
+  cubic,             ///< the cubic baseline
+  polynomials,       ///< exact: the coplanarity cubic and the slice's side quartics, split in
+                     ///< time, proved a root or its absence (no parity computed)
+  separation,        ///< exact with min_separation > 0: the distance's polynomial conditions in
+                     ///< bounded doubles on pieces of the step
+  separation_roots,  ///< exact with min_separation > 0: exact roots of those conditions
 };
 
 std::string_view to_string(Stage s) noexcept;
@@ -63,6 +66,10 @@ struct Options {
   std::optional<double> time_of_impact_width;
   /// exact only: at most this many halvings of the step (a piece of width 2^-max_depth).
   int max_depth = 64;
+  /// exact only: the separation δ. A collision is a time of the closed step at which the
+  /// Euclidean distance between the two primitives is at most δ (0: they touch). δ^2 is
+  /// taken exactly. Precondition: finite and >= 0 (is_valid_min_separation).
+  double min_separation = 0.0;
   /// cubic only: the distance tolerance (cubic.hpp).
   double cubic_tolerance = 1e-6;
 };
@@ -75,6 +82,9 @@ struct Result {
   /// exact with time_of_impact_width set and a collision: the earliest root's interval.
   std::optional<TimeInterval> time_of_impact;
 };
+
+/// Whether `delta` may be Options::min_separation: finite and >= 0.
+bool is_valid_min_separation(double delta) noexcept;
 
 Result vertex_face_ccd(const VertexFaceQuery& query, const Options& options = {}) noexcept;
 Result edge_edge_ccd(const EdgeEdgeQuery& query, const Options& options = {}) noexcept;

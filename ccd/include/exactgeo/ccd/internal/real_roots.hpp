@@ -1,0 +1,77 @@
+#pragma once
+
+// Exact real roots of univariate polynomials with rational coefficients, and the signs of
+// other polynomials at them: the last resort of the minimum-separation decision.
+//
+//  * Roots in an open interval are isolated by bisection with Sturm counts on the
+//    squarefree part p / gcd(p, p'). A midpoint that is itself a root is kept exactly.
+//  * The sign of q at an isolated root r of the squarefree p is zero exactly when
+//    g = gcd(p, q) vanishes at r: g divides p, so its roots are among p's, and r is the
+//    only one in the isolating interval. Otherwise the interval is halved until q has no
+//    root in it, and q's sign anywhere in it is its sign at r.
+// Everything is exact (GMP rationals); nothing here is fast, and nothing needs to be.
+
+#include <gmpxx.h>
+
+#include <optional>
+#include <vector>
+
+#include "exactgeo/predicates/sign.hpp"
+
+namespace exactgeo::ccd::internal {
+
+/// sum_k c[k] t^k; no trailing zero coefficients (the zero polynomial has none).
+class RationalPolynomial {
+ public:
+  RationalPolynomial() = default;
+  explicit RationalPolynomial(std::vector<mpq_class> coefficients);
+
+  /// sum_k d[k] (1 - t)^(n - k) t^k, n = d.size() - 1 (the homogeneous Bernstein form).
+  static RationalPolynomial from_homogeneous(const std::vector<mpq_class>& d);
+
+  bool is_zero() const noexcept { return c_.empty(); }
+  int degree() const noexcept { return static_cast<int>(c_.size()) - 1; }
+  const std::vector<mpq_class>& coefficients() const noexcept { return c_; }
+
+  mpq_class operator()(const mpq_class& t) const;
+  Sign sign_at(const mpq_class& t) const;
+
+  RationalPolynomial derivative() const;
+  friend RationalPolynomial operator*(const RationalPolynomial& a, const RationalPolynomial& b);
+  /// The remainder of the division by a nonzero b.
+  friend RationalPolynomial operator%(const RationalPolynomial& a, const RationalPolynomial& b);
+  /// The quotient of the division by a nonzero b.
+  friend RationalPolynomial operator/(const RationalPolynomial& a, const RationalPolynomial& b);
+
+ private:
+  void trim();
+  std::vector<mpq_class> c_;
+};
+
+/// The monic greatest common divisor (zero when both are zero).
+RationalPolynomial gcd(RationalPolynomial a, RationalPolynomial b);
+
+/// p / gcd(p, p'): the same roots, each simple. p nonzero.
+RationalPolynomial squarefree_part(const RationalPolynomial& p);
+
+/// A real root of a squarefree polynomial: the rational `exact`, or the only root in the
+/// open interval (lo, hi), at whose ends the polynomial does not vanish.
+struct IsolatedRoot {
+  std::optional<mpq_class> exact;
+  mpq_class lo;
+  mpq_class hi;
+};
+
+/// The roots of the squarefree p in the open interval (lo, hi), in increasing order (none
+/// for a constant p).
+std::vector<IsolatedRoot> roots_between(const RationalPolynomial& p, const mpq_class& lo,
+                                        const mpq_class& hi);
+
+/// Halves the isolating interval of a root of the squarefree p, keeping the root (sets
+/// `exact` when a midpoint is the root).
+void halve_isolating_interval(const RationalPolynomial& p, IsolatedRoot& root);
+
+/// The sign of q at `root`, a root of the squarefree `p` (as roots_between returned it).
+Sign sign_at_root(const RationalPolynomial& q, const RationalPolynomial& p, IsolatedRoot root);
+
+}  // namespace exactgeo::ccd::internal

@@ -1,0 +1,271 @@
+#include "exactgeo/ccd/internal/min_separation.hpp"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "exactgeo/ccd/internal/bounded_double.hpp"
+#include "exactgeo/ccd/internal/real_roots.hpp"
+#include "exactgeo/ccd/internal/separation_features.hpp"
+
+namespace exactgeo::ccd::internal {
+
+namespace {
+
+/// The eight points of a query: four at t = 0, the same four at t = 1.
+using QueryPoints = std::array<Point3, 8>;
+
+template <class Query>
+QueryPoints points_of(const Query& q) noexcept {
+  static_assert(sizeof(Query) == sizeof(QueryPoints));
+  return std::bit_cast<QueryPoints>(q);
+}
+
+// ---- 1. Boxes -------------------------------------------------------------------------
+
+/// The first `split` of the four points form one primitive, the others the other.
+bool boxes_apart(const QueryPoints& x, int split, double delta) noexcept {
+  for (int axis = 0; axis < 3; ++axis) {
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (int k = 0; k < 8; ++k) {
+      const int side = k % 4 < split ? 0 : 1;
+      lo[side] = std::min(lo[side], x[k][axis]);
+      hi[side] = std::max(hi[side], x[k][axis]);
+    }
+    if (lo[1] - hi[0] > delta || lo[0] - hi[1] > delta) return true;
+  }
+  return false;
+}
+
+// ---- 2. Bounded doubles on pieces ---------------------------------------------------------
+
+/// x0 + t (x1 - x0), exact at the step's ends.
+BoundedDouble position(double x0, double x1, double t) noexcept {
+  if (t == 0.0) return x0;
+  if (t == 1.0) return x1;
+  return BoundedDouble(x0) + BoundedDouble(t) * (BoundedDouble(x1) - BoundedDouble(x0));
+}
+
+std::array<Moving<BoundedDouble>, 4> bounded_piece(const QueryPoints& x, double a,
+                                                   double b) noexcept {
+  std::array<Moving<BoundedDouble>, 4> m;
+  for (int k = 0; k < 4; ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      m[k][axis] = Homogeneous<BoundedDouble>::linear(position(x[k][axis], x[k + 4][axis], a),
+                                                      position(x[k][axis], x[k + 4][axis], b));
+    }
+  }
+  return m;
+}
+
+bool all_positive(const Homogeneous<BoundedDouble>& p) noexcept {
+  for (int k = 0; k <= p.degree; ++k) {
+    if (!p.c[k].certainly_positive()) return false;
+  }
+  return true;
+}
+
+bool all_negative(const Homogeneous<BoundedDouble>& p) noexcept {
+  for (int k = 0; k <= p.degree; ++k) {
+    if (!p.c[k].certainly_negative()) return false;
+  }
+  return true;
+}
+
+/// No time of the piece satisfies the feature's conditions.
+bool excluded(const Feature<BoundedDouble>& f) noexcept {
+  if (all_positive(f.gap)) return true;
+  for (int i = 0; i < f.inside_count; ++i) {
+    if (all_negative(f.inside[i])) return true;
+  }
+  return false;
+}
+
+/// Every condition certainly holds at the piece's start (end = false) or end.
+bool holds_at_end(const Feature<BoundedDouble>& f, bool end) noexcept {
+  auto at = [end](const Homogeneous<BoundedDouble>& p) { return end ? p.at_end() : p.at_start(); };
+  if (!at(f.gap).certainly_nonpositive() || !at(f.weight).certainly_positive()) return false;
+  for (int i = 0; i < f.inside_count; ++i) {
+    if (!at(f.inside[i]).certainly_nonnegative()) return false;
+  }
+  return true;
+}
+
+/// How far the bounded-double stage may split before the exact stage takes over.
+constexpr int kMaxFilterDepth = 24;
+constexpr int kMaxFilterPieces = 96;
+
+template <std::size_t N, class FeaturesOf>
+std::optional<bool> bounded_within(const QueryPoints& x, double delta,
+                                   FeaturesOf features_of) noexcept {
+  const BoundedDouble delta2 = BoundedDouble(delta) * BoundedDouble(delta);
+  struct Piece {
+    double a, b;
+    int depth;
+    std::uint32_t alive;  // features not yet excluded, one bit each
+  };
+  std::vector<Piece> stack{{0.0, 1.0, 0, (1u << N) - 1}};
+  int pieces_left = kMaxFilterPieces;
+  while (!stack.empty()) {
+    const Piece piece = stack.back();
+    stack.pop_back();
+    if (--pieces_left < 0) return std::nullopt;
+    const auto features = features_of(bounded_piece(x, piece.a, piece.b), delta2);
+    std::uint32_t alive = 0;
+    for (std::size_t i = 0; i < N; ++i) {
+      if (!(piece.alive >> i & 1u)) continue;
+      if (holds_at_end(features[i], false) || holds_at_end(features[i], true)) return true;
+      if (!excluded(features[i])) alive |= 1u << i;
+    }
+    if (alive == 0) continue;
+    if (piece.depth >= kMaxFilterDepth) return std::nullopt;
+    const double mid = 0.5 * (piece.a + piece.b);
+    stack.push_back({mid, piece.b, piece.depth + 1, alive});  // the left half goes first
+    stack.push_back({piece.a, mid, piece.depth + 1, alive});
+  }
+  return false;
+}
+
+// ---- 3. Exact roots ------------------------------------------------------------------------
+
+RationalPolynomial power_form(const Homogeneous<mpq_class>& p) {
+  return RationalPolynomial::from_homogeneous(
+      std::vector<mpq_class>(p.c.begin(), p.c.begin() + p.degree + 1));
+}
+
+/// A feature's polynomials in the power basis of the step's time.
+struct ExactFeature {
+  RationalPolynomial gap;
+  RationalPolynomial weight;
+  std::vector<RationalPolynomial> inside;
+
+  explicit ExactFeature(const Feature<mpq_class>& f)
+      : gap(power_form(f.gap)), weight(power_form(f.weight)) {
+    for (int i = 0; i < f.inside_count; ++i)
+      inside.push_back(power_form(f.inside[i]));
+  }
+};
+
+bool holds_at_end(const Feature<mpq_class>& f, bool end) {
+  auto sign = [end](const Homogeneous<mpq_class>& p) {
+    return sgn(end ? p.at_end() : p.at_start());
+  };
+  if (sign(f.gap) > 0 || sign(f.weight) <= 0) return false;
+  for (int i = 0; i < f.inside_count; ++i) {
+    if (sign(f.inside[i]) < 0) return false;
+  }
+  return true;
+}
+
+/// The weight and inside conditions at a root of the squarefree `p`.
+bool inside_at_root(const ExactFeature& f, const RationalPolynomial& p, const IsolatedRoot& root) {
+  if (sign_at_root(f.weight, p, root) != Sign::positive) return false;
+  for (const RationalPolynomial& q : f.inside) {
+    if (sign_at_root(q, p, root) == Sign::negative) return false;
+  }
+  return true;
+}
+
+bool inside_at(const ExactFeature& f, const mpq_class& t) {
+  if (f.weight.sign_at(t) != Sign::positive) return false;
+  for (const RationalPolynomial& q : f.inside) {
+    if (q.sign_at(t) == Sign::negative) return false;
+  }
+  return true;
+}
+
+/// A rational strictly between the roots r < s of the squarefree p (either may be an
+/// exact sentinel such as 0 or 1).
+mpq_class point_between(IsolatedRoot r, IsolatedRoot s, const RationalPolynomial& p) {
+  for (;;) {
+    const mpq_class upper = r.exact ? *r.exact : r.hi;
+    const mpq_class lower = s.exact ? *s.exact : s.lo;
+    if (upper < lower) return (upper + lower) / 2;
+    if (!r.exact) {
+      internal::halve_isolating_interval(p, r);
+    } else {
+      internal::halve_isolating_interval(p, s);
+    }
+  }
+}
+
+/// The feature's conditions, gap aside (it vanishes identically), at some time of (0, 1):
+/// tested at every root and between every two roots of the product of its polynomials.
+bool inside_somewhere(const ExactFeature& f) {
+  if (f.weight.is_zero()) return false;
+  RationalPolynomial product = f.weight;
+  for (const RationalPolynomial& q : f.inside) {
+    if (!q.is_zero()) product = product * q;
+  }
+  const RationalPolynomial p = squarefree_part(product);
+  std::vector<IsolatedRoot> samples{{mpq_class(0), 0, 0}};
+  for (const IsolatedRoot& r : roots_between(p, 0, 1))
+    samples.push_back(r);
+  samples.push_back({mpq_class(1), 1, 1});
+  for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+    if (i > 0 && inside_at_root(f, p, samples[i])) return true;
+    if (inside_at(f, point_between(samples[i], samples[i + 1], p))) return true;
+  }
+  return false;
+}
+
+template <class FeaturesOf>
+bool exactly_within(const QueryPoints& x, double delta, FeaturesOf features_of) {
+  std::array<Moving<mpq_class>, 4> m;
+  for (int k = 0; k < 4; ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      m[k][axis] = Homogeneous<mpq_class>::linear(mpq_class(x[k][axis]), mpq_class(x[k + 4][axis]));
+    }
+  }
+  const mpq_class delta2 = mpq_class(delta) * mpq_class(delta);
+  const auto features = features_of(m, delta2);
+  for (const Feature<mpq_class>& f : features) {
+    if (holds_at_end(f, false) || holds_at_end(f, true)) return true;
+  }
+  for (const Feature<mpq_class>& g : features) {
+    const ExactFeature f(g);
+    if (f.gap.is_zero()) {
+      if (inside_somewhere(f)) return true;
+      continue;
+    }
+    const RationalPolynomial p = squarefree_part(f.gap);
+    for (const IsolatedRoot& root : roots_between(p, 0, 1)) {
+      if (inside_at_root(f, p, root)) return true;
+    }
+  }
+  return false;
+}
+
+template <std::size_t N, class Query, class BoundedFeatures, class ExactFeatures>
+SeparationVerdict within(const Query& query, double delta, int split, BoundedFeatures bounded,
+                         ExactFeatures exact) noexcept {
+  const QueryPoints x = points_of(query);
+  if (boxes_apart(x, split, delta)) return {false, SeparationStage::boxes};
+  if (const auto verdict = bounded_within<N>(x, delta, bounded)) {
+    return {*verdict, SeparationStage::bounded_doubles};
+  }
+  return {exactly_within(x, delta, exact), SeparationStage::exact_roots};
+}
+
+}  // namespace
+
+SeparationVerdict vertex_face_within(const VertexFaceQuery& query, double delta) noexcept {
+  return within<7>(
+      query, delta, 1,
+      [](const auto& m, const BoundedDouble& d2) { return vertex_face_features(m, d2); },
+      [](const auto& m, const mpq_class& d2) { return vertex_face_features(m, d2); });
+}
+
+SeparationVerdict edge_edge_within(const EdgeEdgeQuery& query, double delta) noexcept {
+  return within<9>(
+      query, delta, 2,
+      [](const auto& m, const BoundedDouble& d2) { return edge_edge_features(m, d2); },
+      [](const auto& m, const mpq_class& d2) { return edge_edge_features(m, d2); });
+}
+
+}  // namespace exactgeo::ccd::internal
