@@ -240,16 +240,6 @@ void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf
   out << "\n";
 }
 
-/// A separation as typed: a whole decimal or hexadecimal floating-point number, finite and
-/// >= 0 (so not "nan", "inf", "-1" or "1e999"), else nullopt.
-std::optional<double> parse_min_separation(const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
-  if (!ccd::is_valid_min_separation(value)) return std::nullopt;
-  return value;
-}
-
 void write_per_query(const std::string& path, const RunResults& run) {
   const std::vector<QueryFile>& files = run.files;
   const auto& results = run.results;
@@ -276,6 +266,14 @@ void write_per_query(const std::string& path, const RunResults& run) {
 }
 
 }  // namespace
+
+std::optional<double> parse_min_separation(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
+  if (!ccd::is_valid_min_separation(value)) return std::nullopt;
+  return value;
+}
 
 ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream& err) {
   CcdCommandOptions options = given;

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cli/ccd_command.hpp"
 #include "cli/json.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
@@ -197,6 +198,21 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
   if (options.time_of_impact && options.method != ccd::Method::exact) {
     return fail("--toi needs --method exact (parity only says whether a pair collides)");
   }
+  double min_separation = 0.0;
+  if (!options.min_separation.empty()) {
+    const auto delta = parse_min_separation(options.min_separation);
+    if (!delta) {
+      return fail("--min-separation must be a finite number >= 0, got '" + options.min_separation +
+                  "'");
+    }
+    if (*delta > 0.0 && options.method != ccd::Method::exact) {
+      return fail("--min-separation needs --method exact");
+    }
+    if (*delta > 0.0 && options.time_of_impact) {
+      return fail("--toi with --min-separation > 0 is not supported yet");
+    }
+    min_separation = *delta;
+  }
 
   // No welding: it could merge vertices in one frame and not in the other.
   const LoadOptions load{.weld = false, .split_polygons = options.split_polygons};
@@ -229,6 +245,7 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
   ccd_options.method = options.method;
   if (options.time_of_impact) ccd_options.time_of_impact_width = options.time_of_impact_width;
   ccd_options.threads = options.threads;
+  ccd_options.min_separation = min_separation;
   ccd::MeshCcdResult result;
   try {
     result = mesh_ccd->step({positions0, positions1}, ccd_options);
@@ -284,6 +301,9 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
         options.time_of_impact_width = width;
       },
       "the widest time-of-impact interval (implies --toi; default 1e-6)");
+  sub->add_option("--min-separation", options.min_separation,
+                  "exact only: also report pairs whose Euclidean distance drops to at most "
+                  "this during the step (default 0: contact)");
   sub->add_option("--threads", options.threads, "worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
   sub->add_flag("--split-quads", options.split_quads,

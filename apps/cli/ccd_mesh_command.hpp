@@ -23,6 +23,7 @@ struct CcdMeshOptions {
   ccd::Method method = ccd::Method::exact;
   bool time_of_impact = false;         ///< also bracket the earliest time of impact
   double time_of_impact_width = 1e-6;  ///< the widest bracket accepted
+  std::string min_separation;          ///< --min-separation as given (checked by the run)
   unsigned threads = 0;                ///< 0: one per hardware thread
   bool split_polygons = false;
   /// Split each quad (c0, c1, c2, c3) along its diagonal c0-c2 into (c0, c1, c2) and

@@ -36,7 +36,8 @@ std::uint32_t motion_digest(const Vector3& d) noexcept {
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
-VertexSweep sweep_of(const MeshFrames& frames, double largest, unsigned threads) {
+VertexSweep sweep_of(const MeshFrames& frames, double largest, double min_separation,
+                     unsigned threads) {
   const std::size_t n = frames.positions_t0.size() / 3;
   VertexSweep s;
   s.box.resize(n);
@@ -46,9 +47,17 @@ VertexSweep sweep_of(const MeshFrames& frames, double largest, unsigned threads)
   const double* t0 = frames.positions_t0.data();
   const double* t1 = frames.positions_t1.data();
   const StepScale scale(largest);
+  // Each box grows by half the separation, so two boxes overlap when their primitives'
+  // unscaled boxes are within the separation. Scaling by a power of two (two products)
+  // and halving are exact unless they underflow, where each rounds by at most half a
+  // subnormal's ulp: two steps up restore a bound.
+  double margin = 0.0;
+  if (min_separation > 0.0) {
+    margin = std::nextafter(std::nextafter(scale(min_separation) * 0.5, INFINITY), INFINITY);
+  }
   parallel::for_each_block((n + kVertexBlock - 1) / kVertexBlock, threads, [&](std::size_t b) {
     for (std::size_t v = b * kVertexBlock; v < std::min(n, (b + 1) * kVertexBlock); ++v) {
-      s.box[v] = vertex_swept_box(t0, t1, v, scale);
+      s.box[v] = vertex_swept_box(t0, t1, v, scale, margin);
       Vector3& d = s.displacement[v];
       bool exact = true;
       for (std::size_t k = 0; k < 3; ++k) {
@@ -113,9 +122,9 @@ bool MeshBroadPhase::fit_trees(const VertexSweep& sweep, unsigned threads) {
 }
 
 MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, double largest,
-                                          unsigned threads) {
+                                          unsigned threads, double min_separation) {
   MeshCandidates result;
-  const VertexSweep sweep = sweep_of(frames, largest, threads);
+  const VertexSweep sweep = sweep_of(frames, largest, min_separation, threads);
   result.trees_rebuilt = fit_trees(sweep, threads);
 
   // Both walks split into node pairs, vertex-face first; each pair's candidates in its

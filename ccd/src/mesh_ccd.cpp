@@ -134,25 +134,34 @@ std::span<const Edge> MeshCcd::edges() const noexcept {
 
 namespace {
 
-/// A step's frames as the pairs see them, and their largest coordinate magnitude.
+/// A step's frames as the pairs see them, their largest coordinate magnitude, and the
+/// separation in their units.
 struct StepFrames {
   MeshFrames frames;
   double largest;
+  double min_separation;
 };
 
 /// `frames`, or both frames scaled to magnitude 1 by one power of two, stored in `unit`,
-/// when they are far from it and the scaling is exact (internal/unit_magnitude.hpp).
-StepFrames unit_magnitude_frames(const MeshFrames& frames, std::vector<double>& unit) {
+/// when they are far from it and the scaling is exact for them and for the separation
+/// (internal/unit_magnitude.hpp).
+StepFrames unit_magnitude_frames(const MeshFrames& frames, double min_separation,
+                                 std::vector<double>& unit) {
   const double largest = std::max(internal::largest_magnitude(frames.positions_t0),
                                   internal::largest_magnitude(frames.positions_t1));
-  if (internal::near_unit_magnitude(largest)) return {frames, largest};
+  const StepFrames as_given{frames, largest, min_separation};
+  if (internal::near_unit_magnitude(largest)) return as_given;
   unit.assign(frames.positions_t0.begin(), frames.positions_t0.end());
   unit.insert(unit.end(), frames.positions_t1.begin(), frames.positions_t1.end());
-  if (!internal::scale_to_unit_magnitude(unit, largest)) return {frames, largest};
-  const std::span<const double> both(unit);
+  if (!internal::scale_to_unit_magnitude(unit, largest)) return as_given;
   int exponent = 0;  // the scaling took largest to its significand in [1/2, 1), exactly
+  const double significand = std::frexp(largest, &exponent);
+  const double separation = internal::PowerOfTwo(-exponent)(min_separation);
+  if (internal::PowerOfTwo(exponent)(separation) != min_separation) return as_given;
+  const std::span<const double> both(unit);
   return {{both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())},
-          std::frexp(largest, &exponent)};
+          significand,
+          separation};
 }
 
 /// The mesh's earliest root, bracketed to `width`, from every colliding pair's coarse
@@ -193,16 +202,26 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   State& s = *state_;
   check_frame(frames.positions_t0, s.vertex_count, "positions_t0");
   check_frame(frames.positions_t1, s.vertex_count, "positions_t1");
+  if (!is_valid_min_separation(options.min_separation)) {
+    throw std::invalid_argument("MeshCcd::step: min_separation must be finite and >= 0");
+  }
+  if (options.min_separation > 0.0 && options.method != Method::exact) {
+    throw std::invalid_argument("MeshCcd::step: min_separation > 0 needs the exact method");
+  }
+  if (options.min_separation > 0.0 && options.time_of_impact_width) {
+    throw std::invalid_argument(
+        "MeshCcd::step: a time of impact with min_separation > 0 is not supported yet");
+  }
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
   // A step far from magnitude 1 is brought there once for all its pairs, both frames by
   // one power of two (internal/unit_magnitude.hpp); no answer or time changes.
   std::vector<double> unit;
-  const StepFrames step_frames = unit_magnitude_frames(frames, unit);
+  const StepFrames step_frames = unit_magnitude_frames(frames, options.min_separation, unit);
   const MeshFrames& scaled = step_frames.frames;
 
-  const internal::MeshCandidates candidates =
-      s.broad_phase.candidates(scaled, step_frames.largest, options.threads);
+  const internal::MeshCandidates candidates = s.broad_phase.candidates(
+      scaled, step_frames.largest, options.threads, step_frames.min_separation);
   result.trees_rebuilt = candidates.trees_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();
@@ -211,8 +230,9 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   // Narrow phase: blocks of candidates, vertex-face first, then edge-edge.
   const auto narrow_start = std::chrono::steady_clock::now();
   const std::optional<double> width = options.time_of_impact_width;
-  const Options pair_options{options.method,
-                             width ? std::optional(std::max(*width, kCoarseWidth)) : std::nullopt};
+  Options pair_options{options.method,
+                       width ? std::optional(std::max(*width, kCoarseWidth)) : std::nullopt};
+  pair_options.min_separation = step_frames.min_separation;
   const std::size_t vf_blocks = (candidates.vertex_face.size() + kNarrowBlock - 1) / kNarrowBlock;
   const std::size_t ee_blocks = (candidates.edge_edge.size() + kNarrowBlock - 1) / kNarrowBlock;
   std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);

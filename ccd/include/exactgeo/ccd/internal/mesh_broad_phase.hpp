@@ -41,7 +41,10 @@ class MeshBroadPhase {
   /// the steps before (through the trees), never on the thread count.
   /// Preconditions: frames hold 3 * vertex_count finite values each; `largest` is their
   /// largest magnitude (MeshCcd::step has it already; it sets the boxes' StepScale).
-  MeshCandidates candidates(const MeshFrames& frames, double largest, unsigned threads);
+  /// With min_separation > 0 (in the frames' units), also every pair whose swept boxes
+  /// are within it.
+  MeshCandidates candidates(const MeshFrames& frames, double largest, unsigned threads,
+                            double min_separation = 0.0);
 
  private:
   /// Refits the trees to this step's boxes, or builds them; returns whether it built.

@@ -50,6 +50,15 @@ inline float float_below(double x) noexcept {
   return static_cast<double>(f) > x ? next_float_down(f) : f;
 }
 
+/// One float below float_below(x): a lower bound for every value within half a double's
+/// ulp of x (x finite or infinite).
+inline float float_below_one_more(double x) noexcept {
+  if (!(x > -std::numeric_limits<double>::max())) return -std::numeric_limits<float>::infinity();
+  if (x > std::numeric_limits<double>::max()) return std::numeric_limits<float>::max();
+  const float f = float_below(x);
+  return f == -std::numeric_limits<float>::infinity() ? f : next_float_down(f);
+}
+
 /// The smallest float >= x (x finite).
 inline float float_above(double x) noexcept {
   return -float_below(-x);
@@ -102,17 +111,24 @@ inline double half_perimeter(const FloatBox& b) noexcept {
   return sum;
 }
 
-/// The swept box of vertex v in the step's scale; positions are 3 doubles per vertex at
-/// t0 and at t1. A primitive's swept box is the union of its corners' boxes: rounding
-/// outward after the scaling is monotone, so the union of the rounded corner boxes is
-/// exactly the rounded box of all corners.
+/// The swept box of vertex v in the step's scale, grown by `margin` (in that scale, >= 0)
+/// on every side; positions are 3 doubles per vertex at t0 and t1. A primitive's swept box
+/// is the union of its corners' boxes: rounding outward after the scaling is monotone, so
+/// the union of the rounded corner boxes is exactly the rounded box of all corners. With a
+/// margin, the bound +- margin is a rounded double first (off by at most half a double's
+/// ulp, far below a float's), so one more float step outward keeps the box conservative.
 inline FloatBox vertex_swept_box(const double* t0, const double* t1, std::size_t v,
-                                 const StepScale& scale) noexcept {
+                                 const StepScale& scale, double margin = 0.0) noexcept {
   FloatBox box{};
   for (std::size_t k = 0; k < 3; ++k) {
     const double a = t0[3 * v + k], b = t1[3 * v + k];
-    box.lo[k] = float_below(scale(std::min(a, b)));
-    box.hi[k] = float_above(scale(std::max(a, b)));
+    if (margin == 0.0) {
+      box.lo[k] = float_below(scale(std::min(a, b)));
+      box.hi[k] = float_above(scale(std::max(a, b)));
+    } else {
+      box.lo[k] = float_below_one_more(scale(std::min(a, b)) - margin);
+      box.hi[k] = -float_below_one_more(-(scale(std::max(a, b)) + margin));
+    }
   }
   return box;
 }
