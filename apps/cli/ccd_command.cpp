@@ -30,6 +30,14 @@ using io::InputError;
 
 namespace {
 
+/// Every stage, in the order of the reports. The tallies index by a stage's value: one
+/// slot for each.
+constexpr std::array kStages{ccd::Stage::culled,      ccd::Stage::parity,
+                             ccd::Stage::polynomials, ccd::Stage::subdivision,
+                             ccd::Stage::depth_limit, ccd::Stage::cubic,
+                             ccd::Stage::separation,  ccd::Stage::separation_roots};
+static_assert(static_cast<std::size_t>(ccd::Stage::separation_roots) + 1 == kStages.size());
+
 /// Counts for one query type, or for all.
 struct Tally {
   std::uint64_t queries = 0;
@@ -39,7 +47,7 @@ struct Tally {
   std::uint64_t false_positives = 0;
   std::uint64_t false_negatives = 0;
   double seconds = 0.0;
-  std::array<std::uint64_t, 8> stages{};
+  std::array<std::uint64_t, kStages.size()> stages{};
 
   void add(const Tally& o) {
     queries += o.queries;
@@ -56,11 +64,6 @@ struct Tally {
     return queries == 0 ? 0.0 : seconds * 1e9 / static_cast<double>(queries);
   }
 };
-
-constexpr std::array kStages{ccd::Stage::culled,      ccd::Stage::parity,
-                             ccd::Stage::polynomials, ccd::Stage::subdivision,
-                             ccd::Stage::depth_limit, ccd::Stage::cubic,
-                             ccd::Stage::separation,  ccd::Stage::separation_roots};
 
 std::string_view type_name(QueryType t) {
   return t == QueryType::vertex_face ? "vf" : "ee";
@@ -160,7 +163,7 @@ struct RunResults {
 /// the stage that decided each query.
 void write_query_times(std::ostream& out, const RunResults& run, std::optional<QueryType> type) {
   std::vector<double> all;
-  std::array<std::vector<double>, 6> by_stage;
+  std::array<std::vector<double>, kStages.size()> by_stage;
   for (std::size_t f = 0; f < run.files.size(); ++f) {
     if (type && run.files[f].type != *type) continue;
     for (std::size_t i = 0; i < run.query_ns[f].size(); ++i) {
@@ -277,11 +280,11 @@ std::optional<double> parse_min_separation(const std::string& text) {
 
 ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream& err) {
   CcdCommandOptions options = given;
-  if (!options.min_separation.empty()) {
-    const auto delta = parse_min_separation(options.min_separation);
+  if (options.min_separation) {
+    const auto delta = parse_min_separation(*options.min_separation);
     if (!delta) {
       err << "exactgeo ccd: --min-separation must be a finite number >= 0, got '"
-          << options.min_separation << "'\n";
+          << *options.min_separation << "'\n";
       return ExitCode::input_error;
     }
     if (*delta > 0.0 && options.ccd.method != ccd::Method::exact) {

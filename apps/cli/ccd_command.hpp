@@ -21,11 +21,11 @@ namespace exactgeo::cli {
 
 struct CcdCommandOptions {
   ccd::Options ccd;
-  std::optional<ccd::QueryType> type;  ///< overrides what the paths say
-  std::string truth;                   ///< a `*_mma_bool.json` for 6-column files, or empty
-  std::string per_query;               ///< a CSV file to write, or empty
-  int repeat = 1;                      ///< timing passes per file; the fastest is reported
-  std::string min_separation;          ///< --min-separation as given (checked by run_ccd)
+  std::optional<ccd::QueryType> type;         ///< overrides what the paths say
+  std::string truth;                          ///< a `*_mma_bool.json` for 6-column files, or empty
+  std::string per_query;                      ///< a CSV file to write, or empty
+  int repeat = 1;                             ///< timing passes per file; the fastest is reported
+  std::optional<std::string> min_separation;  ///< --min-separation as given (run_ccd checks it)
   bool json = false;
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   std::vector<std::string> paths;

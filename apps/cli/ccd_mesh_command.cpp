@@ -199,10 +199,10 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
     return fail("--toi needs --method exact (parity only says whether a pair collides)");
   }
   double min_separation = 0.0;
-  if (!options.min_separation.empty()) {
-    const auto delta = parse_min_separation(options.min_separation);
+  if (options.min_separation) {
+    const auto delta = parse_min_separation(*options.min_separation);
     if (!delta) {
-      return fail("--min-separation must be a finite number >= 0, got '" + options.min_separation +
+      return fail("--min-separation must be a finite number >= 0, got '" + *options.min_separation +
                   "'");
     }
     if (*delta > 0.0 && options.method != ccd::Method::exact) {

@@ -6,6 +6,7 @@
 // work).
 
 #include <iosfwd>
+#include <optional>
 #include <string>
 
 #include "cli/exit_code.hpp"
@@ -21,10 +22,10 @@ struct CcdMeshOptions {
   std::string frame0;  ///< positions at the start of the step
   std::string frame1;  ///< positions at the end; the same vertices and faces
   ccd::Method method = ccd::Method::exact;
-  bool time_of_impact = false;         ///< also bracket the earliest time of impact
-  double time_of_impact_width = 1e-6;  ///< the widest bracket accepted
-  std::string min_separation;          ///< --min-separation as given (checked by the run)
-  unsigned threads = 0;                ///< 0: one per hardware thread
+  bool time_of_impact = false;                ///< also bracket the earliest time of impact
+  double time_of_impact_width = 1e-6;         ///< the widest bracket accepted
+  std::optional<std::string> min_separation;  ///< --min-separation as given (the run checks it)
+  unsigned threads = 0;                       ///< 0: one per hardware thread
   bool split_polygons = false;
   /// Split each quad (c0, c1, c2, c3) along its diagonal c0-c2 into (c0, c1, c2) and
   /// (c0, c2, c3), in place in the face order, instead of refusing quads.

@@ -82,7 +82,7 @@ for key in '"method": "exact"' '"false_negatives": 0' '"false_positives": 0' '"v
     *) echo "FAIL: ccd --json lacks $key: $json"; failures=$((failures + 1)) ;;
   esac
 done
-queries=$(printf '%s' "$json" | sed -n 's/^{"method": "exact", "queries": \([0-9]*\).*/\1/p')
+queries=$(printf '%s' "$json" | sed -n 's/^{"method": "exact", "min_separation": 0, "queries": \([0-9]*\).*/\1/p')
 lines=$(($(wc -l <"$scratch/per-query.csv") - 1))
 if [ -z "$queries" ] || [ "$lines" != "$queries" ]; then
   echo "FAIL: --per-query wrote $lines lines for $queries queries"
@@ -108,6 +108,27 @@ if ! awk -F, 'NR > 1 && $4 == 1 { if ($8 == "" || $8 > $9 || $9 - $8 > 0.001) ba
               NR > 1 && $4 == 0 && ($8 != "" || $9 != "") { bad++ }
               END { exit (bad > 0 || n == 0) }' "$scratch/toi.csv"; then
   echo "FAIL: --toi-width brackets in --per-query"
+  failures=$((failures + 1))
+fi
+
+# --min-separation: a finite number >= 0, exact only, no --toi-width yet; the contact
+# truth is not compared at a larger separation, and every contact stays a collision.
+for bad in -1 nan inf -inf 1e999 abc ""; do
+  expect 2 "ccd min-separation '$bad'" "" ccd --min-separation "$bad" "$unit"
+done
+expect 2 "ccd min-separation with parity" "" ccd --method parity --min-separation 0.1 "$unit"
+expect 2 "ccd min-separation with toi" "" ccd --toi-width 0.01 --min-separation 0.1 "$unit"
+expect 0 "ccd min-separation zero" "" ccd --min-separation 0 "$unit"
+json=$("$exe" ccd --json --min-separation 0.01 "$unit")
+case "$json" in
+  *'"min_separation": 0.01'*'"false_negatives": null'*) ;;
+  *) echo "FAIL: ccd --min-separation --json: $json"; failures=$((failures + 1)) ;;
+esac
+positives() { sed -n 's/^{[^{]*"positives": \([0-9]*\).*/\1/p'; }  # of all queries
+contacts=$("$exe" ccd --json "$unit" | positives)
+within=$("$exe" ccd --json --min-separation 0.01 "$unit" | positives)
+if ! [ "$within" -ge "$contacts" ] 2>/dev/null; then
+  echo "FAIL: ccd --min-separation 0.01 finds $within positives, fewer than the $contacts contacts"
   failures=$((failures + 1))
 fi
 
@@ -330,6 +351,12 @@ expect 2 "ccd-mesh unknown method" "" ccd-mesh --method bogus "$vf0" "$vf1"
 expect 2 "ccd-mesh --toi with parity" "" ccd-mesh --toi --method parity "$vf0" "$vf1"
 expect 2 "ccd-mesh zero --toi-width" "" ccd-mesh --toi-width 0 "$vf0" "$vf1"
 expect 2 "ccd-mesh NaN --toi-width" "" ccd-mesh --toi-width nan "$vf0" "$vf1"
+for bad in -1 nan inf 1e999 abc ""; do
+  expect 2 "ccd-mesh min-separation '$bad'" "" ccd-mesh --min-separation "$bad" "$vf0" "$vf1"
+done
+expect 2 "ccd-mesh min-separation with toi" "" ccd-mesh --toi --min-separation 0.1 "$vf0" "$vf1"
+expect 2 "ccd-mesh min-separation with parity" "" ccd-mesh --method parity --min-separation 0.1 "$vf0" "$vf1"
+expect 0 "ccd-mesh min-separation" "" ccd-mesh --min-separation 0.1 "$vf0" "$vf1"
 expect 2 "ccd-mesh zero threads" "" ccd-mesh --threads 0 "$vf0" "$vf1"
 message=$("$exe" ccd-mesh "$vf0" "$scratch/quad.obj" 2>&1 >/dev/null)
 expect_in "ccd-mesh quads message" "$message" \
