@@ -97,35 +97,22 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
                    {found->start, found->end});
 }
 
-Stage stage_of(internal::SeparationStage s) noexcept {
-  switch (s) {
-    case internal::SeparationStage::boxes:
-      return Stage::culled;
-    case internal::SeparationStage::bounded_doubles:
-      return Stage::separation;
-    case internal::SeparationStage::exact_roots:
-      break;
-  }
-  return Stage::separation_roots;
-}
-
-internal::SeparationVerdict within(const VertexFaceQuery& q, double delta) noexcept {
-  return internal::vertex_face_within(q, delta);
-}
-internal::SeparationVerdict within(const EdgeEdgeQuery& q, double delta) noexcept {
-  return internal::edge_edge_within(q, delta);
-}
-
-/// Minimum separation δ > 0 (internal/min_separation.hpp). A contact is within every δ,
-/// so the contact question goes first: its culls and parity settle most collisions.
+/// Minimum separation δ > 0 (internal/min_separation.hpp): the cheap proofs of distance
+/// above δ, then the contact question (a contact is within every δ; its culls and parity
+/// settle most collisions), then the distance's own conditions.
 template <class Query>
 Result separation_ccd(const Query& query, const Options& options) noexcept {
+  const double delta = options.min_separation;
+  if (internal::separation_apart(query, delta)) return {false, Stage::culled, 0, {}};
   Options contact = options;
   contact.min_separation = 0.0;
   const Result touch = exact_ccd(query, contact);
   if (touch.collision) return touch;
-  const internal::SeparationVerdict verdict = within(query, options.min_separation);
-  return {verdict.within, stage_of(verdict.stage), 0, {}};
+  const internal::SeparationVerdict verdict = internal::separation_within(query, delta);
+  const Stage stage = verdict.stage == internal::SeparationStage::bounded_doubles
+                          ? Stage::separation
+                          : Stage::separation_roots;
+  return {verdict.within, stage, 0, {}};
 }
 
 /// The 2012 method with exact signs, behind the exact method's cheap cull: the cull

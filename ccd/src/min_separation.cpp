@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "exactgeo/ccd/internal/bounded_double.hpp"
+#include "exactgeo/ccd/internal/culling.hpp"
 #include "exactgeo/ccd/internal/real_roots.hpp"
 #include "exactgeo/ccd/internal/separation_features.hpp"
 
@@ -51,14 +52,24 @@ BoundedDouble position(double x0, double x1, double t) noexcept {
   return BoundedDouble(x0) + BoundedDouble(t) * (BoundedDouble(x1) - BoundedDouble(x0));
 }
 
-std::array<Moving<BoundedDouble>, 4> bounded_piece(const QueryPoints& x, double a,
-                                                   double b) noexcept {
+/// The four points at one time: coordinates as bounded doubles.
+using Positions = std::array<std::array<BoundedDouble, 3>, 4>;
+
+Positions positions_at(const QueryPoints& x, double t) noexcept {
+  Positions p;
+  for (int k = 0; k < 4; ++k) {
+    for (int axis = 0; axis < 3; ++axis)
+      p[k][axis] = position(x[k][axis], x[k + 4][axis], t);
+  }
+  return p;
+}
+
+/// The points over the piece between the two times, as linear polynomials.
+std::array<Moving<BoundedDouble>, 4> moving_between(const Positions& start, const Positions& end) {
   std::array<Moving<BoundedDouble>, 4> m;
   for (int k = 0; k < 4; ++k) {
-    for (int axis = 0; axis < 3; ++axis) {
-      m[k][axis] = Homogeneous<BoundedDouble>::linear(position(x[k][axis], x[k + 4][axis], a),
-                                                      position(x[k][axis], x[k + 4][axis], b));
-    }
+    for (int axis = 0; axis < 3; ++axis)
+      m[k][axis] = Homogeneous<BoundedDouble>::linear(start[k][axis], end[k][axis]);
   }
   return m;
 }
@@ -96,6 +107,61 @@ bool holds_at_end(const Feature<BoundedDouble>& f, bool end) noexcept {
   return true;
 }
 
+/// The differences between the two primitives' corners at one time: vertex - face corner
+/// (a triangle, H = 3) or a-end - b-end (a parallelogram, H = 4). Every difference of a
+/// point of one primitive and a point of the other at that time is a convex combination
+/// of them, and over a piece of the step a convex combination of both ends' images.
+template <std::size_t H>
+using Slice = std::array<std::array<BoundedDouble, 3>, H>;
+
+template <std::size_t H>
+Slice<H> slice_of(const Positions& p) noexcept {
+  Slice<H> c;
+  auto minus = [](const std::array<BoundedDouble, 3>& a, const std::array<BoundedDouble, 3>& b) {
+    return std::array<BoundedDouble, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  };
+  if constexpr (H == 3) {
+    for (std::size_t k = 0; k < 3; ++k)
+      c[k] = minus(p[0], p[k + 1]);
+  } else {
+    c = {minus(p[0], p[2]), minus(p[0], p[3]), minus(p[1], p[3]), minus(p[1], p[2])};
+  }
+  return c;
+}
+
+/// A plane through the origin with every corner image of both slices more than δ on its
+/// positive side: n.c > 0 and (n.c)^2 > δ^2 n.n, so the hull of the images, which holds
+/// every difference of points of the two primitives during the piece, keeps a distance
+/// above δ from the origin. The normal points to the start slice's point closest to the
+/// origin (in plain doubles: any normal will do, the certificate is the proof).
+template <std::size_t H>
+bool apart_by_plane(const Slice<H>& start, const Slice<H>& end,
+                    const BoundedDouble& delta2) noexcept {
+  std::array<Vector3, H> rounded;
+  for (std::size_t k = 0; k < H; ++k) {
+    for (int axis = 0; axis < 3; ++axis)
+      rounded[k][axis] = start[k][axis].value;
+  }
+  const Vector3 n = closest_direction(rounded);
+  if (!usable(n)) return false;
+  const BoundedDouble nn = BoundedDouble(n[0]) * BoundedDouble(n[0]) +
+                           BoundedDouble(n[1]) * BoundedDouble(n[1]) +
+                           BoundedDouble(n[2]) * BoundedDouble(n[2]);
+  const BoundedDouble margin = delta2 * nn;
+  auto beyond = [&](const std::array<BoundedDouble, 3>& c) {
+    const BoundedDouble side =
+        BoundedDouble(n[0]) * c[0] + BoundedDouble(n[1]) * c[1] + BoundedDouble(n[2]) * c[2];
+    return side.certainly_positive() && (side * side - margin).certainly_positive();
+  };
+  // The end slice first: the start slice lies on the normal's side by construction.
+  for (const Slice<H>* slice : {&end, &start}) {
+    for (const auto& c : *slice) {
+      if (!beyond(c)) return false;
+    }
+  }
+  return true;
+}
+
 /// How far the bounded-double stage may split before the exact stage takes over.
 constexpr int kMaxFilterDepth = 24;
 constexpr int kMaxFilterPieces = 96;
@@ -109,13 +175,18 @@ std::optional<bool> bounded_within(const QueryPoints& x, double delta,
     int depth;
     std::uint32_t alive;  // features not yet excluded, one bit each
   };
-  std::vector<Piece> stack{{0.0, 1.0, 0, (1u << N) - 1}};
+  // Depth first, the left half on top: at most one pending right half per level.
+  std::array<Piece, kMaxFilterDepth + 2> stack;
+  std::size_t size = 0;
+  stack[size++] = {0.0, 1.0, 0, (1u << N) - 1};
   int pieces_left = kMaxFilterPieces;
-  while (!stack.empty()) {
-    const Piece piece = stack.back();
-    stack.pop_back();
+  while (size > 0) {
+    const Piece piece = stack[--size];
     if (--pieces_left < 0) return std::nullopt;
-    const auto features = features_of(bounded_piece(x, piece.a, piece.b), delta2);
+    constexpr std::size_t H = N == 7 ? 3 : 4;
+    const Positions start = positions_at(x, piece.a), end = positions_at(x, piece.b);
+    if (apart_by_plane<H>(slice_of<H>(start), slice_of<H>(end), delta2)) continue;
+    const auto features = features_of(moving_between(start, end), delta2);
     std::uint32_t alive = 0;
     for (std::size_t i = 0; i < N; ++i) {
       if (!(piece.alive >> i & 1u)) continue;
@@ -125,8 +196,8 @@ std::optional<bool> bounded_within(const QueryPoints& x, double delta,
     if (alive == 0) continue;
     if (piece.depth >= kMaxFilterDepth) return std::nullopt;
     const double mid = 0.5 * (piece.a + piece.b);
-    stack.push_back({mid, piece.b, piece.depth + 1, alive});  // the left half goes first
-    stack.push_back({piece.a, mid, piece.depth + 1, alive});
+    stack[size++] = {mid, piece.b, piece.depth + 1, alive};
+    stack[size++] = {piece.a, mid, piece.depth + 1, alive};
   }
   return false;
 }
@@ -241,11 +312,20 @@ bool exactly_within(const QueryPoints& x, double delta, FeaturesOf features_of) 
   return false;
 }
 
+template <std::size_t N, class Query>
+bool apart(const Query& query, double delta, int split) noexcept {
+  const QueryPoints x = points_of(query);
+  if (boxes_apart(x, split, delta)) return true;
+  const BoundedDouble delta2 = BoundedDouble(delta) * BoundedDouble(delta);
+  constexpr std::size_t H = N == 7 ? 3 : 4;
+  return apart_by_plane<H>(slice_of<H>(positions_at(x, 0.0)), slice_of<H>(positions_at(x, 1.0)),
+                           delta2);
+}
+
 template <std::size_t N, class Query, class BoundedFeatures, class ExactFeatures>
-SeparationVerdict within(const Query& query, double delta, int split, BoundedFeatures bounded,
+SeparationVerdict within(const Query& query, double delta, BoundedFeatures bounded,
                          ExactFeatures exact) noexcept {
   const QueryPoints x = points_of(query);
-  if (boxes_apart(x, split, delta)) return {false, SeparationStage::boxes};
   if (const auto verdict = bounded_within<N>(x, delta, bounded)) {
     return {*verdict, SeparationStage::bounded_doubles};
   }
@@ -254,16 +334,24 @@ SeparationVerdict within(const Query& query, double delta, int split, BoundedFea
 
 }  // namespace
 
-SeparationVerdict vertex_face_within(const VertexFaceQuery& query, double delta) noexcept {
+bool separation_apart(const VertexFaceQuery& query, double delta) noexcept {
+  return apart<7>(query, delta, 1);
+}
+
+bool separation_apart(const EdgeEdgeQuery& query, double delta) noexcept {
+  return apart<9>(query, delta, 2);
+}
+
+SeparationVerdict separation_within(const VertexFaceQuery& query, double delta) noexcept {
   return within<7>(
-      query, delta, 1,
+      query, delta,
       [](const auto& m, const BoundedDouble& d2) { return vertex_face_features(m, d2); },
       [](const auto& m, const mpq_class& d2) { return vertex_face_features(m, d2); });
 }
 
-SeparationVerdict edge_edge_within(const EdgeEdgeQuery& query, double delta) noexcept {
+SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta) noexcept {
   return within<9>(
-      query, delta, 2,
+      query, delta,
       [](const auto& m, const BoundedDouble& d2) { return edge_edge_features(m, d2); },
       [](const auto& m, const mpq_class& d2) { return edge_edge_features(m, d2); });
 }

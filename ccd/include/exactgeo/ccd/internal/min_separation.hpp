@@ -2,18 +2,22 @@
 
 // Minimum separation: does the Euclidean distance between the two primitives drop to δ
 // (> 0) at some time of the closed step? The features and their polynomial conditions
-// are in separation_features.hpp. The decision runs, cheapest first:
+// are in separation_features.hpp. Cheapest first:
 //
-//  1. Boxes: on some axis the two primitives' boxes over the whole step (each the box of
-//     its corners at both times) are more than δ apart. A distance is at least its
-//     largest coordinate difference, so they never come within δ. Decided with one
-//     rounded subtraction per axis: fl is monotone, so fl(lo_b - hi_a) > δ (a double)
-//     proves lo_b - hi_a > δ.
-//  2. Bounded doubles (bounded_double.hpp) on pieces of the step, split at midpoints
-//     within a budget: a feature is excluded on a piece when its gap polynomial is
-//     certainly positive there, or one of its inside polynomials certainly negative; the
-//     query is "within" when at a piece's end some feature's conditions all certainly
-//     hold; "apart" when every feature is excluded on every piece.
+//  1. separation_apart: two cheap proofs that the distance stays above δ, before anything else.
+//     - Boxes: on some axis the two primitives' boxes over the whole step (each the box
+//       of its corners at both times) are more than δ apart. A distance is at least its
+//       largest coordinate difference. One rounded subtraction per axis decides: fl is
+//       monotone, so fl(lo_b - hi_a) > δ (a double) proves lo_b - hi_a > δ.
+//     - A plane: the differences between the primitives' corners at both times (their
+//       hull holds every difference of points of the two during the step) all lie more
+//       than δ beyond a plane through the origin, certified in bounded doubles.
+//  2. separation_within, bounded doubles (bounded_double.hpp) on pieces of the step, split at
+//     midpoints within a budget: a piece is apart by the plane above (on its own
+//     corners); a feature is excluded on a piece when its gap polynomial is certainly
+//     positive there, or one of its inside polynomials certainly negative; the query is
+//     "within" when at a piece's end some feature's conditions all certainly hold;
+//     "apart" when every piece is apart or has every feature excluded.
 //  3. Exact (real_roots.hpp, GMP). The set of times within δ is closed (the distance is
 //     continuous in time). If neither end of the step is in it but some time is, its
 //     earliest time t* has distance exactly δ, realized by the feature whose relative
@@ -24,7 +28,8 @@
 //     at every root, and between every two roots, of the product of its other
 //     polynomials, which between them keep their signs.
 //
-// δ = 0 is not decided here: it is the exact method's contact question.
+// δ = 0 is not decided here: it is the exact method's contact question, which runs
+// between stages 1 and 2 (a contact is within every δ).
 
 #include <cstdint>
 
@@ -32,15 +37,20 @@
 
 namespace exactgeo::ccd::internal {
 
-enum class SeparationStage : std::uint8_t { boxes, bounded_doubles, exact_roots };
+enum class SeparationStage : std::uint8_t { bounded_doubles, exact_roots };
 
 struct SeparationVerdict {
   bool within;
   SeparationStage stage;
 };
 
-/// delta: finite and > 0; coordinates finite.
-SeparationVerdict vertex_face_within(const VertexFaceQuery& query, double delta) noexcept;
-SeparationVerdict edge_edge_within(const EdgeEdgeQuery& query, double delta) noexcept;
+/// Stage 1: true proves that the distance stays above delta. delta: finite and > 0;
+/// coordinates finite (also for the functions below).
+bool separation_apart(const VertexFaceQuery& query, double delta) noexcept;
+bool separation_apart(const EdgeEdgeQuery& query, double delta) noexcept;
+
+/// Stages 2 and 3: the answer.
+SeparationVerdict separation_within(const VertexFaceQuery& query, double delta) noexcept;
+SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta) noexcept;
 
 }  // namespace exactgeo::ccd::internal

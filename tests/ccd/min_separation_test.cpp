@@ -1,0 +1,446 @@
+// Minimum-separation CCD (Options::min_separation > 0) against the exact oracle of
+// min_separation_oracle.hpp: random, near-tangent, exactly degenerate and extreme-magnitude
+// queries; the exact symmetries; monotonicity in δ; δ = 0 as the contact question; the
+// mesh broad phase against every pair.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ccd/min_separation_oracle.hpp"
+#include "ccd/query_transforms.hpp"
+#include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "support/generators.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::ccd {
+namespace {
+
+using testing::Rng;
+
+Result separated(const VertexFaceQuery& q, double delta) {
+  Options o;
+  o.min_separation = delta;
+  return vertex_face_ccd(q, o);
+}
+Result separated(const EdgeEdgeQuery& q, double delta) {
+  Options o;
+  o.min_separation = delta;
+  return edge_edge_ccd(q, o);
+}
+
+/// The smallest distance over the step, estimated in doubles from samples (only to place
+/// δ near it: the oracle decides).
+double sampled_distance(const VertexFaceQuery& q, int samples);
+double sampled_distance(const EdgeEdgeQuery& q, int samples);
+
+Point3 lerp(const Point3& a, const Point3& b, double t) {
+  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+double dist2(const Point3& a, const Point3& b) {
+  const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+  return x * x + y * y + z * z;
+}
+Point3 closest_on_segment(const Point3& p, const Point3& a, const Point3& b) {
+  const Point3 e{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+  if (ee == 0.0) return a;
+  const double s = std::clamp(
+      ((p[0] - a[0]) * e[0] + (p[1] - a[1]) * e[1] + (p[2] - a[2]) * e[2]) / ee, 0.0, 1.0);
+  return lerp(a, b, s);
+}
+double point_triangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c) {
+  // Minimum over a fine barycentric grid and the edges: an estimate is all that is needed.
+  double best =
+      std::min({dist2(p, closest_on_segment(p, a, b)), dist2(p, closest_on_segment(p, b, c)),
+                dist2(p, closest_on_segment(p, c, a))});
+  const Point3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const Point3 e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+  const Point3 n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                 e1[0] * e2[1] - e1[1] * e2[0]};
+  const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  if (nn > 0.0) {
+    const double h = ((p[0] - a[0]) * n[0] + (p[1] - a[1]) * n[1] + (p[2] - a[2]) * n[2]) / nn;
+    const Point3 q{p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2]};
+    // Inside when the three sub-triangle normals agree with n.
+    auto side = [&](const Point3& u, const Point3& v) {
+      const Point3 d{v[0] - u[0], v[1] - u[1], v[2] - u[2]};
+      const Point3 w{q[0] - u[0], q[1] - u[1], q[2] - u[2]};
+      const Point3 x{d[1] * w[2] - d[2] * w[1], d[2] * w[0] - d[0] * w[2],
+                     d[0] * w[1] - d[1] * w[0]};
+      return x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+    };
+    if (side(a, b) >= 0 && side(b, c) >= 0 && side(c, a) >= 0) best = std::min(best, dist2(p, q));
+  }
+  return std::sqrt(best);
+}
+double segment_segment(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1) {
+  double best = std::min(
+      {dist2(a0, closest_on_segment(a0, b0, b1)), dist2(a1, closest_on_segment(a1, b0, b1)),
+       dist2(b0, closest_on_segment(b0, a0, a1)), dist2(b1, closest_on_segment(b1, a0, a1))});
+  for (int i = 0; i <= 64; ++i) {  // points of a against segment b
+    const Point3 p = lerp(a0, a1, i / 64.0);
+    best = std::min(best, dist2(p, closest_on_segment(p, b0, b1)));
+  }
+  return std::sqrt(best);
+}
+double sampled_distance(const VertexFaceQuery& q, int samples) {
+  double best = INFINITY;
+  for (int i = 0; i <= samples; ++i) {
+    const double t = static_cast<double>(i) / samples;
+    best = std::min(best, point_triangle(lerp(q.v_t0, q.v_t1, t), lerp(q.f0_t0, q.f0_t1, t),
+                                         lerp(q.f1_t0, q.f1_t1, t), lerp(q.f2_t0, q.f2_t1, t)));
+  }
+  return best;
+}
+double sampled_distance(const EdgeEdgeQuery& q, int samples) {
+  double best = INFINITY;
+  for (int i = 0; i <= samples; ++i) {
+    const double t = static_cast<double>(i) / samples;
+    best =
+        std::min(best, segment_segment(lerp(q.ea0_t0, q.ea0_t1, t), lerp(q.ea1_t0, q.ea1_t1, t),
+                                       lerp(q.eb0_t0, q.eb0_t1, t), lerp(q.eb1_t0, q.eb1_t1, t)));
+  }
+  return best;
+}
+
+/// δ values near the query's smallest distance and around it, and some spread ones.
+template <class Query>
+std::vector<double> deltas_for(const Query& q, Rng& rng) {
+  const double d = sampled_distance(q, 64);
+  std::vector<double> out{std::nextafter(d, 0.0), d, std::nextafter(d, INFINITY)};
+  if (std::isfinite(d) && d > 0.0) {
+    out.push_back(d * testing::uniform(rng, 0.5, 1.0));
+    out.push_back(d * testing::uniform(rng, 1.0, 1.5));
+  }
+  out.push_back(testing::uniform(rng, 0.0, 1.0));
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [](double x) { return !(x > 0.0) || !std::isfinite(x); }),
+            out.end());
+  return out;
+}
+
+template <class Query>
+void expect_as_oracle(const Query& q, double delta, const std::string& what, int& within,
+                      int& apart) {
+  const bool expected = testing::min_separation_oracle(q, delta).within;
+  const Result r = separated(q, delta);
+  EXPECT_EQ(r.collision, expected)
+      << what << " delta " << delta << " decided by " << to_string(r.decided_by);
+  (expected ? within : apart) += 1;
+}
+
+template <class Query>
+void random_queries_agree(const char* stream, int count) {
+  Rng rng = testing::seeded_engine(stream);
+  int within = 0, apart = 0;
+  for (int i = 0; i < count; ++i) {
+    Query q = i % 2 ? random_dyadic_query<Query>(rng) : varied_query<Query>(rng, i / 2);
+    if (i % 7 == 3) {  // general position at magnitude 1
+      q = mapped(q, [&](const Point3&) { return testing::random_point(rng, 1.0); });
+    }
+    for (const double delta : deltas_for(q, rng))
+      expect_as_oracle(q, delta, std::string(stream) + " #" + std::to_string(i), within, apart);
+  }
+  // Both answers must be common, or the comparison says little.
+  EXPECT_GT(within, count / 4);
+  EXPECT_GT(apart, count / 4);
+}
+
+TEST(MinSeparation, RandomVertexFaceQueriesAgreeWithTheOracle) {
+  random_queries_agree<VertexFaceQuery>("min-separation-vf", 120);
+}
+
+TEST(MinSeparation, RandomEdgeEdgeQueriesAgreeWithTheOracle) {
+  random_queries_agree<EdgeEdgeQuery>("min-separation-ee", 120);
+}
+
+/// Distance exactly δ at one time (a tangent contact of the δ-sphere), and one ulp more
+/// or less: a vertex passing over a face, an edge, a corner; edges crossing at a height;
+/// parallel edges sliding past each other.
+TEST(MinSeparation, TangentCasesAndOneUlpEitherSide) {
+  Rng rng = testing::seeded_engine("min-separation-tangent");
+  int within = 0, apart = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double h = testing::uniform(rng, 0.01, 1.0);
+    const double y = testing::uniform(rng, 0.05, 0.4);
+    const std::array<double, 3> deltas{std::nextafter(h, 0.0), h, std::nextafter(h, 1.0)};
+    // Over the inside of the face z = 0 at height h.
+    const VertexFaceQuery face{{-1, y, h}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                               {1, y, h},  {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    // Beside the edge along x (y = 0), at distance h: passes at (x, -h, 0).
+    const VertexFaceQuery edge{{-1, -h, 0}, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                               {2, -h, 0},  {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    // Skew edges crossing at height h (closest pair interior to both).
+    const EdgeEdgeQuery skew{{-1, y, 0}, {1, y, 0}, {y, -1, h}, {y, 1, h},
+                             {-1, y, 0}, {1, y, 0}, {y, -1, h}, {y, 1, h}};
+    // Parallel edges at distance h, sliding past each other.
+    const EdgeEdgeQuery parallel{{-3, 0, 0}, {-2, 0, 0}, {0, 0, h}, {1, 0, h},
+                                 {2, 0, 0},  {3, 0, 0},  {0, 0, h}, {1, 0, h}};
+    for (const double d : deltas) {
+      expect_as_oracle(face, d, "face", within, apart);
+      expect_as_oracle(edge, d, "edge", within, apart);
+      expect_as_oracle(skew, d, "skew", within, apart);
+      expect_as_oracle(parallel, d, "parallel", within, apart);
+      // Exactly at δ = h the distance is attained: within; one ulp less: apart (the
+      // heights are exact doubles, so these are the exact answers).
+      if (d == h) {
+        EXPECT_TRUE(separated(face, d).collision);
+      }
+      if (d < h) {
+        EXPECT_FALSE(separated(skew, d).collision);
+      }
+    }
+  }
+  EXPECT_GT(within, 100);
+  EXPECT_GT(apart, 100);
+}
+
+/// Degenerate primitives and motions: zero-area triangles (collinear, one point), zero-
+/// length edges, parallel and collinear edges, identical motion (everything translates
+/// together: the answer is the distance at t = 0), and points that stay put.
+TEST(MinSeparation, DegenerateConfigurationsAgreeWithTheOracle) {
+  Rng rng = testing::seeded_engine("min-separation-degenerate");
+  int within = 0, apart = 0;
+  for (int i = 0; i < 100; ++i) {
+    VertexFaceQuery vf = random_dyadic_query<VertexFaceQuery>(rng);
+    EdgeEdgeQuery ee = random_dyadic_query<EdgeEdgeQuery>(rng);
+    switch (i % 5) {
+      case 0:  // collinear triangle and parallel edges, at both times
+        for (const bool end : {false, true}) {
+          Point3& a = end ? vf.f0_t1 : vf.f0_t0;
+          Point3& b = end ? vf.f1_t1 : vf.f1_t0;
+          Point3& c = end ? vf.f2_t1 : vf.f2_t0;
+          c = {2 * b[0] - a[0], 2 * b[1] - a[1], 2 * b[2] - a[2]};
+        }
+        ee.eb1_t0 = {ee.eb0_t0[0] + ee.ea1_t0[0] - ee.ea0_t0[0],
+                     ee.eb0_t0[1] + ee.ea1_t0[1] - ee.ea0_t0[1],
+                     ee.eb0_t0[2] + ee.ea1_t0[2] - ee.ea0_t0[2]};
+        ee.eb1_t1 = {ee.eb0_t1[0] + ee.ea1_t1[0] - ee.ea0_t1[0],
+                     ee.eb0_t1[1] + ee.ea1_t1[1] - ee.ea0_t1[1],
+                     ee.eb0_t1[2] + ee.ea1_t1[2] - ee.ea0_t1[2]};
+        break;
+      case 1:  // a triangle collapsed to a point, an edge of length zero
+        vf.f1_t0 = vf.f2_t0 = vf.f0_t0;
+        vf.f1_t1 = vf.f2_t1 = vf.f0_t1;
+        ee.ea1_t0 = ee.ea0_t0;
+        ee.ea1_t1 = ee.ea0_t1;
+        break;
+      case 2: {  // identical motion
+        const Point3 d = testing::integer_point(rng, 2);
+        auto move = [&](Point3& to, const Point3& from) {
+          to = {from[0] + d[0], from[1] + d[1], from[2] + d[2]};
+        };
+        move(vf.v_t1, vf.v_t0), move(vf.f0_t1, vf.f0_t0), move(vf.f1_t1, vf.f1_t0),
+            move(vf.f2_t1, vf.f2_t0);
+        move(ee.ea0_t1, ee.ea0_t0), move(ee.ea1_t1, ee.ea1_t0), move(ee.eb0_t1, ee.eb0_t0),
+            move(ee.eb1_t1, ee.eb1_t0);
+        break;
+      }
+      case 3:  // collinear edges (on one line at both times)
+        ee.eb0_t0 = {3 * ee.ea0_t0[0] - 2 * ee.ea1_t0[0], 3 * ee.ea0_t0[1] - 2 * ee.ea1_t0[1],
+                     3 * ee.ea0_t0[2] - 2 * ee.ea1_t0[2]};
+        ee.eb1_t0 = {2 * ee.ea1_t0[0] - ee.ea0_t0[0], 2 * ee.ea1_t0[1] - ee.ea0_t0[1],
+                     2 * ee.ea1_t0[2] - ee.ea0_t0[2]};
+        break;
+      default:  // nothing moves
+        vf.v_t1 = vf.v_t0, vf.f0_t1 = vf.f0_t0, vf.f1_t1 = vf.f1_t0, vf.f2_t1 = vf.f2_t0;
+        ee.ea0_t1 = ee.ea0_t0, ee.ea1_t1 = ee.ea1_t0, ee.eb0_t1 = ee.eb0_t0, ee.eb1_t1 = ee.eb1_t0;
+        break;
+    }
+    const std::string what = "degenerate kind " + std::to_string(i % 5) + " #" + std::to_string(i);
+    for (const double delta : deltas_for(vf, rng))
+      expect_as_oracle(vf, delta, what + " vf", within, apart);
+    for (const double delta : deltas_for(ee, rng))
+      expect_as_oracle(ee, delta, what + " ee", within, apart);
+  }
+  EXPECT_GT(within, 60);
+  EXPECT_GT(apart, 60);
+}
+
+/// Scaling the coordinates and δ by the same power of two changes no answer, toward
+/// both ends of the double range (where the filters' products would overflow or
+/// underflow without the library's own rescaling).
+TEST(MinSeparation, ExtremeMagnitudesScaleWithDelta) {
+  Rng rng = testing::seeded_engine("min-separation-magnitudes");
+  int checked = 0;
+  for (int i = 0; i < 300; ++i) {
+    const auto vf = random_dyadic_query<VertexFaceQuery>(rng);
+    const auto ee = random_dyadic_query<EdgeEdgeQuery>(rng);
+    const int k = (i % 2 ? 1 : -1) * testing::uniform_int(rng, 900, 1000);
+    for (const double delta : {0.25, 0.5, 0.75, 1.0, 1.5}) {
+      const double scaled_delta = std::ldexp(delta, k);
+      auto scale = [k](const Point3& x) { return testing::scaled(x, k); };
+      EXPECT_EQ(separated(mapped(vf, scale), scaled_delta).collision,
+                separated(vf, delta).collision)
+          << "vf #" << i << " 2^" << k << " delta " << delta;
+      EXPECT_EQ(separated(mapped(ee, scale), scaled_delta).collision,
+                separated(ee, delta).collision)
+          << "ee #" << i << " 2^" << k << " delta " << delta;
+      ++checked;
+    }
+    if (i % 10 == 0) {  // and against the oracle itself, at the extreme magnitude
+      int within = 0, apart = 0;
+      auto scale = [k](const Point3& x) { return testing::scaled(x, k); };
+      expect_as_oracle(mapped(vf, scale), std::ldexp(0.5, k), "scaled vf", within, apart);
+      expect_as_oracle(mapped(ee, scale), std::ldexp(0.5, k), "scaled ee", within, apart);
+    }
+  }
+  EXPECT_EQ(checked, 1500);
+}
+
+/// Axis permutation, mirroring, time reversal and the order of the vertices change no
+/// distance, so no answer; and a larger δ never loses a pair.
+TEST(MinSeparation, SymmetriesAndMonotonicity) {
+  Rng rng = testing::seeded_engine("min-separation-symmetries");
+  int monotone_checks = 0;
+  for (int i = 0; i < 300; ++i) {
+    const auto vf = varied_query<VertexFaceQuery>(rng, i);
+    const auto ee = varied_query<EdgeEdgeQuery>(rng, i);
+    const double delta = sampled_distance(vf, 16) * testing::uniform(rng, 0.9, 1.1);
+    const double delta_ee = sampled_distance(ee, 16) * testing::uniform(rng, 0.9, 1.1);
+    if (!(delta > 0.0) || !(delta_ee > 0.0) || !std::isfinite(delta) || !std::isfinite(delta_ee))
+      continue;
+    const bool a = separated(vf, delta).collision;
+    const bool b = separated(ee, delta_ee).collision;
+    auto permute = [](const Point3& p) { return Point3{p[2], p[0], p[1]}; };
+    auto mirror = [](const Point3& p) { return Point3{-p[0], p[1], p[2]}; };
+    EXPECT_EQ(separated(mapped(vf, permute), delta).collision, a) << "vf permuted #" << i;
+    EXPECT_EQ(separated(mapped(vf, mirror), delta).collision, a) << "vf mirrored #" << i;
+    EXPECT_EQ(separated(time_reversed(vf), delta).collision, a) << "vf reversed #" << i;
+    VertexFaceQuery rotated = vf;  // f0 f1 f2 -> f1 f2 f0
+    rotated.f0_t0 = vf.f1_t0, rotated.f1_t0 = vf.f2_t0, rotated.f2_t0 = vf.f0_t0;
+    rotated.f0_t1 = vf.f1_t1, rotated.f1_t1 = vf.f2_t1, rotated.f2_t1 = vf.f0_t1;
+    EXPECT_EQ(separated(rotated, delta).collision, a) << "vf rotated #" << i;
+    EXPECT_EQ(separated(mapped(ee, permute), delta_ee).collision, b) << "ee permuted #" << i;
+    EXPECT_EQ(separated(mapped(ee, mirror), delta_ee).collision, b) << "ee mirrored #" << i;
+    EXPECT_EQ(separated(time_reversed(ee), delta_ee).collision, b) << "ee reversed #" << i;
+    EdgeEdgeQuery swapped = ee;  // b first, and a's ends in the other order
+    swapped.ea0_t0 = ee.eb0_t0, swapped.ea1_t0 = ee.eb1_t0, swapped.eb0_t0 = ee.ea1_t0,
+    swapped.eb1_t0 = ee.ea0_t0;
+    swapped.ea0_t1 = ee.eb0_t1, swapped.ea1_t1 = ee.eb1_t1, swapped.eb0_t1 = ee.ea1_t1,
+    swapped.eb1_t1 = ee.ea0_t1;
+    EXPECT_EQ(separated(swapped, delta_ee).collision, b) << "ee swapped #" << i;
+    // Monotone: within at δ implies within at every larger δ; apart at δ implies apart
+    // at every smaller one (the contact answer included).
+    for (const double factor : {0.5, 0.999, 1.001, 2.0}) {
+      const bool at_vf = separated(vf, delta * factor).collision;
+      const bool at_ee = separated(ee, delta_ee * factor).collision;
+      if (factor > 1.0) {
+        EXPECT_TRUE(!a || at_vf) << "vf #" << i;
+        EXPECT_TRUE(!b || at_ee) << "ee #" << i;
+      } else {
+        EXPECT_TRUE(a || !at_vf) << "vf #" << i;
+        EXPECT_TRUE(b || !at_ee) << "ee #" << i;
+      }
+      ++monotone_checks;
+    }
+    const Result contact = vertex_face_ccd(vf);
+    EXPECT_TRUE(!contact.collision || a) << "vf #" << i << ": a contact is within every δ";
+  }
+  EXPECT_GT(monotone_checks, 600);
+}
+
+TEST(MinSeparation, ZeroIsTheContactQuestionAndTheValidityCheck) {
+  Rng rng = testing::seeded_engine("min-separation-zero");
+  for (int i = 0; i < 500; ++i) {
+    const auto q = varied_query<EdgeEdgeQuery>(rng, i);
+    Options zero;
+    zero.min_separation = 0.0;
+    const Result a = edge_edge_ccd(q);
+    const Result b = edge_edge_ccd(q, zero);
+    EXPECT_EQ(a.collision, b.collision);
+    EXPECT_EQ(a.decided_by, b.decided_by);
+  }
+  EXPECT_TRUE(is_valid_min_separation(0.0));
+  EXPECT_TRUE(is_valid_min_separation(std::numeric_limits<double>::denorm_min()));
+  EXPECT_TRUE(is_valid_min_separation(std::numeric_limits<double>::max()));
+  EXPECT_FALSE(is_valid_min_separation(-0.5));
+  EXPECT_FALSE(is_valid_min_separation(std::nan("")));
+  EXPECT_FALSE(is_valid_min_separation(INFINITY));
+}
+
+/// The mesh broad phase grows its boxes by δ and drops no pair: a random soup of small
+/// triangles under random motion, against every non-adjacent pair decided one by one.
+TEST(MinSeparation, MeshStepFindsEveryPairWithinDelta) {
+  Rng rng = testing::seeded_engine("min-separation-mesh");
+  for (int round = 0; round < 4; ++round) {
+    const int triangles = 40;
+    std::vector<Triangle> faces;
+    std::vector<double> t0, t1;
+    for (int f = 0; f < triangles; ++f) {
+      const Point3 c = testing::random_point(rng, 1.0);
+      const Point3 m = testing::random_point(rng, 0.3);
+      for (int k = 0; k < 3; ++k) {
+        const Point3 p = testing::random_point(rng, 0.15);
+        for (int axis = 0; axis < 3; ++axis) {
+          t0.push_back(c[axis] + p[axis]);
+          t1.push_back(c[axis] + p[axis] + m[axis]);
+        }
+      }
+      const auto v = static_cast<VertexIndex>(3 * f);
+      faces.push_back({v, v + 1, v + 2});
+    }
+    const int k = round % 2 ? 0 : (round == 0 ? 1000 : -1000);  // and at 2^±1000
+    for (double& x : t0)
+      x = std::ldexp(x, k);
+    for (double& x : t1)
+      x = std::ldexp(x, k);
+    const double delta = std::ldexp(0.05 * (round + 1), k);
+    MeshCcd mesh(t0.size() / 3, faces);
+    MeshCcdOptions options;
+    options.min_separation = delta;
+    const MeshCcdResult r = mesh.step({t0, t1}, options);
+    // Every pair, one by one.
+    std::vector<VertexFacePair> vf;
+    for (VertexIndex v = 0; v < t0.size() / 3; ++v) {
+      for (FaceIndex f = 0; f < faces.size(); ++f) {
+        const Triangle& t = faces[f];
+        if (v == t[0] || v == t[1] || v == t[2]) continue;
+        auto at = [&](const std::vector<double>& x, VertexIndex i) {
+          return Point3{x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+        };
+        const VertexFaceQuery q{at(t0, v), at(t0, t[0]), at(t0, t[1]), at(t0, t[2]),
+                                at(t1, v), at(t1, t[0]), at(t1, t[1]), at(t1, t[2])};
+        if (separated(q, delta).collision) vf.push_back({v, f});
+      }
+    }
+    std::vector<EdgeEdgePair> ee;
+    const std::span<const Edge> edges = mesh.edges();
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      for (std::size_t j = i + 1; j < edges.size(); ++j) {
+        const Edge& a = edges[i];
+        const Edge& b = edges[j];
+        if (a[0] == b[0] || a[0] == b[1] || a[1] == b[0] || a[1] == b[1]) continue;
+        auto at = [&](const std::vector<double>& x, VertexIndex v) {
+          return Point3{x[3 * v], x[3 * v + 1], x[3 * v + 2]};
+        };
+        const EdgeEdgeQuery q{at(t0, a[0]), at(t0, a[1]), at(t0, b[0]), at(t0, b[1]),
+                              at(t1, a[0]), at(t1, a[1]), at(t1, b[0]), at(t1, b[1])};
+        if (separated(q, delta).collision) ee.push_back({a, b});
+      }
+    }
+    std::sort(ee.begin(), ee.end());
+    EXPECT_EQ(r.vertex_face, vf) << "round " << round;
+    EXPECT_EQ(r.edge_edge, ee) << "round " << round;
+    EXPECT_GT(vf.size(), 0u) << "round " << round << ": a test that finds nothing says little";
+  }
+  MeshCcd mesh(3, std::vector<Triangle>{{0, 1, 2}});
+  const std::vector<double> x{0, 0, 0, 1, 0, 0, 0, 1, 0};
+  MeshCcdOptions bad;
+  bad.min_separation = -1.0;
+  EXPECT_THROW(mesh.step({x, x}, bad), std::invalid_argument);
+  bad.min_separation = std::nan("");
+  EXPECT_THROW(mesh.step({x, x}, bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace exactgeo::ccd
