@@ -291,10 +291,6 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
       err << "exactgeo ccd: --min-separation needs --method exact\n";
       return ExitCode::input_error;
     }
-    if (*delta > 0.0 && options.ccd.time_of_impact_width) {
-      err << "exactgeo ccd: --toi-width with --min-separation > 0 is not supported yet\n";
-      return ExitCode::input_error;
-    }
     options.ccd.min_separation = *delta;
   }
   if (options.ccd.time_of_impact_width && options.ccd.method != ccd::Method::exact) {

@@ -208,9 +208,6 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
     if (*delta > 0.0 && options.method != ccd::Method::exact) {
       return fail("--min-separation needs --method exact");
     }
-    if (*delta > 0.0 && options.time_of_impact) {
-      return fail("--toi with --min-separation > 0 is not supported yet");
-    }
     min_separation = *delta;
   }
 

@@ -98,21 +98,25 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
 }
 
 /// Minimum separation δ > 0 (internal/min_separation.hpp): the cheap proofs of distance
-/// above δ, then the contact question (a contact is within every δ; its culls and parity
-/// settle most collisions), then the distance's own conditions.
+/// above δ; for a yes/no answer the contact question next (a contact is within every δ;
+/// its culls and parity settle most collisions); then the distance's own conditions,
+/// which also bracket the earliest time within δ.
 template <class Query>
 Result separation_ccd(const Query& query, const Options& options) noexcept {
   const double delta = options.min_separation;
   if (internal::separation_apart(query, delta)) return {false, Stage::culled, 0, {}};
-  Options contact = options;
-  contact.min_separation = 0.0;
-  const Result touch = exact_ccd(query, contact);
-  if (touch.collision) return touch;
-  const internal::SeparationVerdict verdict = internal::separation_within(query, delta);
+  const std::optional<double> width = options.time_of_impact_width;
+  if (!width) {
+    Options contact = options;
+    contact.min_separation = 0.0;
+    const Result touch = exact_ccd(query, contact);
+    if (touch.collision) return touch;
+  }
+  const internal::SeparationVerdict verdict = internal::separation_within(query, delta, width);
   const Stage stage = verdict.stage == internal::SeparationStage::bounded_doubles
                           ? Stage::separation
                           : Stage::separation_roots;
-  return {verdict.within, stage, 0, {}};
+  return {verdict.within, stage, 0, width && verdict.within ? verdict.earliest : std::nullopt};
 }
 
 /// The 2012 method with exact signs, behind the exact method's cheap cull: the cull

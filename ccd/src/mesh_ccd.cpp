@@ -169,8 +169,9 @@ StepFrames unit_magnitude_frames(const MeshFrames& frames, double min_separation
 /// by E, the smallest bracket end, so a pair whose bracket starts after E has no root
 /// before E and cannot hold the earliest one: only the others are refined.
 TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeInterval> brackets,
-                             const MeshFrames& frames, std::span<const Triangle> faces,
-                             double width, const MeshCcdOptions& options) {
+                             double min_separation, const MeshFrames& frames,
+                             std::span<const Triangle> faces, double width,
+                             const MeshCcdOptions& options) {
   std::optional<TimeInterval> coarse;
   for (const TimeInterval& t : brackets)
     keep_earliest(coarse, t);
@@ -179,7 +180,8 @@ TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeIn
   for (std::size_t i = 0; i < brackets.size(); ++i) {
     if (brackets[i].start <= coarse->end) open.push_back(i);
   }
-  const Options fine{options.method, width};
+  Options fine{options.method, width};
+  fine.min_separation = min_separation;
   std::vector<TimeInterval> refined(open.size());
   parallel::for_each_block(open.size(), options.threads, [&](std::size_t k) {
     const std::size_t i = open[k];
@@ -207,10 +209,6 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   }
   if (options.min_separation > 0.0 && options.method != Method::exact) {
     throw std::invalid_argument("MeshCcd::step: min_separation > 0 needs the exact method");
-  }
-  if (options.min_separation > 0.0 && options.time_of_impact_width) {
-    throw std::invalid_argument(
-        "MeshCcd::step: a time of impact with min_separation > 0 is not supported yet");
   }
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
@@ -272,7 +270,8 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
     brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
   }
   if (!brackets.empty()) {
-    result.time_of_impact = refine_earliest(result, brackets, scaled, s.faces, *width, options);
+    result.time_of_impact = refine_earliest(result, brackets, step_frames.min_separation, scaled,
+                                            s.faces, *width, options);
   }
   std::sort(result.vertex_face.begin(), result.vertex_face.end());
   std::sort(result.edge_edge.begin(), result.edge_edge.end());

@@ -166,16 +166,26 @@ bool apart_by_plane(const Slice<H>& start, const Slice<H>& end,
 constexpr int kMaxFilterDepth = 24;
 constexpr int kMaxFilterPieces = 96;
 
+struct FilterAnswer {
+  bool within;
+  std::optional<TimeInterval> earliest;  ///< with a width: the earliest time's bracket
+};
+
+/// Stage 2. Depth first, left half first: when a piece is taken, every time before its
+/// start is proven apart. So a feature holding at a piece's start makes that start the
+/// earliest time within δ, and one holding at its end brackets it in the piece, which is
+/// split on until it is no wider than `width`.
 template <std::size_t N, class FeaturesOf>
-std::optional<bool> bounded_within(const QueryPoints& x, double delta,
-                                   FeaturesOf features_of) noexcept {
+std::optional<FilterAnswer> bounded_within(const QueryPoints& x, double delta,
+                                           std::optional<double> width,
+                                           FeaturesOf features_of) noexcept {
   const BoundedDouble delta2 = BoundedDouble(delta) * BoundedDouble(delta);
   struct Piece {
     double a, b;
     int depth;
     std::uint32_t alive;  // features not yet excluded, one bit each
   };
-  // Depth first, the left half on top: at most one pending right half per level.
+  // At most one pending right half per level.
   std::array<Piece, kMaxFilterDepth + 2> stack;
   std::size_t size = 0;
   stack[size++] = {0.0, 1.0, 0, (1u << N) - 1};
@@ -188,10 +198,16 @@ std::optional<bool> bounded_within(const QueryPoints& x, double delta,
     if (apart_by_plane<H>(slice_of<H>(start), slice_of<H>(end), delta2)) continue;
     const auto features = features_of(moving_between(start, end), delta2);
     std::uint32_t alive = 0;
+    bool at_start = false, at_end = false;
     for (std::size_t i = 0; i < N; ++i) {
       if (!(piece.alive >> i & 1u)) continue;
-      if (holds_at_end(features[i], false) || holds_at_end(features[i], true)) return true;
+      at_start = at_start || holds_at_end(features[i], false);
+      at_end = at_end || holds_at_end(features[i], true);
       if (!excluded(features[i])) alive |= 1u << i;
+    }
+    if (at_start) return FilterAnswer{true, TimeInterval{piece.a, piece.a}};
+    if (at_end && (!width || piece.b - piece.a <= *width)) {
+      return FilterAnswer{true, TimeInterval{piece.a, piece.b}};
     }
     if (alive == 0) continue;
     if (piece.depth >= kMaxFilterDepth) return std::nullopt;
@@ -199,7 +215,7 @@ std::optional<bool> bounded_within(const QueryPoints& x, double delta,
     stack[size++] = {mid, piece.b, piece.depth + 1, alive};
     stack[size++] = {piece.a, mid, piece.depth + 1, alive};
   }
-  return false;
+  return FilterAnswer{false, std::nullopt};
 }
 
 // ---- 3. Exact roots ------------------------------------------------------------------------
@@ -265,10 +281,47 @@ mpq_class point_between(IsolatedRoot r, IsolatedRoot s, const RationalPolynomial
   }
 }
 
-/// The feature's conditions, gap aside (it vanishes identically), at some time of (0, 1):
-/// tested at every root and between every two roots of the product of its polynomials.
-bool inside_somewhere(const ExactFeature& f) {
-  if (f.weight.is_zero()) return false;
+/// A time within δ: a root of the squarefree `p`, or an exact rational (p unused).
+struct WithinTime {
+  IsolatedRoot root;
+  RationalPolynomial p;
+};
+
+WithinTime at_rational(const mpq_class& t) {
+  return {{t, t, t}, {}};
+}
+
+/// a < b, for two times each isolated against its own polynomial. Equal roots of two
+/// polynomials are roots of their gcd, which divides both and so has at most one root in
+/// the overlap of the two isolating intervals (whose ends are roots of neither).
+bool earlier(WithinTime a, WithinTime b) {
+  for (;;) {
+    const mpq_class a_hi = a.root.exact ? *a.root.exact : a.root.hi;
+    const mpq_class b_lo = b.root.exact ? *b.root.exact : b.root.lo;
+    if (a_hi < b_lo) return true;
+    const mpq_class a_lo = a.root.exact ? *a.root.exact : a.root.lo;
+    const mpq_class b_hi = b.root.exact ? *b.root.exact : b.root.hi;
+    if (b_hi < a_lo) return false;
+    if (a.root.exact && b.root.exact) return false;  // equal
+    if (a.root.exact) {
+      if (b.p.sign_at(*a.root.exact) == Sign::zero) return false;  // b's only root there
+    } else if (b.root.exact) {
+      if (a.p.sign_at(*b.root.exact) == Sign::zero) return false;
+    } else {
+      const RationalPolynomial g = gcd(a.p, b.p);
+      const mpq_class lo = std::max(a_lo, b_lo), hi = std::min(a_hi, b_hi);
+      if (g.degree() >= 1 && lo < hi && g.sign_at(lo) != g.sign_at(hi)) return false;
+    }
+    if (!a.root.exact) halve_isolating_interval(a.p, a.root);
+    if (!b.root.exact) halve_isolating_interval(b.p, b.root);
+  }
+}
+
+/// The feature's earliest time in (0, 1) with its conditions, gap aside (it vanishes
+/// identically): tested at every root and between every two roots of the product of its
+/// polynomials, in time order.
+std::optional<WithinTime> earliest_inside(const ExactFeature& f) {
+  if (f.weight.is_zero()) return std::nullopt;
   RationalPolynomial product = f.weight;
   for (const RationalPolynomial& q : f.inside) {
     if (!q.is_zero()) product = product * q;
@@ -279,14 +332,30 @@ bool inside_somewhere(const ExactFeature& f) {
     samples.push_back(r);
   samples.push_back({mpq_class(1), 1, 1});
   for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
-    if (i > 0 && inside_at_root(f, p, samples[i])) return true;
-    if (inside_at(f, point_between(samples[i], samples[i + 1], p))) return true;
+    if (i > 0 && inside_at_root(f, p, samples[i])) return WithinTime{samples[i], p};
+    const mpq_class between = point_between(samples[i], samples[i + 1], p);
+    if (inside_at(f, between)) return at_rational(between);
   }
-  return false;
+  return std::nullopt;
 }
 
+/// The feature's earliest root of its gap in (0, 1) with its other conditions.
+std::optional<WithinTime> earliest_root(const ExactFeature& f) {
+  const RationalPolynomial p = squarefree_part(f.gap);
+  for (const IsolatedRoot& root : roots_between(p, 0, 1)) {
+    if (inside_at_root(f, p, root)) return WithinTime{root, p};
+  }
+  return std::nullopt;
+}
+
+/// The earliest time within δ (with `earliest` false: some time within δ), or nullopt.
+/// Among the candidates, each a time within δ, is the earliest one t*: 0 or 1 if they
+/// are within; otherwise t* is attained by the feature holding the closest point, whose
+/// conditions hold at t* (its weight positive), so it is that feature's earliest gap root
+/// or, when its gap vanishes identically, its earliest sample.
 template <class FeaturesOf>
-bool exactly_within(const QueryPoints& x, double delta, FeaturesOf features_of) {
+std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, FeaturesOf features_of,
+                                         bool earliest) {
   std::array<Moving<mpq_class>, 4> m;
   for (int k = 0; k < 4; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -296,20 +365,41 @@ bool exactly_within(const QueryPoints& x, double delta, FeaturesOf features_of) 
   const mpq_class delta2 = mpq_class(delta) * mpq_class(delta);
   const auto features = features_of(m, delta2);
   for (const Feature<mpq_class>& f : features) {
-    if (holds_at_end(f, false) || holds_at_end(f, true)) return true;
+    if (holds_at_end(f, false)) return at_rational(0);
   }
+  std::optional<WithinTime> best;
   for (const Feature<mpq_class>& g : features) {
     const ExactFeature f(g);
-    if (f.gap.is_zero()) {
-      if (inside_somewhere(f)) return true;
-      continue;
-    }
-    const RationalPolynomial p = squarefree_part(f.gap);
-    for (const IsolatedRoot& root : roots_between(p, 0, 1)) {
-      if (inside_at_root(f, p, root)) return true;
-    }
+    const auto t = f.gap.is_zero() ? earliest_inside(f) : earliest_root(f);
+    if (t && !earliest) return t;
+    if (t && (!best || earlier(*t, *best))) best = t;
   }
-  return false;
+  if (best) return best;
+  for (const Feature<mpq_class>& f : features) {
+    if (holds_at_end(f, true)) return at_rational(1);
+  }
+  return std::nullopt;
+}
+
+/// A bracket of doubles around the time, of width at most `width` where doubles allow:
+/// the isolating interval halved until narrow enough, or until its ends would not be
+/// doubles; then its ends rounded outward.
+TimeInterval bracket_of(WithinTime t, double width) {
+  auto is_double = [](const mpq_class& q) { return mpq_class(q.get_d()) == q; };
+  while (!t.root.exact && t.root.hi - t.root.lo > mpq_class(width)) {
+    IsolatedRoot narrower = t.root;
+    halve_isolating_interval(t.p, narrower);
+    const bool doubles = narrower.exact ? is_double(*narrower.exact)
+                                        : is_double(narrower.lo) && is_double(narrower.hi);
+    if (!doubles) break;
+    t.root = narrower;
+  }
+  const mpq_class lo = t.root.exact ? *t.root.exact : t.root.lo;
+  const mpq_class hi = t.root.exact ? *t.root.exact : t.root.hi;
+  const double start = lo.get_d();  // truncated toward zero: at most lo (lo >= 0)
+  double end = hi.get_d();
+  if (mpq_class(end) < hi) end = std::nextafter(end, 2.0);
+  return {start, end};
 }
 
 template <std::size_t N, class Query>
@@ -323,13 +413,16 @@ bool apart(const Query& query, double delta, int split) noexcept {
 }
 
 template <std::size_t N, class Query, class BoundedFeatures, class ExactFeatures>
-SeparationVerdict within(const Query& query, double delta, BoundedFeatures bounded,
-                         ExactFeatures exact) noexcept {
+SeparationVerdict within(const Query& query, double delta, std::optional<double> width,
+                         BoundedFeatures bounded, ExactFeatures exact) noexcept {
   const QueryPoints x = points_of(query);
-  if (const auto verdict = bounded_within<N>(x, delta, bounded)) {
-    return {*verdict, SeparationStage::bounded_doubles};
+  if (const auto verdict = bounded_within<N>(x, delta, width, bounded)) {
+    return {verdict->within, SeparationStage::bounded_doubles, verdict->earliest};
   }
-  return {exactly_within(x, delta, exact), SeparationStage::exact_roots};
+  const auto t = exactly_within(x, delta, exact, width.has_value());
+  if (!t) return {false, SeparationStage::exact_roots, std::nullopt};
+  return {true, SeparationStage::exact_roots,
+          width ? std::optional<TimeInterval>(bracket_of(*t, *width)) : std::nullopt};
 }
 
 }  // namespace
@@ -342,16 +435,18 @@ bool separation_apart(const EdgeEdgeQuery& query, double delta) noexcept {
   return apart<9>(query, delta, 2);
 }
 
-SeparationVerdict separation_within(const VertexFaceQuery& query, double delta) noexcept {
+SeparationVerdict separation_within(const VertexFaceQuery& query, double delta,
+                                    std::optional<double> width) noexcept {
   return within<7>(
-      query, delta,
+      query, delta, width,
       [](const auto& m, const BoundedDouble& d2) { return vertex_face_features(m, d2); },
       [](const auto& m, const mpq_class& d2) { return vertex_face_features(m, d2); });
 }
 
-SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta) noexcept {
+SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta,
+                                    std::optional<double> width) noexcept {
   return within<9>(
-      query, delta,
+      query, delta, width,
       [](const auto& m, const BoundedDouble& d2) { return edge_edge_features(m, d2); },
       [](const auto& m, const mpq_class& d2) { return edge_edge_features(m, d2); });
 }

@@ -117,7 +117,7 @@ for bad in -1 nan inf -inf 1e999 abc ""; do
   expect 2 "ccd min-separation '$bad'" "" ccd --min-separation "$bad" "$unit"
 done
 expect 2 "ccd min-separation with parity" "" ccd --method parity --min-separation 0.1 "$unit"
-expect 2 "ccd min-separation with toi" "" ccd --toi-width 0.01 --min-separation 0.1 "$unit"
+expect 0 "ccd min-separation with toi" "" ccd --toi-width 0.01 --min-separation 0.1 "$unit"
 expect 0 "ccd min-separation zero" "" ccd --min-separation 0 "$unit"
 json=$("$exe" ccd --json --min-separation 0.01 "$unit")
 case "$json" in
@@ -354,7 +354,7 @@ expect 2 "ccd-mesh NaN --toi-width" "" ccd-mesh --toi-width nan "$vf0" "$vf1"
 for bad in -1 nan inf 1e999 abc ""; do
   expect 2 "ccd-mesh min-separation '$bad'" "" ccd-mesh --min-separation "$bad" "$vf0" "$vf1"
 done
-expect 2 "ccd-mesh min-separation with toi" "" ccd-mesh --toi --min-separation 0.1 "$vf0" "$vf1"
+expect 0 "ccd-mesh min-separation with toi" "" ccd-mesh --toi --min-separation 0.1 "$vf0" "$vf1"
 expect 2 "ccd-mesh min-separation with parity" "" ccd-mesh --method parity --min-separation 0.1 "$vf0" "$vf1"
 expect 0 "ccd-mesh min-separation" "" ccd-mesh --min-separation 0.1 "$vf0" "$vf1"
 expect 2 "ccd-mesh zero threads" "" ccd-mesh --threads 0 "$vf0" "$vf1"

@@ -3,6 +3,7 @@
 // queries; the exact symmetries; monotonicity in δ; δ = 0 as the contact question; the
 // mesh broad phase against every pair.
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,6 +26,13 @@ namespace exactgeo::ccd {
 namespace {
 
 using testing::Rng;
+
+Result run(const VertexFaceQuery& q, const Options& o) {
+  return vertex_face_ccd(q, o);
+}
+Result run(const EdgeEdgeQuery& q, const Options& o) {
+  return edge_edge_ccd(q, o);
+}
 
 Result separated(const VertexFaceQuery& q, double delta) {
   Options o;
@@ -349,6 +357,46 @@ TEST(MinSeparation, SymmetriesAndMonotonicity) {
   EXPECT_GT(monotone_checks, 600);
 }
 
+/// With a width, the earliest time within δ is bracketed: the oracle's exact earliest
+/// time lies in the bracket, and the bracket is no wider than asked (or than one double
+/// spacing next to it).
+template <class Query>
+void brackets_hold_the_earliest_time(const char* stream) {
+  Rng rng = testing::seeded_engine(stream);
+  int bracketed = 0;
+  for (int i = 0; i < 40; ++i) {
+    const Query q = i % 2 ? random_dyadic_query<Query>(rng) : varied_query<Query>(rng, i / 2);
+    for (const double delta : deltas_for(q, rng)) {
+      const testing::MinSeparationAnswer truth = testing::min_separation_oracle(q, delta);
+      for (const double width : {0.25, 1e-3, 1e-9}) {
+        Options o;
+        o.min_separation = delta;
+        o.time_of_impact_width = width;
+        const Result r = run(q, o);
+        ASSERT_EQ(r.collision, truth.within) << stream << " #" << i << " delta " << delta;
+        if (!r.collision) continue;
+        ASSERT_TRUE(r.time_of_impact.has_value()) << stream << " #" << i;
+        const TimeInterval t = *r.time_of_impact;
+        EXPECT_LE(mpq_class(t.start), truth.earliest_hi)
+            << stream << " #" << i << " delta " << delta;
+        EXPECT_GE(mpq_class(t.end), truth.earliest_lo) << stream << " #" << i << " delta " << delta;
+        const double spacing = std::nextafter(t.end, 2.0) - t.end;
+        EXPECT_LE(t.end - t.start, std::max(width, 2 * spacing)) << stream << " #" << i;
+        ++bracketed;
+      }
+    }
+  }
+  EXPECT_GT(bracketed, 40);
+}
+
+TEST(MinSeparation, VertexFaceTimeOfImpactBracketsTheEarliestTime) {
+  brackets_hold_the_earliest_time<VertexFaceQuery>("min-separation-toi-vf");
+}
+
+TEST(MinSeparation, EdgeEdgeTimeOfImpactBracketsTheEarliestTime) {
+  brackets_hold_the_earliest_time<EdgeEdgeQuery>("min-separation-toi-ee");
+}
+
 TEST(MinSeparation, ZeroIsTheContactQuestionAndTheValidityCheck) {
   Rng rng = testing::seeded_engine("min-separation-zero");
   for (int i = 0; i < 500; ++i) {
@@ -431,6 +479,38 @@ TEST(MinSeparation, MeshStepFindsEveryPairWithinDelta) {
     std::sort(ee.begin(), ee.end());
     EXPECT_EQ(r.vertex_face, vf) << "round " << round;
     EXPECT_EQ(r.edge_edge, ee) << "round " << round;
+    // The mesh's earliest time within δ is the earliest of its pairs'.
+    MeshCcd fresh(t0.size() / 3, faces);
+    options.time_of_impact_width = 1e-6;
+    const MeshCcdResult timed = fresh.step({t0, t1}, options);
+    ASSERT_TRUE(timed.time_of_impact.has_value()) << "round " << round;
+    double earliest_end = 1.0, earliest_start = 1.0;
+    auto note = [&](const Result& pair) {
+      ASSERT_TRUE(pair.time_of_impact.has_value());
+      earliest_end = std::min(earliest_end, pair.time_of_impact->end);
+      earliest_start = std::min(earliest_start, pair.time_of_impact->start);
+    };
+    Options pair_options;
+    pair_options.min_separation = delta;
+    pair_options.time_of_impact_width = 1e-6;
+    auto point = [&](const std::vector<double>& x, VertexIndex i) {
+      return Point3{x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+    };
+    for (const VertexFacePair& p : vf) {
+      const Triangle& t = faces[p.face];
+      note(vertex_face_ccd({point(t0, p.vertex), point(t0, t[0]), point(t0, t[1]), point(t0, t[2]),
+                            point(t1, p.vertex), point(t1, t[0]), point(t1, t[1]), point(t1, t[2])},
+                           pair_options));
+    }
+    for (const EdgeEdgePair& p : ee) {
+      note(edge_edge_ccd(
+          {point(t0, p.a[0]), point(t0, p.a[1]), point(t0, p.b[0]), point(t0, p.b[1]),
+           point(t1, p.a[0]), point(t1, p.a[1]), point(t1, p.b[0]), point(t1, p.b[1])},
+          pair_options));
+    }
+    EXPECT_LE(timed.time_of_impact->start, earliest_end) << "round " << round;
+    EXPECT_GE(timed.time_of_impact->end, earliest_start) << "round " << round;
+    EXPECT_LE(timed.time_of_impact->end - timed.time_of_impact->start, 1e-6) << "round " << round;
     EXPECT_GT(vf.size(), 0u) << "round " << round << ": a test that finds nothing says little";
   }
   MeshCcd mesh(3, std::vector<Triangle>{{0, 1, 2}});

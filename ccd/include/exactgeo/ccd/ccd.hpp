@@ -67,8 +67,9 @@ struct Options {
   /// exact only: at most this many halvings of the step (a piece of width 2^-max_depth).
   int max_depth = 64;
   /// exact only: the separation δ. A collision is a time of the closed step at which the
-  /// Euclidean distance between the two primitives is at most δ (0: they touch). δ^2 is
-  /// taken exactly. Precondition: finite and >= 0 (is_valid_min_separation).
+  /// Euclidean distance between the two primitives is at most δ (0: they touch), and the
+  /// time of impact is the earliest such time. δ^2 is taken exactly. Precondition: finite
+  /// and >= 0 (is_valid_min_separation).
   double min_separation = 0.0;
   /// cubic only: the distance tolerance (cubic.hpp).
   double cubic_tolerance = 1e-6;

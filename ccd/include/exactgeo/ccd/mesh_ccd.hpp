@@ -73,7 +73,7 @@ struct MeshCcdOptions {
   unsigned threads = 0;
   /// exact only: report pairs whose Euclidean distance drops to at most this during the
   /// step (ccd.hpp, Options::min_separation); the broad phase grows its boxes by it.
-  /// Finite and >= 0; with time_of_impact_width it must be 0 (not supported yet).
+  /// Finite and >= 0. The time of impact is then the earliest time within it.
   double min_separation = 0.0;
 };
 
@@ -105,7 +105,8 @@ class MeshCcd {
 
   /// Every colliding pair over the step. Throws std::invalid_argument when a frame does not
   /// hold 3 * vertex_count() values or holds a non-finite one (naming the vertex), and
-  /// when options.min_separation is negative, not finite, or set with a time of impact.
+  /// when options.min_separation is negative or not finite, or positive with another
+  /// method than exact.
   /// Not const: it keeps the broad phase's trees for the next step. One
   /// MeshCcd per thread; different MeshCcd objects are independent.
   MeshCcdResult step(const MeshFrames& frames, const MeshCcdOptions& options = {});

@@ -28,12 +28,19 @@
 //     at every root, and between every two roots, of the product of its other
 //     polynomials, which between them keep their signs.
 //
+// Stage 2 goes through pieces depth first, left half first, so when a piece is taken
+// every time before it is proven apart: a feature holding at a piece's start makes that
+// start the earliest time within δ, one holding at its end brackets the earliest time in
+// the piece (split on to the width asked). Stage 3's candidates are all times within δ,
+// and the earliest time is among them: their minimum, by comparing isolated roots.
+//
 // δ = 0 is not decided here: it is the exact method's contact question, which runs
-// between stages 1 and 2 (a contact is within every δ).
+// between stages 1 and 2 when no time of impact is asked (a contact is within every δ).
 
 #include <cstdint>
+#include <optional>
 
-#include "exactgeo/ccd/queries.hpp"
+#include "exactgeo/ccd/ccd.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -42,6 +49,8 @@ enum class SeparationStage : std::uint8_t { bounded_doubles, exact_roots };
 struct SeparationVerdict {
   bool within;
   SeparationStage stage;
+  /// With a width and within: no time before start is within δ, some time by end is.
+  std::optional<TimeInterval> earliest;
 };
 
 /// Stage 1: true proves that the distance stays above delta. delta: finite and > 0;
@@ -49,8 +58,11 @@ struct SeparationVerdict {
 bool separation_apart(const VertexFaceQuery& query, double delta) noexcept;
 bool separation_apart(const EdgeEdgeQuery& query, double delta) noexcept;
 
-/// Stages 2 and 3: the answer.
-SeparationVerdict separation_within(const VertexFaceQuery& query, double delta) noexcept;
-SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta) noexcept;
+/// Stages 2 and 3: the answer, and with `width` the earliest time within δ, bracketed to
+/// at most that width (or one double's spacing, where that is wider).
+SeparationVerdict separation_within(const VertexFaceQuery& query, double delta,
+                                    std::optional<double> width) noexcept;
+SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta,
+                                    std::optional<double> width) noexcept;
 
 }  // namespace exactgeo::ccd::internal
