@@ -32,11 +32,11 @@ namespace {
 
 /// Every stage, in the order of the reports. The tallies index by a stage's value: one
 /// slot for each.
-constexpr std::array kStages{ccd::Stage::culled,      ccd::Stage::parity,
-                             ccd::Stage::polynomials, ccd::Stage::subdivision,
-                             ccd::Stage::depth_limit, ccd::Stage::cubic,
-                             ccd::Stage::separation,  ccd::Stage::separation_roots};
-static_assert(static_cast<std::size_t>(ccd::Stage::separation_roots) + 1 == kStages.size());
+constexpr std::array kStages{
+    ccd::Stage::culled,      ccd::Stage::parity,           ccd::Stage::polynomials,
+    ccd::Stage::subdivision, ccd::Stage::depth_limit,      ccd::Stage::cubic,
+    ccd::Stage::separation,  ccd::Stage::separation_roots, ccd::Stage::box_test};
+static_assert(static_cast<std::size_t>(ccd::Stage::box_test) + 1 == kStages.size());
 
 /// Counts for one query type, or for all.
 struct Tally {
@@ -287,8 +287,10 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
           << *options.min_separation << "'\n";
       return ExitCode::input_error;
     }
-    if (*delta > 0.0 && options.ccd.method != ccd::Method::exact) {
-      err << "exactgeo ccd: --min-separation needs --method exact\n";
+    const ccd::Method m = options.ccd.method;
+    if (*delta > 0.0 && m != ccd::Method::exact && m != ccd::Method::plain_double) {
+      err << "exactgeo ccd: --min-separation needs --method exact (or double: the per-axis "
+             "box test in plain doubles)\n";
       return ExitCode::input_error;
     }
     options.ccd.min_separation = *delta;
@@ -388,9 +390,10 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
          "width (--per-query writes the brackets)")
       ->check(CLI::Range(0x1p-60, 1.0));
   sub->add_option("--min-separation", options.min_separation,
-                  "exact only: a collision is a time at which the primitives' Euclidean "
-                  "distance is at most this (default 0: contact); the files' ground truth, "
-                  "about contact, is then not compared");
+                  "a collision is a time at which the primitives' Euclidean distance is at "
+                  "most this (default 0: contact), exactly; with --method double the per-axis "
+                  "box test of Tight Inclusion's minimum-separation mode instead, in plain "
+                  "doubles; the files' ground truth, about contact, is then not compared");
   sub->add_option("--max-depth", options.ccd.max_depth,
                   "exact only: most halvings of the time step (default 64)")
       ->check(CLI::Range(0, 200));

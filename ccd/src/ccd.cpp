@@ -19,6 +19,7 @@
 #include "exactgeo/ccd/internal/time_pieces.hpp"
 #include "exactgeo/ccd/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
+#include "exactgeo/ccd/separation_box_test.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::ccd {
@@ -119,6 +120,13 @@ Result separation_ccd(const Query& query, const Options& options) noexcept {
   return {verdict.within, stage, 0, width && verdict.within ? verdict.earliest : std::nullopt};
 }
 
+bool box_test(const VertexFaceQuery& q, double delta) noexcept {
+  return vertex_face_separation_box_test(q, delta);
+}
+bool box_test(const EdgeEdgeQuery& q, double delta) noexcept {
+  return edge_edge_separation_box_test(q, delta);
+}
+
 /// The 2012 method with exact signs, behind the exact method's cheap cull: the cull
 /// proves that there is no root at all, so the answer is the one parity alone gives, for
 /// far less on queries whose corner images are degenerate but far from the origin (on
@@ -143,6 +151,10 @@ Result dispatch_as_given(const Query& query, const Options& options, ParityFn pa
     case Method::cubic:
       return {cubic_fn(query, CubicOptions{options.cubic_tolerance}), Stage::cubic, 0, {}};
     case Method::plain_double:
+      if (options.min_separation > 0.0) {
+        return {box_test(query, options.min_separation), Stage::box_test, 0, {}};
+      }
+      break;
     case Method::rational:
       break;
   }
@@ -243,6 +255,8 @@ std::string_view to_string(Stage s) noexcept {
       return "separation";
     case Stage::separation_roots:
       return "separation_roots";
+    case Stage::box_test:
+      return "box_test";
   }
   return "?";
 }

@@ -19,6 +19,7 @@
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/separation_box_test.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
@@ -395,6 +396,38 @@ TEST(MinSeparation, VertexFaceTimeOfImpactBracketsTheEarliestTime) {
 
 TEST(MinSeparation, EdgeEdgeTimeOfImpactBracketsTheEarliestTime) {
   brackets_hold_the_earliest_time<EdgeEdgeQuery>("min-separation-toi-ee");
+}
+
+/// The baseline box test is conservative: every pair within δ is a yes. It also says yes
+/// for a pair up to sqrt(3) δ apart (the cube's corner), which the exact method rejects.
+TEST(MinSeparationBoxTest, NeverMissesAndSeesTheCubesCorners) {
+  Rng rng = testing::seeded_engine("min-separation-box-test");
+  int within = 0;
+  for (int i = 0; i < 100; ++i) {
+    const auto vf = varied_query<VertexFaceQuery>(rng, i);
+    const auto ee = varied_query<EdgeEdgeQuery>(rng, i);
+    for (const double delta : deltas_for(vf, rng)) {
+      if (separated(vf, delta).collision) {
+        ++within;
+        EXPECT_TRUE(vertex_face_separation_box_test(vf, delta)) << "vf #" << i << " " << delta;
+      }
+    }
+    for (const double delta : deltas_for(ee, rng)) {
+      if (separated(ee, delta).collision) {
+        ++within;
+        EXPECT_TRUE(edge_edge_separation_box_test(ee, delta)) << "ee #" << i << " " << delta;
+      }
+    }
+  }
+  EXPECT_GT(within, 100);
+  // A vertex standing 0.75 delta from a face corner along each axis: 1.3 delta away.
+  const double d = 0.5;
+  const Point3 v{-0.375, -0.375, 0.375};
+  const VertexFaceQuery corner{v, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                               v, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_TRUE(vertex_face_separation_box_test(corner, d));
+  EXPECT_FALSE(separated(corner, d).collision);
+  EXPECT_TRUE(separated(corner, 0.65).collision);  // |v| = 0.6495...
 }
 
 TEST(MinSeparation, ZeroIsTheContactQuestionAndTheValidityCheck) {

@@ -49,6 +49,8 @@ enum class Stage : std::uint8_t {
   separation,        ///< exact with min_separation > 0: the distance's polynomial conditions in
                      ///< bounded doubles on pieces of the step
   separation_roots,  ///< exact with min_separation > 0: exact roots of those conditions
+  box_test,          ///< double with min_separation > 0: the per-axis box test, plain doubles
+                     ///< (separation_box_test.hpp)
 };
 
 std::string_view to_string(Stage s) noexcept;
@@ -66,10 +68,11 @@ struct Options {
   std::optional<double> time_of_impact_width;
   /// exact only: at most this many halvings of the step (a piece of width 2^-max_depth).
   int max_depth = 64;
-  /// exact only: the separation δ. A collision is a time of the closed step at which the
+  /// exact: the separation δ. A collision is a time of the closed step at which the
   /// Euclidean distance between the two primitives is at most δ (0: they touch), and the
   /// time of impact is the earliest such time. δ^2 is taken exactly. Precondition: finite
-  /// and >= 0 (is_valid_min_separation).
+  /// and >= 0 (is_valid_min_separation). double: with δ > 0 the baseline per-axis box
+  /// test in plain doubles (separation_box_test.hpp). The other methods ignore it.
   double min_separation = 0.0;
   /// cubic only: the distance tolerance (cubic.hpp).
   double cubic_tolerance = 1e-6;
