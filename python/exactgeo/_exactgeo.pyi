@@ -46,22 +46,22 @@ class Classifier:
 @overload
 def vertex_face_ccd(
     x0: _Points, x1: _Points, *, method: str = "exact", toi_width: None = None,
-    cubic_tolerance: float = 1e-6, threads: int = 0,
+    cubic_tolerance: float = 1e-6, threads: int = 0, min_separation: float = 0.0,
 ) -> npt.NDArray[np.bool_]: ...
 @overload
 def vertex_face_ccd(
     x0: _Points, x1: _Points, *, method: str = "exact", toi_width: float,
-    cubic_tolerance: float = 1e-6, threads: int = 0,
+    cubic_tolerance: float = 1e-6, threads: int = 0, min_separation: float = 0.0,
 ) -> Tuple[npt.NDArray[np.bool_], npt.NDArray[np.float64]]: ...
 @overload
 def edge_edge_ccd(
     x0: _Points, x1: _Points, *, method: str = "exact", toi_width: None = None,
-    cubic_tolerance: float = 1e-6, threads: int = 0,
+    cubic_tolerance: float = 1e-6, threads: int = 0, min_separation: float = 0.0,
 ) -> npt.NDArray[np.bool_]: ...
 @overload
 def edge_edge_ccd(
     x0: _Points, x1: _Points, *, method: str = "exact", toi_width: float,
-    cubic_tolerance: float = 1e-6, threads: int = 0,
+    cubic_tolerance: float = 1e-6, threads: int = 0, min_separation: float = 0.0,
 ) -> Tuple[npt.NDArray[np.bool_], npt.NDArray[np.float64]]: ...
 def _read_ccd_queries(
     path: _Path, type: Optional[str] = None
@@ -89,7 +89,7 @@ class MeshCcd:
     def __init__(self, faces: npt.ArrayLike, vertex_count: Optional[int] = None) -> None: ...
     def step(
         self, x0: _Points, x1: _Points, *, method: str = "exact",
-        toi: Union[bool, float] = False, threads: int = 0,
+        toi: Union[bool, float] = False, threads: int = 0, min_separation: float = 0.0,
     ) -> MeshCcdStep: ...
     @property
     def vertex_count(self) -> int: ...

@@ -29,9 +29,19 @@ using ccd::QueryType;
 constexpr std::size_t kBlock = 256;  // queries per parallel block
 
 ccd::Options options_from(const std::string& method, std::optional<double> toi_width,
-                          double cubic_tolerance) {
+                          double cubic_tolerance, double min_separation) {
   ccd::Options options;
   options.method = ccd_method_named(method);
+  if (!ccd::is_valid_min_separation(min_separation)) {
+    throw py::value_error("min_separation must be finite and >= 0");
+  }
+  if (min_separation > 0.0 && options.method != ccd::Method::exact &&
+      options.method != ccd::Method::plain_double) {
+    throw py::value_error(
+        "min_separation needs method='exact' (or 'double': the per-axis box test in plain "
+        "doubles)");
+  }
+  options.min_separation = min_separation;
   if (toi_width) {
     if (options.method != ccd::Method::exact) {
       throw py::value_error(
@@ -54,8 +64,9 @@ ccd::Options options_from(const std::string& method, std::optional<double> toi_w
 /// toi_width an (n, 2) array of brackets (NaN rows where there is no collision).
 template <ccd::QueryType type>
 py::object run_queries(const py::object& x0_in, const py::object& x1_in, const std::string& method,
-                       std::optional<double> toi_width, double cubic_tolerance, int threads) {
-  const ccd::Options options = options_from(method, toi_width, cubic_tolerance);
+                       std::optional<double> toi_width, double cubic_tolerance, int threads,
+                       double min_separation) {
+  const ccd::Options options = options_from(method, toi_width, cubic_tolerance, min_separation);
   const Doubles x0 = coordinates(x0_in, "x0", {-1, 4, 3});
   const Doubles x1 = coordinates(x1_in, "x1", {-1, 4, 3});
   if (x0.shape(0) != x1.shape(0)) {
@@ -166,10 +177,14 @@ method: "exact" (default: any contact in the closed step, never missed), "parity
 toi_width: exact only: also return an (n, 2) array of time-of-impact brackets no wider
     than this: no contact before the first column, a contact by the second (NaN rows
     where there is no collision).
+min_separation: a collision is then a time at which the primitives' Euclidean distance
+    is at most this (default 0: contact), decided exactly (the brackets hold the earliest
+    such time); with method="double", the per-axis box test in plain doubles instead.
 threads: worker threads, 0 for all hardware threads. The GIL is released.
 
 Returns an (n,) bool array, or (collisions, brackets) with toi_width.
-Raises ValueError for a wrong shape or a non-finite coordinate (naming its row).)doc";
+Raises ValueError for a wrong shape or a non-finite coordinate (naming its row), and for a
+negative, NaN or infinite min_separation.)doc";
 
 }  // namespace
 
@@ -181,10 +196,12 @@ void bind_ccd(py::module_& module) {
       std::string("Continuous collision detection of moving edges against moving edges.") + kCcdDoc;
   module.def("vertex_face_ccd", &run_queries<QueryType::vertex_face>, py::arg("x0"), py::arg("x1"),
              py::kw_only(), py::arg("method") = "exact", py::arg("toi_width") = py::none(),
-             py::arg("cubic_tolerance") = 1e-6, py::arg("threads") = 0, vf_doc.c_str());
+             py::arg("cubic_tolerance") = 1e-6, py::arg("threads") = 0,
+             py::arg("min_separation") = 0.0, vf_doc.c_str());
   module.def("edge_edge_ccd", &run_queries<QueryType::edge_edge>, py::arg("x0"), py::arg("x1"),
              py::kw_only(), py::arg("method") = "exact", py::arg("toi_width") = py::none(),
-             py::arg("cubic_tolerance") = 1e-6, py::arg("threads") = 0, ee_doc.c_str());
+             py::arg("cubic_tolerance") = 1e-6, py::arg("threads") = 0,
+             py::arg("min_separation") = 0.0, ee_doc.c_str());
   module.def("_read_ccd_queries", &read_queries, py::arg("path"), py::arg("type") = py::none());
 }
 

@@ -69,7 +69,8 @@ std::unique_ptr<MeshCcdObject> make(const py::object& faces_in,
 }
 
 StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object& x1_in,
-                const std::string& method, const py::object& toi, int threads) {
+                const std::string& method, const py::object& toi, int threads,
+                double min_separation) {
   const std::size_t n = object.ccd.vertex_count();
   const Doubles x0 = coordinates(x0_in, "x0", {-1, 3});
   const Doubles x1 = coordinates(x1_in, "x1", {-1, 3});
@@ -103,6 +104,14 @@ StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object
         "toi needs method='exact' (the other methods only say whether a pair "
         "collides)");
   }
+
+  if (!ccd::is_valid_min_separation(min_separation)) {
+    throw py::value_error("min_separation must be finite and >= 0");
+  }
+  if (min_separation > 0.0 && options.method != ccd::Method::exact) {
+    throw py::value_error("min_separation needs method='exact'");
+  }
+  options.min_separation = min_separation;
 
   ccd::MeshCcdResult result;
   {
@@ -177,13 +186,15 @@ vertex_count: the number of vertices (default: the largest index + 1).
 
 Raises ValueError for a negative index, an index >= vertex_count or a repeated corner.)doc")
       .def("step", &step, py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("method") = "exact",
-           py::arg("toi") = false, py::arg("threads") = 0,
+           py::arg("toi") = false, py::arg("threads") = 0, py::arg("min_separation") = 0.0,
            R"doc(Every colliding pair over one step, as a MeshCcdStep.
 
 x0, x1: (vertex_count, 3) positions at the start and the end of the step.
 method: "exact" (default) or "parity" (the others are accepted for measurements).
 toi: also bracket the earliest contact (exact only): True for a width of 1e-6, or the
     width as a float.
+min_separation: also report pairs whose Euclidean distance drops to at most this (exact
+    only; the bracket is then of the earliest time within it).
 threads: worker threads, 0 for all hardware threads. The GIL is released.)doc")
       .def_property_readonly("vertex_count",
                              [](const MeshCcdObject& o) { return o.ccd.vertex_count(); })

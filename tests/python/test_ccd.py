@@ -129,3 +129,34 @@ def test_command_line_query_times_cover_every_query_once(cli):
         for stage, count in scope["stages"].items():
             assert (times[stage]["queries"] if stage in times else 0) == count, stage
         assert times["all"]["median"] <= times["all"]["p99"] <= times["all"]["max"]
+
+
+def test_min_separation_matches_the_command_line_and_contains_every_contact(cli, tmp_path):
+    for path in QUERY_FILES:
+        queries = exactgeo.read_ccd_queries(path)
+        run = CCD_FUNCTIONS[queries.type]
+        per_query = tmp_path / "per-query.csv"
+        done = cli.run("ccd", path, "--min-separation", "0.01", "--per-query", per_query)
+        assert done.returncode == 0, done.stderr
+        with open(per_query) as f:
+            expected = np.array([row["result"] == "1" for row in csv.DictReader(f)])
+        within = run(queries.x0, queries.x1, min_separation=0.01)
+        np.testing.assert_array_equal(within, expected, err_msg=str(path))
+        contacts = run(queries.x0, queries.x1)
+        assert np.all(within[contacts]), path  # a contact is within every separation
+        hits, brackets = run(queries.x0, queries.x1, min_separation=0.01, toi_width=1e-3)
+        np.testing.assert_array_equal(hits, within)
+        assert np.all(brackets[hits, 1] - brackets[hits, 0] <= 1e-3)
+
+
+def test_min_separation_errors():
+    x = np.zeros((1, 4, 3))
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="min_separation"):
+            exactgeo.vertex_face_ccd(x, x, min_separation=bad)
+    with pytest.raises(ValueError, match="min_separation needs"):
+        exactgeo.edge_edge_ccd(x, x, method="parity", min_separation=0.1)
+    # A vertex 0.3 above a face: within 0.3, not within the double just below.
+    x0 = np.array([[[0.2, 0.2, 0.3], [0, 0, 0], [1, 0, 0], [0, 1, 0]]])
+    assert exactgeo.vertex_face_ccd(x0, x0, min_separation=0.3)[0]
+    assert not exactgeo.vertex_face_ccd(x0, x0, min_separation=np.nextafter(0.3, 0))[0]

@@ -97,3 +97,25 @@ def test_errors(rng):
         exactgeo.MeshCcd([[0, 1, 5]], vertex_count=4)
     with pytest.raises(ValueError, match="faces must hold integers"):
         exactgeo.MeshCcd(np.array([[0, 1, 2.5]]))
+
+
+def test_min_separation_matches_the_command_line(cli, rng, tmp_path):
+    faces, x0, x1 = two_sheets(rng)
+    write_obj(tmp_path / "frame0.obj", x0, faces)
+    write_obj(tmp_path / "frame1.obj", x1, faces)
+    expected = cli.json("ccd-mesh", tmp_path / "frame0.obj", tmp_path / "frame1.obj",
+                        "--min-separation", "0.01", "--toi")
+    ccd = exactgeo.MeshCcd(faces)
+    step = ccd.step(x0, x1, min_separation=0.01, toi=True)
+    assert step.vertex_face.tolist() == expected["vertex_face"]
+    assert step.edge_edge.tolist() == expected["edge_edge"]
+    assert list(step.time_of_impact) == expected["time_of_impact"]
+    contacts = exactgeo.MeshCcd(faces).step(x0, x1)
+    # Every contact is within the separation, and the separation finds more.
+    assert set(map(tuple, contacts.vertex_face.tolist())) <= set(map(tuple, step.vertex_face.tolist()))
+    assert len(step.vertex_face) + len(step.edge_edge) > len(contacts.vertex_face) + len(contacts.edge_edge)
+    for bad in (-1.0, float("nan")):
+        with pytest.raises(ValueError, match="min_separation"):
+            ccd.step(x0, x1, min_separation=bad)
+    with pytest.raises(ValueError, match="min_separation needs"):
+        ccd.step(x0, x1, method="parity", min_separation=0.01)
