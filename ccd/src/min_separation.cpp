@@ -179,7 +179,7 @@ struct FilterAnswer {
 template <std::size_t N, class FeaturesOf>
 std::optional<FilterAnswer> bounded_within(const QueryPoints& x, double delta,
                                            std::optional<double> width,
-                                           FeaturesOf features_of) noexcept {
+                                           FeaturesOf feature_of) noexcept {
   const BoundedDouble delta2 = BoundedDouble(delta) * BoundedDouble(delta);
   struct Piece {
     double a, b;
@@ -194,17 +194,18 @@ std::optional<FilterAnswer> bounded_within(const QueryPoints& x, double delta,
   while (size > 0) {
     const Piece piece = stack[--size];
     if (--pieces_left < 0) return std::nullopt;
-    constexpr std::size_t H = N == 7 ? 3 : 4;
+    constexpr std::size_t H = N == kVertexFaceFeatures ? 3 : 4;
     const Positions start = positions_at(x, piece.a), end = positions_at(x, piece.b);
     if (apart_by_plane<H>(slice_of<H>(start), slice_of<H>(end), delta2)) continue;
-    const auto features = features_of(moving_between(start, end), delta2);
+    const auto moving = moving_between(start, end);
     std::uint32_t alive = 0;
     bool at_start = false, at_end = false;
     for (std::size_t i = 0; i < N; ++i) {
       if (!(piece.alive >> i & 1u)) continue;
-      at_start = at_start || holds_at_end(features[i], false);
-      at_end = at_end || holds_at_end(features[i], true);
-      if (!excluded(features[i])) alive |= 1u << i;
+      const Feature<BoundedDouble> f = feature_of(i, moving, delta2);
+      at_start = at_start || holds_at_end(f, false);
+      at_end = at_end || holds_at_end(f, true);
+      if (!excluded(f)) alive |= 1u << i;
     }
     if (at_start) return FilterAnswer{true, TimeInterval{piece.a, piece.a}};
     if (at_end && (!width || piece.b - piece.a <= *width)) {
@@ -355,8 +356,8 @@ std::optional<WithinTime> earliest_root(const ExactFeature& f) {
 /// conditions hold at t* (its weight positive), so it is that feature's earliest gap root
 /// or, when its gap vanishes identically, its earliest sample.
 template <class FeaturesOf>
-std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, FeaturesOf features_of,
-                                         bool earliest) {
+std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std::size_t count,
+                                         FeaturesOf feature_of, bool earliest) {
   std::array<Moving<mpq_class>, 4> m;
   for (int k = 0; k < 4; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -364,7 +365,9 @@ std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, Fea
     }
   }
   const mpq_class delta2 = mpq_class(delta) * mpq_class(delta);
-  const auto features = features_of(m, delta2);
+  std::vector<Feature<mpq_class>> features;
+  for (std::size_t i = 0; i < count; ++i)
+    features.push_back(feature_of(i, m, delta2));
   for (const Feature<mpq_class>& f : features) {
     if (holds_at_end(f, false)) return at_rational(0);
   }
@@ -408,7 +411,7 @@ bool apart(const Query& query, double delta, int split) noexcept {
   const QueryPoints x = points_of(query);
   if (boxes_apart(x, split, delta)) return true;
   const BoundedDouble delta2 = BoundedDouble(delta) * BoundedDouble(delta);
-  constexpr std::size_t H = N == 7 ? 3 : 4;
+  constexpr std::size_t H = N == kVertexFaceFeatures ? 3 : 4;
   return apart_by_plane<H>(slice_of<H>(positions_at(x, 0.0)), slice_of<H>(positions_at(x, 1.0)),
                            delta2);
 }
@@ -420,7 +423,7 @@ SeparationVerdict within(const Query& query, double delta, std::optional<double>
   if (const auto verdict = bounded_within<N>(x, delta, width, bounded)) {
     return {verdict->within, SeparationStage::bounded_doubles, verdict->earliest};
   }
-  const auto t = exactly_within(x, delta, exact, width.has_value());
+  const auto t = exactly_within(x, delta, N, exact, width.has_value());
   if (!t) return {false, SeparationStage::exact_roots, std::nullopt};
   return {true, SeparationStage::exact_roots,
           width ? std::optional<TimeInterval>(bracket_of(*t, *width)) : std::nullopt};
@@ -429,27 +432,35 @@ SeparationVerdict within(const Query& query, double delta, std::optional<double>
 }  // namespace
 
 bool separation_apart(const VertexFaceQuery& query, double delta) noexcept {
-  return apart<7>(query, delta, 1);
+  return apart<kVertexFaceFeatures>(query, delta, 1);
 }
 
 bool separation_apart(const EdgeEdgeQuery& query, double delta) noexcept {
-  return apart<9>(query, delta, 2);
+  return apart<kEdgeEdgeFeatures>(query, delta, 2);
 }
 
 SeparationVerdict separation_within(const VertexFaceQuery& query, double delta,
                                     std::optional<double> width) noexcept {
-  return within<7>(
+  return within<kVertexFaceFeatures>(
       query, delta, width,
-      [](const auto& m, const BoundedDouble& d2) { return vertex_face_features(m, d2); },
-      [](const auto& m, const mpq_class& d2) { return vertex_face_features(m, d2); });
+      [](std::size_t i, const auto& m, const BoundedDouble& d2) {
+        return vertex_face_feature(i, m, d2);
+      },
+      [](std::size_t i, const auto& m, const mpq_class& d2) {
+        return vertex_face_feature(i, m, d2);
+      });
 }
 
 SeparationVerdict separation_within(const EdgeEdgeQuery& query, double delta,
                                     std::optional<double> width) noexcept {
-  return within<9>(
+  return within<kEdgeEdgeFeatures>(
       query, delta, width,
-      [](const auto& m, const BoundedDouble& d2) { return edge_edge_features(m, d2); },
-      [](const auto& m, const mpq_class& d2) { return edge_edge_features(m, d2); });
+      [](std::size_t i, const auto& m, const BoundedDouble& d2) {
+        return edge_edge_feature(i, m, d2);
+      },
+      [](std::size_t i, const auto& m, const mpq_class& d2) {
+        return edge_edge_feature(i, m, d2);
+      });
 }
 
 }  // namespace exactgeo::ccd::internal

@@ -206,25 +206,57 @@ Feature<T> segments_feature(const Moving<T>& a0, const Moving<T>& a1, const Movi
   return f;
 }
 
-/// The 7 features of a vertex-face query; x holds v, f0, f1, f2 over the piece.
+inline constexpr std::size_t kVertexFaceFeatures = 7;
+inline constexpr std::size_t kEdgeEdgeFeatures = 9;
+
+/// Feature i < 7 of a vertex-face query (the vertices, the edges, the face); x holds v,
+/// f0, f1, f2 over the piece. One at a time: a decision often needs only a few.
 template <class T>
-std::array<Feature<T>, 7> vertex_face_features(const std::array<Moving<T>, 4>& x, const T& delta2) {
+Feature<T> vertex_face_feature(std::size_t i, const std::array<Moving<T>, 4>& x, const T& delta2) {
   const auto& [v, f0, f1, f2] = x;
-  return {vertex_feature(v, f0, delta2),      vertex_feature(v, f1, delta2),
-          vertex_feature(v, f2, delta2),      edge_feature(v, f0, f1, delta2),
-          edge_feature(v, f1, f2, delta2),    edge_feature(v, f2, f0, delta2),
-          face_feature(v, f0, f1, f2, delta2)};
+  switch (i) {
+    case 0:
+      return vertex_feature(v, f0, delta2);
+    case 1:
+      return vertex_feature(v, f1, delta2);
+    case 2:
+      return vertex_feature(v, f2, delta2);
+    case 3:
+      return edge_feature(v, f0, f1, delta2);
+    case 4:
+      return edge_feature(v, f1, f2, delta2);
+    case 5:
+      return edge_feature(v, f2, f0, delta2);
+    default:
+      return face_feature(v, f0, f1, f2, delta2);
+  }
 }
 
-/// The 9 features of an edge-edge query; x holds a0, a1, b0, b1 over the piece.
+/// Feature i < 9 of an edge-edge query (endpoint pairs, endpoints against segments, the
+/// insides); x holds a0, a1, b0, b1 over the piece.
 template <class T>
-std::array<Feature<T>, 9> edge_edge_features(const std::array<Moving<T>, 4>& x, const T& delta2) {
+Feature<T> edge_edge_feature(std::size_t i, const std::array<Moving<T>, 4>& x, const T& delta2) {
   const auto& [a0, a1, b0, b1] = x;
-  return {vertex_feature(a0, b0, delta2),          vertex_feature(a0, b1, delta2),
-          vertex_feature(a1, b0, delta2),          vertex_feature(a1, b1, delta2),
-          edge_feature(a0, b0, b1, delta2),        edge_feature(a1, b0, b1, delta2),
-          edge_feature(b0, a0, a1, delta2),        edge_feature(b1, a0, a1, delta2),
-          segments_feature(a0, a1, b0, b1, delta2)};
+  switch (i) {
+    case 0:
+      return vertex_feature(a0, b0, delta2);
+    case 1:
+      return vertex_feature(a0, b1, delta2);
+    case 2:
+      return vertex_feature(a1, b0, delta2);
+    case 3:
+      return vertex_feature(a1, b1, delta2);
+    case 4:
+      return edge_feature(a0, b0, b1, delta2);
+    case 5:
+      return edge_feature(a1, b0, b1, delta2);
+    case 6:
+      return edge_feature(b0, a0, a1, delta2);
+    case 7:
+      return edge_feature(b1, a0, a1, delta2);
+    default:
+      return segments_feature(a0, a1, b0, b1, delta2);
+  }
 }
 
 }  // namespace exactgeo::ccd::internal
