@@ -30,6 +30,10 @@ namespace {
 /// with pieces: 16 halvings, 64 pieces in all.
 constexpr internal::DecisionBudget kPolynomialBudget{16, 64};
 
+/// How deep the contact question may split before a minimum-separation query goes on to
+/// the distance's own conditions.
+constexpr int kSeparationContactDepth = 8;
+
 /// The arithmetic of the parity algorithm run as it is, without a cull: the baseline and
 /// the slow reference.
 Arithmetic unculled_parity_arithmetic(Method m) noexcept {
@@ -108,10 +112,14 @@ Result separation_ccd(const Query& query, const Options& options) noexcept {
   if (internal::separation_apart(query, delta)) return {false, Stage::culled, 0, {}};
   const std::optional<double> width = options.time_of_impact_width;
   if (!width) {
+    // Only the contact question's cheap stages: a near miss it would search deeply is
+    // within δ, which the distance's own conditions show sooner. A depth-limit answer
+    // is no proof of contact; the conditions decide everything alone.
     Options contact = options;
     contact.min_separation = 0.0;
+    contact.max_depth = std::min(options.max_depth, kSeparationContactDepth);
     const Result touch = exact_ccd(query, contact);
-    if (touch.collision) return touch;
+    if (touch.collision && touch.decided_by != Stage::depth_limit) return touch;
   }
   const internal::SeparationVerdict verdict = internal::separation_within(query, delta, width);
   const Stage stage = verdict.stage == internal::SeparationStage::bounded_doubles
