@@ -341,13 +341,57 @@ std::optional<WithinTime> earliest_inside(const ExactFeature& f) {
   return std::nullopt;
 }
 
-/// The feature's earliest root of its gap in (0, 1) with its other conditions.
-std::optional<WithinTime> earliest_root(const ExactFeature& f) {
-  const RationalPolynomial p = squarefree_part(f.gap);
-  for (const IsolatedRoot& root : roots_between(p, 0, 1)) {
-    if (inside_at_root(f, p, root)) return WithinTime{root, p};
+/// A rational in (lo, hi) that is not a root of p (one of a few tries: p has few roots).
+mpq_class split_point(const RationalPolynomial& p, const mpq_class& lo, const mpq_class& hi) {
+  for (int k = 2;; ++k) {
+    const mpq_class m = lo + (hi - lo) / k;
+    if (p.sign_at(m) != Sign::zero) return m;
   }
-  return std::nullopt;
+}
+
+/// The gap's roots in (lo, hi) (not roots themselves) with the feature's other conditions:
+/// a cluster of roots is settled whole when its Tarski queries agree (none with weight > 0,
+/// or one inside polynomial negative at every root; or every condition strict at every
+/// root), and split otherwise. With `earliest` the first such root, isolated; without,
+/// some such root (its interval then need not isolate it).
+std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolynomial& p,
+                                      const TarskiQueries& queries, const mpq_class& lo,
+                                      const mpq_class& hi, bool earliest) {
+  const int n = queries.count(lo, hi);
+  if (n == 0) return std::nullopt;
+  const int weight = queries.query(0, lo, hi);  // the weight is never negative
+  if (weight == 0) return std::nullopt;
+  bool all_strict = weight == n;
+  bool single_holds = weight == 1;
+  for (std::size_t i = 0; i < f.inside.size(); ++i) {
+    const int q = queries.query(i + 1, lo, hi);
+    if (q == -n) return std::nullopt;
+    all_strict = all_strict && q == n;
+    single_holds = single_holds && q >= 0;
+  }
+  if (n == 1) {
+    if (!single_holds) return std::nullopt;
+    return WithinTime{{std::nullopt, lo, hi}, p};
+  }
+  if (all_strict) {
+    if (!earliest) return WithinTime{{std::nullopt, lo, hi}, p};
+    return WithinTime{roots_between(p, lo, hi).front(), p};
+  }
+  const mpq_class m = split_point(p, lo, hi);
+  if (auto left = gap_root_in(f, p, queries, lo, m, earliest)) return left;
+  return gap_root_in(f, p, queries, m, hi, earliest);
+}
+
+/// The feature's earliest root of its gap in (0, 1) with its other conditions.
+std::optional<WithinTime> earliest_root(const ExactFeature& f, bool earliest) {
+  RationalPolynomial p = squarefree_part(f.gap);
+  // Roots at the step's ends are not inside it: divide them out (p is squarefree).
+  if (p.sign_at(0) == Sign::zero) p = p / RationalPolynomial({mpq_class(0), mpq_class(1)});
+  if (p.sign_at(1) == Sign::zero) p = p / RationalPolynomial({mpq_class(-1), mpq_class(1)});
+  if (p.degree() < 1) return std::nullopt;
+  std::vector<RationalPolynomial> conditions{f.weight};
+  conditions.insert(conditions.end(), f.inside.begin(), f.inside.end());
+  return gap_root_in(f, p, TarskiQueries(p, conditions), 0, 1, earliest);
 }
 
 /// The earliest time within δ (with `earliest` false: some time within δ), or nullopt.
@@ -374,7 +418,7 @@ std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std
   std::optional<WithinTime> best;
   for (const Feature<mpq_class>& g : features) {
     const ExactFeature f(g);
-    const auto t = f.gap.is_zero() ? earliest_inside(f) : earliest_root(f);
+    const auto t = f.gap.is_zero() ? earliest_inside(f) : earliest_root(f, earliest);
     if (t && !earliest) return t;
     if (t && (!best || earlier(*t, *best))) best = t;
   }

@@ -12,17 +12,24 @@ Sign sign_of(const mpq_class& x) {
   return s > 0 ? Sign::positive : s < 0 ? Sign::negative : Sign::zero;
 }
 
-/// The Sturm sequence p, p', -rem(p, p'), ... of a squarefree p.
-std::vector<RationalPolynomial> sturm_sequence(const RationalPolynomial& p) {
-  std::vector<RationalPolynomial> s{p};
-  if (p.degree() < 1) return s;
-  s.push_back(p.derivative());
+/// The signed remainder sequence a, b, -rem(a, b), ... (to the last nonzero member).
+std::vector<RationalPolynomial> signed_remainders(const RationalPolynomial& a,
+                                                  const RationalPolynomial& b) {
+  std::vector<RationalPolynomial> s{a};
+  if (b.is_zero()) return s;
+  s.push_back(b);
   while (s.back().degree() > 0) {
     const RationalPolynomial r = s[s.size() - 2] % s.back();
     if (r.is_zero()) break;
     s.push_back(r * RationalPolynomial({mpq_class(-1)}));
   }
   return s;
+}
+
+/// The Sturm sequence p, p', -rem(p, p'), ... of a squarefree p.
+std::vector<RationalPolynomial> sturm_sequence(const RationalPolynomial& p) {
+  if (p.degree() < 1) return {p};
+  return signed_remainders(p, p.derivative());
 }
 
 /// Sign changes of the sequence at t, zeros skipped.
@@ -193,20 +200,30 @@ void halve_isolating_interval(const RationalPolynomial& p, IsolatedRoot& root) {
   }
 }
 
+TarskiQueries::TarskiQueries(const RationalPolynomial& p, const std::vector<RationalPolynomial>& qs)
+    : sturm_(sturm_sequence(p)) {
+  for (const RationalPolynomial& q : qs)
+    sequences_.push_back(signed_remainders(p, p.derivative() * q));
+}
+
+int TarskiQueries::count(const mpq_class& lo, const mpq_class& hi) const {
+  return sign_changes(sturm_, lo) - sign_changes(sturm_, hi);
+}
+
+int TarskiQueries::query(std::size_t i, const mpq_class& lo, const mpq_class& hi) const {
+  return sign_changes(sequences_[i], lo) - sign_changes(sequences_[i], hi);
+}
+
 Sign sign_at_root(const RationalPolynomial& q, const RationalPolynomial& p, IsolatedRoot root) {
   if (root.exact) return q.sign_at(*root.exact);
   if (q.is_zero()) return Sign::zero;
-  const RationalPolynomial g = gcd(p, q);
-  if (g.degree() >= 1 && g.sign_at(root.lo) != g.sign_at(root.hi)) return Sign::zero;
-  const std::vector<RationalPolynomial> sequence = sturm_sequence(squarefree_part(q));
-  for (;;) {
-    if (q.sign_at(root.lo) != Sign::zero && q.sign_at(root.hi) != Sign::zero &&
-        roots_in_half_open(sequence, root.lo, root.hi) == 0) {
-      return q.sign_at(root.lo);
-    }
-    halve_isolating_interval(p, root);
-    if (root.exact) return q.sign_at(*root.exact);
-  }
+  // The Tarski query: over the roots r of p in (lo, hi), the sign changes of the signed
+  // remainder sequence of p and p' q fall by (number with q(r) > 0) - (number with
+  // q(r) < 0). With r alone in the interval that is q's sign at r, however close q's own
+  // roots come, and without refining.
+  const std::vector<RationalPolynomial> sequence = signed_remainders(p, p.derivative() * q);
+  const int query = sign_changes(sequence, root.lo) - sign_changes(sequence, root.hi);
+  return query > 0 ? Sign::positive : query < 0 ? Sign::negative : Sign::zero;
 }
 
 }  // namespace exactgeo::ccd::internal

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <span>
 #include <stdexcept>
@@ -19,6 +20,7 @@
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/ccd/separation_box_test.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
@@ -428,6 +430,37 @@ TEST(MinSeparationBoxTest, NeverMissesAndSeesTheCubesCorners) {
   EXPECT_TRUE(vertex_face_separation_box_test(corner, d));
   EXPECT_FALSE(separated(corner, d).collision);
   EXPECT_TRUE(separated(corner, 0.65).collision);  // |v| = 0.6495...
+}
+
+/// On every bundled benchmark query: δ = 0 answers as the contact question, with its
+/// stage; the smallest positive δ finds every contact, and the truth's collisions.
+TEST(MinSeparation, BundledQueriesAtZeroAndAtTheSmallestDelta) {
+  int contacts = 0;
+  for (const QueryFile& file :
+       read_query_files({(std::filesystem::path(EXACTGEO_TEST_DATA_DIR) / "ccd").string()})) {
+    for (const QueryRecord& record : file.records) {
+      auto check = [&](const auto& q) {
+        Options zero;
+        zero.min_separation = 0.0;
+        const Result contact = run(q, Options{});
+        const Result at_zero = run(q, zero);
+        EXPECT_EQ(at_zero.collision, contact.collision) << file.path;
+        EXPECT_EQ(at_zero.decided_by, contact.decided_by) << file.path;
+        const Result tiny = separated(q, std::numeric_limits<double>::denorm_min());
+        EXPECT_TRUE(!contact.collision || tiny.collision) << file.path;
+        if (record.truth) {
+          EXPECT_TRUE(!*record.truth || tiny.collision) << file.path;
+        }
+        contacts += contact.collision;
+      };
+      if (file.type == QueryType::edge_edge) {
+        check(edge_edge_query(record));
+      } else {
+        check(vertex_face_query(record));
+      }
+    }
+  }
+  EXPECT_GT(contacts, 10);
 }
 
 TEST(MinSeparation, ZeroIsTheContactQuestionAndTheValidityCheck) {

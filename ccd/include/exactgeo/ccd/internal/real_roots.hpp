@@ -5,10 +5,10 @@
 //
 //  * Roots in an open interval are isolated by bisection with Sturm counts on the
 //    squarefree part p / gcd(p, p'). A midpoint that is itself a root is kept exactly.
-//  * The sign of q at an isolated root r of the squarefree p is zero exactly when
-//    g = gcd(p, q) vanishes at r: g divides p, so its roots are among p's, and r is the
-//    only one in the isolating interval. Otherwise the interval is halved until q has no
-//    root in it, and q's sign anywhere in it is its sign at r.
+//  * The sign of q at an isolated root r of p is a Tarski query: the drop in sign changes
+//    of the signed remainder sequence of p and p' q across the isolating interval counts
+//    the roots of p there with q > 0 minus those with q < 0 (Sturm-Tarski), and r is the
+//    only one. No refinement, however close q's roots come to r.
 // Everything is exact (GMP rationals); nothing here is fast, and nothing needs to be.
 
 #include <gmpxx.h>
@@ -70,6 +70,21 @@ std::vector<IsolatedRoot> roots_between(const RationalPolynomial& p, const mpq_c
 /// Halves the isolating interval of a root of the squarefree p, keeping the root (sets
 /// `exact` when a midpoint is the root).
 void halve_isolating_interval(const RationalPolynomial& p, IsolatedRoot& root);
+
+/// Counts over the roots of a squarefree p in an open interval whose ends are not roots:
+/// how many (Sturm), and for each of some polynomials q_i, how many roots have q_i > 0
+/// minus how many have q_i < 0 (a Tarski query). A cluster of roots whose conditions all
+/// agree is settled at once, without isolating its roots one by one.
+class TarskiQueries {
+ public:
+  TarskiQueries(const RationalPolynomial& p, const std::vector<RationalPolynomial>& qs);
+  int count(const mpq_class& lo, const mpq_class& hi) const;
+  int query(std::size_t i, const mpq_class& lo, const mpq_class& hi) const;
+
+ private:
+  std::vector<RationalPolynomial> sturm_;
+  std::vector<std::vector<RationalPolynomial>> sequences_;
+};
 
 /// The sign of q at `root`, a root of the squarefree `p` (as roots_between returned it).
 Sign sign_at_root(const RationalPolynomial& q, const RationalPolynomial& p, IsolatedRoot root);
