@@ -4,35 +4,30 @@
 // (> 0) at some time of the closed step? The features and their polynomial conditions
 // are in separation_features.hpp. Cheapest first:
 //
-//  1. separation_apart: two cheap proofs that the distance stays above δ, before anything else.
+//  1. separation_apart: two cheap proofs that the distance stays above δ.
 //     - Boxes: on some axis the two primitives' boxes over the whole step (each the box
 //       of its corners at both times) are more than δ apart. A distance is at least its
 //       largest coordinate difference. One rounded subtraction per axis decides: fl is
 //       monotone, so fl(lo_b - hi_a) > δ (a double) proves lo_b - hi_a > δ.
 //     - A plane: the differences between the primitives' corners at both times (their
 //       hull holds every difference of points of the two during the step) all lie more
-//       than δ beyond a plane through the origin, certified in bounded doubles.
-//  2. separation_within, bounded doubles (bounded_double.hpp) on pieces of the step, split at
-//     midpoints within a budget: a piece is apart by the plane above (on its own
-//     corners); a feature is excluded on a piece when its gap polynomial is certainly
-//     positive there, or one of its inside polynomials certainly negative; the query is
+//       than δ beyond a plane through the origin, certified in plain doubles with one
+//       static bound (derived in min_separation.cpp).
+//  2. separation_within, bounded doubles (bounded_double.hpp) on pieces of the step,
+//     split at midpoints within a budget: a piece is apart by the plane above (on its
+//     own corners, in bounded doubles); a feature is excluded on a piece when its gap polynomial is
+//     certainly positive there, or one of its inside polynomials certainly negative; the query is
 //     "within" when at a piece's end some feature's conditions all certainly hold;
 //     "apart" when every piece is apart or has every feature excluded.
-//  3. Exact (real_roots.hpp, GMP). The set of times within δ is closed (the distance is
-//     continuous in time). If neither end of the step is in it but some time is, its
-//     earliest time t* has distance exactly δ, realized by the feature whose relative
-//     interior holds the closest point: that feature's conditions hold at t* with its
-//     weight positive and its gap zero. So it suffices to test both ends and every root
-//     in (0, 1) of every gap polynomial. A gap that vanishes identically (the feature's
-//     distance is δ wherever it is defined) has no isolated roots; its feature is tested
-//     at every root, and between every two roots, of the product of its other
-//     polynomials, which between them keep their signs.
+//  3. Exact roots (separation_roots.hpp, GMP): both ends of the step and the roots of
+//     every gap polynomial decide, because the earliest time within δ has distance
+//     exactly δ.
 //
 // Stage 2 goes through pieces depth first, left half first, so when a piece is taken
 // every time before it is proven apart: a feature holding at a piece's start makes that
 // start the earliest time within δ, one holding at its end brackets the earliest time in
-// the piece (split on to the width asked). Stage 3's candidates are all times within δ,
-// and the earliest time is among them: their minimum, by comparing isolated roots.
+// the piece (split on to the width asked). Stage 3 finds the earliest time among its
+// candidates.
 //
 // δ = 0 is not decided here: it is the exact method's contact question, which runs
 // between stages 1 and 2 when no time of impact is asked (a contact is within every δ).
