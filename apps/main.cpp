@@ -56,8 +56,14 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);  // prints help, version or the error
-    return code == 0 ? 0 : to_int(ExitCode::input_error);
+    if (e.get_exit_code() == 0) return app.exit(e);  // help or version
+    // The error, named by the subcommand it belongs to.
+    std::string command = "exactgeo";
+    for (const CLI::App* sub : app.get_subcommands())
+      command += " " + sub->get_name();
+    std::cerr << command << ": " << e.what() << "\nRun '" << command
+              << " --help' for more information.\n";
+    return to_int(ExitCode::input_error);
   }
   if (predicate_command.parsed()) {
     return with_input(

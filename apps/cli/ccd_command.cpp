@@ -317,6 +317,11 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
   std::size_t total = 0;
   for (const QueryFile& f : files)
     total += f.records.size();
+  if (total == 0) {
+    err << "exactgeo ccd: no queries in the " << files.size()
+        << (files.size() == 1 ? " file read\n" : " files read\n");
+    return ExitCode::input_error;
+  }
 
   Tally vf;
   Tally ee;
@@ -373,17 +378,28 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
          [&options](const std::string& t) {
            options.type = t == "vf" ? QueryType::vertex_face : QueryType::edge_edge;
          },
-         "vf or ee: the query type of every file (default: from the path)")
+         "vf or ee: the query type of files whose path does not say it (a folder vertex-face or "
+         "edge-edge, a stem ending in vf or ee); a type that contradicts the path is refused")
       ->check(CLI::IsMember({"vf", "ee"}));
   sub->add_option("--truth", options.truth,
                   "ground truth JSON array for 6-column files (default: "
-                  "<dir>/../mma_bool/<stem>_mma_bool.json when present)");
+                  "<dir>/../mma_bool/<stem>_mma_bool.json when present); refused for files "
+                  "with their own truth column");
   sub->add_option("--per-query", options.per_query,
                   "write path,index,type,result,truth,decided_by,ns,toi_start,toi_end for "
                   "every query to this CSV file");
   sub->add_option("--tolerance", options.ccd.cubic_tolerance,
                   "cubic only: distance tolerance (default 1e-6)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            const bool whole = !text.empty() && end == text.c_str() + text.size();
+            return whole && value > 0.0 && std::isfinite(value)
+                       ? std::string()
+                       : "expected a positive number, got '" + text + "'";
+          },
+          "POSITIVE"));
   sub->add_option_function<double>(
          "--toi-width", [&options](double w) { options.ccd.time_of_impact_width = w; },
          "exact only: also bracket each colliding query's earliest contact to at most this "

@@ -211,9 +211,19 @@ std::vector<bool> read_truth_file(const std::string& path) {
   return read_truth_array(in, path);
 }
 
+std::string type_description(QueryType t) {
+  return t == QueryType::vertex_face ? "vertex-face" : "edge-edge";
+}
+
 QueryFile read_query_file(const std::string& path, std::optional<QueryType> forced_type,
                           const std::string& truth_file) {
-  const std::optional<QueryType> type = forced_type ? forced_type : query_type_of(path);
+  const std::optional<QueryType> path_type = query_type_of(path);
+  if (forced_type && path_type && *forced_type != *path_type) {
+    throw InputError("'" + path + "' holds " + type_description(*path_type) +
+                     " queries by its path, not " + type_description(*forced_type) +
+                     " ones as the type given says");
+  }
+  const std::optional<QueryType> type = forced_type ? forced_type : path_type;
   if (!type) {
     throw InputError("cannot tell the query type of '" + path +
                      "' (no vertex-face/edge-edge folder, no vf/ee stem): use --type");
@@ -222,6 +232,10 @@ QueryFile read_query_file(const std::string& path, std::optional<QueryType> forc
   if (!in) throw InputError("cannot open '" + path + "'");
   QueryFile file{path, *type, read_query_records(in, path)};
   const bool inline_truth = !file.records.empty() && file.records.front().truth.has_value();
+  if (inline_truth && !truth_file.empty()) {
+    throw InputError("'" + path + "' has its own truth column; a truth file ('" + truth_file +
+                     "') is for 6-column files");
+  }
   if (inline_truth || file.records.empty()) return file;
   std::string truth_path = truth_file;
   if (truth_path.empty()) {

@@ -58,6 +58,12 @@ echo "[true, false]" >"$scratch/two.json"
 expect 2 "ccd truth length mismatch" "" ccd --type vf --truth "$scratch/two.json" "$scratch/six.csv"
 echo "1,2,3,4,5,6,7" >"$scratch/bad.csv"
 expect 2 "ccd malformed row" "" ccd --type ee "$scratch/bad.csv"
+# A type that contradicts the path, a truth file for files with their own truth column,
+# and files without a single query are refused, each with a message naming the cause.
+expect 2 "ccd type contradicting the path" "" ccd --type vf "$unit"
+expect 2 "ccd truth file for 7-column files" "" ccd --truth "$scratch/two.json" "$unit"
+: >"$scratch/empty_vf.csv"
+expect 2 "ccd without queries" "" ccd "$scratch/empty_vf.csv"
 expect 2 "ccd zero timing passes" "" ccd --repeat 0 "$unit"
 # Timing passes change the times only: the counts are those of a single pass.
 untimed() {
@@ -378,5 +384,21 @@ expect_in "ccd-mesh assimp format message" "$message" \
   "$scratch/tri.stl: ccd-mesh reads OBJ, OFF and PLY files only"
 message=$("$exe" ccd-mesh "$vf0" "$scratch/oneface1.obj" 2>&1 >/dev/null)
 expect_in "ccd-mesh face count message" "$message" "$vf0 has 2 faces, $scratch/oneface1.obj has 1"
+
+message=$("$exe" ccd --type vf "$unit" 2>&1 >/dev/null)
+expect_in "ccd contradicting type message" "$message" "exactgeo ccd: " "edge-edge queries by its path"
+message=$("$exe" ccd --truth "$scratch/two.json" "$unit" 2>&1 >/dev/null)
+expect_in "ccd truth file message" "$message" "has its own truth column"
+message=$("$exe" ccd "$scratch/empty_vf.csv" 2>&1 >/dev/null)
+expect_in "ccd no queries message" "$message" "exactgeo ccd: no queries"
+# Option errors name their subcommand and stay short (no 300-digit range).
+message=$("$exe" ccd --tolerance -1 "$unit" 2>&1 >/dev/null)
+expect_in "ccd --tolerance -1 message" "$message" "exactgeo ccd: --tolerance: expected a positive number, got '-1'"
+if [ "${#message}" -gt 200 ]; then
+  echo "FAIL: ccd --tolerance -1 message is ${#message} characters long"
+  failures=$((failures + 1))
+fi
+message=$("$exe" inside --threads 0 x 2>&1 >/dev/null)
+expect_in "inside option error message" "$message" "exactgeo inside: --threads"
 
 exit $((failures > 0))

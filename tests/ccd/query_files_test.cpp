@@ -131,5 +131,30 @@ TEST(QueryRecords, BundledBenchmarkFilesRead) {
     EXPECT_TRUE(r.truth.has_value());
 }
 
+/// A type that contradicts the path, and a truth file for files that carry their own
+/// truth column, are refused with the file named; the path's own type is used as before.
+TEST(QueryFiles, RefuseATypeOrTruthFileThatContradictsTheFile) {
+  const std::string folder = std::string(EXACTGEO_TEST_DATA_DIR) + "/ccd/sample-queries/unit-tests";
+  const std::string edges = folder + "/edge-edge";
+  auto message = [](auto&& read) {
+    try {
+      read();
+    } catch (const io::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string type_error =
+      message([&] { read_query_files({edges}, QueryType::vertex_face); });
+  EXPECT_NE(type_error.find("edge-edge/data_0_0.csv"), std::string::npos) << type_error;
+  EXPECT_NE(type_error.find("edge-edge queries by its path"), std::string::npos) << type_error;
+  const std::string truth_error =
+      message([&] { read_query_files({edges}, std::nullopt, "x.json"); });
+  EXPECT_NE(truth_error.find("has its own truth column"), std::string::npos) << truth_error;
+  // The same type as the path, or none, reads the files.
+  EXPECT_FALSE(read_query_files({edges}, QueryType::edge_edge).empty());
+  EXPECT_EQ(read_query_files({folder}).size(), 2u * read_query_files({edges}).size());
+}
+
 }  // namespace
 }  // namespace exactgeo::ccd

@@ -52,8 +52,9 @@ struct QueryFile {
 };
 
 /// Every file of `paths`, and every `*.csv` under its directories (sorted), in order. The
-/// type is `type` when given, else what the path says. Ground truth is the 7th column,
-/// else `truth_file` when given, else the published layout
+/// type is what the path says, else `type`; a `type` that contradicts the path is an
+/// error. Ground truth is the 7th column, else `truth_file` when given (an error for a
+/// file with the 7th column), else the published layout
 /// `<dir>/../mma_bool/<stem>_mma_bool.json` when it exists. Throws io::InputError.
 std::vector<QueryFile> read_query_files(const std::vector<std::string>& paths,
                                         std::optional<QueryType> type = std::nullopt,
