@@ -8,6 +8,7 @@
 #include <ostream>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "exactgeo/inside/batch.hpp"
@@ -59,6 +60,23 @@ void print_json_labels(const std::vector<inside::Location>& labels, std::ostream
   out << text << "]";
 }
 
+/// For a mesh refused by its checks: whether merging the vertices that repeat another's
+/// coordinates (--weld) would make it acceptable, said as a hint (empty when not, or when
+/// --weld was given). Only on this error path is the file read a second time.
+std::string weld_hint(const InsideCommandOptions& options) {
+  if (options.weld) return {};
+  try {
+    LoadedMesh welded = load_mesh(options.mesh, {true, options.split_polygons});
+    if (welded.welded_vertices == 0) return {};
+    const mesh::MeshCheck check = mesh::check_mesh(welded.mesh);
+    if (mesh::closed_surface_problem(check, options.allow_non_manifold)) return {};
+    return "; with --weld, which merges the " + std::to_string(welded.welded_vertices) +
+           " vertices that repeat another's coordinates, it is accepted";
+  } catch (const std::exception&) {
+    return {};
+  }
+}
+
 }  // namespace
 
 ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
@@ -89,7 +107,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     err << "exactgeo inside: " << e.what() << "\n";
     return ExitCode::input_error;
   } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << options.mesh << ": " << e.what() << "\n";
+    err << "exactgeo inside: " << options.mesh << ": " << e.what() << weld_hint(options) << "\n";
     return ExitCode::input_error;
   } catch (const std::exception& e) {  // Embree failing, or memory running out
     err << "exactgeo inside: " << options.mesh

@@ -401,4 +401,15 @@ fi
 message=$("$exe" inside --threads 0 x 2>&1 >/dev/null)
 expect_in "inside option error message" "$message" "exactgeo inside: --threads"
 
+# A face soup that welding would close: refused, with the hint.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 0\nv 0 0 1\nv 1 0 0\nv 0 0 0\nv 0 1 0\nv 0 0 1\nv 1 0 0\nv 0 0 1\nv 0 1 0\nf 1 3 2\nf 4 6 5\nf 7 9 8\nf 10 11 12\n' >"$scratch/soup.obj"
+expect 2 "inside face soup" "0.1 0.1 0.1\n" inside "$scratch/soup.obj"
+expect 0 "inside face soup welded" "0.1 0.1 0.1\n" inside --weld "$scratch/soup.obj"
+message=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/soup.obj" 2>&1 >/dev/null)
+expect_in "inside face soup hint" "$message" "mesh is not closed" "with --weld, which merges the 8 vertices"
+message=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/oneface1.obj" 2>&1 >/dev/null)
+case "$message" in
+  *--weld*) echo "FAIL: a mesh that welding cannot close got the --weld hint: $message"; failures=$((failures + 1)) ;;
+esac
+
 exit $((failures > 0))
