@@ -92,13 +92,6 @@ void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
   if (every_edge_twice) check.consistently_oriented = opposite_directions;
 }
 
-std::string edge_text(const Edge& e) {
-  std::string s = std::to_string(e.first);
-  s.append("-");
-  s.append(std::to_string(e.second));
-  return s;
-}
-
 template <class T, class Format>
 std::string first_list(const Examples<T>& examples, Format format) {
   std::string s = "first: ";
@@ -116,10 +109,6 @@ std::string with_examples(std::string head, const Examples<T>& examples, Format 
                           std::string_view before = {}) {
   head.append(" (").append(before).append(first_list(examples, format)).append(")");
   return head;
-}
-
-std::string index_text(std::size_t i) {
-  return std::to_string(i);
 }
 
 /// "<count> <noun or plural>", e.g. "1 boundary edge", "42 boundary edges".
@@ -213,7 +202,13 @@ MeshCheck check_mesh(const Mesh& mesh) {
   return check;
 }
 
-std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool allow_non_manifold) {
+std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool allow_non_manifold,
+                                                  std::size_t first_index) {
+  // Vertices and faces as the file numbers them.
+  const auto index_text = [first_index](std::size_t i) { return std::to_string(i + first_index); };
+  const auto edge_text = [&](const Edge& e) {
+    return index_text(e.first).append("-").append(index_text(e.second));
+  };
   std::vector<std::string> problems;
   if (check.faces == 0) problems.emplace_back("mesh has no faces");
 
@@ -226,9 +221,9 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
       s.append("): ");
     }
     s.append("face ");
-    s.append(std::to_string(bad.first.front()));
+    s.append(index_text(bad.first.front()));
     s.append(" has corner index ");
-    s.append(std::to_string(check.first_out_of_range_corner));
+    s.append(index_text(check.first_out_of_range_corner));
     s.append(", but there ");
     s.append(check.vertices == 1 ? "is " : "are ");
     s.append(counted(check.vertices, "vertex", "vertices"));

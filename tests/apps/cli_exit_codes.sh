@@ -407,6 +407,8 @@ expect 2 "inside face soup" "0.1 0.1 0.1\n" inside "$scratch/soup.obj"
 expect 0 "inside face soup welded" "0.1 0.1 0.1\n" inside --weld "$scratch/soup.obj"
 message=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/soup.obj" 2>&1 >/dev/null)
 expect_in "inside face soup hint" "$message" "mesh is not closed" "with --weld, which merges the 8 vertices"
+# OBJ numbers vertices from 1: so do the messages about an OBJ file, and they say so.
+expect_in "inside OBJ numbering" "$message" "first: 1-2, 1-3, 2-3" "numbered from 1, as in the file"
 message=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/oneface1.obj" 2>&1 >/dev/null)
 case "$message" in
   *--weld*) echo "FAIL: a mesh that welding cannot close got the --weld hint: $message"; failures=$((failures + 1)) ;;

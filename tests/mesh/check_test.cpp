@@ -235,6 +235,10 @@ TEST(MeshCheck, DegenerateFaces) {
   const std::string message = closed_surface_problem(c).value_or("");
   EXPECT_NE(message.find("5 degenerate faces (first: 1, 2, 3, 7, 8)"), std::string::npos)
       << message;
+  // Numbered as an OBJ file numbers them, from 1.
+  const std::string from_one = closed_surface_problem(c, false, 1).value_or("");
+  EXPECT_NE(from_one.find("5 degenerate faces (first: 2, 3, 4, 8, 9)"), std::string::npos)
+      << from_one;
 }
 
 TEST(MeshCheck, DegenerateFacesInAClosedMesh) {

@@ -65,8 +65,11 @@ MeshCheck check_mesh(const Mesh& mesh);
 /// against (exactgeo::inside), as one message with counts and the first few indices, or
 /// nullopt if nothing does: no out-of-range index,
 /// finite coordinates, at least one face, no degenerate face, every edge shared by an
-/// even number of faces, and (unless allow_non_manifold) by exactly two.
+/// even number of faces, and (unless allow_non_manifold) by exactly two. Vertices and
+/// faces are numbered from `first_index` in the message (0 as in the Mesh; 1 as in an OBJ
+/// file).
 std::optional<std::string> closed_surface_problem(const MeshCheck& check,
-                                                  bool allow_non_manifold = false);
+                                                  bool allow_non_manifold = false,
+                                                  std::size_t first_index = 0);
 
 }  // namespace exactgeo::mesh
