@@ -22,6 +22,22 @@ QueryPoints points_of(const Query& q) noexcept {
   return std::bit_cast<QueryPoints>(q);
 }
 
+/// The differences between the two primitives' corners at one time: vertex - face corner
+/// (a triangle, H = 3) or a-end - b-end (a parallelogram, H = 4). Every difference of a
+/// point of one primitive and a point of the other at that time is a convex combination
+/// of them, and over a piece of the step a convex combination of both ends' images.
+template <std::size_t H, class T>
+std::array<std::array<T, 3>, H> corner_differences(const std::array<std::array<T, 3>, 4>& p) {
+  auto minus = [](const std::array<T, 3>& a, const std::array<T, 3>& b) {
+    return std::array<T, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  };
+  if constexpr (H == 3) {
+    return {minus(p[0], p[1]), minus(p[0], p[2]), minus(p[0], p[3])};
+  } else {
+    return {minus(p[0], p[2]), minus(p[0], p[3]), minus(p[1], p[3]), minus(p[1], p[2])};
+  }
+}
+
 // ---- 1. Boxes -------------------------------------------------------------------------
 
 /// The first `split` of the four points form one primitive, the others the other.
@@ -52,18 +68,8 @@ template <std::size_t H>
 bool apart_by_plane_at_ends(const QueryPoints& x, double delta) noexcept {
   constexpr double u = 0x1p-53, tiny = 0x1p-1070;
   auto corners_at = [&](int time) {
-    std::array<Vector3, H> c;
-    const Point3* p = &x[4 * time];
-    auto minus = [](const Point3& a, const Point3& b) {
-      return Vector3{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-    };
-    if constexpr (H == 3) {
-      for (std::size_t k = 0; k < 3; ++k)
-        c[k] = minus(p[0], p[k + 1]);
-    } else {
-      c = {minus(p[0], p[2]), minus(p[0], p[3]), minus(p[1], p[3]), minus(p[1], p[2])};
-    }
-    return c;
+    const std::array<Point3, 4> p{x[4 * time], x[4 * time + 1], x[4 * time + 2], x[4 * time + 3]};
+    return corner_differences<H>(p);
   };
   const std::array<Vector3, H> start = corners_at(0), end = corners_at(1);
   const Vector3 n = closest_direction(start);
@@ -149,26 +155,13 @@ bool holds_at_end(const Feature<BoundedDouble>& f, bool end) noexcept {
   return true;
 }
 
-/// The differences between the two primitives' corners at one time: vertex - face corner
-/// (a triangle, H = 3) or a-end - b-end (a parallelogram, H = 4). Every difference of a
-/// point of one primitive and a point of the other at that time is a convex combination
-/// of them, and over a piece of the step a convex combination of both ends' images.
+/// A time slice's corner differences (corner_differences) in bounded doubles.
 template <std::size_t H>
 using Slice = std::array<std::array<BoundedDouble, 3>, H>;
 
 template <std::size_t H>
 Slice<H> slice_of(const Positions& p) noexcept {
-  Slice<H> c;
-  auto minus = [](const std::array<BoundedDouble, 3>& a, const std::array<BoundedDouble, 3>& b) {
-    return std::array<BoundedDouble, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  };
-  if constexpr (H == 3) {
-    for (std::size_t k = 0; k < 3; ++k)
-      c[k] = minus(p[0], p[k + 1]);
-  } else {
-    c = {minus(p[0], p[2]), minus(p[0], p[3]), minus(p[1], p[3]), minus(p[1], p[2])};
-  }
-  return c;
+  return corner_differences<H>(p);
 }
 
 /// A plane through the origin with every corner image of both slices more than δ on its
