@@ -14,11 +14,13 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "ccd/min_separation_oracle.hpp"
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/internal/culling.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/ccd/separation_box_test.hpp"
@@ -48,77 +50,35 @@ Result separated(const EdgeEdgeQuery& q, double delta) {
   return edge_edge_ccd(q, o);
 }
 
-/// The smallest distance over the step, estimated in doubles from samples (only to place
-/// δ near it: the oracle decides).
-double sampled_distance(const VertexFaceQuery& q, int samples);
-double sampled_distance(const EdgeEdgeQuery& q, int samples);
-
-Point3 lerp(const Point3& a, const Point3& b, double t) {
-  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
-}
-double dist2(const Point3& a, const Point3& b) {
-  const double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
-  return x * x + y * y + z * z;
-}
-Point3 closest_on_segment(const Point3& p, const Point3& a, const Point3& b) {
-  const Point3 e{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const double ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-  if (ee == 0.0) return a;
-  const double s = std::clamp(
-      ((p[0] - a[0]) * e[0] + (p[1] - a[1]) * e[1] + (p[2] - a[2]) * e[2]) / ee, 0.0, 1.0);
-  return lerp(a, b, s);
-}
-double point_triangle(const Point3& p, const Point3& a, const Point3& b, const Point3& c) {
-  // Minimum over a fine barycentric grid and the edges: an estimate is all that is needed.
-  double best =
-      std::min({dist2(p, closest_on_segment(p, a, b)), dist2(p, closest_on_segment(p, b, c)),
-                dist2(p, closest_on_segment(p, c, a))});
-  const Point3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-  const Point3 e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-  const Point3 n{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                 e1[0] * e2[1] - e1[1] * e2[0]};
-  const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-  if (nn > 0.0) {
-    const double h = ((p[0] - a[0]) * n[0] + (p[1] - a[1]) * n[1] + (p[2] - a[2]) * n[2]) / nn;
-    const Point3 q{p[0] - h * n[0], p[1] - h * n[1], p[2] - h * n[2]};
-    // Inside when the three sub-triangle normals agree with n.
-    auto side = [&](const Point3& u, const Point3& v) {
-      const Point3 d{v[0] - u[0], v[1] - u[1], v[2] - u[2]};
-      const Point3 w{q[0] - u[0], q[1] - u[1], q[2] - u[2]};
-      const Point3 x{d[1] * w[2] - d[2] * w[1], d[2] * w[0] - d[0] * w[2],
-                     d[0] * w[1] - d[1] * w[0]};
-      return x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
+/// The smallest distance over the step, estimated in plain doubles from samples (only to
+/// place δ near it: the oracle decides): at each sampled time, the length of the point of
+/// the slice of corner differences (a triangle or a parallelogram) closest to the origin,
+/// as the culling's closest_direction finds it.
+template <class Query>
+double sampled_distance(Query q, int samples) {
+  const std::array<Point3*, 8> p = points(q);
+  constexpr std::size_t H = std::is_same_v<Query, VertexFaceQuery> ? 3 : 4;
+  constexpr std::array<std::array<int, 2>, H> pairs = [] {
+    if constexpr (H == 3) {
+      return std::array<std::array<int, 2>, 3>{{{0, 1}, {0, 2}, {0, 3}}};
+    } else {
+      return std::array<std::array<int, 2>, 4>{{{0, 2}, {0, 3}, {1, 3}, {1, 2}}};
+    }
+  }();
+  double best = INFINITY;
+  for (int i = 0; i <= samples; ++i) {
+    const double t = static_cast<double>(i) / samples;
+    auto at = [&](int k, int axis) {
+      return (*p[k])[axis] + t * ((*p[k + 4])[axis] - (*p[k])[axis]);
     };
-    if (side(a, b) >= 0 && side(b, c) >= 0 && side(c, a) >= 0) best = std::min(best, dist2(p, q));
-  }
-  return std::sqrt(best);
-}
-double segment_segment(const Point3& a0, const Point3& a1, const Point3& b0, const Point3& b1) {
-  double best = std::min(
-      {dist2(a0, closest_on_segment(a0, b0, b1)), dist2(a1, closest_on_segment(a1, b0, b1)),
-       dist2(b0, closest_on_segment(b0, a0, a1)), dist2(b1, closest_on_segment(b1, a0, a1))});
-  for (int i = 0; i <= 64; ++i) {  // points of a against segment b
-    const Point3 p = lerp(a0, a1, i / 64.0);
-    best = std::min(best, dist2(p, closest_on_segment(p, b0, b1)));
-  }
-  return std::sqrt(best);
-}
-double sampled_distance(const VertexFaceQuery& q, int samples) {
-  double best = INFINITY;
-  for (int i = 0; i <= samples; ++i) {
-    const double t = static_cast<double>(i) / samples;
-    best = std::min(best, point_triangle(lerp(q.v_t0, q.v_t1, t), lerp(q.f0_t0, q.f0_t1, t),
-                                         lerp(q.f1_t0, q.f1_t1, t), lerp(q.f2_t0, q.f2_t1, t)));
-  }
-  return best;
-}
-double sampled_distance(const EdgeEdgeQuery& q, int samples) {
-  double best = INFINITY;
-  for (int i = 0; i <= samples; ++i) {
-    const double t = static_cast<double>(i) / samples;
-    best =
-        std::min(best, segment_segment(lerp(q.ea0_t0, q.ea0_t1, t), lerp(q.ea1_t0, q.ea1_t1, t),
-                                       lerp(q.eb0_t0, q.eb0_t1, t), lerp(q.eb1_t0, q.eb1_t1, t)));
+    std::array<Vector3, H> slice;
+    for (std::size_t c = 0; c < H; ++c) {
+      for (int axis = 0; axis < 3; ++axis)
+        slice[c][axis] = at(pairs[c][0], axis) - at(pairs[c][1], axis);
+    }
+    const Vector3 closest = internal::closest_direction(slice);
+    best = std::min(best, std::sqrt(closest[0] * closest[0] + closest[1] * closest[1] +
+                                    closest[2] * closest[2]));
   }
   return best;
 }
