@@ -18,6 +18,7 @@
 #include "exactgeo/io/point_reader.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
+#include "exactgeo/mesh/weld.hpp"
 
 namespace exactgeo::cli {
 
@@ -60,37 +61,30 @@ void print_json_labels(const std::vector<inside::Location>& labels, std::ostream
   out << text << "]";
 }
 
-/// A mesh's refusal in the file's own numbering (OBJ counts vertices and faces from 1,
-/// OFF and PLY from 0), saying which; `message` as it is when the refusal was not the
-/// checks'. Only on this error path is the file read a second time.
-std::string refusal_in_file_terms(const InsideCommandOptions& options, const std::string& message) {
+/// A mesh refused by its checks, explained: the checks' message in the file's own
+/// numbering (OBJ counts vertices and faces from 1, OFF and PLY from 0), saying which, and
+/// whether merging the vertices that repeat another's coordinates (--weld) would make it
+/// acceptable. `message` as it is when the refusal was not the checks'. Only on this error
+/// path is the file read a second time.
+std::string refusal_explained(const InsideCommandOptions& options, const std::string& message) {
   try {
-    const LoadedMesh loaded = load_mesh(options.mesh, {options.weld, options.split_polygons});
+    LoadedMesh loaded = load_mesh(options.mesh, {options.weld, options.split_polygons});
     const bool obj = loaded.format == "obj";
     const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh),
                                                       options.allow_non_manifold, obj ? 1 : 0);
     if (!problem) return message;
-    return *problem + (obj ? " (vertices and faces numbered from 1, as in the file)"
-                           : " (vertices and faces numbered from 0)");
+    std::string text = *problem + (obj ? " (vertices and faces numbered from 1, as in the file)"
+                                       : " (vertices and faces numbered from 0)");
+    if (options.weld) return text;
+    const std::size_t merged = mesh::weld_vertices(loaded.mesh);
+    if (merged > 0 &&
+        !mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), options.allow_non_manifold)) {
+      text += "; with --weld, which merges the " + std::to_string(merged) +
+              " vertices that repeat another's coordinates, it is accepted";
+    }
+    return text;
   } catch (const std::exception&) {
     return message;
-  }
-}
-
-/// For a mesh refused by its checks: whether merging the vertices that repeat another's
-/// coordinates (--weld) would make it acceptable, said as a hint (empty when not, or when
-/// --weld was given). Only on this error path is the file read a second time.
-std::string weld_hint(const InsideCommandOptions& options) {
-  if (options.weld) return {};
-  try {
-    LoadedMesh welded = load_mesh(options.mesh, {true, options.split_polygons});
-    if (welded.welded_vertices == 0) return {};
-    const mesh::MeshCheck check = mesh::check_mesh(welded.mesh);
-    if (mesh::closed_surface_problem(check, options.allow_non_manifold)) return {};
-    return "; with --weld, which merges the " + std::to_string(welded.welded_vertices) +
-           " vertices that repeat another's coordinates, it is accepted";
-  } catch (const std::exception&) {
-    return {};
   }
 }
 
@@ -124,8 +118,8 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     err << "exactgeo inside: " << e.what() << "\n";
     return ExitCode::input_error;
   } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << options.mesh << ": " << refusal_in_file_terms(options, e.what())
-        << weld_hint(options) << "\n";
+    err << "exactgeo inside: " << options.mesh << ": " << refusal_explained(options, e.what())
+        << "\n";
     return ExitCode::input_error;
   } catch (const std::exception& e) {  // Embree failing, or memory running out
     err << "exactgeo inside: " << options.mesh
