@@ -270,11 +270,21 @@ void write_per_query(const std::string& path, const RunResults& run) {
 
 }  // namespace
 
-std::optional<double> parse_min_separation(const std::string& text) {
+namespace {
+
+/// The whole text as a decimal or hexadecimal floating-point number, else nullopt.
+std::optional<double> whole_number(const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
-  if (!ccd::is_valid_min_separation(value)) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::optional<double> parse_min_separation(const std::string& text) {
+  const auto value = whole_number(text);
+  if (!value || !ccd::is_valid_min_separation(*value)) return std::nullopt;
   return value;
 }
 
@@ -392,10 +402,8 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
                   "cubic only: distance tolerance (default 1e-6)")
       ->check(CLI::Validator(
           [](std::string& text) {
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            const bool whole = !text.empty() && end == text.c_str() + text.size();
-            return whole && value > 0.0 && std::isfinite(value)
+            const auto value = whole_number(text);
+            return value && *value > 0.0 && std::isfinite(*value)
                        ? std::string()
                        : "expected a positive number, got '" + text + "'";
           },
