@@ -86,8 +86,7 @@ class RootSearch {
                                     const Coefficients& p) noexcept {
     deepest_ = std::max(deepest_, piece.depth);
     const bool answer_width = piece.t_end - piece.t_start <= width_;
-    const bool width_asked = width_ < 1.0;
-    if (!parity && ((width_asked && answer_width) || piece.depth >= max_depth_ ||
+    if (!parity && ((earliest_asked() && answer_width) || piece.depth >= max_depth_ ||
                     piece.depth % kParityEvery == 0)) {
       parity = parity_of(piece);
     }
@@ -117,14 +116,16 @@ class RootSearch {
       unsplittable = true;
       return std::nullopt;
     }
-    const bool width_asked = width_ < 1.0;
-    if (!parity && width_asked && coplanarity_ && coplanarity_->changes_sign(p)) {
+    if (!parity && earliest_asked() && coplanarity_ && coplanarity_->changes_sign(p)) {
       parity = parity_of(*piece);
     }
     if (parity && *parity != RootParity::even) return earliest(*piece, parity, p);
     if (certainly_no_root(piece->offsets(), piece->filterable())) return std::nullopt;
     return earliest(*piece, parity, p);
   }
+
+  /// A time of impact is asked for (a width below the whole step's), not only whether.
+  bool earliest_asked() const noexcept { return width_ < 1.0; }
 
   static RootParity parity_of(const TimePiece<C>& piece) noexcept {
     const Offsets<C> corners = piece.offsets();
