@@ -16,6 +16,7 @@
 
 #include "cli/ccd_command.hpp"
 #include "cli/json.hpp"
+#include "cli/mesh_format_option.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 
@@ -212,7 +213,11 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
   }
 
   // No welding: it could merge vertices in one frame and not in the other.
-  const LoadOptions load{.weld = false, .split_polygons = options.split_polygons};
+  const LoadOptions load{
+      .weld = false, .split_polygons = options.split_polygons, .format = options.format};
+  if (options.frame0 == "-" && options.frame1 == "-") {
+    return fail("the two frames cannot both come from standard input");
+  }
   std::array<LoadedMesh, 2> frames;
   const std::array<const std::string*, 2> paths{&options.frame0, &options.frame1};
   for (std::size_t k = 0; k < 2; ++k) {
@@ -221,7 +226,8 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
     } catch (const std::exception& e) {  // InputError, or a failure inside a reader
       return fail(e.what());
     }
-    if (const auto problem = frame_problem(*paths[k], frames[k], options.split_quads)) {
+    if (const auto problem =
+            frame_problem(mesh::mesh_source_name(*paths[k]), frames[k], options.split_quads)) {
       return fail(*problem);
     }
   }
@@ -273,11 +279,13 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
       "broad-phase candidate count and the time per phase. Indices are 0-based. Exit code 0 "
       "whether or not anything collides.");
   sub->add_option("frame0", options.frame0,
-                  "the mesh at the start of the step (OBJ, OFF or PLY, read exactly)")
+                  "the mesh at the start of the step (OBJ, OFF or PLY, read exactly); - for "
+                  "standard input (with --format)")
       ->required();
   sub->add_option("frame1", options.frame1,
                   "the mesh at the end of the step: the same faces, other positions")
       ->required();
+  add_mesh_format_option(*sub, options.format);
   sub->add_option_function<std::string>(
          "--method", [&options](const std::string& m) { options.method = *ccd::parse_method(m); },
          "exact (default: every root, exactly) or parity (the 2012 root parity algorithm: "

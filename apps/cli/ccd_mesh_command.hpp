@@ -27,6 +27,7 @@ struct CcdMeshOptions {
   std::optional<std::string> min_separation;  ///< --min-separation as given (the run checks it)
   unsigned threads = 0;                       ///< 0: one per hardware thread
   bool split_polygons = false;
+  std::string format;  ///< --format of both frames: empty for each file's extension
   /// Split each quad (c0, c1, c2, c3) along its diagonal c0-c2 into (c0, c1, c2) and
   /// (c0, c2, c3), in place in the face order, instead of refusing quads.
   bool split_quads = false;

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "cli/json.hpp"
+#include "cli/mesh_format_option.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 
@@ -78,7 +79,7 @@ void write_table(std::ostream& out, const InfoOptions& options, const LoadedMesh
   auto row = [&out](std::string_view label, const std::string& value) {
     out << std::left << std::setw(20) << label << value << "\n";
   };
-  row("file", options.mesh);
+  row("file", mesh::mesh_source_name(options.mesh));
   row("format", loaded.format);
   if (loaded.coordinates_via_float) {
     out << "warning: coordinates came through 32-bit floats (assimp): not the file's exact "
@@ -156,7 +157,7 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
     return ExitCode::input_error;
   }
   const MeshCheck check = mesh::check_mesh(loaded.mesh);
-  const std::optional<std::string> problem = mesh::closed_surface_problem(check);
+  const std::optional<std::string> problem = mesh::closed_surface_problem(check, loaded);
   std::ostringstream text;
   if (options.json) {
     write_json(text, options, loaded, check, problem);
@@ -175,8 +176,11 @@ CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
       "closed or not (boundary edges), non-manifold edges, orientation, degenerate faces and "
       "non-planar quads (both decided exactly), components, and whether `exactgeo inside` "
       "can use it. Exit code 0 whenever the file loads.");
-  sub->add_option("mesh", options.mesh, "mesh file (OBJ, OFF, PLY exactly; others via assimp)")
+  sub->add_option("mesh", options.mesh,
+                  "mesh file (OBJ, OFF, PLY exactly; others via assimp), or - for standard "
+                  "input (with --format)")
       ->required();
+  add_mesh_format_option(*sub, options.load.format);
   sub->add_flag("--weld", options.load.weld,
                 "merge vertices with exactly equal coordinates first (for face soups, STL)");
   sub->add_flag("--split-polygons", options.load.split_polygons,

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/mesh_format_option.hpp"
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/float_ray_parity.hpp"
@@ -61,20 +62,25 @@ void print_json_labels(const std::vector<inside::Location>& labels, std::ostream
   out << text << "]";
 }
 
+mesh::LoadOptions load_options(const InsideCommandOptions& options) {
+  return {.weld = options.weld,
+          .split_polygons = options.split_polygons,
+          .format = options.mesh_format};
+}
+
 /// A mesh refused by its checks, explained: the checks' message in the file's own
 /// numbering (OBJ counts vertices and faces from 1, OFF and PLY from 0), saying which, and
 /// whether merging the vertices that repeat another's coordinates (--weld) would make it
 /// acceptable. `message` as it is when the refusal was not the checks'. Only on this error
 /// path is the file read a second time.
 std::string refusal_explained(const InsideCommandOptions& options, const std::string& message) {
+  if (options.mesh == "-") return message;  // standard input cannot be read again
   try {
-    LoadedMesh loaded = load_mesh(options.mesh, {options.weld, options.split_polygons});
-    const bool obj = loaded.format == "obj";
-    const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh),
-                                                      options.allow_non_manifold, obj ? 1 : 0);
+    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
+    const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded,
+                                                      options.allow_non_manifold);
     if (!problem) return message;
-    std::string text = *problem + (obj ? " (vertices and faces numbered from 1, as in the file)"
-                                       : " (vertices and faces numbered from 0)");
+    std::string text = *problem;
     if (options.weld) return text;
     const std::size_t merged = mesh::weld_vertices(loaded.mesh);
     if (merged > 0 &&
@@ -95,8 +101,12 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   std::optional<inside::Classifier> classifier;
   std::optional<inside::FloatRayParity> float_rays;
   double build_seconds = 0.0;
+  if (options.mesh == "-" && options.points == "-") {
+    err << "exactgeo inside: the mesh and the points cannot both come from standard input\n";
+    return ExitCode::input_error;
+  }
   try {
-    LoadedMesh loaded = load_mesh(options.mesh, {options.weld, options.split_polygons});
+    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
     const Clock::time_point start = Clock::now();
     if (options.float_rays) {
       // The same meshes as the classifier accepts, so that the two are compared on them.
@@ -199,8 +209,11 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       "(inside, outside or boundary), in input order. POINTS is text (three numbers per line: "
       "decimal or hexfloat, separated by spaces and/or commas; '#' comments), raw "
       "little-endian float64 triples (f64), or a NumPy .npy array of shape (n, 3), float64.");
-  sub->add_option("mesh", options.mesh, "OBJ, OFF or PLY (exact), or any format assimp reads")
+  sub->add_option("mesh", options.mesh,
+                  "OBJ, OFF or PLY (exact), or any format assimp reads; - for standard input "
+                  "(with --format and a POINTS file)")
       ->required();
+  add_mesh_format_option(*sub, options.mesh_format);
   sub->add_option("points", options.points, "points file, or - for standard input (default)");
   sub->add_option_function<std::string>(
          "--method",

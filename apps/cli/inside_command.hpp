@@ -20,7 +20,8 @@ class App;
 namespace exactgeo::cli {
 
 struct InsideCommandOptions {
-  std::string mesh;
+  std::string mesh;          ///< a file, or "-" for standard input (with mesh_format)
+  std::string mesh_format;   ///< --format: empty for the mesh file's extension
   std::string points = "-";  ///< a file, or "-" for standard input
   /// nullopt: npy for a path ending in ".npy", text otherwise (io::default_point_format)
   std::optional<io::PointFormat> points_format;

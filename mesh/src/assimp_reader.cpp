@@ -143,46 +143,68 @@ class SceneMerger {
   std::vector<VertexIndex> corners_;
 };
 
-}  // namespace
-
-LoadedMesh read_with_assimp(const std::string& path, const std::string& extension,
-                            const LoadOptions& options) {
-  Assimp::Importer importer;
+void require_supported(const Assimp::Importer& importer, const std::string& source,
+                       const std::string& extension) {
   std::string dotted = ".";
   dotted.append(extension);
   if (extension.empty() || !importer.IsExtensionSupported(dotted)) {
     std::string what = "unsupported mesh format ";
-    what.append(extension.empty() ? "(no file extension)" : quoted(dotted));
-    what.append(": expected .obj, .off, .ply or a format assimp reads (.stl, .gltf, .glb, ...)");
-    fail(path, what);
+    what.append(extension.empty() ? "(no file extension; name it with --format)"
+                                  : quoted(extension));
+    what.append(": expected obj, off, ply or a format assimp reads (stl, gltf, glb, ...)");
+    fail(source, what);
   }
-  require_readable(path);  // the same message as for the other formats
+}
 
+/// `read` runs the importer; its exceptions and failures become InputErrors naming `source`.
+template <class Read>
+LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
+                      const std::string& extension, const LoadOptions& options, Read read) {
   const aiScene* scene = nullptr;
   try {
-    scene = importer.ReadFile(path, 0u);  // no post-processing: quads stay quads
+    scene = read();  // no post-processing: quads stay quads
   } catch (const std::exception& e) {
     std::string what = "assimp: ";
     what.append(e.what());
-    fail(path, what);
+    fail(source, what);
   }
   if (scene == nullptr) {
     std::string what = "assimp cannot read it: ";
     what.append(importer.GetErrorString());
-    fail(path, what);
+    fail(source, what);
   }
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
-    fail(path, "assimp read an incomplete scene (no mesh data?)");
+    fail(source, "assimp read an incomplete scene (no mesh data?)");
   }
 
   LoadedMesh out;
   out.format = "assimp ";
   out.format.append(extension);
   out.coordinates_via_float = true;
-  SceneMerger(*scene, path, options, out).merge();
-  require_faces(out, path);
+  SceneMerger(*scene, source, options, out).merge();
+  require_faces(out, source);
   out.welded_vertices = weld_vertices(out.mesh);
   return out;
+}
+
+}  // namespace
+
+LoadedMesh read_with_assimp(const std::string& path, const std::string& extension,
+                            const LoadOptions& options) {
+  Assimp::Importer importer;
+  require_supported(importer, path, extension);
+  require_readable(path);  // the same message as for the other formats
+  return read_scene(importer, path, extension, options,
+                    [&] { return importer.ReadFile(path, 0u); });
+}
+
+LoadedMesh read_with_assimp_from_memory(const std::string& bytes, const std::string& source,
+                                        const std::string& extension, const LoadOptions& options) {
+  Assimp::Importer importer;
+  require_supported(importer, source, extension);
+  return read_scene(importer, source, extension, options, [&] {
+    return importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0u, extension.c_str());
+  });
 }
 
 }  // namespace exactgeo::mesh

@@ -21,4 +21,10 @@ namespace exactgeo::mesh {
 LoadedMesh read_with_assimp(const std::string& path, const std::string& extension,
                             const LoadOptions& options);
 
+/// The same for a file already in memory (standard input); `source` names it in errors.
+/// Formats that refer to other files (glTF with a .bin, OBJ with materials) cannot find
+/// them from here.
+LoadedMesh read_with_assimp_from_memory(const std::string& bytes, const std::string& source,
+                                        const std::string& extension, const LoadOptions& options);
+
 }  // namespace exactgeo::mesh

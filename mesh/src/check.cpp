@@ -269,4 +269,15 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
   return message;
 }
 
+std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
+                                                  bool allow_non_manifold) {
+  const bool obj = loaded.format == "obj";
+  auto problem = closed_surface_problem(check, allow_non_manifold, obj ? 1 : 0);
+  if (problem) {
+    problem->append(obj ? " (vertices and faces numbered from 1, as in the file)"
+                        : " (vertices and faces numbered from 0)");
+  }
+  return problem;
+}
+
 }  // namespace exactgeo::mesh

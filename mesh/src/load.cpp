@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <filesystem>
+#include <iostream>
 
 #include "assimp_reader.hpp"
 #include "exactgeo/io/read_bytes.hpp"
@@ -12,32 +13,58 @@
 
 namespace exactgeo::mesh {
 
+using io::InputError;
 using io::read_file;
+using io::read_stream;
 
 namespace {
+
+std::string lowercase(std::string text) {
+  for (char& c : text)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
 
 // "stl" for "Model.STL"; empty when the file name has no extension.
 std::string lowercase_extension(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   if (!extension.empty()) extension.erase(0, 1);  // the dot
-  for (char& c : extension)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
+  return lowercase(extension);
+}
+
+using Reader = LoadedMesh (*)(std::string_view, const std::string&, const LoadOptions&);
+
+/// The exact reader of a format, or nullptr for the formats assimp reads.
+Reader exact_reader(const std::string& format) {
+  if (format == "obj") return read_obj;
+  if (format == "off") return read_off;
+  if (format == "ply") return read_ply;
+  return nullptr;
 }
 
 }  // namespace
 
-LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
-  const std::string extension = lowercase_extension(path);
-  using Reader = LoadedMesh (*)(std::string_view, const std::string&, const LoadOptions&);
-  Reader reader = nullptr;
-  if (extension == "obj") reader = read_obj;
-  if (extension == "off") reader = read_off;
-  if (extension == "ply") reader = read_ply;
-  if (reader == nullptr) return read_with_assimp(path, extension, options);  // always welds
+std::string mesh_source_name(const std::string& path) {
+  return path == "-" ? "standard input" : path;
+}
 
-  const std::string bytes = read_file(path);
-  LoadedMesh loaded = reader(bytes, path, options);
+LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
+  const bool from_stdin = path == "-";
+  const std::string source = mesh_source_name(path);
+  const std::string format =
+      options.format.empty() ? lowercase_extension(path) : lowercase(options.format);
+  if (from_stdin && format.empty()) {
+    throw InputError(source +
+                     ": the mesh's format cannot be told from a name: give --format "
+                     "(obj, off, ply, or a format assimp reads)");
+  }
+  const Reader reader = exact_reader(format);
+  if (reader == nullptr) {  // assimp always welds
+    if (!from_stdin) return read_with_assimp(path, format, options);
+    return read_with_assimp_from_memory(read_stream(std::cin, source), source, format, options);
+  }
+  const std::string bytes = from_stdin ? read_stream(std::cin, source) : read_file(path);
+  LoadedMesh loaded = reader(bytes, source, options);
   if (options.weld) loaded.welded_vertices = weld_vertices(loaded.mesh);
   return loaded;
 }

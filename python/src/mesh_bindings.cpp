@@ -136,7 +136,7 @@ py::dict info_of(const MeshObject& object) {
   {
     py::gil_scoped_release release;
     c = mesh::check_mesh(object.loaded.mesh);
-    problem = mesh::closed_surface_problem(c);
+    problem = mesh::closed_surface_problem(c, object.loaded);
   }
   const mesh::LoadedMesh& loaded = object.loaded;
   py::dict info;

@@ -413,5 +413,40 @@ message=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/oneface1.obj" 2>&1 >/
 case "$message" in
   *--weld*) echo "FAIL: a mesh that welding cannot close got the --weld hint: $message"; failures=$((failures + 1)) ;;
 esac
+# info numbers an OBJ's vertices and faces as the file does, and says so.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n' >"$scratch/degenerate.obj"
+message=$("$exe" info "$scratch/degenerate.obj")
+expect_in "info OBJ numbering" "$message" "1 degenerate face (first: 1) (vertices and faces numbered from 1, as in the file)"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n' >"$scratch/degenerate.off"
+message=$("$exe" info "$scratch/degenerate.off")
+expect_in "info OFF numbering" "$message" "(first: 0) (vertices and faces numbered from 0)"
+
+# --format: a mesh from standard input, or from a file whose name does not tell its format.
+spot="$data/meshes/spot/spot_quadrangulated.obj"
+cp "$spot" "$scratch/spot_without_extension"
+expect 2 "info without extension" "" info "$scratch/spot_without_extension"
+message=$("$exe" info "$scratch/spot_without_extension" 2>&1 >/dev/null)
+expect_in "info without extension message" "$message" "no file extension; name it with --format"
+expect 0 "info --format obj" "" info --format obj "$scratch/spot_without_extension"
+expect 2 "info --format unknown" "" info --format xyz "$scratch/spot_without_extension"
+expect 2 "info stdin without --format" "$(cat "$spot")" info -
+message=$("$exe" info - </dev/null 2>&1 >/dev/null)
+expect_in "info stdin without --format message" "$message" "standard input" "--format"
+from_file=$("$exe" info --json "$spot" | sed 's/"file": "[^"]*"//')
+from_stdin=$("$exe" info --json --format obj - <"$spot" | sed 's/"file": "[^"]*"//')
+if [ "$from_file" != "$from_stdin" ]; then
+  echo "FAIL: info of a mesh from standard input differs from the file's: $from_stdin"
+  failures=$((failures + 1))
+fi
+printf '0 0.2 0\n0 0 2\n' >"$scratch/two_points.txt"
+labels=$("$exe" inside --format obj - "$scratch/two_points.txt" <"$spot")
+if [ "$labels" != "$(printf 'inside\noutside')" ]; then
+  echo "FAIL: inside with the mesh from standard input: $labels"
+  failures=$((failures + 1))
+fi
+expect 2 "inside mesh and points both from stdin" "0 0 0\n" inside --format obj -
+frames="$examples/falling-vertex"
+expect 0 "ccd-mesh frame from stdin" "$(cat "$frames/frame0.obj")" ccd-mesh --format obj - "$frames/frame1.obj"
+expect 2 "ccd-mesh both frames from stdin" "" ccd-mesh --format obj - -
 
 exit $((failures > 0))

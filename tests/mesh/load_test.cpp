@@ -803,6 +803,25 @@ TEST_F(mesh_io, FileAndExtensionErrors) {
   EXPECT_MESSAGE_HAS(load_error("noextension", "v 0 0 0\n"), "noextension", "no file extension");
 }
 
+// LoadOptions::format names the format when the name does not tell it, and overrides an
+// extension that lies; the same bytes give the same mesh either way.
+TEST_F(mesh_io, FormatOptionOverridesTheExtension) {
+  const Mesh expected = quad_and_triangle();
+  const LoadedMesh by_extension = load("m.obj", to_obj(expected));
+  const LoadedMesh named = load("no_extension", to_obj(expected), {.format = "obj"});
+  EXPECT_EQ(named.format, "obj");
+  EXPECT_EQ(named.mesh.vertices, by_extension.mesh.vertices);
+  EXPECT_EQ(named.mesh.faces, by_extension.mesh.faces);
+  // Upper case is fine; an OFF file called .obj is read as OFF when told so.
+  const LoadedMesh off = load("really_off.obj", to_off(expected), {.format = "OFF"});
+  EXPECT_EQ(off.format, "off");
+  EXPECT_EQ(off.mesh.faces, by_extension.mesh.faces);
+  // Without the option the extension decides, and the OFF text is not OBJ.
+  EXPECT_MESSAGE_HAS(load_error("really_off2.obj", to_off(expected)), "really_off2.obj");
+  EXPECT_MESSAGE_HAS(load_error("m2.obj", to_obj(expected), {.format = "xyzzy"}), "m2.obj",
+                     "unsupported mesh format 'xyzzy'");
+}
+
 // A unit cube as ASCII STL: 12 triangles, 36 corners, 8 positions. One coordinate is 0.1,
 // which assimp rounds to the float 0.1f.
 std::string cube_stl() {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 
 namespace exactgeo::mesh {
@@ -71,5 +72,10 @@ MeshCheck check_mesh(const Mesh& mesh);
 std::optional<std::string> closed_surface_problem(const MeshCheck& check,
                                                   bool allow_non_manifold = false,
                                                   std::size_t first_index = 0);
+
+/// The same message for a mesh read from a file, in the file's own numbering (OBJ counts
+/// vertices and faces from 1; OFF, PLY and exactgeo's Mesh from 0), saying which.
+std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
+                                                  bool allow_non_manifold = false);
 
 }  // namespace exactgeo::mesh

@@ -19,11 +19,16 @@
 
 namespace exactgeo::mesh {
 
-/// Reads `path`; the format comes from the extension (case-insensitive). Throws
+/// Reads `path`, or standard input when `path` is "-". The format is options.format when
+/// given, else the file's extension (case-insensitive); standard input and a file without
+/// an extension need options.format. Throws
 /// io::InputError naming the file, and the line (text formats) or the face/vertex index
 /// (binary formats), for anything malformed: unreadable file, bad or non-finite number,
 /// index out of range, face with fewer than three or (without split_polygons) more
-/// than four corners, truncated data, an empty mesh.
+/// than four corners, truncated data, an empty mesh, an unknown format.
 LoadedMesh load_mesh(const std::string& path, const LoadOptions& options = {});
+
+/// The name a path stands for in messages: "standard input" for "-", else the path.
+std::string mesh_source_name(const std::string& path);
 
 }  // namespace exactgeo::mesh

@@ -17,6 +17,9 @@ struct LoadOptions {
   /// Split faces with more than four corners into a triangle fan from their first
   /// corner, instead of refusing them.
   bool split_polygons = false;
+  /// The format, named like an extension in lower case ("obj", "off", "ply", or one that
+  /// assimp reads: "stl", "glb", ...). Empty: the file's extension decides.
+  std::string format{};
 };
 
 struct LoadedMesh {
