@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli/json.hpp"
+#include "cli/progress_line.hpp"
 #include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/io/input_error.hpp"
 
@@ -338,6 +339,7 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
   RunResults run{files, {}, {}};
   const bool time_each = options.json || !options.per_query.empty();
   std::size_t done = 0;
+  ProgressLine progress(err, options.progress, "queries");
   for (const QueryFile& file : files) {
     double seconds = 0.0;
     run.query_ns.emplace_back();
@@ -345,9 +347,9 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
                                    time_each ? &run.query_ns.back() : nullptr));
     (file.type == QueryType::vertex_face ? vf : ee).add(tally(file, run.results.back(), seconds));
     done += file.records.size();
-    if (options.progress) err << "\r" << done << " / " << total << " queries" << std::flush;
+    progress.count(done, total);
   }
-  if (options.progress) err << "\r\033[K" << std::flush;
+  progress.clear();
   if (!options.per_query.empty()) {
     try {
       write_per_query(options.per_query, run);
