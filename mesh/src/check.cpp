@@ -21,6 +21,7 @@ bool is_finite(const Point3& p) noexcept {
 struct EdgeUse {
   Edge edge;
   bool forward;
+  std::size_t face;
 };
 
 /// Union-find over vertices, with path halving and union by size.
@@ -83,6 +84,11 @@ void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
     const Edge& edge = uses[begin].edge;
     if (count == 1) check.boundary_edges.add(edge);
     if (count > 2) check.non_manifold_edges.add(edge);
+    for (std::size_t use = begin; use < end; ++use) {
+      FaceFindings& face = check.face_findings[uses[use].face];
+      face.boundary_edge = face.boundary_edge || count == 1;
+      face.non_manifold_edge = face.non_manifold_edge || count > 2;
+    }
     if (count % 2 == 1) check.odd_edges.add(edge);
     if (count != 2) every_edge_twice = false;
     // Sorted with backward before forward: two uses in opposite directions differ.
@@ -126,6 +132,7 @@ MeshCheck check_mesh(const Mesh& mesh) {
   const std::size_t n = mesh.vertices.size();
   check.vertices = n;
   check.faces = mesh.faces.size();
+  check.face_findings.resize(mesh.faces.size());
 
   std::vector<bool> finite(n);
   for (std::size_t v = 0; v < n; ++v) {
@@ -169,20 +176,25 @@ MeshCheck check_mesh(const Mesh& mesh) {
       all_finite = all_finite && finite[a];
       components.unite(a, b);
       // A repeated corner makes a zero-length "edge": it joins nothing, so it is not counted.
-      if (a != b) uses.push_back({{std::min(a, b), std::max(a, b)}, a < b});
+      if (a != b) uses.push_back({{std::min(a, b), std::max(a, b)}, a < b, f});
     }
 
     if (repeated_corner(face)) {
       check.degenerate_faces.add(f);
+      check.face_findings[f].degenerate = true;
       continue;
     }
     if (!all_finite) continue;  // the exact predicates need finite coordinates
     const BilinearPatch patch = patch_of(mesh, face);
     if (!face.is_triangle() && orient3d(patch.p00, patch.p10, patch.p11, patch.p01) != Sign::zero) {
       check.non_planar_quads.add(f);  // skew: never zero area
+      check.face_findings[f].non_planar = true;
       continue;
     }
-    if (zero_area(patch)) check.degenerate_faces.add(f);
+    if (zero_area(patch)) {
+      check.degenerate_faces.add(f);
+      check.face_findings[f].degenerate = true;
+    }
   }
 
   check_edges(uses, check);

@@ -241,6 +241,70 @@ TEST(MeshCheck, DegenerateFaces) {
       << from_one;
 }
 
+/// The faces whose findings have `flag` set.
+template <class Flag>
+std::vector<std::size_t> faces_with(const MeshCheck& c, Flag flag) {
+  std::vector<std::size_t> faces;
+  for (std::size_t f = 0; f < c.face_findings.size(); ++f)
+    if (c.face_findings[f].*flag) faces.push_back(f);
+  return faces;
+}
+
+/// For each face, whether one of its edges is used by exactly `uses` faces (or more than
+/// two when `uses` is 3), counted pair by pair over every face: independent of the sort.
+std::vector<std::size_t> faces_with_edge_used(const Mesh& mesh, std::size_t uses) {
+  const auto same_edge = [](VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
+    return (a == c && b == d) || (a == d && b == c);
+  };
+  std::vector<std::size_t> faces;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Face& face = mesh.faces[f];
+    bool found = false;
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const VertexIndex a = face.corner(i), b = face.corner(i + 1);
+      if (a == b) continue;
+      std::size_t count = 0;
+      for (const Face& other : mesh.faces)
+        for (std::size_t j = 0; j < other.size(); ++j)
+          count += same_edge(a, b, other.corner(j), other.corner(j + 1)) ? 1 : 0;
+      found = found || (uses == 3 ? count > 2 : count == uses);
+    }
+    if (found) faces.push_back(f);
+  }
+  return faces;
+}
+
+TEST(MeshCheck, FaceFindingsNameEveryFaceNotJustTheFirstFew) {
+  // A cube with a fin on edge 3-7, an open box beside it, and some degenerate and skew faces.
+  Mesh mesh = unit_cube();
+  mesh.faces.push_back(make_triangle(3, 7, 0));
+  Mesh open = box({3, 0, 0}, {4, 1, 1});
+  open.faces.pop_back();
+  open.faces.pop_back();
+  for (Face face : open.faces) {
+    for (std::size_t k = 0; k < face.size(); ++k)
+      face.corners[k] += 8;
+    mesh.faces.push_back(face);
+  }
+  mesh.vertices.insert(mesh.vertices.end(), open.vertices.begin(), open.vertices.end());
+  mesh.vertices[9] = {4, 0, 0.5};  // makes the open box's quads at vertex 9 skew
+  mesh.vertices.push_back({9, 9, 9});
+  const auto alone = static_cast<VertexIndex>(mesh.vertices.size() - 1);
+  mesh.faces.push_back(make_triangle(alone, alone, alone));  // degenerate, and no edges
+  const MeshCheck c = check_mesh(mesh);
+  ASSERT_EQ(c.face_findings.size(), mesh.faces.size());
+  const std::vector<std::size_t> boundary = faces_with(c, &FaceFindings::boundary_edge);
+  EXPECT_EQ(boundary, faces_with_edge_used(mesh, 1));
+  EXPECT_GT(c.boundary_edges.count, Examples<Edge>::kKept);  // more than the examples keep
+  EXPECT_EQ(boundary.size(), 5u);                            // four open-box quads, the fin
+  EXPECT_EQ(faces_with(c, &FaceFindings::non_manifold_edge), faces_with_edge_used(mesh, 3));
+  EXPECT_EQ(faces_with(c, &FaceFindings::non_manifold_edge).size(), 3u);  // two quads, the fin
+  EXPECT_EQ(faces_with(c, &FaceFindings::degenerate).size(), c.degenerate_faces.count);
+  EXPECT_EQ(faces_with(c, &FaceFindings::degenerate).front(), c.degenerate_faces.first.front());
+  EXPECT_EQ(faces_with(c, &FaceFindings::non_planar).size(), c.non_planar_quads.count);
+  EXPECT_GT(c.non_planar_quads.count, 0u);
+}
+
 TEST(MeshCheck, DegenerateFacesInAClosedMesh) {
   Mesh mesh = unit_cube();
   // A flat sliver on three collinear vertices, both sides: closed, manifold and oriented,

@@ -35,6 +35,14 @@ struct Box {
   Point3 upper;
 };
 
+/// What the checks found about one face (a face can have several of these).
+struct FaceFindings {
+  bool boundary_edge = false;      ///< one of its edges is used by no other face
+  bool non_manifold_edge = false;  ///< one of its edges is used by more than two faces
+  bool degenerate = false;         ///< as in MeshCheck::degenerate_faces
+  bool non_planar = false;         ///< a quad whose corners are not coplanar (exact)
+};
+
 struct MeshCheck {
   std::size_t vertices = 0;
   std::size_t faces = 0;
@@ -54,6 +62,8 @@ struct MeshCheck {
   std::size_t components = 0;  ///< connected through shared vertices
   /// Every edge used once in each direction; none when some edge is not shared by two faces.
   std::optional<bool> consistently_oriented;
+  /// One per face, in face order (faces with an out-of-range corner have none set).
+  std::vector<FaceFindings> face_findings;
 
   bool closed() const noexcept { return boundary_edges.count == 0 && odd_edges.count == 0; }
   bool manifold() const noexcept { return non_manifold_edges.count == 0; }
