@@ -2,14 +2,24 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
+#include <iomanip>
 #include <istream>
 #include <ostream>
 #include <span>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include "cli/json.hpp"
+#include "cli/output_file.hpp"
+#include "cli/png_image.hpp"
+#include "cli/slice_image.hpp"
 
 #include "cli/mesh_format_option.hpp"
 #include "exactgeo/inside/batch.hpp"
@@ -94,17 +104,30 @@ std::string refusal_explained(const InsideCommandOptions& options, const std::st
   }
 }
 
-}  // namespace
-
-ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
-                    const std::string& points_source, std::ostream& out, std::ostream& err) {
+/// The classifier the options ask for: the exact one (in any arithmetic) or the float ray
+/// baseline, which keeps no mesh of its own (a slice's outline needs it).
+struct BuiltClassifier {
   std::optional<inside::Classifier> classifier;
   std::optional<inside::FloatRayParity> float_rays;
-  double build_seconds = 0.0;
-  if (options.mesh == "-" && options.points == "-") {
-    err << "exactgeo inside: the mesh and the points cannot both come from standard input\n";
-    return ExitCode::input_error;
+  mesh::Mesh float_rays_mesh;
+  double seconds = 0.0;  ///< checking the mesh and building the search structures
+
+  const mesh::Mesh& mesh() const { return classifier ? classifier->mesh() : float_rays_mesh; }
+
+  void classify(std::span<const Point3> points, std::span<inside::Location> locations,
+                const InsideCommandOptions& options) const {
+    if (float_rays) {
+      inside::classify_batch(*float_rays, points, locations, options.threads);
+    } else {
+      inside::classify_batch(*classifier, points, locations, options.arithmetic, options.threads);
+    }
   }
+};
+
+/// Loads the mesh and builds its classifier; nullopt once the error is on `err`.
+std::optional<BuiltClassifier> build_classifier(const InsideCommandOptions& options,
+                                                std::ostream& err) {
+  BuiltClassifier built;
   try {
     LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
     const Clock::time_point start = Clock::now();
@@ -114,28 +137,144 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
         throw std::invalid_argument(*problem);
       }
-      float_rays.emplace(loaded.mesh);
+      built.float_rays.emplace(loaded.mesh);
+      built.float_rays_mesh = std::move(loaded.mesh);
     } else {
       inside::ClassifierOptions classifier_options;
       classifier_options.allow_non_manifold = options.allow_non_manifold;
       // The plain double baseline casts a ray for every point (classifier.hpp).
       classifier_options.space_cells =
           options.space_cells && options.arithmetic != Arithmetic::plain_double;
-      classifier.emplace(std::move(loaded.mesh), classifier_options);
+      built.classifier.emplace(std::move(loaded.mesh), classifier_options);
     }
-    build_seconds = seconds_since(start);
+    built.seconds = seconds_since(start);
   } catch (const InputError& e) {
     err << "exactgeo inside: " << e.what() << "\n";
-    return ExitCode::input_error;
+    return std::nullopt;
   } catch (const std::invalid_argument& e) {
     err << "exactgeo inside: " << options.mesh << ": " << refusal_explained(options, e.what())
         << "\n";
-    return ExitCode::input_error;
+    return std::nullopt;
   } catch (const std::exception& e) {  // Embree failing, or memory running out
     err << "exactgeo inside: " << options.mesh
         << ": cannot build the search structure: " << e.what() << "\n";
+    return std::nullopt;
+  }
+  return built;
+}
+
+/// `inside --slice`: the cross-section picture (cli/slice_image.hpp) and a report of it.
+ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::ostream& err) {
+  const SliceOptions& slice = options.slice;
+  const SlicePlane plane = *slice.plane;
+  // The destination first: an unwritable path is reported before any work is done.
+  std::optional<OutputFile> png;
+  try {
+    png.emplace(slice.image);
+  } catch (const OutputFileError& e) {
+    err << "exactgeo inside: " << e.what() << "\n";
     return ExitCode::input_error;
   }
+  const std::optional<BuiltClassifier> built = build_classifier(options, err);
+  if (!built) return ExitCode::input_error;
+
+  SliceGrid grid;
+  try {
+    grid = slice_grid(built->mesh(), plane, slice.resolution);
+  } catch (const std::invalid_argument& e) {
+    err << "exactgeo inside: " << options.mesh << ": " << e.what() << "\n";
+    return ExitCode::input_error;
+  }
+  Clock::time_point start = Clock::now();
+  const std::vector<inside::Location> labels =
+      classify_pixels(grid, [&](std::span<const Point3> points, std::span<inside::Location> to) {
+        built->classify(points, to, options);
+      });
+  const double classify_seconds = seconds_since(start);
+  start = Clock::now();
+  const std::vector<std::uint8_t> outline = outline_pixels(grid, built->mesh());
+  const double outline_seconds = seconds_since(start);
+  start = Clock::now();
+  try {
+    png->commit(png_bytes(draw_slice(grid, labels, outline)));
+  } catch (const OutputFileError& e) {
+    err << "exactgeo inside: " << e.what() << "\n";
+    return ExitCode::input_error;
+  } catch (const std::exception& e) {  // libpng refusing, or memory running out
+    err << "exactgeo inside: cannot write '" << slice.image << "': " << e.what() << "\n";
+    return ExitCode::input_error;
+  }
+  const double png_seconds = seconds_since(start);
+
+  std::array<std::size_t, 3> by_location{};  // indexed by inside::Location
+  for (const inside::Location l : labels)
+    ++by_location[static_cast<std::size_t>(l)];
+  const auto count = [&](inside::Location l) { return by_location[static_cast<std::size_t>(l)]; };
+  const std::size_t outline_count =
+      static_cast<std::size_t>(std::count(outline.begin(), outline.end(), std::uint8_t{1}));
+  const ImageAxes axes = image_axes(plane.axis);
+  const char horizontal = to_char(static_cast<Axis>(axes.horizontal));
+  const char vertical = to_char(static_cast<Axis>(axes.vertical));
+  const double right = grid.left + double(grid.width) * grid.pixel;
+  const double bottom = grid.top - double(grid.height) * grid.pixel;
+  const bool meets_box = grid.axis_lower <= plane.value && plane.value <= grid.axis_upper;
+  const std::string_view method =
+      options.float_rays ? std::string_view("embree") : to_string(options.arithmetic);
+  if (options.json) {
+    out << "{\"image\": " << json_string(slice.image) << ", \"width\": " << grid.width
+        << ", \"height\": " << grid.height << ", \"plane\": {\"axis\": \"" << to_char(plane.axis)
+        << "\", \"value\": " << shortest(plane.value) << "}, \"horizontal\": {\"axis\": \""
+        << horizontal << "\", \"from\": " << shortest(grid.left) << ", \"to\": " << shortest(right)
+        << "}, \"vertical\": {\"axis\": \"" << vertical << "\", \"from\": " << shortest(bottom)
+        << ", \"to\": " << shortest(grid.top)
+        << "}, \"plane_meets_box\": " << (meets_box ? "true" : "false")
+        << ", \"inside\": " << count(inside::Location::inside)
+        << ", \"outside\": " << count(inside::Location::outside)
+        << ", \"boundary\": " << count(inside::Location::boundary)
+        << ", \"outline\": " << outline_count << ", \"method\": \"" << method << "\""
+        << ", \"build_seconds\": " << built->seconds << ", \"seconds\": " << classify_seconds
+        << ", \"outline_seconds\": " << outline_seconds << ", \"png_seconds\": " << png_seconds
+        << "}\n";
+  } else {
+    std::ostringstream report;
+    const auto row = [&report](std::string_view label) -> std::ostream& {
+      return report << std::left << std::setw(20) << label;
+    };
+    row("image") << slice.image << ", " << grid.width << " x " << grid.height << " pixels\n";
+    row("plane") << to_char(plane.axis) << " = " << shortest(plane.value);
+    if (!meets_box) {
+      report << " (outside the mesh's " << to_char(plane.axis) << " range ["
+             << shortest(grid.axis_lower) << ", " << shortest(grid.axis_upper)
+             << "]: every pixel is outside)";
+    }
+    report << "\n";
+    row("right") << horizontal << " from " << shortest(grid.left) << " to " << shortest(right)
+                 << "\n";
+    row("up") << vertical << " from " << shortest(bottom) << " to " << shortest(grid.top) << "\n";
+    row("inside") << count(inside::Location::inside) << " pixels (sky blue)\n";
+    row("outside") << count(inside::Location::outside) << " pixels (white)\n";
+    row("boundary") << count(inside::Location::boundary) << " pixels (vermillion)\n";
+    row("outline") << outline_count << " pixels (black, over inside and outside)\n";
+    row("method") << method << "\n";
+    row("seconds") << "build " << built->seconds << ", classify " << classify_seconds
+                   << ", outline " << outline_seconds << ", png " << png_seconds << "\n";
+    out << report.str();
+  }
+  out << std::flush;
+  return ExitCode::success;
+}
+
+}  // namespace
+
+ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
+                    const std::string& points_source, std::ostream& out, std::ostream& err) {
+  if (options.slice.plane) return run_slice(options, out, err);
+  if (options.mesh == "-" && options.points == "-") {
+    err << "exactgeo inside: the mesh and the points cannot both come from standard input\n";
+    return ExitCode::input_error;
+  }
+  const std::optional<BuiltClassifier> built = build_classifier(options, err);
+  if (!built) return ExitCode::input_error;
 
   Tally tally;
   PointReader reader(in, points_source,
@@ -155,11 +294,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
-      if (float_rays) {
-        inside::classify_batch(*float_rays, block, locations, options.threads);
-      } else {
-        inside::classify_batch(*classifier, block, locations, options.arithmetic, options.threads);
-      }
+      built->classify(block, locations, options);
       tally.seconds += seconds_since(start);
       tally.points += block.size();
       text.clear();
@@ -187,9 +322,9 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
         << (options.float_rays ? "embree" : to_string(options.arithmetic)) << "\""
-        << ", \"build_seconds\": " << build_seconds << ", \"read_seconds\": " << tally.read_seconds
+        << ", \"build_seconds\": " << built->seconds << ", \"read_seconds\": " << tally.read_seconds
         << ", \"seconds\": " << tally.seconds;
-    if (const auto cells = classifier ? classifier->space_cells() : std::nullopt) {
+    if (const auto cells = built->classifier ? built->classifier->space_cells() : std::nullopt) {
       out << ", \"space_cells\": {\"resolution\": [" << cells->resolution[0] << ", "
           << cells->resolution[1] << ", " << cells->resolution[2]
           << "], \"cells\": " << cells->cells << ", \"surface_cells\": " << cells->surface_cells
@@ -249,6 +384,40 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
   sub->add_flag("!--no-space-cells", options.space_cells,
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");
+
+  // A cross-section picture instead of labels (cli/slice_image.hpp).
+  CLI::Option* slice =
+      sub->add_option_function<std::string>(
+             "--slice",
+             [&options](const std::string& text) {
+               std::string error;
+               options.slice.plane = parse_slice(text, error);
+             },
+             "draw a cross-section instead of reading POINTS: the plane AXIS=VALUE (AXIS x, y "
+             "or z; VALUE decimal or hexfloat, read exactly), written to --image. Each pixel "
+             "shows the exact label of its centre: inside sky blue, outside white, boundary "
+             "vermillion; the mesh's cross-section curve is drawn over it in black. The "
+             "picture spans the mesh's box in the other two axes, grown by 1/32 of its longer "
+             "side; to the right and up: x and y for z=..., y and z for x=..., x and z for "
+             "y=...")
+          ->check(CLI::Validator(
+              [](std::string& text) {
+                std::string error;
+                return parse_slice(text, error) ? std::string() : error;
+              },
+              "AXIS=VALUE"));
+  CLI::Option* image =
+      sub->add_option("--image", options.slice.image,
+                      "with --slice: the PNG file to write (written whole or not at all)");
+  sub->add_option("--resolution", options.slice.resolution,
+                  "with --slice: pixels along the picture's longer side (default 1024)")
+      ->check(CLI::Range(SliceOptions::kMinResolution, SliceOptions::kMaxResolution))
+      ->needs(slice);
+  slice->needs(image);
+  image->needs(slice);
+  for (const char* name : {"points", "--labels", "--points-format"}) {
+    slice->excludes(sub->get_option(name));
+  }
   return *sub;
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/exit_code.hpp"
+#include "cli/slice_image.hpp"
 #include "exactgeo/io/point_reader.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 
@@ -36,13 +37,19 @@ struct InsideCommandOptions {
   bool allow_non_manifold = false;
   bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
   bool progress = false;    ///< a progress line on `err` (the binary sets it for a terminal)
+  /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
+  /// are read (cli/slice_image.hpp).
+  SliceOptions slice;
 };
 
 /// Loads and checks the mesh, builds the search structure, then classifies `in`'s points
 /// block by block. An input error stops the run with exit code 2: the mesh's errors
 /// before anything is printed, a bad point after the labels of the blocks before it
 /// (each printed label is right; the message names the line, or the binary point). The
-/// JSON object is printed whole at the end, or not at all.
+/// JSON object is printed whole at the end, or not at all. With a slice plane it draws the
+/// cross-section instead, with the same classifier, and reads nothing from `in`: an
+/// unwritable image is reported before the pixels are classified, and the file appears
+/// whole or not at all.
 ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                     const std::string& points_source, std::ostream& out, std::ostream& err);
 

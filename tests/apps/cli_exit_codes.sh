@@ -449,4 +449,62 @@ frames="$examples/falling-vertex"
 expect 0 "ccd-mesh frame from stdin" "$(cat "$frames/frame0.obj")" ccd-mesh --format obj - "$frames/frame1.obj"
 expect 2 "ccd-mesh both frames from stdin" "" ccd-mesh --format obj - -
 
+# inside --slice: a PNG cross-section instead of labels. Every mistake: exit 2, a message
+# naming the option or the file, nothing on stdout, and no file left behind.
+slices="$scratch/slices"
+mkdir -p "$slices"
+slice_refused() {  # slice_refused <description> <message substring> <args...>
+  local what="$1" key="$2" message
+  shift 2
+  expect 2 "$what" "" "$@"
+  message=$("$exe" "$@" 2>&1 >/dev/null)
+  expect_in "$what message" "$message" "$key"
+  if [ -n "$(ls -A "$slices")" ]; then
+    echo "FAIL: $what left files behind: $(ls -A "$slices")"
+    failures=$((failures + 1))
+    rm -rf "${slices:?}"/*
+  fi
+}
+png="$slices/cube.png"
+slice_refused "inside --slice bad axis" "exactgeo inside: --slice: expected AXIS=VALUE" \
+  inside "$cube" --slice w=1 --image "$png"
+slice_refused "inside --slice bad value" "exactgeo inside: --slice: the value in 'z=abc'" \
+  inside "$cube" --slice z=abc --image "$png"
+slice_refused "inside --slice no value" "exactgeo inside: --slice: " inside "$cube" --slice z= --image "$png"
+slice_refused "inside --slice nan" "exactgeo inside: --slice: " inside "$cube" --slice z=nan --image "$png"
+slice_refused "inside --slice 1e999" "exactgeo inside: --slice: " inside "$cube" --slice x=1e999 --image "$png"
+slice_refused "inside --image without --slice" "--image requires --slice" inside "$cube" --image "$png"
+slice_refused "inside --slice without --image" "--slice requires --image" inside "$cube" --slice z=0
+slice_refused "inside --slice unwritable image" "cannot write '$slices/missing/cube.png'" \
+  inside "$cube" --slice z=0 --image "$slices/missing/cube.png"
+slice_refused "inside --resolution 15" "exactgeo inside: --resolution" \
+  inside "$cube" --slice z=0 --image "$png" --resolution 15
+slice_refused "inside --resolution 8193" "exactgeo inside: --resolution" \
+  inside "$cube" --slice z=0 --image "$png" --resolution 8193
+slice_refused "inside --resolution without --slice" "--resolution requires --slice" \
+  inside "$cube" --resolution 64
+slice_refused "inside --slice with points" "excludes --slice" \
+  inside "$cube" "$scratch/points.npy" --slice z=0 --image "$png"
+slice_refused "inside --slice with --labels" "excludes --slice" \
+  inside --json --labels "$cube" --slice z=0 --image "$png"
+slice_refused "inside --slice open mesh" "corner_with_hole.off: mesh is not closed" \
+  inside "$meshes/negative/corner_with_hole.off" --slice z=0 --image "$png"
+report=$("$exe" inside "$cube" --slice "z=$mid" --image "$png" --resolution 16)
+expect_in "inside --slice report" "$report" "image               $png, 16 x 16 pixels" \
+  "plane               z = " "right               x from " "up                  y from " \
+  "inside              " "boundary            0 pixels"
+if [ "$(head -c 8 "$png" | od -An -c | tr -d ' ')" != '211PNG\r\n032\n' ]; then
+  echo "FAIL: inside --slice did not write a PNG file"
+  failures=$((failures + 1))
+fi
+json=$("$exe" inside "$cube" --json --slice "x=$far" --image "$png" --resolution 16 --threads 1)
+expect_in "inside --slice --json" "$json" '"width": 16, "height": 16' '"plane": {"axis": "x"' \
+  '"plane_meets_box": false' '"inside": 0, "outside": 256, "boundary": 0, "outline": 0'
+report=$("$exe" inside "$cube" --slice "x=$far" --image "$png" --resolution 16)
+expect_in "inside --slice beside the mesh" "$report" "every pixel is outside"
+if [ "$(ls -A "$slices")" != "cube.png" ]; then
+  echo "FAIL: inside --slice left other files: $(ls -A "$slices")"
+  failures=$((failures + 1))
+fi
+
 exit $((failures > 0))
