@@ -5,38 +5,26 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cstdint>
-#include <iomanip>
+#include <filesystem>
 #include <istream>
+#include <optional>
 #include <ostream>
 #include <span>
-#include <sstream>
-#include <stdexcept>
 #include <string>
-#include <string_view>
 #include <vector>
 
-#include "cli/json.hpp"
-#include "cli/output_file.hpp"
-#include "cli/png_image.hpp"
-#include "cli/slice_image.hpp"
-
+#include "cli/inside_mesh.hpp"
 #include "cli/mesh_format_option.hpp"
-#include "exactgeo/inside/batch.hpp"
-#include "exactgeo/inside/classifier.hpp"
-#include "exactgeo/inside/float_ray_parity.hpp"
+#include "cli/progress_line.hpp"
+#include "cli/slice_command.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/point_reader.hpp"
-#include "exactgeo/mesh/check.hpp"
-#include "exactgeo/mesh/load.hpp"
-#include "exactgeo/mesh/weld.hpp"
 
 namespace exactgeo::cli {
 
 using io::InputError;
 using io::PointReader;
-using mesh::load_mesh;
-using mesh::LoadedMesh;
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -56,6 +44,25 @@ struct Tally {
   double read_seconds = 0.0;
 };
 
+/// The size of a regular file, or nullopt (standard input, a pipe).
+std::optional<double> file_size(const std::string& path) {
+  std::error_code error;
+  if (path == "-" || !std::filesystem::is_regular_file(path, error)) return std::nullopt;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error || size == 0) return std::nullopt;
+  return static_cast<double>(size);
+}
+
+/// How much of the points file has been read, by its bytes (the reader reads ahead a
+/// little, which a progress line does not mind).
+std::optional<double> share_read(std::istream& in, std::optional<double> bytes) {
+  if (!bytes) return std::nullopt;
+  if (in.eof()) return 1.0;  // tellg() answers -1 once the end has been reached
+  const std::streamoff position = in.tellg();
+  if (position < 0) return std::nullopt;
+  return std::min(1.0, static_cast<double>(position) / *bytes);
+}
+
 /// Appends `"labels": ["inside", ...]` to `out`, a few thousand labels per write.
 void print_json_labels(const std::vector<inside::Location>& labels, std::ostream& out) {
   std::string text = ", \"labels\": [";
@@ -72,198 +79,6 @@ void print_json_labels(const std::vector<inside::Location>& labels, std::ostream
   out << text << "]";
 }
 
-mesh::LoadOptions load_options(const InsideCommandOptions& options) {
-  return {.weld = options.weld,
-          .split_polygons = options.split_polygons,
-          .format = options.mesh_format};
-}
-
-/// A mesh refused by its checks, explained: the checks' message in the file's own
-/// numbering (OBJ counts vertices and faces from 1, OFF and PLY from 0), saying which, and
-/// whether merging the vertices that repeat another's coordinates (--weld) would make it
-/// acceptable. `message` as it is when the refusal was not the checks'. Only on this error
-/// path is the file read a second time.
-std::string refusal_explained(const InsideCommandOptions& options, const std::string& message) {
-  if (options.mesh == "-") return message;  // standard input cannot be read again
-  try {
-    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
-    const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded,
-                                                      options.allow_non_manifold);
-    if (!problem) return message;
-    std::string text = *problem;
-    if (options.weld) return text;
-    const std::size_t merged = mesh::weld_vertices(loaded.mesh);
-    if (merged > 0 &&
-        !mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), options.allow_non_manifold)) {
-      text += "; with --weld, which merges the " + std::to_string(merged) +
-              " vertices that repeat another's coordinates, it is accepted";
-    }
-    return text;
-  } catch (const std::exception&) {
-    return message;
-  }
-}
-
-/// The classifier the options ask for: the exact one (in any arithmetic) or the float ray
-/// baseline, which keeps no mesh of its own (a slice's outline needs it).
-struct BuiltClassifier {
-  std::optional<inside::Classifier> classifier;
-  std::optional<inside::FloatRayParity> float_rays;
-  mesh::Mesh float_rays_mesh;
-  double seconds = 0.0;  ///< checking the mesh and building the search structures
-
-  const mesh::Mesh& mesh() const { return classifier ? classifier->mesh() : float_rays_mesh; }
-
-  void classify(std::span<const Point3> points, std::span<inside::Location> locations,
-                const InsideCommandOptions& options) const {
-    if (float_rays) {
-      inside::classify_batch(*float_rays, points, locations, options.threads);
-    } else {
-      inside::classify_batch(*classifier, points, locations, options.arithmetic, options.threads);
-    }
-  }
-};
-
-/// Loads the mesh and builds its classifier; nullopt once the error is on `err`.
-std::optional<BuiltClassifier> build_classifier(const InsideCommandOptions& options,
-                                                std::ostream& err) {
-  BuiltClassifier built;
-  try {
-    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
-    const Clock::time_point start = Clock::now();
-    if (options.float_rays) {
-      // The same meshes as the classifier accepts, so that the two are compared on them.
-      const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
-      if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
-        throw std::invalid_argument(*problem);
-      }
-      built.float_rays.emplace(loaded.mesh);
-      built.float_rays_mesh = std::move(loaded.mesh);
-    } else {
-      inside::ClassifierOptions classifier_options;
-      classifier_options.allow_non_manifold = options.allow_non_manifold;
-      // The plain double baseline casts a ray for every point (classifier.hpp).
-      classifier_options.space_cells =
-          options.space_cells && options.arithmetic != Arithmetic::plain_double;
-      built.classifier.emplace(std::move(loaded.mesh), classifier_options);
-    }
-    built.seconds = seconds_since(start);
-  } catch (const InputError& e) {
-    err << "exactgeo inside: " << e.what() << "\n";
-    return std::nullopt;
-  } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << options.mesh << ": " << refusal_explained(options, e.what())
-        << "\n";
-    return std::nullopt;
-  } catch (const std::exception& e) {  // Embree failing, or memory running out
-    err << "exactgeo inside: " << options.mesh
-        << ": cannot build the search structure: " << e.what() << "\n";
-    return std::nullopt;
-  }
-  return built;
-}
-
-/// `inside --slice`: the cross-section picture (cli/slice_image.hpp) and a report of it.
-ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::ostream& err) {
-  const SliceOptions& slice = options.slice;
-  const SlicePlane plane = *slice.plane;
-  // The destination first: an unwritable path is reported before any work is done.
-  std::optional<OutputFile> png;
-  try {
-    png.emplace(slice.image);
-  } catch (const OutputFileError& e) {
-    err << "exactgeo inside: " << e.what() << "\n";
-    return ExitCode::input_error;
-  }
-  const std::optional<BuiltClassifier> built = build_classifier(options, err);
-  if (!built) return ExitCode::input_error;
-
-  SliceGrid grid;
-  try {
-    grid = slice_grid(built->mesh(), plane, slice.resolution);
-  } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << options.mesh << ": " << e.what() << "\n";
-    return ExitCode::input_error;
-  }
-  Clock::time_point start = Clock::now();
-  const std::vector<inside::Location> labels =
-      classify_pixels(grid, [&](std::span<const Point3> points, std::span<inside::Location> to) {
-        built->classify(points, to, options);
-      });
-  const double classify_seconds = seconds_since(start);
-  start = Clock::now();
-  const std::vector<std::uint8_t> outline = outline_pixels(grid, built->mesh());
-  const double outline_seconds = seconds_since(start);
-  start = Clock::now();
-  try {
-    png->commit(png_bytes(draw_slice(grid, labels, outline)));
-  } catch (const OutputFileError& e) {
-    err << "exactgeo inside: " << e.what() << "\n";
-    return ExitCode::input_error;
-  } catch (const std::exception& e) {  // libpng refusing, or memory running out
-    err << "exactgeo inside: cannot write '" << slice.image << "': " << e.what() << "\n";
-    return ExitCode::input_error;
-  }
-  const double png_seconds = seconds_since(start);
-
-  std::array<std::size_t, 3> by_location{};  // indexed by inside::Location
-  for (const inside::Location l : labels)
-    ++by_location[static_cast<std::size_t>(l)];
-  const auto count = [&](inside::Location l) { return by_location[static_cast<std::size_t>(l)]; };
-  const std::size_t outline_count =
-      static_cast<std::size_t>(std::count(outline.begin(), outline.end(), std::uint8_t{1}));
-  const ImageAxes axes = image_axes(plane.axis);
-  const char horizontal = to_char(static_cast<Axis>(axes.horizontal));
-  const char vertical = to_char(static_cast<Axis>(axes.vertical));
-  const double right = grid.left + double(grid.width) * grid.pixel;
-  const double bottom = grid.top - double(grid.height) * grid.pixel;
-  const bool meets_box = grid.axis_lower <= plane.value && plane.value <= grid.axis_upper;
-  const std::string_view method =
-      options.float_rays ? std::string_view("embree") : to_string(options.arithmetic);
-  if (options.json) {
-    out << "{\"image\": " << json_string(slice.image) << ", \"width\": " << grid.width
-        << ", \"height\": " << grid.height << ", \"plane\": {\"axis\": \"" << to_char(plane.axis)
-        << "\", \"value\": " << shortest(plane.value) << "}, \"horizontal\": {\"axis\": \""
-        << horizontal << "\", \"from\": " << shortest(grid.left) << ", \"to\": " << shortest(right)
-        << "}, \"vertical\": {\"axis\": \"" << vertical << "\", \"from\": " << shortest(bottom)
-        << ", \"to\": " << shortest(grid.top)
-        << "}, \"plane_meets_box\": " << (meets_box ? "true" : "false")
-        << ", \"inside\": " << count(inside::Location::inside)
-        << ", \"outside\": " << count(inside::Location::outside)
-        << ", \"boundary\": " << count(inside::Location::boundary)
-        << ", \"outline\": " << outline_count << ", \"method\": \"" << method << "\""
-        << ", \"build_seconds\": " << built->seconds << ", \"seconds\": " << classify_seconds
-        << ", \"outline_seconds\": " << outline_seconds << ", \"png_seconds\": " << png_seconds
-        << "}\n";
-  } else {
-    std::ostringstream report;
-    const auto row = [&report](std::string_view label) -> std::ostream& {
-      return report << std::left << std::setw(20) << label;
-    };
-    row("image") << slice.image << ", " << grid.width << " x " << grid.height << " pixels\n";
-    row("plane") << to_char(plane.axis) << " = " << shortest(plane.value);
-    if (!meets_box) {
-      report << " (outside the mesh's " << to_char(plane.axis) << " range ["
-             << shortest(grid.axis_lower) << ", " << shortest(grid.axis_upper)
-             << "]: every pixel is outside)";
-    }
-    report << "\n";
-    row("right") << horizontal << " from " << shortest(grid.left) << " to " << shortest(right)
-                 << "\n";
-    row("up") << vertical << " from " << shortest(bottom) << " to " << shortest(grid.top) << "\n";
-    row("inside") << count(inside::Location::inside) << " pixels (sky blue)\n";
-    row("outside") << count(inside::Location::outside) << " pixels (white)\n";
-    row("boundary") << count(inside::Location::boundary) << " pixels (vermillion)\n";
-    row("outline") << outline_count << " pixels (black, over inside and outside)\n";
-    row("method") << method << "\n";
-    row("seconds") << "build " << built->seconds << ", classify " << classify_seconds
-                   << ", outline " << outline_seconds << ", png " << png_seconds << "\n";
-    out << report.str();
-  }
-  out << std::flush;
-  return ExitCode::success;
-}
-
 }  // namespace
 
 ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
@@ -273,8 +88,11 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     err << "exactgeo inside: the mesh and the points cannot both come from standard input\n";
     return ExitCode::input_error;
   }
-  const std::optional<BuiltClassifier> built = build_classifier(options, err);
+  ProgressLine progress(err, options.progress, "points");
+  const std::optional<InsideMesh> built = build_inside_mesh(options, err, &progress);
   if (!built) return ExitCode::input_error;
+  progress.stage("classifying");
+  const std::optional<double> points_bytes = file_size(options.points);
 
   Tally tally;
   PointReader reader(in, points_source,
@@ -304,15 +122,15 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       }
       if (keep_labels) kept.insert(kept.end(), locations.begin(), locations.end());
       out << text;
-      if (options.progress) err << "\r" << tally.points << " points" << std::flush;
+      progress.count(tally.points, std::nullopt, share_read(in, points_bytes));
     }
   } catch (const InputError& e) {
     out << std::flush;
-    if (options.progress) err << "\r\033[K";
+    progress.clear();
     err << "exactgeo inside: " << e.what() << "\n";
     return ExitCode::input_error;
   }
-  if (options.progress) err << "\r\033[K" << std::flush;
+  progress.clear();
 
   if (options.json) {
     const auto count = [&](inside::Location l) {

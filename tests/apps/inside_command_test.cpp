@@ -271,5 +271,35 @@ TEST_F(InsideCommand, F64FromStandardInput) {
   EXPECT_NE(json.out.find("\"labels\": []}"), std::string::npos) << json.out;
 }
 
+// On a terminal, one progress line shows the mesh being read and built, then the points
+// with the share of the file read; it is erased before the command ends, and the labels
+// on stdout are the same as without it.
+TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
+  InsideCommandOptions options;
+  options.mesh = kMeshes + "cgal/cube_quad.off";
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 0 0\n");
+  const Outcome quiet = run_file(options, dir_ / "points.txt");
+  options.progress = true;
+  const Outcome shown = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(shown.code, ExitCode::success) << shown.err;
+  EXPECT_EQ(shown.out, quiet.out);
+  EXPECT_EQ(quiet.err, "");
+  const std::string& err = shown.err;
+  const std::size_t reading = err.find("reading " + options.mesh + "...");
+  const std::size_t building = err.find("building the search structure (6 faces)...");
+  const std::size_t counted = err.find("2 points (100.0%)");
+  EXPECT_NE(reading, std::string::npos) << err;
+  EXPECT_NE(building, std::string::npos) << err;
+  EXPECT_NE(counted, std::string::npos) << err;
+  EXPECT_LT(reading, building);
+  EXPECT_LT(building, counted);
+  EXPECT_EQ(err.substr(err.size() - 4), "\r\033[K");  // the line is erased at the end
+  EXPECT_EQ(err.find('\n'), std::string::npos);
+  // From standard input the share is unknown: a count without a percentage.
+  const Outcome piped = run_stdin(options, "0.5 0.5 0.5\n");
+  EXPECT_NE(piped.err.find("1 points"), std::string::npos) << piped.err;
+  EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
+}
+
 }  // namespace
 }  // namespace exactgeo::cli

@@ -1,0 +1,101 @@
+#include "cli/inside_mesh.hpp"
+
+#include <chrono>
+#include <exception>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+#include "exactgeo/io/input_error.hpp"
+#include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/load.hpp"
+#include "exactgeo/mesh/weld.hpp"
+
+namespace exactgeo::cli {
+
+using io::InputError;
+using mesh::load_mesh;
+using mesh::LoadedMesh;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+mesh::LoadOptions load_options(const InsideCommandOptions& options) {
+  return {.weld = options.weld,
+          .split_polygons = options.split_polygons,
+          .format = options.mesh_format};
+}
+
+/// A mesh refused by its checks, explained: the checks' message in the file's own
+/// numbering (OBJ counts vertices and faces from 1, OFF and PLY from 0), saying which, and
+/// whether merging the vertices that repeat another's coordinates (--weld) would make it
+/// acceptable. `message` as it is when the refusal was not the checks'. Only on this error
+/// path is the file read a second time.
+std::string refusal_explained(const InsideCommandOptions& options, const std::string& message) {
+  if (options.mesh == "-") return message;  // standard input cannot be read again
+  try {
+    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
+    const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded,
+                                                      options.allow_non_manifold);
+    if (!problem) return message;
+    std::string text = *problem;
+    if (options.weld) return text;
+    const std::size_t merged = mesh::weld_vertices(loaded.mesh);
+    if (merged > 0 &&
+        !mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), options.allow_non_manifold)) {
+      text += "; with --weld, which merges the " + std::to_string(merged) +
+              " vertices that repeat another's coordinates, it is accepted";
+    }
+    return text;
+  } catch (const std::exception&) {
+    return message;
+  }
+}
+
+}  // namespace
+
+std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
+                                            ProgressLine* progress) {
+  InsideMesh built;
+  try {
+    if (progress) progress->stage("reading " + mesh::mesh_source_name(options.mesh));
+    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
+    if (progress) {
+      progress->stage("building the search structure (" + grouped(loaded.mesh.faces.size()) +
+                      " faces)");
+    }
+    const Clock::time_point start = Clock::now();
+    if (options.float_rays) {
+      // The same meshes as the classifier accepts, so that the two are compared on them.
+      const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
+      if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
+        throw std::invalid_argument(*problem);
+      }
+      built.float_rays.emplace(loaded.mesh);
+      built.float_rays_mesh = std::move(loaded.mesh);
+    } else {
+      inside::ClassifierOptions classifier_options;
+      classifier_options.allow_non_manifold = options.allow_non_manifold;
+      // The plain double baseline casts a ray for every point (classifier.hpp).
+      classifier_options.space_cells =
+          options.space_cells && options.arithmetic != Arithmetic::plain_double;
+      built.classifier.emplace(std::move(loaded.mesh), classifier_options);
+    }
+    built.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  } catch (const InputError& e) {
+    err << "exactgeo inside: " << e.what() << "\n";
+    return std::nullopt;
+  } catch (const std::invalid_argument& e) {
+    err << "exactgeo inside: " << options.mesh << ": " << refusal_explained(options, e.what())
+        << "\n";
+    return std::nullopt;
+  } catch (const std::exception& e) {  // Embree failing, or memory running out
+    err << "exactgeo inside: " << options.mesh
+        << ": cannot build the search structure: " << e.what() << "\n";
+    return std::nullopt;
+  }
+  return built;
+}
+
+}  // namespace exactgeo::cli

@@ -1,0 +1,48 @@
+#pragma once
+
+// The mesh an `inside` run classifies against: loaded (with --format, --weld,
+// --split-polygons), checked, and its search structure built, for the exact classifier (in
+// any arithmetic) or the float ray baseline. A refused mesh is explained in the file's own
+// numbering, with a hint when --weld would make it acceptable.
+
+#include <iosfwd>
+#include <optional>
+#include <span>
+
+#include "cli/inside_command.hpp"
+#include "cli/progress_line.hpp"
+#include "exactgeo/inside/batch.hpp"
+#include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/float_ray_parity.hpp"
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::cli {
+
+/// The classifier the options ask for: the exact one (in any arithmetic) or the float ray
+/// baseline, which keeps no mesh of its own (a slice's outline needs it, so it is kept here).
+struct InsideMesh {
+  std::optional<inside::Classifier> classifier;
+  std::optional<inside::FloatRayParity> float_rays;
+  mesh::Mesh float_rays_mesh;
+  double seconds = 0.0;  ///< checking the mesh and building the search structures
+
+  const mesh::Mesh& mesh() const { return classifier ? classifier->mesh() : float_rays_mesh; }
+
+  void classify(std::span<const Point3> points, std::span<inside::Location> locations,
+                const InsideCommandOptions& options) const {
+    if (float_rays) {
+      inside::classify_batch(*float_rays, points, locations, options.threads);
+    } else {
+      inside::classify_batch(*classifier, points, locations, options.arithmetic, options.threads);
+    }
+  }
+};
+
+/// Loads the mesh and builds its classifier; nullopt once the error is on `err`
+/// ("exactgeo inside: ...").
+/// `progress`, when given, shows the stages (reading the mesh, building the search
+/// structure).
+std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
+                                            ProgressLine* progress = nullptr);
+
+}  // namespace exactgeo::cli
