@@ -1,0 +1,66 @@
+#pragma once
+
+// Exact self-intersection of a surface mesh: which pairs of faces intersect (docs/
+// self-intersection.md has the rule, the method per face type and what it cannot see).
+//
+// The rule: two faces intersect when some point lies in the relative interior of both,
+// for a triangle the open triangle, for a quad the image of the open square (0, 1)^2.
+// Faces sharing a vertex or an edge do not intersect by sharing it, and touching-only
+// contacts (a vertex resting on a face, an edge lying on a face with the faces on one
+// side of it, edges crossing edges) are not intersections. Coplanar faces whose interiors
+// overlap do intersect. Degenerate faces (a repeated corner, or zero area) are skipped.
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::mesh {
+
+/// Whether two faces intersect under the rule above.
+enum class FaceContact : std::uint8_t {
+  apart,         ///< no common interior point, or a method that found none (see below)
+  intersecting,  ///< a common interior point, proved
+  undecided,     ///< the edge method met a touching contact it cannot see past: an edge
+                 ///< of one face starts, ends or runs on the other face, or meets its
+                 ///< boundary, and no separating plane was found (pairs with a quad only)
+};
+std::string_view to_string(FaceContact contact) noexcept;
+
+/// Exact decision for faces a and b (a != b) of the mesh.
+///
+/// Two triangles, or any two planar faces that are triangles or strictly convex quads:
+/// exact and complete (apart or intersecting, never undecided). Any other pair (a skew
+/// quad, or a planar quad that is not convex): separating planes first, then every edge
+/// of one face against the other face and vice versa; `intersecting` is always proved,
+/// but `apart` is then only "no edge crosses the other face an odd number of times"
+/// (docs/self-intersection.md lists what that cannot see). A degenerate face is apart
+/// from everything.
+///
+/// Preconditions: a, b < mesh.faces.size(), corner indices in range, finite coordinates.
+FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b);
+
+/// Two faces by index, first < second.
+struct FacePair {
+  std::size_t first = 0;
+  std::size_t second = 0;
+
+  friend bool operator==(const FacePair&, const FacePair&) = default;
+  friend auto operator<=>(const FacePair&, const FacePair&) = default;
+};
+
+struct SelfIntersections {
+  std::vector<FacePair> intersecting;  ///< every intersecting pair, sorted
+  std::vector<FacePair> undecided;     ///< every undecided pair, sorted
+  std::size_t candidate_pairs = 0;     ///< pairs whose boxes overlap (given to face_contact)
+};
+
+/// face_contact for every pair of non-degenerate faces whose closed bounding boxes
+/// overlap (a box tree finds them; any other pair is apart). Single-threaded.
+///
+/// Preconditions: corner indices in range, finite coordinates (check_mesh reports both).
+SelfIntersections find_self_intersections(const Mesh& mesh);
+
+}  // namespace exactgeo::mesh
