@@ -16,7 +16,10 @@
 
 #include "cli/ccd_command.hpp"
 #include "cli/json.hpp"
+#include "cli/marked_ply.hpp"
 #include "cli/mesh_format_option.hpp"
+#include "cli/mesh_marks.hpp"
+#include "cli/output_file.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 
@@ -118,8 +121,8 @@ std::string interval_text(const ccd::TimeInterval& t) {
   return "[" + shortest(t.start) + ", " + shortest(t.end) + "]";
 }
 
-void write_json(std::string& text, const CcdMeshOptions& options,
-                const ccd::MeshCcdResult& result) {
+void write_json(std::string& text, const CcdMeshOptions& options, const ccd::MeshCcdResult& result,
+                const std::optional<MarkedMesh>& marks) {
   text.append("{\"method\": ").append(json_string(ccd::to_string(options.method)));
   text.append(", \"vertex_face\": [");
   for (std::size_t i = 0; i < result.vertex_face.size(); ++i) {
@@ -147,11 +150,12 @@ void write_json(std::string& text, const CcdMeshOptions& options,
       .append(shortest(result.broad_phase_seconds + result.narrow_phase_seconds));
   text.append(", \"broad_phase_seconds\": ").append(shortest(result.broad_phase_seconds));
   text.append(", \"narrow_phase_seconds\": ").append(shortest(result.narrow_phase_seconds));
+  if (marks) text.append(", \"mark\": ").append(legend_json(*marks, options.mark));
   text.append("}\n");
 }
 
 void write_report(std::string& text, const CcdMeshOptions& options, const ccd::MeshCcd& mesh,
-                  const ccd::MeshCcdResult& result) {
+                  const ccd::MeshCcdResult& result, const std::optional<MarkedMesh>& marks) {
   std::ostringstream report;
   auto row = [&report](std::string_view label, const std::string& value) {
     report << std::left << std::setw(20) << label << value << "\n";
@@ -187,6 +191,7 @@ void write_report(std::string& text, const CcdMeshOptions& options, const ccd::M
     text.append(" ").append(std::to_string(p.b[0]));
     text.append(" ").append(std::to_string(p.b[1])).append("\n");
   }
+  if (marks) text.append(legend_text(*marks, options.mark));
 }
 
 }  // namespace
@@ -210,6 +215,14 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
       return fail("--min-separation needs --method exact");
     }
     min_separation = *delta;
+  }
+
+  // The marked file is reserved before the work, so an unwritable path fails at once.
+  std::optional<OutputFile> mark_file;
+  try {
+    if (!options.mark.empty()) mark_file.emplace(options.mark);
+  } catch (const OutputFileError& e) {
+    return fail("--mark: " + std::string(e.what()));
   }
 
   // No welding: it could merge vertices in one frame and not in the other.
@@ -258,11 +271,23 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
     return fail("cannot run the step: " + std::string(e.what()));
   }
 
+  std::optional<MarkedMesh> marks;
+  std::vector<mesh::Face> triangles;
+  if (mark_file) {
+    for (const ccd::Triangle& t : mesh_ccd->faces())
+      triangles.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+    marks = collision_marks(mesh0.vertices, triangles, result);
+    try {
+      mark_file->commit(marked_ply(*marks));
+    } catch (const OutputFileError& e) {
+      return fail("--mark: " + std::string(e.what()));
+    }
+  }
   std::string text;
   if (options.json) {
-    write_json(text, options, result);
+    write_json(text, options, result, marks);
   } else {
-    write_report(text, options, *mesh_ccd, result);
+    write_report(text, options, *mesh_ccd, result, marks);
   }
   out << text << std::flush;
   return ExitCode::success;
@@ -286,6 +311,11 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
                   "the mesh at the end of the step: the same faces, other positions")
       ->required();
   add_mesh_format_option(*sub, options.format);
+  sub->add_option("--mark", options.mark,
+                  "also write frame 0 as a PLY file (the triangles the step ran on) with the "
+                  "colliding vertices, edges and faces coloured (the legend is in the file's "
+                  "comments and in the report)")
+      ->type_name("OUT.ply");
   sub->add_option_function<std::string>(
          "--method", [&options](const std::string& m) { options.method = *ccd::parse_method(m); },
          "exact (default: every root, exactly) or parity (the 2012 root parity algorithm: "

@@ -32,6 +32,7 @@ struct CcdMeshOptions {
   /// (c0, c2, c3), in place in the face order, instead of refusing quads.
   bool split_quads = false;
   bool json = false;
+  std::string mark;  ///< --mark: frame 0 as a PLY file with the collisions coloured; empty for none
 };
 
 /// Loads both frames exactly (OBJ, OFF or PLY, no welding) and checks that they hold the

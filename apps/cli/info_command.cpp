@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <exception>
 #include <iomanip>
 #include <optional>
@@ -10,9 +11,13 @@
 #include <string_view>
 
 #include "cli/json.hpp"
+#include "cli/marked_ply.hpp"
 #include "cli/mesh_format_option.hpp"
+#include "cli/mesh_marks.hpp"
+#include "cli/output_file.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
 
 namespace exactgeo::cli {
 
@@ -47,8 +52,53 @@ std::string plural(std::size_t count, std::string_view singular, std::string_vie
   return s;
 }
 
-void write_json(std::ostream& out, const InfoOptions& options, const LoadedMesh& loaded,
-                const MeshCheck& c, const std::optional<std::string>& problem) {
+/// Everything info found, for either form of the report.
+struct Findings {
+  const LoadedMesh& loaded;
+  const MeshCheck& check;
+  std::optional<std::string> problem;  ///< why `inside` refuses the mesh
+  /// nullopt when the check could not run (a corner out of range, a non-finite coordinate).
+  std::optional<mesh::SelfIntersections> self;
+  std::optional<MarkedMesh> marks;  ///< with --mark
+};
+
+/// "1-2, 3-4, ... (12 pairs)": the first few pairs in the file's numbering.
+std::string pairs_text(const std::vector<mesh::FacePair>& pairs, std::size_t first_index) {
+  std::string s = "first: ";
+  const std::size_t shown = std::min<std::size_t>(pairs.size(), 5);
+  for (std::size_t i = 0; i < shown; ++i) {
+    if (i > 0) s.append(", ");
+    s.append(std::to_string(pairs[i].first + first_index)).append("-");
+    s.append(std::to_string(pairs[i].second + first_index));
+  }
+  if (pairs.size() > shown) s.append(", ...");
+  return s;
+}
+
+std::string self_intersection_text(const Findings& f) {
+  if (!f.self) return "not checked (a corner index out of range or a non-finite coordinate)";
+  const std::size_t first_index = f.loaded.format == "obj" ? 1 : 0;
+  std::string s;
+  if (f.self->intersecting.empty()) {
+    s = "none";
+  } else {
+    s = plural(f.self->intersecting.size(), "pair of faces intersects", "pairs of faces intersect");
+    s.append(" (").append(pairs_text(f.self->intersecting, first_index)).append(")");
+  }
+  if (!f.self->undecided.empty()) {
+    s.append("; ").append(plural(f.self->undecided.size(), "pair", "pairs"));
+    s.append(" undecided (").append(pairs_text(f.self->undecided, first_index)).append(")");
+  }
+  if (!f.self->intersecting.empty() || !f.self->undecided.empty()) {
+    s.append(first_index == 1 ? "; faces numbered from 1, as in the file"
+                              : "; faces numbered from 0");
+  }
+  return s;
+}
+
+void write_json(std::ostream& out, const InfoOptions& options, const Findings& f) {
+  const LoadedMesh& loaded = f.loaded;
+  const MeshCheck& c = f.check;
   out << "{\"file\": " << json_string(options.mesh)
       << ", \"format\": " << json_string(loaded.format)
       << ", \"coordinates_via_float\": " << (loaded.coordinates_via_float ? "true" : "false")
@@ -70,12 +120,21 @@ void write_json(std::ostream& out, const InfoOptions& options, const LoadedMesh&
       << ", \"degenerate_faces\": " << c.degenerate_faces.count
       << ", \"non_planar_quads\": " << c.non_planar_quads.count
       << ", \"unreferenced_vertices\": " << c.unreferenced_vertices
-      << ", \"components\": " << c.components
-      << ", \"problem\": " << (problem ? json_string(*problem) : std::string("null")) << "}\n";
+      << ", \"components\": " << c.components;
+  if (f.self) {
+    out << ", \"intersecting_face_pairs\": " << f.self->intersecting.size()
+        << ", \"undecided_face_pairs\": " << f.self->undecided.size();
+  } else {
+    out << ", \"intersecting_face_pairs\": null, \"undecided_face_pairs\": null";
+  }
+  out << ", \"problem\": " << (f.problem ? json_string(*f.problem) : std::string("null"));
+  if (f.marks) out << ", \"mark\": " << legend_json(*f.marks, options.mark);
+  out << "}\n";
 }
 
-void write_table(std::ostream& out, const InfoOptions& options, const LoadedMesh& loaded,
-                 const MeshCheck& c, const std::optional<std::string>& problem) {
+void write_table(std::ostream& out, const InfoOptions& options, const Findings& f) {
+  const LoadedMesh& loaded = f.loaded;
+  const MeshCheck& c = f.check;
   auto row = [&out](std::string_view label, const std::string& value) {
     out << std::left << std::setw(20) << label << value << "\n";
   };
@@ -143,7 +202,15 @@ void write_table(std::ostream& out, const InfoOptions& options, const LoadedMesh
   row("non-planar quads", std::to_string(c.non_planar_quads.count));
   row("unreferenced", std::to_string(c.unreferenced_vertices) + " vertices");
   row("components", std::to_string(c.components));
-  out << "usable for `exactgeo inside`: " << (problem ? "no: " + *problem : "yes") << "\n";
+  row("self-intersection", self_intersection_text(f));
+  out << "usable for `exactgeo inside`: " << (f.problem ? "no: " + *f.problem : "yes") << "\n";
+  if (f.marks) out << legend_text(*f.marks, options.mark);
+}
+
+/// Whether the exact self-intersection check can run: every corner in range, every
+/// coordinate finite (the predicates' preconditions).
+bool geometry_usable(const MeshCheck& c) {
+  return c.out_of_range_faces.count == 0 && c.non_finite_vertices.count == 0;
 }
 
 }  // namespace
@@ -156,13 +223,31 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
     err << "exactgeo info: " << e.what() << "\n";
     return ExitCode::input_error;
   }
+  // The marked file is reserved before the work, so an unwritable path fails at once.
+  std::optional<OutputFile> mark_file;
+  try {
+    if (!options.mark.empty()) mark_file.emplace(options.mark);
+  } catch (const OutputFileError& e) {
+    err << "exactgeo info: --mark: " << e.what() << "\n";
+    return ExitCode::input_error;
+  }
   const MeshCheck check = mesh::check_mesh(loaded.mesh);
-  const std::optional<std::string> problem = mesh::closed_surface_problem(check, loaded);
+  Findings findings{loaded, check, mesh::closed_surface_problem(check, loaded), {}, {}};
+  if (geometry_usable(check)) findings.self = mesh::find_self_intersections(loaded.mesh);
+  if (mark_file) {
+    findings.marks = info_marks(loaded.mesh, check, findings.self);
+    try {
+      mark_file->commit(marked_ply(*findings.marks));
+    } catch (const OutputFileError& e) {
+      err << "exactgeo info: --mark: " << e.what() << "\n";
+      return ExitCode::input_error;
+    }
+  }
   std::ostringstream text;
   if (options.json) {
-    write_json(text, options, loaded, check, problem);
+    write_json(text, options, findings);
   } else {
-    write_table(text, options, loaded, check, problem);
+    write_table(text, options, findings);
   }
   out << text.str();
   out.flush();
@@ -174,8 +259,9 @@ CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
       "info",
       "Report what a mesh file holds: vertices, faces (quads, triangles), bounding box, "
       "closed or not (boundary edges), non-manifold edges, orientation, degenerate faces and "
-      "non-planar quads (both decided exactly), components, and whether `exactgeo inside` "
-      "can use it. Exit code 0 whenever the file loads.");
+      "non-planar quads (both decided exactly), components, pairs of faces that intersect "
+      "(exact; touching is not intersecting), and whether `exactgeo inside` can use it. "
+      "Exit code 0 whenever the file loads.");
   sub->add_option("mesh", options.mesh,
                   "mesh file (OBJ, OFF, PLY exactly; others via assimp), or - for standard "
                   "input (with --format)")
@@ -187,6 +273,11 @@ CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
                 "split faces with more than four corners into triangle fans instead of "
                 "refusing the file");
   sub->add_flag("--json", options.json, "print one JSON object instead of the table");
+  sub->add_option("--mark", options.mark,
+                  "also write the mesh as a PLY file with a colour per face: intersecting, "
+                  "degenerate, on a non-manifold or boundary edge, non-planar quad (the "
+                  "legend is in the file's comments and in the report)")
+      ->type_name("OUT.ply");
   return *sub;
 }
 

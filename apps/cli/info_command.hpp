@@ -2,7 +2,8 @@
 
 // `exactgeo info MESH`: what a mesh file holds and whether `exactgeo inside` can use it
 // (counts, bounding box, closed/manifold/oriented, exact degenerate faces and non-planar
-// quads, components; the command-line contract, README.md).
+// quads, components, pairs of faces that intersect; the command-line contract,
+// README.md), and with --mark the same findings as a coloured mesh.
 
 #include <iosfwd>
 #include <string>
@@ -20,6 +21,7 @@ struct InfoOptions {
   std::string mesh;  ///< the mesh file
   mesh::LoadOptions load;
   bool json = false;
+  std::string mark;  ///< --mark: a PLY file with the findings as face colours; empty for none
 };
 
 /// Loads and checks the mesh, then reports on `out`. An open, non-manifold or otherwise
