@@ -207,12 +207,6 @@ void write_table(std::ostream& out, const InfoOptions& options, const Findings& 
   if (f.marks) out << legend_text(*f.marks, options.mark);
 }
 
-/// Whether the exact self-intersection check can run: every corner in range, every
-/// coordinate finite (the predicates' preconditions).
-bool geometry_usable(const MeshCheck& c) {
-  return c.out_of_range_faces.count == 0 && c.non_finite_vertices.count == 0;
-}
-
 }  // namespace
 
 ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& err) {
@@ -233,7 +227,7 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
   }
   const MeshCheck check = mesh::check_mesh(loaded.mesh);
   Findings findings{loaded, check, mesh::closed_surface_problem(check, loaded), {}, {}};
-  if (geometry_usable(check)) findings.self = mesh::find_self_intersections(loaded.mesh);
+  if (check.geometry_checkable()) findings.self = mesh::find_self_intersections(loaded.mesh);
   if (mark_file) {
     findings.marks = info_marks(loaded.mesh, check, findings.self);
     try {

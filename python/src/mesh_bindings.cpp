@@ -2,16 +2,19 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
 #include "mesh_object.hpp"
 
 namespace exactgeo::python {
@@ -89,12 +92,15 @@ MeshObject mesh_from_arrays(const py::object& vertices_in, const py::object& fac
   return object;
 }
 
-MeshObject load(const std::filesystem::path& path, bool weld, bool split_polygons) {
+MeshObject load(const std::filesystem::path& path, bool weld, bool split_polygons,
+                const std::optional<std::string>& format) {
   require_openable(path);
   MeshObject object;
   object.file = path.string();
   py::gil_scoped_release release;
-  object.loaded = mesh::load_mesh(path.string(), {weld, split_polygons});
+  object.loaded = mesh::load_mesh(
+      path.string(),
+      {.weld = weld, .split_polygons = split_polygons, .format = format.value_or("")});
   return object;
 }
 
@@ -133,10 +139,12 @@ py::list point_list(const Point3& p) {
 py::dict info_of(const MeshObject& object) {
   mesh::MeshCheck c;
   std::optional<std::string> problem;
+  std::optional<mesh::SelfIntersections> self;
   {
     py::gil_scoped_release release;
     c = mesh::check_mesh(object.loaded.mesh);
     problem = mesh::closed_surface_problem(c, object.loaded);
+    if (c.geometry_checkable()) self = mesh::find_self_intersections(object.loaded.mesh);
   }
   const mesh::LoadedMesh& loaded = object.loaded;
   py::dict info;
@@ -167,6 +175,9 @@ py::dict info_of(const MeshObject& object) {
   info["non_planar_quads"] = c.non_planar_quads.count;
   info["unreferenced_vertices"] = c.unreferenced_vertices;
   info["components"] = c.components;
+  info["intersecting_face_pairs"] =
+      self ? py::object(py::int_(self->intersecting.size())) : py::none();
+  info["undecided_face_pairs"] = self ? py::object(py::int_(self->undecided.size())) : py::none();
   info["problem"] = problem ? py::object(py::str(*problem)) : py::none();
   return info;
 }
@@ -211,11 +222,13 @@ count) or of a non-finite vertex.)doc")
 
 Counts of vertices, faces, quads and triangles; the bounding box; closed, manifold,
 consistently oriented; degenerate faces and non-planar quads (both decided exactly);
-components; and "problem": why exactgeo.Classifier would refuse the mesh, or None.)doc")
+components; pairs of faces that intersect and pairs the check could not decide (exact,
+touching is not intersecting; None when a coordinate is not finite); and "problem": why
+exactgeo.Classifier would refuse the mesh, or None.)doc")
       .def("__repr__", &repr_of);
 
   module.def("load_mesh", &load, py::arg("path"), py::kw_only(), py::arg("weld") = false,
-             py::arg("split_polygons") = false,
+             py::arg("split_polygons") = false, py::arg("format") = py::none(),
              R"doc(Reads a mesh file, keeping coordinates exact.
 
 OBJ, OFF and PLY (ASCII and binary, float and double) are read by exactgeo's own readers:
@@ -225,6 +238,8 @@ decimal numbers correctly rounded, binary values bit for bit. Other formats (STL
 weld: merge vertices with exactly equal coordinates (face soups, STL).
 split_polygons: split faces with more than four corners into triangle fans instead of
     refusing the file.
+format: "obj", "off", "ply" or a format assimp reads ("stl", ...), for a file whose name
+    has no extension or a misleading one; None: the extension decides.
 
 Raises OSError when the file cannot be opened, ValueError with the file and line (or
 face) for malformed content.)doc");

@@ -11,10 +11,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "apps/marked_ply_text.hpp"
 #include "cli/ccd_mesh_command.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "support/generators.hpp"
@@ -168,6 +171,76 @@ TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
       EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << what;
     }
   }
+  fs::remove_all(dir);
+}
+
+// --mark colours frame 0: exactly the faces and vertices of colliding vertex-face pairs,
+// exactly the edges of colliding edge-edge pairs (and their other vertices), as the
+// exhaustive pairwise CCD finds them.
+TEST(CcdMeshCommand, MarkColoursExactlyTheCollidingElements) {
+  auto rng = testing::seeded_engine("CcdMeshCommand.mark");
+  const fs::path dir =
+      fs::temp_directory_path() / ("exactgeo_ccd_mesh_mark_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const Frames frames = crumpling_sheet(6, rng);
+  write_obj(dir / "t0.obj", frames.t0, frames.faces);
+  write_obj(dir / "t1.obj", frames.t1, frames.faces);
+  CcdMeshOptions options;
+  options.frame0 = (dir / "t0.obj").string();
+  options.frame1 = (dir / "t1.obj").string();
+  options.mark = (dir / "marked.ply").string();
+  options.threads = 2;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
+  std::ifstream file(options.mark);
+  const auto ply = testing::read_marked_ply(
+      std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>()));
+  ASSERT_TRUE(ply.complete);
+  ASSERT_EQ(ply.faces.size(), frames.faces.size());
+  ASSERT_EQ(ply.vertex_colours.size(), frames.t0.size());
+
+  const auto [vertex_face, edge_edge] = exhaustive(frames, ccd::Method::exact);
+  ASSERT_FALSE(vertex_face.empty());
+  ASSERT_FALSE(edge_edge.empty());
+  const Rgb grey = ply.face_colours[0] == ply.face_colours[1] ? ply.face_colours[0] : Rgb{};
+  std::vector<bool> face_hit(frames.faces.size()), vertex_hit(frames.t0.size());
+  for (const Pair& p : vertex_face) {
+    vertex_hit[p[0]] = true;
+    face_hit[p[1]] = true;
+  }
+  std::set<std::array<std::size_t, 2>> edges;
+  for (const Pair& p : edge_edge) {
+    edges.insert({p[0], p[1]});
+    edges.insert({p[2], p[3]});
+  }
+  // The colours, as the legend in the report names them.
+  const auto colour_named = [&](const std::string& meaning) {
+    for (const std::string& line : ply.legend) {
+      if (line.find(meaning) == std::string::npos) continue;
+      std::istringstream words(line.substr(line.find(' ', 8) + 1));
+      return testing::read_rgb(words);
+    }
+    ADD_FAILURE() << "no legend for " << meaning;
+    return grey;
+  };
+  const Rgb hit_face = colour_named("the face of a colliding vertex-face pair");
+  const Rgb quiet_face = colour_named("face 200 200 200");
+  const Rgb hit_vertex = colour_named("the vertex of a colliding vertex-face pair");
+  const Rgb edge_end = colour_named("an end of a colliding edge");
+  const Rgb quiet_vertex = colour_named("vertex 120 120 120");
+  EXPECT_NE(hit_face, quiet_face);
+  for (std::size_t f = 0; f < frames.faces.size(); ++f)
+    EXPECT_EQ(ply.face_colours[f], face_hit[f] ? hit_face : quiet_face) << "face " << f;
+  std::set<std::size_t> edge_ends;
+  for (const auto& e : edges)
+    edge_ends.insert(e.begin(), e.end());
+  for (std::size_t v = 0; v < frames.t0.size(); ++v) {
+    const Rgb expected = vertex_hit[v] ? hit_vertex : edge_ends.count(v) ? edge_end : quiet_vertex;
+    EXPECT_EQ(ply.vertex_colours[v], expected) << "vertex " << v;
+  }
+  const std::set<std::array<std::size_t, 2>> marked_edges(ply.edges.begin(), ply.edges.end());
+  EXPECT_EQ(marked_edges, edges);
+  EXPECT_EQ(ply.edges.size(), edges.size());  // each once
   fs::remove_all(dir);
 }
 

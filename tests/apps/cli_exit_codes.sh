@@ -507,4 +507,18 @@ if [ "$(ls -A "$slices")" != "cube.png" ]; then
   failures=$((failures + 1))
 fi
 
+# --mark: an unwritable path fails before any work, with nothing on stdout and no file.
+expect 2 "info --mark unwritable" "" info --mark /nonexistent/dir/marked.ply "$spot"
+expect 2 "ccd-mesh --mark unwritable" "" ccd-mesh --mark /nonexistent/dir/marked.ply \
+  "$frames/frame0.obj" "$frames/frame1.obj"
+expect 0 "ccd-mesh --mark" "" ccd-mesh --mark "$scratch/collisions.ply" "$frames/frame0.obj" \
+  "$frames/frame1.obj"
+if ! head -n 1 "$scratch/collisions.ply" | grep -qx ply; then
+  echo "FAIL: ccd-mesh --mark wrote no PLY file"
+  failures=$((failures + 1))
+fi
+json=$("$exe" info --json --mark "$scratch/findings.ply" "$spot")
+expect_in "info --json --mark" "$json" '"intersecting_face_pairs": 0' '"undecided_face_pairs": 0' \
+  '"mark": {"file": ' '"legend": [{"element": "face", "colour": "#'
+
 exit $((failures > 0))

@@ -45,6 +45,31 @@ def test_each_format_loads(tmp_path, cli):
     assert exactgeo.load_mesh(stl).info() == cli.json("info", stl)
 
 
+def test_format_names_what_the_file_name_does_not(tmp_path, cli):
+    source = sorted(p for p in BUNDLED if p.suffix == ".obj")[0]
+    nameless = tmp_path / "mesh_without_extension"
+    nameless.write_bytes(source.read_bytes())
+    with pytest.raises(ValueError, match="no file extension"):
+        exactgeo.load_mesh(nameless)
+    named = exactgeo.load_mesh(nameless, format="obj", split_polygons=True)
+    by_extension = exactgeo.load_mesh(source, split_polygons=True)
+    assert np.array_equal(named.vertices, by_extension.vertices)
+    assert named.info() == cli.json("info", nameless, "--format", "obj", "--split-polygons")
+    with pytest.raises(ValueError, match="unsupported mesh format 'xyz'"):
+        exactgeo.load_mesh(nameless, format="xyz")
+
+
+def test_info_counts_intersecting_faces():
+    # Two unit cubes, the second moved by (1/2, 1/2, 1/2): each of the first's faces at
+    # x, y or z = 1 crosses the second's faces at 1/2 on the two other axes, 6 pairs.
+    offset = CUBE_VERTICES + 0.5
+    mesh = exactgeo.Mesh(np.vstack([CUBE_VERTICES, offset]),
+                         np.vstack([CUBE_QUADS, CUBE_QUADS + 8]))
+    info = mesh.info()
+    assert (info["intersecting_face_pairs"], info["undecided_face_pairs"]) == (6, 0)
+    assert exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS).info()["intersecting_face_pairs"] == 0
+
+
 def test_mesh_from_arrays_keeps_what_it_was_given():
     mesh = exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS)
     assert np.array_equal(mesh.vertices, CUBE_VERTICES)

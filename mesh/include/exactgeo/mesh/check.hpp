@@ -67,6 +67,11 @@ struct MeshCheck {
 
   bool closed() const noexcept { return boundary_edges.count == 0 && odd_edges.count == 0; }
   bool manifold() const noexcept { return non_manifold_edges.count == 0; }
+  /// Every corner index in range and every coordinate finite: the exact predicates'
+  /// preconditions, so geometric checks beyond these (self-intersection) can run.
+  bool geometry_checkable() const noexcept {
+    return out_of_range_faces.count == 0 && non_finite_vertices.count == 0;
+  }
 };
 
 /// Checks every face and edge. Runs in O(faces log faces).
