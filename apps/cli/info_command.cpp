@@ -62,38 +62,9 @@ struct Findings {
   std::optional<MarkedMesh> marks;  ///< with --mark
 };
 
-/// "1-2, 3-4, ... (12 pairs)": the first few pairs in the file's numbering.
-std::string pairs_text(const std::vector<mesh::FacePair>& pairs, std::size_t first_index) {
-  std::string s = "first: ";
-  const std::size_t shown = std::min<std::size_t>(pairs.size(), 5);
-  for (std::size_t i = 0; i < shown; ++i) {
-    if (i > 0) s.append(", ");
-    s.append(std::to_string(pairs[i].first + first_index)).append("-");
-    s.append(std::to_string(pairs[i].second + first_index));
-  }
-  if (pairs.size() > shown) s.append(", ...");
-  return s;
-}
-
 std::string self_intersection_text(const Findings& f) {
   if (!f.self) return "not checked (a corner index out of range or a non-finite coordinate)";
-  const std::size_t first_index = f.loaded.format == "obj" ? 1 : 0;
-  std::string s;
-  if (f.self->intersecting.empty()) {
-    s = "none";
-  } else {
-    s = plural(f.self->intersecting.size(), "pair of faces intersects", "pairs of faces intersect");
-    s.append(" (").append(pairs_text(f.self->intersecting, first_index)).append(")");
-  }
-  if (!f.self->undecided.empty()) {
-    s.append("; ").append(plural(f.self->undecided.size(), "pair", "pairs"));
-    s.append(" undecided (").append(pairs_text(f.self->undecided, first_index)).append(")");
-  }
-  if (!f.self->intersecting.empty() || !f.self->undecided.empty()) {
-    s.append(first_index == 1 ? "; faces numbered from 1, as in the file"
-                              : "; faces numbered from 0");
-  }
-  return s;
+  return mesh::self_intersection_problem(*f.self, f.loaded.first_index()).value_or("none");
 }
 
 void write_json(std::ostream& out, const InfoOptions& options, const Findings& f) {

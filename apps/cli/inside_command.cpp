@@ -140,8 +140,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
         << (options.float_rays ? "embree" : to_string(options.arithmetic)) << "\""
-        << ", \"build_seconds\": " << built->seconds << ", \"read_seconds\": " << tally.read_seconds
-        << ", \"seconds\": " << tally.seconds;
+        << ", \"intersecting_face_pairs\": "
+        << (built->self ? std::to_string(built->self->intersecting.size()) : "null")
+        << ", \"undecided_face_pairs\": "
+        << (built->self ? std::to_string(built->self->undecided.size()) : "null")
+        << ", \"build_seconds\": " << built->seconds
+        << ", \"self_intersection_seconds\": " << built->self_intersection_seconds
+        << ", \"read_seconds\": " << tally.read_seconds << ", \"seconds\": " << tally.seconds;
     if (const auto cells = built->classifier ? built->classifier->space_cells() : std::nullopt) {
       out << ", \"space_cells\": {\"resolution\": [" << cells->resolution[0] << ", "
           << cells->resolution[1] << ", " << cells->resolution[2]
@@ -199,6 +204,10 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
                 "split faces with more than four corners into triangle fans");
   sub->add_flag("--allow-non-manifold", options.allow_non_manifold,
                 "accept edges shared by 4, 6, ... faces (parity is still defined)");
+  sub->add_flag("!--no-self-intersection-check", options.self_intersection_check,
+                "skip looking for faces that intersect (exact; about as long as building the "
+                "search structure). On a mesh whose faces intersect the labels are those of the "
+                "parity solid, and without the check nothing says so");
   sub->add_flag("!--no-space-cells", options.space_cells,
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");

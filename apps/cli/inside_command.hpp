@@ -36,7 +36,10 @@ struct InsideCommandOptions {
   bool split_polygons = false;
   bool allow_non_manifold = false;
   bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
-  bool progress = false;    ///< a progress line on `err` (the binary sets it for a terminal)
+  /// Look for faces that intersect (exactly) and warn: the labels are then those of the
+  /// parity solid.
+  bool self_intersection_check = true;
+  bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
   /// are read (cli/slice_image.hpp).
   SliceOptions slice;

@@ -58,9 +58,11 @@ std::string refusal_explained(const InsideCommandOptions& options, const std::st
 std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
                                             ProgressLine* progress) {
   InsideMesh built;
+  std::size_t first_index = 0;
   try {
     if (progress) progress->stage("reading " + mesh::mesh_source_name(options.mesh));
     LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
+    first_index = loaded.first_index();
     if (progress) {
       progress->stage("building the search structure (" + grouped(loaded.mesh.faces.size()) +
                       " faces)");
@@ -94,6 +96,19 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
     err << "exactgeo inside: " << options.mesh
         << ": cannot build the search structure: " << e.what() << "\n";
     return std::nullopt;
+  }
+  if (options.self_intersection_check) {
+    if (progress) progress->stage("looking for faces that intersect");
+    const Clock::time_point start = Clock::now();
+    built.self = mesh::find_self_intersections(built.mesh());
+    built.self_intersection_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (const auto problem = mesh::self_intersection_problem(*built.self, first_index)) {
+      if (progress) progress->clear();
+      err << "exactgeo inside: warning: " << mesh::mesh_source_name(options.mesh) << ": "
+          << *problem
+          << ": the labels are those of the parity solid (inside where rays cross the surface "
+             "an odd number of times), which is not the solid such faces were meant to bound\n";
+    }
   }
   return built;
 }

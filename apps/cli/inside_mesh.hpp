@@ -15,6 +15,7 @@
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/float_ray_parity.hpp"
 #include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
 
 namespace exactgeo::cli {
 
@@ -25,6 +26,10 @@ struct InsideMesh {
   std::optional<inside::FloatRayParity> float_rays;
   mesh::Mesh float_rays_mesh;
   double seconds = 0.0;  ///< checking the mesh and building the search structures
+  /// The faces that intersect, exactly; nullopt when the check was skipped
+  /// (--no-self-intersection-check).
+  std::optional<mesh::SelfIntersections> self;
+  double self_intersection_seconds = 0.0;
 
   const mesh::Mesh& mesh() const { return classifier ? classifier->mesh() : float_rays_mesh; }
 
@@ -38,10 +43,10 @@ struct InsideMesh {
   }
 };
 
-/// Loads the mesh and builds its classifier; nullopt once the error is on `err`
-/// ("exactgeo inside: ...").
-/// `progress`, when given, shows the stages (reading the mesh, building the search
-/// structure).
+/// Loads the mesh, builds its classifier and (unless the options skip it) looks for faces
+/// that intersect: on such a mesh a warning on `err` says that the labels are those of
+/// the parity solid. nullopt once an error is on `err` ("exactgeo inside: ..."). `progress`,
+/// when given, shows the stages.
 std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
                                             ProgressLine* progress = nullptr);
 

@@ -283,13 +283,41 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
 
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
                                                   bool allow_non_manifold) {
-  const bool obj = loaded.format == "obj";
-  auto problem = closed_surface_problem(check, allow_non_manifold, obj ? 1 : 0);
+  auto problem = closed_surface_problem(check, allow_non_manifold, loaded.first_index());
   if (problem) {
-    problem->append(obj ? " (vertices and faces numbered from 1, as in the file)"
+    problem->append(loaded.first_index() == 1
+                        ? " (vertices and faces numbered from 1, as in the file)"
                         : " (vertices and faces numbered from 0)");
   }
   return problem;
+}
+
+std::optional<std::string> self_intersection_problem(const SelfIntersections& found,
+                                                     std::size_t first_index) {
+  if (found.intersecting.empty() && found.undecided.empty()) return std::nullopt;
+  const auto pairs = [first_index](const std::vector<FacePair>& list) {
+    Examples<FacePair> examples;
+    for (const FacePair& pair : list)
+      examples.add(pair);
+    return first_list(examples, [first_index](const FacePair& p) {
+      return std::to_string(p.first + first_index) + "-" + std::to_string(p.second + first_index);
+    });
+  };
+  std::vector<std::string> parts;
+  if (!found.intersecting.empty()) {
+    parts.push_back(
+        counted(found.intersecting.size(), "pair of faces intersects", "pairs of faces intersect") +
+        " (" + pairs(found.intersecting) + ")");
+  }
+  if (!found.undecided.empty()) {
+    parts.push_back(counted(found.undecided.size(), "pair", "pairs") + " undecided (" +
+                    pairs(found.undecided) + ")");
+  }
+  std::string message = parts[0];
+  if (parts.size() > 1) message.append("; ").append(parts[1]);
+  message.append(first_index == 1 ? " (faces numbered from 1, as in the file)"
+                                  : " (faces numbered from 0)");
+  return message;
 }
 
 }  // namespace exactgeo::mesh

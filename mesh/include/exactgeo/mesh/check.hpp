@@ -12,6 +12,7 @@
 
 #include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
 
 namespace exactgeo::mesh {
 
@@ -92,5 +93,12 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check,
 /// vertices and faces from 1; OFF, PLY and exactgeo's Mesh from 0), saying which.
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
                                                   bool allow_non_manifold = false);
+
+/// What find_self_intersections found, as one message with faces numbered from
+/// `first_index` (LoadedMesh::first_index: the file's own numbering), e.g. "3 pairs of
+/// faces intersect (first: 1-2, 1-5, 4-9); 1 pair undecided (first: 2-3) (faces numbered
+/// from 1, as in the file)"; nullopt when no pair intersects or is undecided.
+std::optional<std::string> self_intersection_problem(const SelfIntersections& found,
+                                                     std::size_t first_index);
 
 }  // namespace exactgeo::mesh

@@ -30,6 +30,10 @@ struct LoadedMesh {
   bool coordinates_via_float = false;  ///< coordinates were rounded to 32-bit floats (assimp)
   std::size_t welded_vertices = 0;     ///< vertices removed by welding (LoadOptions::weld, assimp)
   std::size_t split_polygons = 0;      ///< faces with more than four corners that were split
+
+  /// How the file numbers its vertices and faces: from 1 in OBJ, from 0 in OFF and PLY
+  /// (and in exactgeo's Mesh).
+  std::size_t first_index() const noexcept { return format == "obj" ? 1 : 0; }
 };
 
 }  // namespace exactgeo::mesh
