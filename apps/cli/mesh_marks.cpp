@@ -8,14 +8,15 @@ namespace exactgeo::cli {
 
 namespace {
 
-constexpr Rgb kUnmarked{200, 200, 200};  // light grey
+constexpr Rgb kUnmarked{200, 200, 200};  // light grey (ccd-mesh: no collision)
 constexpr Rgb kUnmarkedVertex{120, 120, 120};
 constexpr Rgb kRed{230, 25, 75};
 constexpr Rgb kMagenta{240, 50, 230};
 constexpr Rgb kPurple{145, 30, 180};
 constexpr Rgb kOrange{245, 130, 48};
 constexpr Rgb kBlue{0, 130, 200};
-constexpr Rgb kMint{170, 255, 195};
+constexpr Rgb kPaleBlue{185, 210, 235};  // quiet: every quad of a smooth mesh is one
+constexpr Rgb kPlain{235, 235, 235};
 
 /// Every face gets the colour of the first category it belongs to; the legend counts
 /// the faces shown in each colour.
@@ -39,14 +40,13 @@ MarkedMesh info_marks(const mesh::Mesh& mesh, const mesh::MeshCheck& check,
     kCategories
   };
   constexpr std::array<FaceCategory, kCategories> kFaceCategories{{
-      {"intersects another face (exact)", kRed},
-      {"self-intersection undecided (a touching contact the edge method cannot see past)",
-       kMagenta},
+      {"intersects another face", kRed},
+      {"intersection undecided (a contact the edge method cannot see past)", kMagenta},
       {"degenerate (repeated corner or zero area)", kPurple},
-      {"on a non-manifold edge (used by more than two faces)", kOrange},
+      {"on a non-manifold edge (used by three or more faces)", kOrange},
       {"on a boundary edge (used by one face)", kBlue},
-      {"exactly non-planar quad (a bilinear patch; not a defect)", kMint},
-      {"none of these", kUnmarked},
+      {"non-planar quad (a bilinear patch, not a defect)", kPaleBlue},
+      {"none of these", kPlain},
   }};
 
   std::vector<std::array<bool, kCategories>> in(mesh.faces.size());

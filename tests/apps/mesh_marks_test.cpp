@@ -176,11 +176,11 @@ TEST_F(MarkCommand, InfoColoursEachFaceByItsFirstFinding) {
   std::map<std::string, std::size_t> expected_counts;
   for (std::size_t f = 0; f < faces; ++f) {
     const std::string kind = intersecting[f]                     ? "intersects another"
-                             : undecided[f]                      ? "self-intersection undecided"
+                             : undecided[f]                      ? "intersection undecided"
                              : check.face_findings[f].degenerate ? "degenerate (repeated"
                              : fin[f]                            ? "on a non-manifold"
                              : boundary[f]                       ? "on a boundary"
-                             : check.face_findings[f].non_planar ? "exactly non-planar"
+                             : check.face_findings[f].non_planar ? "non-planar quad"
                                                                  : "none of these";
     const std::string key = kind.substr(0, 12);
     ASSERT_TRUE(colour_of.count(key)) << kind;
@@ -190,7 +190,7 @@ TEST_F(MarkCommand, InfoColoursEachFaceByItsFirstFinding) {
   for (const auto& [key, count] : count_of)
     EXPECT_EQ(count, expected_counts[key]) << key;
   // Every category but "undecided" is planted here.
-  for (const char* planted : {"intersects", "degenerate", "on", "exactly", "none"}) {
+  for (const char* planted : {"intersects", "degenerate", "on", "non-planar", "none"}) {
     std::size_t seen = 0;
     for (const auto& [key, count] : expected_counts)
       seen += key.rfind(planted, 0) == 0 ? count : 0;
