@@ -22,6 +22,7 @@
 #include "exactgeo/mesh/load.hpp"
 #include "exactgeo/mesh/ply_reader.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
+#include "support/hexahedron.hpp"
 
 namespace exactgeo::cli {
 namespace {
@@ -67,16 +68,15 @@ TEST(MarkedPly, KeepsEveryCoordinateAndFaceExactlyAndEveryColour) {
                                                   "legend edge 10 20 30 #0a141e: an edge (1)"}));
 }
 
-/// Appends the axis-aligned box [lower, upper] as six outward-facing quads.
+/// Appends the axis-aligned box [lower, upper] as six outward-facing quads (corner c at
+/// lower or upper by the bits of c, as support/hexahedron.hpp numbers them).
 void add_box(Mesh& m, const Point3& lower, const Point3& upper) {
   const auto first = static_cast<VertexIndex>(m.vertices.size());
   for (std::size_t c = 0; c < 8; ++c) {
     m.vertices.push_back({(c & 1) ? upper[0] : lower[0], (c & 2) ? upper[1] : lower[1],
                           (c & 4) ? upper[2] : lower[2]});
   }
-  const std::array<std::array<VertexIndex, 4>, 6> quads{
-      {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}};
-  for (const auto& q : quads)
+  for (const auto& q : testing::kHexahedronFaces)
     m.faces.push_back(make_quad(first + q[0], first + q[1], first + q[2], first + q[3]));
 }
 
