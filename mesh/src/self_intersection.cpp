@@ -215,9 +215,9 @@ Sign orient2d(const Point3& a, const Point3& b, const Point3& c, std::size_t axi
 }
 
 /// An edge line of convex polygon f (in the common plane, projected along `axis`) with
-/// every corner of g on its closed outer side.
-bool edge_line_separates(const FaceGeometry& f, const FaceGeometry& g, std::size_t axis) noexcept {
-  const Sign inward = orient2d(f.p[0], f.p[1], f.p[2], axis);
+/// every corner of g on its closed outer side. `inward`: f's orientation in the projection.
+bool edge_line_separates(const FaceGeometry& f, const FaceGeometry& g, std::size_t axis,
+                         Sign inward) noexcept {
   for (std::size_t i = 0; i < f.n; ++i) {
     bool all_outside = true;
     for (std::size_t c = 0; c < g.n && all_outside; ++c)
@@ -227,16 +227,32 @@ bool edge_line_separates(const FaceGeometry& f, const FaceGeometry& g, std::size
   return false;
 }
 
-/// Coplanar convex polygons: their interiors are disjoint exactly when a line weakly
-/// separates them, and then one through an edge of either does (the Minkowski difference
-/// of two convex polygons has edges parallel to theirs; the origin lies outside its
-/// interior exactly when it is on the closed outer side of one of its edge lines).
+/// Coplanar convex polygons. Facing opposite ways they only touch, by the rule, whether
+/// or not they overlap. Facing the same way, their interiors are disjoint exactly when a
+/// line weakly separates them, and then one through an edge of either does (the Minkowski
+/// difference of two convex polygons has edges parallel to theirs; the origin lies
+/// outside its interior exactly when it is on the closed outer side of one of its edge
+/// lines).
+///
+/// Facing: the normals by corner order, n = (p1 - p0) x (p2 - p0) for each, are parallel
+/// and nonzero (one plane, first three corners not collinear), so they point the same way
+/// exactly when their components on `axis` (nonzero for a, hence for b) have one sign.
+/// orient2d(p0, p1, p2, axis) is that sign times a constant: the flattened points lie in
+/// the plane x_axis = 0, `up` one unit above it, and the cross product of the flattened
+/// differences is (0, .., n[axis], .., 0), the other coordinates dropping out. For a
+/// strictly convex quad every three corners in boundary order have the polygon's
+/// orientation, so its first three corners give its facing.
 FaceContact coplanar_contact(const FaceGeometry& a, const FaceGeometry& b) noexcept {
   // Dropping a coordinate on which the plane's normal is nonzero keeps the configuration.
   std::size_t axis = 0;
-  while (axis < 2 && orient2d(a.p[0], a.p[1], a.p[2], axis) == Sign::zero)
-    ++axis;
-  if (edge_line_separates(a, b, axis) || edge_line_separates(b, a, axis)) return FaceContact::apart;
+  Sign a_facing = orient2d(a.p[0], a.p[1], a.p[2], axis);
+  while (axis < 2 && a_facing == Sign::zero)
+    a_facing = orient2d(a.p[0], a.p[1], a.p[2], ++axis);
+  // Nonzero too: b lies in a's plane and its first three corners are not collinear.
+  const Sign b_facing = orient2d(b.p[0], b.p[1], b.p[2], axis);
+  if (a_facing != b_facing) return FaceContact::apart;  // the two sides of the surface
+  if (edge_line_separates(a, b, axis, a_facing) || edge_line_separates(b, a, axis, b_facing))
+    return FaceContact::apart;
   return FaceContact::intersecting;
 }
 
@@ -400,6 +416,10 @@ FaceContact contact(const FaceGeometry& a, const FaceGeometry& b) noexcept {
   if (separated_by_corner_plane(a, b) || separated_by_corner_plane(b, a)) return FaceContact::apart;
   if (a.convex_polygon() && b.convex_polygon()) return convex_polygons_contact(a, b);
   if (separated_by_edge_pair_axis(a, b)) return FaceContact::apart;
+  // A coplanar pair gets here only with an other-flat quad (a skew quad lies in no plane).
+  // Every edge then lies in the other face's plane, so each ray either misses the face or
+  // is degenerate: undecided or apart, never intersecting, whichever way the faces face.
+  // (A concave or butterfly patch folds over itself, so parts of it face each way.)
   return edge_method(a, b);
 }
 

@@ -1,8 +1,9 @@
-// Self-intersection: face_contact against an oracle written from the definition in GMP
+// Self-intersection: face_contact against an oracle written from the rule in GMP
 // rationals (triangle pairs: random, one ulp off degenerate, exactly degenerate, at scales
 // 2^±500 and subnormal), quad pairs with known answers and the symmetries every answer
 // must have, and find_self_intersections against brute force over all pairs on generated
-// meshes with planted intersections and planted touching-only contacts.
+// meshes with planted intersections and planted touching-only contacts (among them
+// coplanar faces facing opposite ways: boxes face to face, a sheet folded flat).
 
 #include "exactgeo/mesh/self_intersection.hpp"
 
@@ -28,7 +29,8 @@ namespace exactgeo::mesh {
 namespace {
 
 // ---------------------------------------------------------------------------------------
-// The oracle: do two open triangles share a point? Rationals and the definition only.
+// The oracle: do two triangles intersect by the rule (a point strictly inside both, unless
+// they are coplanar and face opposite ways)? Rationals and the definition only.
 
 using Q = mpq_class;
 using V = std::array<Q, 3>;
@@ -135,16 +137,25 @@ bool coplanar_open_triangles_meet(const std::array<V, 3>& a, const std::array<V,
   return area2 != 0;
 }
 
-/// The definition: a point strictly inside both triangles. Non-degenerate triangles only.
-bool open_triangles_meet_oracle(const Triangle& s, const Triangle& t) {
+/// What the oracle finds about a pair.
+enum class Truth : std::uint8_t {
+  apart,         ///< no point strictly inside both
+  intersecting,  ///< a point strictly inside both, and not coplanar facing opposite ways
+  sides_touch,   ///< coplanar, open triangles overlapping, normals opposite: not intersecting
+};
+
+/// The rule from the definition. Non-degenerate triangles only.
+Truth rule_oracle(const Triangle& s, const Triangle& t) {
   const std::array<V, 3> a{exact(s[0]), exact(s[1]), exact(s[2])};
   const std::array<V, 3> b{exact(t[0]), exact(t[1]), exact(t[2])};
   const V na = cross(a[1] - a[0], a[2] - a[0]);
   const V nb = cross(b[1] - b[0], b[2] - b[0]);
   const V d = cross(na, nb);
   if (is_zero(d)) {
-    if (dot(na, b[0] - a[0]) != 0) return false;  // parallel planes
-    return coplanar_open_triangles_meet(a, b, na);
+    if (dot(na, b[0] - a[0]) != 0) return Truth::apart;  // parallel planes
+    if (!coplanar_open_triangles_meet(a, b, na)) return Truth::apart;
+    // Parallel normals by corner order: facing opposite ways exactly when na . nb < 0.
+    return dot(na, nb) < 0 ? Truth::sides_touch : Truth::intersecting;
   }
   // The planes' common line P + t d: P solves na.x = na.a0, nb.x = nb.b0, d.x = 0 (Cramer).
   const V rhs{dot(na, a[0]), dot(nb, b[0]), Q(0)};
@@ -159,12 +170,16 @@ bool open_triangles_meet_oracle(const Triangle& s, const Triangle& t) {
   }
   const Interval ia = open_triangle_on_line(a, p, d);
   const Interval ib = open_triangle_on_line(b, p, d);
-  if (ia.empty || ib.empty) return false;
+  if (ia.empty || ib.empty) return Truth::apart;
   // Open intervals overlap: max(lo) < min(hi).
   std::optional<Q> lo = ia.lo, hi = ia.hi;
   if (ib.lo && (!lo || *ib.lo > *lo)) lo = ib.lo;
   if (ib.hi && (!hi || *ib.hi < *hi)) hi = ib.hi;
-  return !lo || !hi || *lo < *hi;
+  return !lo || !hi || *lo < *hi ? Truth::intersecting : Truth::apart;
+}
+
+bool intersect_oracle(const Triangle& s, const Triangle& t) {
+  return rule_oracle(s, t) == Truth::intersecting;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -194,8 +209,9 @@ Mesh two_triangles_welded(const Triangle& s, const Triangle& t) {
 
 /// Runs face_contact on the pair (both orders, separate and shared vertices) against the
 /// oracle; returns the oracle's answer.
-bool expect_triangles_match_oracle(const Triangle& s, const Triangle& t, const std::string& what) {
-  const bool truth = open_triangles_meet_oracle(s, t);
+Truth expect_triangles_match_oracle(const Triangle& s, const Triangle& t, const std::string& what) {
+  const Truth answer = rule_oracle(s, t);
+  const bool truth = answer == Truth::intersecting;
   const FaceContact expected = truth ? FaceContact::intersecting : FaceContact::apart;
   const Mesh separate = two_triangles(s, t);
   const Mesh welded = two_triangles_welded(s, t);
@@ -205,7 +221,7 @@ bool expect_triangles_match_oracle(const Triangle& s, const Triangle& t, const s
   const SelfIntersections found = find_self_intersections(separate);
   EXPECT_EQ(found.intersecting.size(), truth ? 1u : 0u) << what;
   EXPECT_TRUE(found.undecided.empty()) << what;
-  return truth;
+  return answer;
 }
 
 std::string describe(const Triangle& s, const Triangle& t) {
@@ -293,8 +309,9 @@ void scale(Triangle& t, int exponent) {
 }
 
 struct Outcomes {
-  int meet = 0;
-  int apart = 0;
+  int meet = 0;         ///< intersecting
+  int apart = 0;        ///< no common interior point
+  int sides_touch = 0;  ///< coplanar, overlapping, facing opposite ways (not intersecting)
 };
 
 /// Runs `count` non-degenerate pairs from `make` against the oracle.
@@ -304,7 +321,17 @@ Outcomes run_against_oracle(int count, const std::function<std::pair<Triangle, T
     const auto [s, t] = make();
     if (degenerate_oracle(s) || degenerate_oracle(t)) continue;
     ++done;
-    (expect_triangles_match_oracle(s, t, describe(s, t)) ? outcomes.meet : outcomes.apart) += 1;
+    switch (expect_triangles_match_oracle(s, t, describe(s, t))) {
+      case Truth::intersecting:
+        ++outcomes.meet;
+        break;
+      case Truth::apart:
+        ++outcomes.apart;
+        break;
+      case Truth::sides_touch:
+        ++outcomes.sides_touch;
+        break;
+    }
   }
   return outcomes;
 }
@@ -323,8 +350,11 @@ TEST(TriangleContact, RandomPairsMatchOracle) {
 TEST(TriangleContact, ExactlyDegeneratePairsMatchOracle) {
   auto rng = testing::seeded_engine("TriangleContact.Degenerate");
   const Outcomes o = run_against_oracle(6000, [&] { return degenerate_pair(rng); });
+  std::cout << "intersecting " << o.meet << ", apart " << o.apart << ", coplanar facing opposite "
+            << o.sides_touch << "\n";
   EXPECT_GT(o.meet, 600);
   EXPECT_GT(o.apart, 600);
+  EXPECT_GT(o.sides_touch, 150);
 }
 
 TEST(TriangleContact, OneUlpOffDegeneratePairsMatchOracle) {
@@ -349,8 +379,11 @@ TEST(TriangleContact, ExtremeMagnitudesMatchOracle) {
       if (std::bernoulli_distribution(0.5)(rng)) nudge(rng, pair.second);
       return pair;
     });
+    std::cout << exponent << ": intersecting " << o.meet << ", apart " << o.apart
+              << ", coplanar facing opposite " << o.sides_touch << "\n";
     EXPECT_GT(o.meet, 100) << exponent;
     EXPECT_GT(o.apart, 100) << exponent;
+    EXPECT_GT(o.sides_touch, 15) << exponent;
   }
   std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
   for (const int exponent : {500, -500}) {
@@ -379,16 +412,29 @@ TEST(TriangleContact, NamedContacts) {
   for (const Triangle& t :
        {vertex_on_face, edge_on_face, shared_edge_folded, coplanar_edge_to_edge,
         coplanar_vertex_to_vertex, edge_on_face_across_edge, edge_crosses_edge}) {
-    EXPECT_FALSE(expect_triangles_match_oracle(base, t, describe(base, t)));
+    EXPECT_EQ(expect_triangles_match_oracle(base, t, describe(base, t)), Truth::apart);
   }
-  // Intersecting: pierced, coplanar overlapping, nested, an edge through the interior,
-  // a shared edge with the faces overlapping in their common plane.
+  // Coplanar, the open triangles overlapping, facing opposite ways (base faces +z, these
+  // -z): the two sides of a surface touching, not intersecting. Among them a neighbour
+  // across a shared edge folded flat onto base (the edge run the other way, as consistent
+  // orientation has it), and base itself with its corners reversed.
+  const Triangle overlap_opposite{{{1, 1, 0}, {1, 5, 0}, {5, 1, 0}}};
+  const Triangle nested_opposite{{{1, 1, 0}, {1, 2, 0}, {2, 1, 0}}};
+  const Triangle folded_flat{{{4, 0, 0}, {0, 0, 0}, {1, 1, 0}}};
+  const Triangle reversed_copy{{{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}};
+  for (const Triangle& t : {overlap_opposite, nested_opposite, folded_flat, reversed_copy}) {
+    EXPECT_EQ(expect_triangles_match_oracle(base, t, describe(base, t)), Truth::sides_touch);
+  }
+  // Intersecting: pierced, coplanar overlapping facing the same way (partly, nested, the
+  // same triangle with its corners rotated, a shared edge run the same way with the faces
+  // overlapping).
   const Triangle pierced{{{1, 1, -1}, {1, 1, 1}, {2, 1, 1}}};
   const Triangle coplanar_overlap{{{1, 1, 0}, {5, 1, 0}, {1, 5, 0}}};
   const Triangle nested{{{1, 1, 0}, {2, 1, 0}, {1, 2, 0}}};
-  const Triangle shared_edge_overlap{{{4, 0, 0}, {0, 0, 0}, {1, 1, 0}}};
-  for (const Triangle& t : {pierced, coplanar_overlap, nested, shared_edge_overlap}) {
-    EXPECT_TRUE(expect_triangles_match_oracle(base, t, describe(base, t)));
+  const Triangle duplicate{{{4, 0, 0}, {0, 4, 0}, {0, 0, 0}}};
+  const Triangle shared_edge_same_way{{{0, 0, 0}, {4, 0, 0}, {1, 1, 0}}};
+  for (const Triangle& t : {pierced, coplanar_overlap, nested, duplicate, shared_edge_same_way}) {
+    EXPECT_EQ(expect_triangles_match_oracle(base, t, describe(base, t)), Truth::intersecting);
   }
 }
 
@@ -466,6 +512,12 @@ std::array<Point3, 4> rotated(const std::array<Point3, 4>& q, std::size_t r) {
   return out;
 }
 
+/// The same corners in the opposite order (the other facing; the same patch for a skew
+/// quad, with u and v swapped).
+std::array<Point3, 4> reversed(const std::array<Point3, 4>& q) {
+  return {q[0], q[3], q[2], q[1]};
+}
+
 std::array<Point3, 4> transformed(const std::array<Point3, 4>& q, const std::array<int, 3>& axes,
                                   int exponent) {
   std::array<Point3, 4> out;
@@ -475,6 +527,9 @@ std::array<Point3, 4> transformed(const std::array<Point3, 4>& q, const std::arr
   return out;
 }
 
+// Reversing one face's corners flips its facing, which can change the answer for coplanar
+// faces; reversing both keeps how they face each other, and so does a mirror (axes {2, 1,
+// 0}), which flips both.
 TEST(QuadContact, InvariantUnderOrderRotationAxesAndScale) {
   auto rng = testing::seeded_engine("QuadContact.Invariance");
   std::map<FaceContact, int> seen;
@@ -489,6 +544,7 @@ TEST(QuadContact, InvariantUnderOrderRotationAxesAndScale) {
     EXPECT_EQ(face_contact(two_quads(a, b), 1, 0), c) << trial;
     EXPECT_EQ(face_contact(two_quads(rotated(a, rotation(rng)), b), 0, 1), c) << trial;
     EXPECT_EQ(face_contact(two_quads(a, rotated(b, rotation(rng))), 0, 1), c) << trial;
+    EXPECT_EQ(face_contact(two_quads(reversed(a), reversed(b)), 0, 1), c) << trial;
     for (const auto& axes : {std::array<int, 3>{1, 2, 0}, std::array<int, 3>{2, 1, 0}}) {
       for (const int exponent : {0, 600, -600}) {
         EXPECT_EQ(
@@ -505,6 +561,81 @@ TEST(QuadContact, InvariantUnderOrderRotationAxesAndScale) {
   EXPECT_GT(seen[FaceContact::intersecting], 50);
   EXPECT_GT(seen[FaceContact::apart], 50);
   EXPECT_GT(seen[FaceContact::undecided], 0);
+}
+
+/// The plane z = x + 2 y (exact for small integers), tilted against every axis.
+Point3 tilted(double x, double y) {
+  return {x, y, x + 2 * y};
+}
+
+TEST(QuadContact, CoplanarConvexQuadsIntersectOnlyFacingTheSameWay) {
+  // Random parallelograms in one tilted plane: the sheared images (x + k y, y) of integer
+  // rectangles, so the open faces meet exactly when the open rectangles do (the shear is
+  // a bijection of the plane). Each with a random facing and starting corner. Expected:
+  // intersecting exactly when the rectangles overlap and the facings agree.
+  auto rng = testing::seeded_engine("QuadContact.Coplanar");
+  std::uniform_int_distribution<int> coordinate(0, 6), shear(-2, 2);
+  std::uniform_int_distribution<std::size_t> rotation(0, 3);
+  std::map<std::pair<bool, bool>, int> seen;  // (overlap, same facing)
+  for (int trial = 0; trial < 600; ++trial) {
+    const int k = shear(rng);
+    const auto quad = [&](std::array<int, 2>& lo, std::array<int, 2>& hi, bool up) {
+      for (std::size_t i = 0; i < 2; ++i) {
+        do {
+          lo[i] = coordinate(rng), hi[i] = coordinate(rng);
+        } while (lo[i] == hi[i]);
+        if (lo[i] > hi[i]) std::swap(lo[i], hi[i]);
+      }
+      const auto at = [&](int x, int y) { return tilted(x + k * y, y); };
+      std::array<Point3, 4> q{at(lo[0], lo[1]), at(hi[0], lo[1]), at(hi[0], hi[1]),
+                              at(lo[0], hi[1])};  // counterclockwise seen from +z
+      return rotated(up ? q : reversed(q), rotation(rng));
+    };
+    std::array<int, 2> alo{}, ahi{}, blo{}, bhi{};
+    const bool a_up = std::bernoulli_distribution(0.5)(rng);
+    const bool b_up = std::bernoulli_distribution(0.5)(rng);
+    const std::array<Point3, 4> a = quad(alo, ahi, a_up);
+    const std::array<Point3, 4> b = quad(blo, bhi, b_up);
+    const bool overlap = alo[0] < bhi[0] && blo[0] < ahi[0] && alo[1] < bhi[1] && blo[1] < ahi[1];
+    const bool same = a_up == b_up;
+    ++seen[{overlap, same}];
+    const FaceContact expected = overlap && same ? FaceContact::intersecting : FaceContact::apart;
+    const Mesh mesh = two_quads(a, b);
+    EXPECT_EQ(face_contact(mesh, 0, 1), expected) << trial;
+    EXPECT_EQ(face_contact(mesh, 1, 0), expected) << trial;
+    EXPECT_EQ(face_contact(two_quads(reversed(a), reversed(b)), 0, 1), expected) << trial;
+    EXPECT_EQ(find_self_intersections(mesh).intersecting.size(),
+              expected == FaceContact::intersecting ? 1u : 0u)
+        << trial;
+  }
+  for (const bool overlap : {false, true})
+    for (const bool same : {false, true})
+      EXPECT_GT((seen[{overlap, same}]), 50) << overlap << same;
+}
+
+TEST(QuadContact, CoplanarNonConvexQuadIsNeverIntersecting) {
+  // A dart (concave) and a bow tie (butterfly) in the plane z = 0 with a triangle in the
+  // same plane: the edge method's rays lie in the plane, so overlapping pairs are
+  // undecided whichever way the faces face, and never intersecting; a triangle away from
+  // the quad's corner hull is apart.
+  const std::array<Point3, 4> dart{{{0, 0, 0}, {4, 0, 0}, {1, 1, 0}, {0, 4, 0}}};
+  const std::array<Point3, 4> bow_tie{{{0, 0, 0}, {4, 4, 0}, {4, 0, 0}, {0, 4, 0}}};
+  const Triangle up{{{0.5, 0.25, 0}, {2, 0.25, 0}, {0.5, 2, 0}}};  // faces +z
+  const Triangle down{{up[0], up[2], up[1]}};                      // faces -z
+  const Triangle away{{{5, 5, 0}, {7, 5, 0}, {5, 7, 0}}};
+  for (const auto& quad : {dart, bow_tie}) {
+    for (const auto& order : {quad, reversed(quad)}) {
+      for (const auto& [t, expected] :
+           {std::pair{up, FaceContact::undecided}, std::pair{down, FaceContact::undecided},
+            std::pair{away, FaceContact::apart}}) {
+        Mesh mesh;
+        mesh.vertices = {order[0], order[1], order[2], order[3], t[0], t[1], t[2]};
+        mesh.faces = {make_quad(0, 1, 2, 3), make_triangle(4, 5, 6)};
+        EXPECT_EQ(face_contact(mesh, 0, 1), expected);
+        EXPECT_EQ(face_contact(mesh, 1, 0), expected);
+      }
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------
@@ -620,7 +751,7 @@ std::vector<FacePair> oracle_pairs(const Mesh& mesh) {
   };
   for (std::size_t i = 0; i < mesh.faces.size(); ++i)
     for (std::size_t j = i + 1; j < mesh.faces.size(); ++j)
-      if (boxes_overlap(tri(i), tri(j)) && open_triangles_meet_oracle(tri(i), tri(j)))
+      if (boxes_overlap(tri(i), tri(j)) && intersect_oracle(tri(i), tri(j)))
         pairs.push_back({i, j});
   return pairs;
 }
@@ -769,16 +900,114 @@ TEST(SelfIntersections, PlantedTouchingContactsAreNotIntersections) {
   }
 }
 
-TEST(SelfIntersections, BoxesFaceToFaceIntersectByTheCoplanarRule) {
-  // Two boxes pressed face to face: their touching sides are coplanar with overlapping
-  // interiors, which the rule counts as intersecting; their other sides only touch.
+TEST(SelfIntersections, BoxesFaceToFaceOnlyTouch) {
+  // Two closed boxes, outward normals, pressed face to face: their x = 2 sides overlap in
+  // their common plane facing opposite ways (+x and -x), the two sides of the surface
+  // meeting, so nothing intersects; the pair does reach face_contact.
+  for (const bool triangles : {false, true}) {
+    Mesh mesh;
+    add_grid_box(mesh, 1, 2.0, {0, 0, 0}, no_move, triangles);
+    add_grid_box(mesh, 1, 2.0, {2, 0.5, 0.5}, no_move, triangles);  // x = 2 sides overlap
+    const SelfIntersections found = expect_matches_brute_force(mesh);
+    EXPECT_TRUE(found.intersecting.empty()) << triangles;
+    EXPECT_TRUE(found.undecided.empty()) << triangles;
+    if (!triangles) {
+      // Side x = 2 of the first box is its face 1 (axis 0, side n); of the second, its
+      // face 0 (6 in the mesh).
+      EXPECT_EQ(face_contact(mesh, 1, 6), FaceContact::apart);
+      EXPECT_GT(found.candidate_pairs, 12u);
+    }
+  }
+}
+
+TEST(SelfIntersections, DuplicatedFaceIntersectsOnlyFacingTheSameWay) {
+  // A closed box with side x = 2 (face 1) given twice: with the same corner order (also
+  // rotated, and on vertices of its own) the copy faces the same way and intersects the
+  // original, and only it; with the corner order reversed it faces the other way and
+  // only touches.
+  Mesh box;
+  add_grid_box(box, 1, 2.0, {0, 0, 0}, no_move);
+  const auto& c = box.faces[1].corners;
+  const std::array<VertexIndex, 4> same{c[0], c[1], c[2], c[3]};
+  const std::array<VertexIndex, 4> turned{c[2], c[3], c[0], c[1]};
+  const std::array<VertexIndex, 4> opposite{c[0], c[3], c[2], c[1]};
+  for (const bool own_vertices : {false, true}) {
+    for (const auto& [copy, same_way] :
+         {std::pair{same, true}, std::pair{turned, true}, std::pair{opposite, false}}) {
+      Mesh mesh = box;
+      std::array<VertexIndex, 4> corners = copy;
+      if (own_vertices) {
+        for (VertexIndex& v : corners) {
+          mesh.vertices.push_back(box.vertices[v]);
+          v = static_cast<VertexIndex>(mesh.vertices.size() - 1);
+        }
+      }
+      mesh.faces.push_back(make_quad(corners[0], corners[1], corners[2], corners[3]));
+      const SelfIntersections found = expect_matches_brute_force(mesh);
+      const std::vector<FacePair> expected =
+          same_way ? std::vector<FacePair>{{1, 6}} : std::vector<FacePair>{};
+      EXPECT_EQ(found.intersecting, expected) << own_vertices << same_way;
+      EXPECT_TRUE(found.undecided.empty());
+    }
+  }
+}
+
+TEST(SelfIntersections, SheetFoldedFlatOnlyTouches) {
+  // Convex quads in the plane z = 0, each sharing an edge with the next: folded flat
+  // (consistently oriented, so each neighbour runs the shared edge the other way and faces
+  // the other way) neighbours only touch. The same neighbour with the shared edge run the
+  // same way faces the same way: intersecting.
   Mesh mesh;
-  add_grid_box(mesh, 1, 2.0, {0, 0, 0}, no_move);
-  add_grid_box(mesh, 1, 2.0, {2, 0.5, 0.5}, no_move);  // x = 2 sides overlap partially
-  const SelfIntersections found = expect_matches_brute_force(mesh);
-  // Side x = 2 of the first box is its face 1 (axis 0, side n); of the second, its face 0.
-  EXPECT_EQ(found.intersecting, (std::vector<FacePair>{{1, 6}}));
-  EXPECT_TRUE(found.undecided.empty());
+  mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {1, 0, 0}, {1, 2, 0}};
+  mesh.faces = {make_quad(0, 1, 2, 3), make_quad(2, 1, 4, 5)};  // folded back along x = 2
+  {
+    const SelfIntersections found = find_self_intersections(mesh);
+    EXPECT_TRUE(found.intersecting.empty());
+    EXPECT_TRUE(found.undecided.empty());
+    EXPECT_EQ(found.candidate_pairs, 1u);
+    EXPECT_EQ(face_contact(mesh, 1, 0), FaceContact::apart);
+  }
+  {
+    Mesh same_way = mesh;
+    same_way.faces[1] = make_quad(1, 2, 5, 4);
+    EXPECT_EQ(find_self_intersections(same_way).intersecting, (std::vector<FacePair>{{0, 1}}));
+  }
+  {
+    // Folded twice (a z-fold): the first and third layers face the same way and overlap,
+    // so they intersect by the rule, which sees pairs, not which layer lies between.
+    Mesh z_fold = mesh;
+    z_fold.vertices.push_back({2, 0, 0});
+    z_fold.vertices.push_back({2, 2, 0});
+    z_fold.faces.push_back(make_quad(4, 6, 7, 5));  // back along x = 1, over [1, 2]
+    const SelfIntersections found = find_self_intersections(z_fold);
+    EXPECT_EQ(found.intersecting, (std::vector<FacePair>{{0, 2}}));
+    EXPECT_TRUE(found.undecided.empty());
+  }
+  {
+    // The same with triangles: a fan of two triangles folded flat over the first.
+    Mesh fan;
+    fan.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0}};
+    fan.faces = {make_triangle(0, 1, 2), make_triangle(1, 0, 3)};
+    EXPECT_EQ(face_contact(fan, 0, 1), FaceContact::apart);
+    EXPECT_TRUE(find_self_intersections(fan).intersecting.empty());
+    fan.faces[1] = make_triangle(0, 1, 3);
+    EXPECT_EQ(find_self_intersections(fan).intersecting, (std::vector<FacePair>{{0, 1}}));
+  }
+}
+
+TEST(SelfIntersections, CoplanarOverlapFacingTheSameWayIntersects) {
+  // Two squares in the plane z = 0 overlapping partially ([0, 2]^2 and [1, 3]^2), both
+  // facing +z: intersecting; the second reversed (facing -z): apart.
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0},
+                   {1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}};
+  mesh.faces = {make_quad(0, 1, 2, 3), make_quad(4, 5, 6, 7)};
+  EXPECT_EQ(find_self_intersections(mesh).intersecting, (std::vector<FacePair>{{0, 1}}));
+  EXPECT_EQ(face_contact(mesh, 1, 0), FaceContact::intersecting);
+  mesh.faces[1] = make_quad(4, 7, 6, 5);
+  EXPECT_EQ(face_contact(mesh, 0, 1), FaceContact::apart);
+  EXPECT_EQ(face_contact(mesh, 1, 0), FaceContact::apart);
+  EXPECT_TRUE(find_self_intersections(mesh).intersecting.empty());
 }
 
 }  // namespace

@@ -4,11 +4,21 @@
 // self-intersection.md has the rule, the method per face type and what it cannot see).
 //
 // The rule: two faces intersect when some point lies in the relative interior of both,
-// for a triangle the open triangle, for a quad the image of the open square (0, 1)^2.
-// Faces sharing a vertex or an edge do not intersect by sharing it, and touching-only
-// contacts (a vertex resting on a face, an edge lying on a face with the faces on one
-// side of it, edges crossing edges) are not intersections. Coplanar faces whose interiors
-// overlap do intersect. Degenerate faces (a repeated corner, or zero area) are skipped.
+// for a triangle the open triangle, for a quad the image of the open square (0, 1)^2,
+// except that two coplanar faces whose interiors overlap while facing opposite ways
+// (their normals by corner order pointing in opposite directions) only touch: that is
+// the two sides of the surface meeting, as where two solids are set face to face or a
+// sheet is folded flat onto itself. Coplanar faces that overlap facing the same way (a
+// duplicated face, a surface overlapping itself) intersect. Faces sharing a vertex or an
+// edge do not intersect by sharing it, and touching-only contacts (a vertex resting on a
+// face, an edge lying on a face with the faces on one side of it, edges crossing edges)
+// are not intersections. Degenerate faces (a repeated corner, or zero area) are skipped.
+//
+// Why facing decides: a ray through a coplanar overlapping pair crosses both faces, so
+// crossing parity (point-in-volume) never sees the overlap as surface. For two closed,
+// consistently oriented solids set face to face (opposite facing) that gives their union,
+// as meant; two same-facing faces have the material of both on one side, so the solids
+// overlap there, or, for a duplicated face, the parity loses that face of the surface.
 
 #include <cstddef>
 #include <cstdint>
@@ -21,8 +31,11 @@ namespace exactgeo::mesh {
 
 /// Whether two faces intersect under the rule above.
 enum class FaceContact : std::uint8_t {
-  apart,         ///< no common interior point, or a method that found none (see below)
-  intersecting,  ///< a common interior point, proved
+  apart,         ///< not intersecting under the rule: no common interior point, or
+                 ///< coplanar and facing opposite ways, or a method that found no
+                 ///< intersection (see below)
+  intersecting,  ///< a common interior point (and not coplanar facing opposite ways),
+                 ///< proved
   undecided,     ///< the edge method met a touching contact it cannot see past: an edge
                  ///< of one face starts, ends or runs on the other face, or meets its
                  ///< boundary, and no separating plane was found (pairs with a quad only)
@@ -32,12 +45,15 @@ std::string_view to_string(FaceContact contact) noexcept;
 /// Exact decision for faces a and b (a != b) of the mesh.
 ///
 /// Two triangles, or any two planar faces that are triangles or strictly convex quads:
-/// exact and complete (apart or intersecting, never undecided). Any other pair (a skew
+/// exact and complete (apart or intersecting, never undecided); coplanar ones facing
+/// opposite ways are apart whether or not they overlap. Any other pair (a skew
 /// quad, or a planar quad that is not convex): separating planes first, then every edge
 /// of one face against the other face and vice versa; `intersecting` is always proved,
 /// but `apart` is then only "no edge crosses the other face an odd number of times"
-/// (docs/self-intersection.md lists what that cannot see). A degenerate face is apart
-/// from everything.
+/// (docs/self-intersection.md lists what that cannot see). A coplanar pair with a
+/// non-convex flat quad is undecided when the faces' corner hulls meet (apart otherwise),
+/// never intersecting, whichever way the faces face. A degenerate face is apart from
+/// everything.
 ///
 /// Preconditions: a, b < mesh.faces.size(), corner indices in range, finite coordinates.
 FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b);
