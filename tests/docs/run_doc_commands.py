@@ -1,13 +1,16 @@
 #!/usr/bin/env python3
-"""Runs every shell command shown in README.md and docs/*.md, so the docs cannot rot.
+"""Runs every shell command and Python example shown in README.md and docs/*.md, so the
+docs cannot rot.
 
-Two kinds of fenced blocks are commands:
+Three kinds of fenced blocks are run:
 
   ```sh        every line is run (a line ending in a backslash continues on the next),
                as one bash script with `set -e`, so each command must succeed;
   ```console   a transcript: lines starting with "$ " are run, and the lines after
                each one are its expected output, compared line by line. A line that
-               ends in seconds ("0.0039 s") compares only the text before the number.
+               ends in seconds ("0.0039 s") compares only the text before the number;
+  ```python    the whole block, by Debian's /usr/bin/python3 with the package of the
+               build tree (PYTHONPATH=build/python), which must exit with status 0.
 
 A block preceded by the comment `<!-- docs-test: skip: REASON -->` is not run (the
 build itself, which CI runs as the README's first command; measurements that take
@@ -64,7 +67,7 @@ def command_blocks(path):
         fence = FENCE.match(text)
         if fence:
             kind = fence.group(1)
-            if kind in ("sh", "console"):
+            if kind in ("sh", "console", "python"):
                 current = Block(path, number, kind, [], pending_skip)
             else:
                 current = Block(path, number, "other", [])
@@ -103,6 +106,7 @@ def environment(build, home):
     env["PATH"] = f"{build.resolve() / 'bin'}:{env.get('PATH', '')}"
     env["HOME"] = str(home)
     env["PYTHONDONTWRITEBYTECODE"] = "1"
+    env["PYTHONPATH"] = str(build.resolve() / "python")
     return env
 
 
@@ -117,6 +121,15 @@ def run_sh(block, cwd, env):
     if result.returncode != 0:
         return (f"exit code {result.returncode}\n--- stdout\n{result.stdout[-2000:]}"
                 f"--- stderr\n{result.stderr[-2000:]}")
+    return None
+
+
+def run_python(block, cwd, env):
+    """None, or what went wrong."""
+    result = subprocess.run(["/usr/bin/python3", "-"], input="\n".join(block.lines), cwd=cwd,
+                            env=env, capture_output=True, text=True, timeout=TIMEOUT_SECONDS)
+    if result.returncode != 0:
+        return f"exit code {result.returncode}\n--- stderr\n{result.stderr[-2000:]}"
     return None
 
 
@@ -177,7 +190,7 @@ def main():
                 skipped += 1
                 print(f"skip {name}: {block.skip_reason}")
             else:
-                runner = run_sh if block.kind == "sh" else run_console
+                runner = {"sh": run_sh, "console": run_console, "python": run_python}[block.kind]
                 problem = runner(block, work, env)
                 ran += 1
                 print(f"{'ran ' if problem is None else 'FAIL'} {name}")
