@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <exception>
+#include <future>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -53,19 +54,38 @@ std::string refusal_explained(const InsideCommandOptions& options, const std::st
   }
 }
 
+struct TimedCheck {
+  mesh::SelfIntersections found;
+  double seconds = 0.0;
+};
+
+TimedCheck check_self_intersections(const mesh::Mesh& mesh) {
+  const Clock::time_point start = Clock::now();
+  TimedCheck check{mesh::find_self_intersections(mesh), 0.0};
+  check.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return check;
+}
+
 }  // namespace
 
 std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
                                             ProgressLine* progress) {
   InsideMesh built;
   std::size_t first_index = 0;
+  // The self-intersection check runs beside the build, which keeps one core busy, on a
+  // copy of the mesh (the build takes the original); one thread asked for: after it.
+  std::future<TimedCheck> beside;
   try {
     if (progress) progress->stage("reading " + mesh::mesh_source_name(options.mesh));
     LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
     first_index = loaded.first_index();
+    if (options.self_intersection_check && options.threads != 1) {
+      beside = std::async(std::launch::async,
+                          [copy = loaded.mesh] { return check_self_intersections(copy); });
+    }
     if (progress) {
       progress->stage("building the search structure (" + grouped(loaded.mesh.faces.size()) +
-                      " faces)");
+                      " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
     }
     const Clock::time_point start = Clock::now();
     if (options.float_rays) {
@@ -98,10 +118,17 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
     return std::nullopt;
   }
   if (options.self_intersection_check) {
-    if (progress) progress->stage("looking for faces that intersect");
-    const Clock::time_point start = Clock::now();
-    built.self = mesh::find_self_intersections(built.mesh());
-    built.self_intersection_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (progress && !beside.valid()) progress->stage("looking for faces that intersect");
+    TimedCheck check;
+    try {
+      check = beside.valid() ? beside.get() : check_self_intersections(built.mesh());
+    } catch (const std::exception& e) {  // memory or threads running out
+      err << "exactgeo inside: " << options.mesh
+          << ": cannot look for faces that intersect: " << e.what() << "\n";
+      return std::nullopt;
+    }
+    built.self = std::move(check.found);
+    built.self_intersection_seconds = check.seconds;
     if (const auto problem = mesh::self_intersection_problem(*built.self, first_index)) {
       if (progress) progress->clear();
       err << "exactgeo inside: warning: " << mesh::mesh_source_name(options.mesh) << ": "

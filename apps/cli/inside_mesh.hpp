@@ -29,6 +29,7 @@ struct InsideMesh {
   /// The faces that intersect, exactly; nullopt when the check was skipped
   /// (--no-self-intersection-check).
   std::optional<mesh::SelfIntersections> self;
+  /// The check's own time; it runs beside the build unless one thread was asked for.
   double self_intersection_seconds = 0.0;
 
   const mesh::Mesh& mesh() const { return classifier ? classifier->mesh() : float_rays_mesh; }

@@ -18,6 +18,7 @@
 #include "cli/inside_command.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "support/generators.hpp"
+#include "support/hexahedron.hpp"
 #include "support/npy_bytes.hpp"
 #include "support/seed.hpp"
 
@@ -286,7 +287,8 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   EXPECT_EQ(quiet.err, "");
   const std::string& err = shown.err;
   const std::size_t reading = err.find("reading " + options.mesh + "...");
-  const std::size_t building = err.find("building the search structure (6 faces)...");
+  const std::size_t building =
+      err.find("building the search structure (6 faces) and looking for faces that intersect...");
   const std::size_t counted = err.find("2 points (100.0%)");
   EXPECT_NE(reading, std::string::npos) << err;
   EXPECT_NE(building, std::string::npos) << err;
@@ -299,6 +301,53 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   const Outcome piped = run_stdin(options, "0.5 0.5 0.5\n");
   EXPECT_NE(piped.err.find("1 points"), std::string::npos) << piped.err;
   EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
+}
+
+// Two unit cubes, the second moved by 1/2 along every axis: six pairs of faces cross. The
+// labels are the parity solid's (the overlap is outside), and the command says so on
+// standard error, in the file's numbering, whether the check runs beside the build or
+// after it; without the check it says nothing.
+TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
+  std::string obj;
+  for (const double offset : {0.0, 0.5})
+    for (int c = 0; c < 8; ++c)
+      obj += "v " + std::to_string((c & 1) + offset) + " " +
+             std::to_string(((c >> 1) & 1) + offset) + " " +
+             std::to_string(((c >> 2) & 1) + offset) + "\n";
+  for (const int first : {1, 9})
+    for (const auto& q : testing::kHexahedronFaces)
+      obj += "f " + std::to_string(q[0] + first) + " " + std::to_string(q[1] + first) + " " +
+             std::to_string(q[2] + first) + " " + std::to_string(q[3] + first) + "\n";
+  write_file(dir_ / "two_cubes.obj", obj);
+  write_file(dir_ / "points.txt", "0.25 0.25 0.25\n0.75 0.75 0.75\n1.25 1.25 1.25\n");
+  InsideCommandOptions options;
+  options.mesh = (dir_ / "two_cubes.obj").string();
+  for (const unsigned threads : {2u, 1u}) {
+    options.threads = threads;
+    options.points = (dir_ / "points.txt").string();
+    std::ifstream in(options.points, std::ios::binary);
+    std::ostringstream out, err;
+    ASSERT_EQ(run_inside(options, in, options.points, out, err), ExitCode::success) << err.str();
+    EXPECT_EQ(out.str(), "inside\noutside\ninside\n");
+    EXPECT_EQ(err.str().rfind("exactgeo inside: warning: " + options.mesh +
+                                  ": 6 pairs of faces intersect (first: 2-9, ",
+                              0),
+              0u)
+        << err.str();
+    EXPECT_NE(err.str().find("(faces numbered from 1, as in the file): the labels are those of "
+                             "the parity solid"),
+              std::string::npos)
+        << err.str();
+  }
+  options.json = true;
+  const Outcome json = run_file(options, dir_ / "points.txt");
+  EXPECT_NE(json.out.find("\"intersecting_face_pairs\": 6, \"undecided_face_pairs\": 0"),
+            std::string::npos)
+      << json.out;
+  options.self_intersection_check = false;
+  const Outcome quiet = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(quiet.err, "");
+  EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;
 }
 
 }  // namespace
