@@ -224,8 +224,9 @@ CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
       "Report what a mesh file holds: vertices, faces (quads, triangles), bounding box, "
       "closed or not (boundary edges), non-manifold edges, orientation, degenerate faces and "
       "non-planar quads (both decided exactly), components, pairs of faces that intersect "
-      "(exact; touching is not intersecting), and whether `exactgeo inside` can use it. "
-      "Exit code 0 whenever the file loads.");
+      "(exact: their interiors share a point; touching is not intersecting, nor are "
+      "coplanar faces facing opposite ways, as where two solids meet face to face), and "
+      "whether `exactgeo inside` can use it. Exit code 0 whenever the file loads.");
   sub->add_option("mesh", options.mesh,
                   "mesh file (OBJ, OFF, PLY exactly; others via assimp), or - for standard "
                   "input (with --format)")
