@@ -22,7 +22,7 @@ set(kLibraries predicates parallel io mesh ccd inside)
 set(kAllowed_predicates "")
 set(kAllowed_parallel "")
 set(kAllowed_io "")
-set(kAllowed_mesh predicates io)
+set(kAllowed_mesh predicates io parallel)
 set(kAllowed_ccd predicates io parallel)
 set(kAllowed_inside predicates mesh parallel)
 

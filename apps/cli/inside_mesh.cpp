@@ -59,9 +59,9 @@ struct TimedCheck {
   double seconds = 0.0;
 };
 
-TimedCheck check_self_intersections(const mesh::Mesh& mesh) {
+TimedCheck check_self_intersections(const mesh::Mesh& mesh, unsigned threads) {
   const Clock::time_point start = Clock::now();
-  TimedCheck check{mesh::find_self_intersections(mesh), 0.0};
+  TimedCheck check{mesh::find_self_intersections(mesh, threads), 0.0};
   check.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return check;
 }
@@ -73,15 +73,17 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
   InsideMesh built;
   std::size_t first_index = 0;
   // The self-intersection check runs beside the build, which keeps one core busy, on a
-  // copy of the mesh (the build takes the original); one thread asked for: after it.
+  // copy of the mesh (the build takes the original), on the threads asked for; with one
+  // thread asked for, after the build.
   std::future<TimedCheck> beside;
   try {
     if (progress) progress->stage("reading " + mesh::mesh_source_name(options.mesh));
     LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
     first_index = loaded.first_index();
     if (options.self_intersection_check && options.threads != 1) {
-      beside = std::async(std::launch::async,
-                          [copy = loaded.mesh] { return check_self_intersections(copy); });
+      beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {
+        return check_self_intersections(copy, threads);
+      });
     }
     if (progress) {
       progress->stage("building the search structure (" + grouped(loaded.mesh.faces.size()) +
@@ -121,7 +123,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
     if (progress && !beside.valid()) progress->stage("looking for faces that intersect");
     TimedCheck check;
     try {
-      check = beside.valid() ? beside.get() : check_self_intersections(built.mesh());
+      check = beside.valid() ? beside.get() : check_self_intersections(built.mesh(), 1);
     } catch (const std::exception& e) {  // memory or threads running out
       err << "exactgeo inside: " << options.mesh
           << ": cannot look for faces that intersect: " << e.what() << "\n";

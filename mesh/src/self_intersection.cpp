@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <utility>
+#include <vector>
 
+#include "exactgeo/parallel/blocks.hpp"
 #include "face_contact/convex_polygons.hpp"
 #include "face_contact/edge_method.hpp"
 #include "face_contact/face_box_tree.hpp"
@@ -69,7 +71,7 @@ FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b) {
                  geometry_of(mesh, fb, shape_of(mesh, fb)));
 }
 
-SelfIntersections find_self_intersections(const Mesh& mesh) {
+SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads) {
   const std::size_t n = mesh.faces.size();
   std::vector<Shape> shapes(n);
   std::vector<Aabb> boxes(n);
@@ -81,23 +83,37 @@ SelfIntersections find_self_intersections(const Mesh& mesh) {
     if (shapes[f] != Shape::degenerate) items.push_back(f);
   }
 
+  // The tree's pairs gather in `pending`; each time it is full they are decided in blocks
+  // on the workers, each answer in its own slot, and collected in order.
+  constexpr std::size_t kPending = std::size_t{1} << 16;
+  constexpr std::size_t kBlock = 1024;
   SelfIntersections result;
+  std::vector<FacePair> pending;
+  pending.reserve(kPending);
+  std::vector<FaceContact> answers(kPending);
+  const auto decide_pending = [&] {
+    const std::size_t blocks = (pending.size() + kBlock - 1) / kBlock;
+    parallel::for_each_block(blocks, threads, [&](std::size_t block) {
+      const std::size_t end = std::min(pending.size(), (block + 1) * kBlock);
+      for (std::size_t k = block * kBlock; k < end; ++k) {
+        const FacePair& pair = pending[k];
+        answers[k] = contact(geometry_of(mesh, mesh.faces[pair.first], shapes[pair.first]),
+                             geometry_of(mesh, mesh.faces[pair.second], shapes[pair.second]));
+      }
+    });
+    for (std::size_t k = 0; k < pending.size(); ++k) {
+      if (answers[k] == FaceContact::intersecting) result.intersecting.push_back(pending[k]);
+      if (answers[k] == FaceContact::undecided) result.undecided.push_back(pending[k]);
+    }
+    result.candidate_pairs += pending.size();
+    pending.clear();
+  };
   const BoxTree tree(std::move(items), boxes);
   tree.overlapping_pairs([&](std::size_t i, std::size_t j) {
-    ++result.candidate_pairs;
-    const FacePair pair{std::min(i, j), std::max(i, j)};
-    switch (contact(geometry_of(mesh, mesh.faces[pair.first], shapes[pair.first]),
-                    geometry_of(mesh, mesh.faces[pair.second], shapes[pair.second]))) {
-      case FaceContact::intersecting:
-        result.intersecting.push_back(pair);
-        break;
-      case FaceContact::undecided:
-        result.undecided.push_back(pair);
-        break;
-      case FaceContact::apart:
-        break;
-    }
+    pending.push_back({std::min(i, j), std::max(i, j)});
+    if (pending.size() == kPending) decide_pending();
   });
+  decide_pending();
   std::sort(result.intersecting.begin(), result.intersecting.end());
   std::sort(result.undecided.begin(), result.undecided.end());
   return result;

@@ -798,6 +798,24 @@ TEST(SelfIntersections, OverlappingJitteredBoxesMatchBruteForce) {
   }
 }
 
+// The pairs are decided in batches on several workers: the answer must not depend on how
+// many, over more candidate pairs than one batch holds.
+TEST(SelfIntersections, SameAnswerForEveryThreadCountOverManyBatches) {
+  auto rng = testing::seeded_engine("SelfIntersections.Threads");
+  Mesh mesh;
+  add_grid_box(mesh, 44, 1.0, {0, 0, 0}, jitter(rng()));
+  add_grid_box(mesh, 36, 1.0, {20.25, 5.5, 6.125}, jitter(rng()));
+  const SelfIntersections one = find_self_intersections(mesh, 1);
+  EXPECT_GT(one.candidate_pairs, std::size_t{1} << 16);  // more than one batch of 2^16
+  EXPECT_FALSE(one.intersecting.empty());
+  for (const unsigned threads : {2u, 3u, 0u}) {
+    const SelfIntersections many = find_self_intersections(mesh, threads);
+    EXPECT_EQ(many.candidate_pairs, one.candidate_pairs) << threads;
+    EXPECT_EQ(many.intersecting, one.intersecting) << threads;
+    EXPECT_EQ(many.undecided, one.undecided) << threads;
+  }
+}
+
 /// The bar [3.5, 6] x [1.5, 2.5] x [1.5, 2.5] through side x = 4 of the grid box [0, 4]^3:
 /// each of the bar's four long sides crosses exactly two grid quads of that side.
 TEST(SelfIntersections, PlantedBarThroughBoxIsFoundExactly) {

@@ -74,9 +74,11 @@ struct SelfIntersections {
 };
 
 /// face_contact for every pair of non-degenerate faces whose closed bounding boxes
-/// overlap (a box tree finds them; any other pair is apart). Single-threaded.
+/// overlap (a box tree finds them; any other pair is apart). The tree is traversed on one
+/// thread; the pairs it finds are decided in blocks on `threads` workers (0: one per
+/// hardware thread). The result is the same for every thread count.
 ///
 /// Preconditions: corner indices in range, finite coordinates (check_mesh reports both).
-SelfIntersections find_self_intersections(const Mesh& mesh);
+SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads = 0);
 
 }  // namespace exactgeo::mesh
