@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -16,6 +15,7 @@
 
 #include "cli/json.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/seconds.hpp"
 #include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/io/input_error.hpp"
 
@@ -83,21 +83,18 @@ std::vector<ccd::Result> run_timed(const QueryFile& file, Make make, Run run, in
     queries.push_back(make(r));
   std::vector<ccd::Result> results(queries.size());
   for (int pass = 0; pass < repeat; ++pass) {
-    const auto start = std::chrono::steady_clock::now();
+    const Clock::time_point start = Clock::now();
     for (std::size_t i = 0; i < queries.size(); ++i)
       results[i] = run(queries[i]);
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double elapsed = seconds_since(start);
     seconds = pass == 0 ? elapsed : std::min(seconds, elapsed);
   }
   if (query_ns != nullptr) {
     query_ns->resize(queries.size());
     for (std::size_t i = 0; i < queries.size(); ++i) {
-      const auto start = std::chrono::steady_clock::now();
+      const Clock::time_point start = Clock::now();
       results[i] = run(queries[i]);
-      (*query_ns)[i] =
-          std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
-              .count();
+      (*query_ns)[i] = 1e9 * seconds_since(start);
     }
   }
   return results;

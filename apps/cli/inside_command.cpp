@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <filesystem>
 #include <istream>
 #include <optional>
@@ -16,6 +15,7 @@
 #include "cli/inside_mesh.hpp"
 #include "cli/mesh_format_option.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/seconds.hpp"
 #include "cli/slice_command.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/point_reader.hpp"
@@ -26,12 +26,6 @@ using io::InputError;
 using io::PointReader;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// Points per block: large enough to keep every thread busy, small enough that memory
 /// stays flat (about 2 MB of points and labels).

@@ -1,12 +1,12 @@
 #include "cli/inside_mesh.hpp"
 
-#include <chrono>
 #include <exception>
 #include <future>
 #include <ostream>
 #include <stdexcept>
 #include <string>
 
+#include "cli/seconds.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
@@ -19,8 +19,6 @@ using mesh::load_mesh;
 using mesh::LoadedMesh;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 mesh::LoadOptions load_options(const InsideCommandOptions& options) {
   return {.weld = options.weld,
@@ -62,7 +60,7 @@ struct TimedCheck {
 TimedCheck check_self_intersections(const mesh::Mesh& mesh, unsigned threads) {
   const Clock::time_point start = Clock::now();
   TimedCheck check{mesh::find_self_intersections(mesh, threads), 0.0};
-  check.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  check.seconds = seconds_since(start);
   return check;
 }
 
@@ -106,7 +104,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
           options.space_cells && options.arithmetic != Arithmetic::plain_double;
       built.classifier.emplace(std::move(loaded.mesh), classifier_options);
     }
-    built.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    built.seconds = seconds_since(start);
   } catch (const InputError& e) {
     err << "exactgeo inside: " << e.what() << "\n";
     return std::nullopt;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdint>
 #include <exception>
 #include <iomanip>
@@ -17,19 +16,12 @@
 #include "cli/json.hpp"
 #include "cli/output_file.hpp"
 #include "cli/png_image.hpp"
+#include "cli/seconds.hpp"
 #include "cli/slice_image.hpp"
 
 namespace exactgeo::cli {
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
+namespace {}  // namespace
 
 ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::ostream& err) {
   const SliceOptions& slice = options.slice;
