@@ -7,13 +7,14 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <vector>
 
 #include "cli/json.hpp"
+#include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/seconds.hpp"
 #include "exactgeo/ccd/query_files.hpp"
@@ -241,12 +242,12 @@ void write_table(std::ostream& out, const ccd::Options& options, const Tally& vf
   out << "\n";
 }
 
-void write_per_query(const std::string& path, const RunResults& run) {
+/// The per-query CSV: one line per query, in file order.
+std::string per_query_csv(const RunResults& run) {
   const std::vector<QueryFile>& files = run.files;
   const auto& results = run.results;
   const auto& query_ns = run.query_ns;
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw InputError("cannot write '" + path + "'");
+  std::ostringstream out;
   out << "path,index,type,result,truth,decided_by,ns,toi_start,toi_end\n";
   for (std::size_t f = 0; f < files.size(); ++f) {
     for (std::size_t i = 0; i < results[f].size(); ++i) {
@@ -263,7 +264,7 @@ void write_per_query(const std::string& path, const RunResults& run) {
       out << "\n";
     }
   }
-  if (!out) throw InputError("error writing '" + path + "'");
+  return out.str();
 }
 
 }  // namespace
@@ -331,6 +332,16 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
     return ExitCode::input_error;
   }
 
+  // The CSV file is reserved before the run, so an unwritable path fails at once; it is
+  // written whole or not at all.
+  std::optional<OutputFile> per_query_file;
+  try {
+    if (!options.per_query.empty()) per_query_file.emplace(options.per_query);
+  } catch (const OutputFileError& e) {
+    err << "exactgeo ccd: --per-query: " << e.what() << "\n";
+    return ExitCode::input_error;
+  }
+
   Tally vf;
   Tally ee;
   RunResults run{files, {}, {}};
@@ -347,11 +358,11 @@ ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream
     progress.count(done, total);
   }
   progress.clear();
-  if (!options.per_query.empty()) {
+  if (per_query_file) {
     try {
-      write_per_query(options.per_query, run);
-    } catch (const InputError& e) {
-      err << "exactgeo ccd: " << e.what() << "\n";
+      per_query_file->commit(per_query_csv(run));
+    } catch (const OutputFileError& e) {
+      err << "exactgeo ccd: --per-query: " << e.what() << "\n";
       return ExitCode::input_error;
     }
   }

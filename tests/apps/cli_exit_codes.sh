@@ -521,4 +521,10 @@ json=$("$exe" info --json --mark "$scratch/findings.ply" "$spot")
 expect_in "info --json --mark" "$json" '"intersecting_face_pairs": 0' '"undecided_face_pairs": 0' \
   '"mark": {"file": ' '"legend": [{"element": "face", "colour": "#'
 
+# --per-query: an unwritable file is refused before the run, naming the option.
+expect 2 "ccd --per-query unwritable" "" ccd --per-query /nonexistent/dir/q.csv "$unit"
+message=$("$exe" ccd --per-query /nonexistent/dir/q.csv "$unit" 2>&1 >/dev/null)
+expect_in "ccd --per-query unwritable message" "$message" \
+  "exactgeo ccd: --per-query: cannot write '/nonexistent/dir/q.csv'"
+
 exit $((failures > 0))
