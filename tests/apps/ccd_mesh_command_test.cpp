@@ -86,6 +86,29 @@ void write_quad_obj(const fs::path& path, const std::vector<Point3>& vertices,
   }
 }
 
+/// A fresh directory for one test's files, removed when the test ends (early too).
+struct ScratchDir {
+  fs::path path;
+  explicit ScratchDir(const std::string& name)
+      : path(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
+    fs::create_directories(path);
+  }
+  ~ScratchDir() { fs::remove_all(path); }
+};
+
+/// Writes both frames into `dir` with `write` (write_obj or write_quad_obj) and returns
+/// options that name them, on two threads.
+template <class Write>
+CcdMeshOptions frames_in(const fs::path& dir, const Frames& frames, Write write) {
+  write(dir / "t0.obj", frames.t0, frames.faces);
+  write(dir / "t1.obj", frames.t1, frames.faces);
+  CcdMeshOptions options;
+  options.frame0 = (dir / "t0.obj").string();
+  options.frame1 = (dir / "t1.obj").string();
+  options.threads = 2;
+  return options;
+}
+
 /// The integer arrays of `key` in a JSON report: "key": [[1, 2], [3, 4]].
 std::vector<Pair> pairs_in(const std::string& json, const std::string& key) {
   std::vector<Pair> pairs;
@@ -147,19 +170,12 @@ std::pair<std::vector<Pair>, std::vector<Pair>> exhaustive(const Frames& f, ccd:
 
 TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
   auto rng = testing::seeded_engine("CcdMeshCommand.random");
-  const fs::path dir =
-      fs::temp_directory_path() / ("exactgeo_ccd_mesh_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const ScratchDir dir("exactgeo_ccd_mesh");
   for (const int n : {4, 7, 10}) {
     const Frames frames = crumpling_sheet(n, rng);
-    write_obj(dir / "t0.obj", frames.t0, frames.faces);
-    write_obj(dir / "t1.obj", frames.t1, frames.faces);
+    CcdMeshOptions options = frames_in(dir.path, frames, write_obj);
     for (const ccd::Method method : {ccd::Method::exact, ccd::Method::parity}) {
-      CcdMeshOptions options;
-      options.frame0 = (dir / "t0.obj").string();
-      options.frame1 = (dir / "t1.obj").string();
       options.method = method;
-      options.threads = 2;
       options.json = true;
       std::ostringstream out, err;
       ASSERT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
@@ -171,7 +187,6 @@ TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
       EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << what;
     }
   }
-  fs::remove_all(dir);
 }
 
 // --mark colours frame 0: exactly the faces and vertices of colliding vertex-face pairs,
@@ -179,17 +194,10 @@ TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
 // exhaustive pairwise CCD finds them.
 TEST(CcdMeshCommand, MarkColoursExactlyTheCollidingElements) {
   auto rng = testing::seeded_engine("CcdMeshCommand.mark");
-  const fs::path dir =
-      fs::temp_directory_path() / ("exactgeo_ccd_mesh_mark_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const ScratchDir dir("exactgeo_ccd_mesh_mark");
   const Frames frames = crumpling_sheet(6, rng);
-  write_obj(dir / "t0.obj", frames.t0, frames.faces);
-  write_obj(dir / "t1.obj", frames.t1, frames.faces);
-  CcdMeshOptions options;
-  options.frame0 = (dir / "t0.obj").string();
-  options.frame1 = (dir / "t1.obj").string();
-  options.mark = (dir / "marked.ply").string();
-  options.threads = 2;
+  CcdMeshOptions options = frames_in(dir.path, frames, write_obj);
+  options.mark = (dir.path / "marked.ply").string();
   std::ostringstream out, err;
   ASSERT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
   std::ifstream file(options.mark);
@@ -241,20 +249,13 @@ TEST(CcdMeshCommand, MarkColoursExactlyTheCollidingElements) {
   const std::set<std::array<std::size_t, 2>> marked_edges(ply.edges.begin(), ply.edges.end());
   EXPECT_EQ(marked_edges, edges);
   EXPECT_EQ(ply.edges.size(), edges.size());  // each once
-  fs::remove_all(dir);
 }
 
 TEST(CcdMeshCommand, SplitQuadsGivesTheTrianglesOfTheStatedDiagonal) {
   auto rng = testing::seeded_engine("CcdMeshCommand.split-quads");
-  const fs::path dir =
-      fs::temp_directory_path() / ("exactgeo_ccd_mesh_quads_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const ScratchDir dir("exactgeo_ccd_mesh_quads");
   const Frames frames = crumpling_sheet(6, rng);
-  write_quad_obj(dir / "t0.obj", frames.t0, frames.faces);
-  write_quad_obj(dir / "t1.obj", frames.t1, frames.faces);
-  CcdMeshOptions options;
-  options.frame0 = (dir / "t0.obj").string();
-  options.frame1 = (dir / "t1.obj").string();
+  CcdMeshOptions options = frames_in(dir.path, frames, write_quad_obj);
   options.json = true;
   std::ostringstream refused_out, refused_err;
   EXPECT_EQ(run_ccd_mesh(options, refused_out, refused_err), ExitCode::input_error);
@@ -268,7 +269,6 @@ TEST(CcdMeshCommand, SplitQuadsGivesTheTrianglesOfTheStatedDiagonal) {
   EXPECT_FALSE(vertex_face.empty() && edge_edge.empty()) << "the sheet should collide";
   EXPECT_EQ(pairs_in(out.str(), "vertex_face"), vertex_face) << out.str();
   EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << out.str();
-  fs::remove_all(dir);
 }
 
 }  // namespace
