@@ -4,7 +4,6 @@
 // edge_edge_ccd report.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -21,6 +20,7 @@
 #include "cli/ccd_mesh_command.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "support/generators.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::cli {
@@ -85,16 +85,6 @@ void write_quad_obj(const fs::path& path, const std::vector<Point3>& vertices,
     out << "f " << a[0] + 1 << ' ' << a[1] + 1 << ' ' << a[2] + 1 << ' ' << b[2] + 1 << '\n';
   }
 }
-
-/// A fresh directory for one test's files, removed when the test ends (early too).
-struct ScratchDir {
-  fs::path path;
-  explicit ScratchDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
-};
 
 /// Writes both frames into `dir` with `write` (write_obj or write_quad_obj) and returns
 /// options that name them, on two threads.
@@ -170,7 +160,7 @@ std::pair<std::vector<Pair>, std::vector<Pair>> exhaustive(const Frames& f, ccd:
 
 TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
   auto rng = testing::seeded_engine("CcdMeshCommand.random");
-  const ScratchDir dir("exactgeo_ccd_mesh");
+  const testing::ScratchDir dir("exactgeo_ccd_mesh");
   for (const int n : {4, 7, 10}) {
     const Frames frames = crumpling_sheet(n, rng);
     CcdMeshOptions options = frames_in(dir.path, frames, write_obj);
@@ -194,7 +184,7 @@ TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
 // exhaustive pairwise CCD finds them.
 TEST(CcdMeshCommand, MarkColoursExactlyTheCollidingElements) {
   auto rng = testing::seeded_engine("CcdMeshCommand.mark");
-  const ScratchDir dir("exactgeo_ccd_mesh_mark");
+  const testing::ScratchDir dir("exactgeo_ccd_mesh_mark");
   const Frames frames = crumpling_sheet(6, rng);
   CcdMeshOptions options = frames_in(dir.path, frames, write_obj);
   options.mark = (dir.path / "marked.ply").string();
@@ -253,7 +243,7 @@ TEST(CcdMeshCommand, MarkColoursExactlyTheCollidingElements) {
 
 TEST(CcdMeshCommand, SplitQuadsGivesTheTrianglesOfTheStatedDiagonal) {
   auto rng = testing::seeded_engine("CcdMeshCommand.split-quads");
-  const ScratchDir dir("exactgeo_ccd_mesh_quads");
+  const testing::ScratchDir dir("exactgeo_ccd_mesh_quads");
   const Frames frames = crumpling_sheet(6, rng);
   CcdMeshOptions options = frames_in(dir.path, frames, write_quad_obj);
   options.json = true;

@@ -4,7 +4,6 @@
 // exit code 2, a message naming the file and the place, and nothing on stdout.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -20,6 +19,7 @@
 #include "support/generators.hpp"
 #include "support/hexahedron.hpp"
 #include "support/npy_bytes.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::cli {
@@ -93,13 +93,8 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 class InsideCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactgeo_inside_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path dir_;
+  const testing::ScratchDir scratch_{"exactgeo_inside"};
+  const fs::path& dir_ = scratch_.path;
 };
 
 TEST_F(InsideCommand, EveryPointFormatGivesTheSameLabels) {

@@ -4,7 +4,6 @@
 // the broad phase); files that cannot be written leave nothing behind.
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -23,6 +22,7 @@
 #include "exactgeo/mesh/ply_reader.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "support/hexahedron.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace exactgeo::cli {
 namespace {
@@ -95,12 +95,8 @@ void write_obj(const fs::path& path, const Mesh& m) {
 
 class MarkCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactgeo_marks_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  const testing::ScratchDir scratch_{"exactgeo_marks"};
+  const fs::path& dir_ = scratch_.path;
 };
 
 TEST_F(MarkCommand, InfoColoursEachFaceByItsFirstFinding) {

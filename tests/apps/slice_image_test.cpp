@@ -6,7 +6,6 @@
 
 #include <gtest/gtest.h>
 #include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,6 +26,7 @@
 #include "exactgeo/mesh/load.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "support/hexahedron.hpp"
+#include "support/scratch_dir.hpp"
 
 namespace exactgeo::cli {
 namespace {
@@ -124,11 +124,8 @@ struct Outcome {
 
 class SliceImage : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("exactgeo_slice_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
+  const testing::ScratchDir scratch_{"exactgeo_slice"};
+  const fs::path& dir_ = scratch_.path;
 
   /// Runs `inside MESH --slice TEXT --image dir/NAME --resolution N --json` as the binary would.
   Outcome run(const std::string& mesh_path, const std::string& slice, unsigned resolution,
@@ -163,8 +160,6 @@ class SliceImage : public ::testing::Test {
     std::sort(names.begin(), names.end());
     return names;
   }
-
-  fs::path dir_;
 };
 
 /// Renders `mesh` at the plane and checks every pixel against the classifier's label of
