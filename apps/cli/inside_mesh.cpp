@@ -30,11 +30,12 @@ mesh::LoadOptions load_options(const InsideCommandOptions& options) {
 /// numbering (OBJ counts vertices and faces from 1, OFF and PLY from 0), saying which, and
 /// whether merging the vertices that repeat another's coordinates (--weld) would make it
 /// acceptable. `message` as it is when the refusal was not the checks'. Only on this error
-/// path is the file read a second time.
-std::string refusal_explained(const InsideCommandOptions& options, const std::string& message) {
-  if (options.mesh == "-") return message;  // standard input cannot be read again
+/// path is a file read a second time; standard input cannot be, so `kept` is the copy of
+/// it taken before the build.
+std::string refusal_explained(const InsideCommandOptions& options, const std::string& message,
+                              const std::optional<LoadedMesh>& kept) {
   try {
-    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
+    LoadedMesh loaded = kept ? *kept : load_mesh(options.mesh, load_options(options));
     const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded,
                                                       options.allow_non_manifold);
     if (!problem) return message;
@@ -74,10 +75,13 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
   // copy of the mesh (the build takes the original), on the threads asked for; with one
   // thread asked for, after the build.
   std::future<TimedCheck> beside;
+  const std::string source = mesh::mesh_source_name(options.mesh);
+  std::optional<LoadedMesh> kept;
   try {
-    if (progress) progress->stage("reading " + mesh::mesh_source_name(options.mesh));
+    if (progress) progress->stage("reading " + source);
     LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
     first_index = loaded.first_index();
+    if (options.mesh == "-") kept = loaded;  // to explain a refusal: it cannot be read again
     if (options.self_intersection_check && options.threads != 1) {
       beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {
         return check_self_intersections(copy, threads);
@@ -109,12 +113,12 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
     err << "exactgeo inside: " << e.what() << "\n";
     return std::nullopt;
   } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << options.mesh << ": " << refusal_explained(options, e.what())
+    err << "exactgeo inside: " << source << ": " << refusal_explained(options, e.what(), kept)
         << "\n";
     return std::nullopt;
   } catch (const std::exception& e) {  // Embree failing, or memory running out
-    err << "exactgeo inside: " << options.mesh
-        << ": cannot build the search structure: " << e.what() << "\n";
+    err << "exactgeo inside: " << source << ": cannot build the search structure: " << e.what()
+        << "\n";
     return std::nullopt;
   }
   if (options.self_intersection_check) {
@@ -123,16 +127,15 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
     try {
       check = beside.valid() ? beside.get() : check_self_intersections(built.mesh(), 1);
     } catch (const std::exception& e) {  // memory or threads running out
-      err << "exactgeo inside: " << options.mesh
-          << ": cannot look for faces that intersect: " << e.what() << "\n";
+      err << "exactgeo inside: " << source << ": cannot look for faces that intersect: " << e.what()
+          << "\n";
       return std::nullopt;
     }
     built.self = std::move(check.found);
     built.self_intersection_seconds = check.seconds;
     if (const auto problem = mesh::self_intersection_problem(*built.self, first_index)) {
       if (progress) progress->clear();
-      err << "exactgeo inside: warning: " << mesh::mesh_source_name(options.mesh) << ": "
-          << *problem
+      err << "exactgeo inside: warning: " << source << ": " << *problem
           << ": the labels are those of the parity solid (inside where rays cross the surface "
              "an odd number of times), which is not the solid such faces were meant to bound\n";
     }

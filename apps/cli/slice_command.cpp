@@ -18,6 +18,7 @@
 #include "cli/png_image.hpp"
 #include "cli/seconds.hpp"
 #include "cli/slice_image.hpp"
+#include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {
 
@@ -41,7 +42,7 @@ ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::
   try {
     grid = slice_grid(built->mesh(), plane, slice.resolution);
   } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << options.mesh << ": " << e.what() << "\n";
+    err << "exactgeo inside: " << mesh::mesh_source_name(options.mesh) << ": " << e.what() << "\n";
     return ExitCode::input_error;
   }
   Clock::time_point start = Clock::now();

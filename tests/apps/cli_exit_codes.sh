@@ -445,6 +445,12 @@ if [ "$labels" != "$(printf 'inside\noutside')" ]; then
   failures=$((failures + 1))
 fi
 expect 2 "inside mesh and points both from stdin" "0 0 0\n" inside --format obj -
+# A mesh refused from standard input is explained as one read from a file: its own
+# numbering, and the --weld hint.
+message=$("$exe" inside --format obj - "$scratch/two_points.txt" <"$scratch/soup.obj" 2>&1 >/dev/null)
+expect_in "inside refused mesh from stdin" "$message" \
+  "exactgeo inside: standard input: mesh is not closed" "first: 1-2, 1-3, 2-3" \
+  "numbered from 1, as in the file" "with --weld, which merges the 8 vertices"
 frames="$examples/falling-vertex"
 expect 0 "ccd-mesh frame from stdin" "$(cat "$frames/frame0.obj")" ccd-mesh --format obj - "$frames/frame1.obj"
 expect 2 "ccd-mesh both frames from stdin" "" ccd-mesh --format obj - -
