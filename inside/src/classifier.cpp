@@ -76,7 +76,7 @@ struct Classifier::State {
 };
 
 /// The location of `point` by crossing parity along the ray sequence, Embree proposing
-/// the candidate faces. Precondition: point in the mesh's closed box.
+/// the candidate faces. Precondition: point in s.box, the closed box of the faces' corners.
 Location Classifier::cast_rays(const State& s, const Point3& point, Arithmetic arithmetic,
                                ClassifierScratch& scratch) {
   const PreparedFaces faces = s.prepared(arithmetic);
@@ -116,12 +116,16 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     throw std::invalid_argument(*problem);
   }
   State& s = *state_;
-  s.box = *check.bounding_box;
   s.mesh = std::move(mesh);
+  // The box of the faces' corners, not of every vertex: a vertex no face uses bounds
+  // nothing. The candidate search's float frame and the space cells are built on this one
+  // box, and both need every point they are asked about to lie in it (classify answers
+  // the points outside it first). A closed mesh has faces, so the box exists.
+  s.box = *internal::corner_box(s.mesh);
   s.faces = surface_faces(s.mesh);
   s.exact_frames = frames_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
   s.double_frames = frames_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
-  if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh);
+  if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
   if (options.space_cells) {
     ClassifierScratch scratch;
     s.cells.emplace(s.mesh, s.box,

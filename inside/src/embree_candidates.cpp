@@ -61,12 +61,12 @@ struct EmbreeCandidates::Scene {
   EmbreeScene embree;
 };
 
-EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh) : scene_(std::make_unique<Scene>()) {
+EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh, const mesh::Box& box)
+    : scene_(std::make_unique<Scene>()) {
   if (mesh.faces.size() > std::numeric_limits<FaceIndex>::max()) {
     throw std::runtime_error("Embree: too many faces");
   }
-  const mesh::Box all = corner_box(mesh).value_or(mesh::Box{});
-  const FloatFrame frame(all.lower, all.upper);
+  const FloatFrame frame(box.lower, box.upper);
   scene_->frame = frame;
 
   scene_->boxes.resize(mesh.faces.size());

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 
 namespace exactgeo::inside::internal {
@@ -29,16 +30,19 @@ inline void all_faces(const mesh::Mesh& mesh, std::vector<FaceIndex>& out) {
 /// traversal go on. Embree stays out of every public header.
 class EmbreeCandidates {
  public:
-  /// Builds the BVH over `mesh` (which must outlive this object). Throws
-  /// std::runtime_error if Embree fails (out of memory, unsupported CPU).
-  explicit EmbreeCandidates(const mesh::Mesh& mesh);
+  /// Builds the BVH over `mesh` (which must outlive this object) in the float frame of
+  /// `box`, which must hold every face's corners (corner_box(mesh) or larger; not much
+  /// larger, or the frame's floats get coarse). Throws std::runtime_error if Embree fails
+  /// (out of memory, unsupported CPU).
+  EmbreeCandidates(const mesh::Mesh& mesh, const mesh::Box& box);
   ~EmbreeCandidates();
   EmbreeCandidates(EmbreeCandidates&&) noexcept;
   EmbreeCandidates& operator=(EmbreeCandidates&&) noexcept;
 
   /// Replaces `out` with the candidates for the ray from `origin` along direction
   /// `direction_index` (< kFloatExactRayDirections), sorted, without repeats. `origin`
-  /// must lie in the closed bounding box of the mesh. Thread-safe.
+  /// must lie in the closed box given to the constructor: the frame's rounding argument
+  /// (float_frame.hpp) holds there and nowhere else. Thread-safe.
   void find(const Point3& origin, std::size_t direction_index, std::vector<FaceIndex>& out) const;
 
  private:

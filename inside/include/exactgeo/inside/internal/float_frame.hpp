@@ -9,23 +9,36 @@
 // at 2^1000 or at 2^-1000. Then:
 //
 // - A face's box is rounded outward to float and padded by kPad = 2^-20 on every side.
-// - A query origin q inside the mesh's box is rounded to the nearest float. In frame
-//   units |q| < 2 (the half-extent is below 1, and c is the centre up to one rounding),
-//   so the rounding moves it by at most 2^-23 per coordinate.
+// - A query origin q in the frame's box is rounded to the nearest float.
 //
 // c only needs to be the same for boxes and origins, not exact: the map is a translation
 // and a scaling, which keep every ray-box incidence, followed by one rounding of
-// relative size 2^-53.
+// relative size 2^-53. The rounded c lies between the box's bounds on each axis, so the
+// box maps into an interval of length (upper - lower) 2^-e < 2 per axis: every mapped
+// point of the box has |x| < 2, and two of them differ by less than 2.
 //
-// Why kPad suffices: if the exact ray q + s d meets a box B at p, the float ray q' + s d
-// (same s, same float-exact direction) passes through p + (q' - q), within 2^-23 of B per
-// coordinate. The rest of kPad (2^-20 - 2^-23, 7 float ulps at 1, 3.5 at 2) absorbs the
-// traversal's own float arithmetic, which Embree does not make robust for user
-// geometry: measured with Debian 12's Embree 3.13.5, rays lying exactly in a box face's
-// plane (a zero direction component) skipped 85-97% of the boxes they touch, and padding
-// every bound outward by a few float ulps removed every miss in 40,000 rays.
-// tests/inside/candidates_test.cpp checks the candidates against every face the exact predicates
-// say a ray touches.
+// Why kPad suffices (u = 2^-24, the float unit roundoff; Embree 3.13.5, whose traversal of
+// user geometry is the non-robust one whatever the scene flags say):
+// - The origin's rounding moves it by at most u per coordinate (|q| < 2).
+// - The slab test computes, per axis, t = (b - o) / d for each box bound b with rdir, a
+//   reciprocal of d: rcp_ps (relative error <= 1.5 2^-12) refined by one Newton step,
+//   r0 + r0 (1 - d r0), whose error is the square of rcp_ps's, (1.5 2^-12)^2 = 2.25u,
+//   plus the step's own roundings, 2u with SSE arithmetic (u with FMA, and rcp14 starts
+//   from 2^-14): at most 4.26u. Then t = fl(fl(b - o) rdir) (SSE) is the exact
+//   (b' - o) / d of a bound b' within |b - o| (4.26u + 2u) of b, and with FMA,
+//   t = fl(b rdir - fl(o rdir)), within |b - o| (3.26u + u) + |o| u. Points of the box
+//   differ by less than 2 and the padding adds 2^-19, |o| < 2: every bound the traversal
+//   uses is off by at most 12.6u from the float box's bound.
+// - The ray directions are floats with no zero component (kFloatExactRayDirections), so
+//   no bound is replaced by a reciprocal's infinity, and the node boxes above a leaf are
+//   unions of its boxes (min and max, exact).
+// So if the exact ray q + s d meets a face's box at p, the float ray q' + s d (same s)
+// passes within u of it, and the traversal sees the box's bounds moved inward by at most
+// 12.6u: a padding of 13.6u suffices, and kPad = 16u leaves about 17% to spare. The ray's
+// parameter range starts at 0 (tnear) and is unbounded, so p's own s is in it.
+// tests/inside/candidates_test.cpp checks the candidates against every face the exact
+// predicates say a ray touches, with rays through vertices, edge points and from points on
+// faces, at magnitudes 2^-1000 to 2^1000.
 
 #include <array>
 #include <cmath>
@@ -63,7 +76,8 @@ class FloatFrame {
     return std::ldexp(d, exponent_);
   }
 
-  /// The nearest float to the mapped coordinate (for a ray origin in the box).
+  /// The nearest float to the mapped coordinate (for a ray origin in the box: the argument
+  /// above holds for no other point).
   float origin(int i, double x) const noexcept { return static_cast<float>(map(i, x)); }
 
   /// A float lower bound of the mapped coordinate, padded by kPad.
