@@ -151,8 +151,8 @@ TEST_P(UnusedVerticesFamily, LabelsAreThoseOfTheMeshWithoutThem) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, UnusedVerticesFamily,
-                         ::testing::Values(Setting{0, true}, Setting{0, false},
-                                           Setting{1000, true}, Setting{-1000, false}),
+                         ::testing::Values(Setting{0, true}, Setting{0, false}, Setting{1000, true},
+                                           Setting{-1000, false}),
                          [](const ::testing::TestParamInfo<Setting>& param_info) {
                            const Setting& s = param_info.param;
                            std::string name = s.scale_exponent < 0 ? "scale_2m" : "scale_2p";
