@@ -47,10 +47,16 @@ VertexSweep sweep_of(const MeshFrames& frames, double largest, double min_separa
   const double* t0 = frames.positions_t0.data();
   const double* t1 = frames.positions_t1.data();
   const StepScale scale(largest);
-  // Each box grows by half the separation, so two boxes overlap when their primitives'
-  // unscaled boxes are within the separation. Scaling by a power of two (two products)
-  // and halving are exact unless they underflow, where each rounds by at most half a
-  // subnormal's ulp: two steps up restore a bound.
+  // Each box grows by half the separation δ: two primitives within δ of each other have
+  // boxes within δ on every axis (a distance bounds each coordinate difference), so grown
+  // boxes overlap. In the step's scale S (two products by powers of two) that needs
+  // 2 margin >= S(b) - S(a) for the bounds a <= b of two boxes with b - a <= δ. S is exact
+  // unless a product underflows, where each rounds by at most half a subnormal's ulp,
+  // 2^-1075: S(b) - S(a) <= (b - a) 2^-e + 4 2^-1075, and fl(S(δ) / 2) >= δ 2^-e / 2 -
+  // 2 2^-1075 (two products, then the halving). Two steps up add at least 2^-1074 each
+  // (a step is one ulp), so margin >= δ 2^-e / 2 + 2 2^-1075 and 2 margin >= δ 2^-e +
+  // 4 2^-1075: enough.
+  // vertex_swept_box then rounds the grown bounds outward to float.
   double margin = 0.0;
   if (min_separation > 0.0) {
     margin = std::nextafter(std::nextafter(scale(min_separation) * 0.5, INFINITY), INFINITY);

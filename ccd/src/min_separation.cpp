@@ -11,6 +11,7 @@
 #include "exactgeo/ccd/internal/culling.hpp"
 #include "exactgeo/ccd/internal/separation_features.hpp"
 #include "exactgeo/ccd/internal/separation_roots.hpp"
+#include "exactgeo/ccd/internal/unit_magnitude.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -54,16 +55,36 @@ bool boxes_apart(const QueryPoints& x, int split, double delta) noexcept {
   return false;
 }
 
+/// n scaled by the power of two that brings its largest component into [1, 2): any
+/// normal serves a separating plane, and this one has n.n in [1, 12), so that an absolute
+/// rounding (a product that underflows) is not magnified by n.n. Components far below the
+/// largest may round on the way: the rounded vector is the normal used.
+Vector3 unit_scaled(const Vector3& n) noexcept {
+  int e = 0;
+  std::frexp(std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])}), &e);
+  const PowerOfTwo scale(1 - e);  // largest in [2^(e-1), 2^e): to [1, 2)
+  return {scale(n[0]), scale(n[1]), scale(n[2])};
+}
+
 /// The plane of apart_by_plane over the whole step, in plain doubles with one static
-/// bound: the corner differences d = fl(p - q) of input doubles, s = fl(n . d) left to
-/// right. With u = 2^-53 and A = fl(|n0 d0| + |n1 d1| + |n2 d2|): |d - (p - q)| <= u |d|
-/// per coordinate, and the dot product's rounding is at most 3u / (1 - 3u) times the
-/// exact sum of |n_i d_i|, itself below A (1 + 3u); so |s - n.(p - q)| < 4.01 u A, plus
-/// 3 2^-1075 where products underflow: E = 6u A + 2^-1070 covers both and the rounding of
-/// E itself. Then l = fl(s - E) (1 - 2u) is below n.(p - q) (a positive difference rounds
-/// up by at most a factor 1 + u), fl(l l) (1 - 2u) - 2^-1070 below its square, and
-/// fl(fl(δ δ) nn) (1 + 16u) + 2^-1070 above δ^2 n.n (nn = fl(n.n): five roundings up).
-/// The same certificate as in bounded doubles, for a fraction of the operations.
+/// bound. u = 2^-53; n is unit_scaled, so 1 <= n.n < 12. Roundings are relative (at most u
+/// times the result) except where a product underflows, which loses at most 2^-1075
+/// absolutely (sums and differences of doubles are exact in the subnormal range).
+/// - The side: the corner differences d = fl(p - q) of input doubles, s = fl(n . d) left
+///   to right. With A = fl(|n0 d0| + |n1 d1| + |n2 d2|): |d - (p - q)| <= u |d| per
+///   coordinate, and the dot product's rounding is at most 3u / (1 - 3u) times the exact
+///   sum of |n_i d_i|, itself below A (1 + 3u), plus 3 2^-1075 from underflowing
+///   products; so |s - n.(p - q)| < 4.01 u A + 3 2^-1075, and E = 6u A + 2^-1070 covers
+///   it and the rounding of E itself. Then l = fl(s - E) (1 - 2u) is below n.(p - q) (a
+///   positive difference rounds up by at most a factor 1 + u), and
+///   fl(l l) (1 - 2u) - 2^-1070 below its square.
+/// - The margin: fl(δ δ) >= δ^2 (1 - u) - 2^-1075 (the square may underflow: below 2^-537
+///   it is 0), fl(n.n) >= n.n (1 - 3u) - 3 2^-1075, and their product rounds by a factor
+///   or by 2^-1075 more: fl(fl(δ δ) fl(n.n)) >= δ^2 n.n (1 - 5.01u) - 15 2^-1075 with
+///   n.n < 12. So fl(fl(δ δ) nn) (1 + 16u) + 2^-1070 (32 2^-1075), rounded twice more,
+///   is above δ^2 n.n.
+/// Overflow makes the margin infinite (no proof) or l infinite, which proves the side
+/// (l <= n.(p - q), and l^2 is then beyond every double).
 template <std::size_t H>
 bool apart_by_plane_at_ends(const QueryPoints& x, double delta) noexcept {
   constexpr double u = 0x1p-53, tiny = 0x1p-1070;
@@ -72,8 +93,9 @@ bool apart_by_plane_at_ends(const QueryPoints& x, double delta) noexcept {
     return corner_differences<H>(p);
   };
   const std::array<Vector3, H> start = corners_at(0), end = corners_at(1);
-  const Vector3 n = closest_direction(start);
-  if (!usable(n)) return false;
+  const Vector3 closest = closest_direction(start);
+  if (!usable(closest)) return false;
+  const Vector3 n = unit_scaled(closest);
   const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   const double bound = delta * delta * nn * (1.0 + 16 * u) + tiny;
   if (!std::isfinite(bound)) return false;

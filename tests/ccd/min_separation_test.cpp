@@ -21,6 +21,7 @@
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
+#include "exactgeo/ccd/internal/min_separation.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/ccd/query_files.hpp"
 #include "exactgeo/ccd/separation_box_test.hpp"
@@ -266,6 +267,119 @@ TEST(MinSeparation, ExtremeMagnitudesScaleWithDelta) {
     }
   }
   EXPECT_EQ(checked, 1500);
+}
+
+/// The reported case: a vertex falls from 2^10 to 2^-542 above a face of size 2^-560 that
+/// stands still, with δ = 2^-540. δ^2 underflows to zero while the plane test's normal,
+/// taken from the start, has length 2^10: the loss of δ^2 is absolute and was magnified
+/// by n.n beyond the bound's 2^-1070, so the plane "proved" a separation that the end of
+/// the step contradicts. The same with an edge falling onto a standing edge.
+TEST(MinSeparation, UnderflowingDeltaSquaredIsNotAProof) {
+  const double a = 0x1p-560;
+  const VertexFaceQuery vf{{0, 0, 0x1p+10}, {-a, -a, 0}, {a, -a, 0}, {0, a, 0},
+                           {0, 0, 0x1p-542},  {-a, -a, 0}, {a, -a, 0}, {0, a, 0}};
+  const double delta = 0x1p-540;
+  ASSERT_TRUE(testing::min_separation_oracle(vf, delta).within);
+  EXPECT_FALSE(internal::separation_apart(vf, delta));
+  const Result r = separated(vf, delta);
+  EXPECT_TRUE(r.collision) << "decided by " << to_string(r.decided_by);
+
+  const EdgeEdgeQuery ee{{-a, 0, 0x1p+10}, {a, 0, 0x1p+10},  {0, -a, 0}, {0, a, 0},
+                         {-a, 0, 0x1p-542}, {a, 0, 0x1p-542}, {0, -a, 0}, {0, a, 0}};
+  ASSERT_TRUE(testing::min_separation_oracle(ee, delta).within);
+  EXPECT_FALSE(internal::separation_apart(ee, delta));
+  EXPECT_TRUE(separated(ee, delta).collision);
+}
+
+/// One primitive of size about 2^k (k from -1070 to -500) stands still; the other comes
+/// from a distance of 2^0 to 2^10 and ends about 2^k away on the side it came from (so the
+/// plane facing where it came from has every end corner on its far side, as in the case
+/// above); δ is 2^k times 1/4 to 4. So δ^2 and many products underflow while the step's
+/// start is at magnitude 1. Every answer is the oracle's, and a separation the cheap
+/// tests prove (separation_apart) is one. (The oracle takes about 0.2 s per query at these
+/// magnitudes, the library well under a millisecond: few queries.)
+template <class Query>
+void tiny_separations_agree(const char* stream, int count) {
+  Rng rng = testing::seeded_engine(stream);
+  int within = 0, apart = 0;
+  for (int i = 0; i < count; ++i) {
+    // Every other query where the old bound failed: δ^2 just below the smallest double
+    // and a long normal (n.n about 2^20 magnified its lost 2^-1075).
+    const bool window = i % 2 == 0;
+    const int k = window ? testing::uniform_int(rng, -548, -530)
+                         : testing::uniform_int(rng, -1070, -500);
+    Query q = random_dyadic_query<Query>(rng);  // corners on a grid of [-2, 2]^3
+    const std::array<Point3*, 8> p = points(q);
+    const Point3 from = testing::random_magnitude_point(rng, window ? 9 : 0, 10);
+    const double length = std::sqrt(from[0] * from[0] + from[1] * from[1] + from[2] * from[2]);
+    const double gap = std::ldexp(testing::uniform(rng, 0.5, 3.0), k) / length;
+    const Vector3 offset{from[0] * gap, from[1] * gap, from[2] * gap};
+    constexpr int kMoving = std::is_same_v<Query, VertexFaceQuery> ? 1 : 2;
+    for (int c = 0; c < 4; ++c) {
+      const Point3 shape = testing::scaled(*p[c], k - 3);  // within 2^(k-2) of 0
+      if (c < kMoving) {  // from magnitude 2^0..2^10 to the offset
+        *p[c + 4] = {offset[0] + shape[0], offset[1] + shape[1], offset[2] + shape[2]};
+        *p[c] = {from[0] + shape[0], from[1] + shape[1], from[2] + shape[2]};
+      } else {  // standing still at 0
+        *p[c] = shape;
+        *p[c + 4] = shape;
+      }
+    }
+    const double delta = std::ldexp(testing::uniform(rng, 0.25, 4.0), k);
+    const bool expected = testing::min_separation_oracle(q, delta).within;
+    const std::string what =
+        std::string(stream) + " #" + std::to_string(i) + " 2^" + std::to_string(k);
+    if (internal::separation_apart(q, delta)) {
+      EXPECT_FALSE(expected) << what << ": a separation proof for a pair within δ";
+    }
+    const Result r = separated(q, delta);
+    EXPECT_EQ(r.collision, expected) << what << " decided by " << to_string(r.decided_by);
+    (expected ? within : apart) += 1;
+  }
+  EXPECT_GT(within, count / 5);
+  EXPECT_GT(apart, count / 5);
+}
+
+/// The reported case as a mesh step: a triangle of size 2^-560 stands still, a copy of it
+/// falls from 2^10 to 2^-542 above it, δ = 2^-540. The broad phase keeps the pairs, and
+/// the narrow phase reports every pair the oracle finds within δ, and no other.
+TEST(MinSeparation, MeshStepWithAnUnderflowingDeltaSquared) {
+  const double a = 0x1p-560, delta = 0x1p-540;
+  const std::array<Point3, 3> shape{Point3{-a, -a, 0}, Point3{a, -a, 0}, Point3{0, a, 0}};
+  std::vector<double> t0, t1;
+  for (const double height0 : {0.0, 0x1p+10}) {
+    const double height1 = height0 == 0.0 ? 0.0 : 0x1p-542;
+    for (const Point3& c : shape) {
+      t0.insert(t0.end(), {c[0], c[1], height0});
+      t1.insert(t1.end(), {c[0], c[1], height1});
+    }
+  }
+  const std::vector<Triangle> faces{{0, 1, 2}, {3, 4, 5}};
+  MeshCcd mesh(6, faces);
+  MeshCcdOptions options;
+  options.min_separation = delta;
+  const MeshCcdResult r = mesh.step({t0, t1}, options);
+  auto at = [](const std::vector<double>& x, VertexIndex v) {
+    return Point3{x[3 * v], x[3 * v + 1], x[3 * v + 2]};
+  };
+  std::vector<VertexFacePair> expected;
+  for (VertexIndex v = 0; v < 6; ++v) {
+    const FaceIndex f = v < 3 ? 1 : 0;
+    const Triangle& t = faces[f];
+    const VertexFaceQuery q{at(t0, v),    at(t0, t[0]), at(t0, t[1]), at(t0, t[2]),
+                            at(t1, v),    at(t1, t[0]), at(t1, t[1]), at(t1, t[2])};
+    if (testing::min_separation_oracle(q, delta).within) expected.push_back({v, f});
+  }
+  EXPECT_EQ(expected.size(), 6u);  // every corner ends 2^-542 from the other face
+  EXPECT_EQ(r.vertex_face, expected);
+}
+
+TEST(MinSeparation, TinyVertexFaceSeparationsAgreeWithTheOracle) {
+  tiny_separations_agree<VertexFaceQuery>("min-separation-tiny-vf", 40);
+}
+
+TEST(MinSeparation, TinyEdgeEdgeSeparationsAgreeWithTheOracle) {
+  tiny_separations_agree<EdgeEdgeQuery>("min-separation-tiny-ee", 40);
 }
 
 /// Axis permutation, mirroring, time reversal and the order of the vertices change no

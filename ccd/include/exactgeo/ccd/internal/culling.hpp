@@ -65,10 +65,14 @@ class StrictSide {
 };
 
 /// n . p exactly, with expansions: the exact coordinates of p times the doubles n_k
-/// (TwoProduct), summed. nullopt when a product could underflow or overflow (culling may
-/// always leave a sign undecided).
+/// (TwoProduct), summed. TwoProduct is exact when neither factor reaches 2^996 (Dekker's
+/// split multiplies by 2^27 + 1 and would overflow), the product stays below 2^1002 and
+/// its factors' exponents sum to at least -969 (no partial product underflows); sums of
+/// three such products stay finite. nullopt outside those ranges (culling may always
+/// leave a sign undecided): never a sign computed from an overflow.
 inline std::optional<kernel::Expansion<48>> expansion_dot(const kernel::Offset& p,
                                                           const Vector3& n) noexcept {
+  constexpr int kSplitLimit = 995;  // ilogb(a) <= 995: |a| < 2^996
   std::array<kernel::Expansion<16>, 3> terms;
   for (int axis = 0; axis < 3; ++axis) {
     kernel::Expansion<8> x;
@@ -81,10 +85,14 @@ inline std::optional<kernel::Expansion<48>> expansion_dot(const kernel::Offset& 
       x = kernel::Expansion<2>::difference(p.head(axis), p.tail(axis));
     }
     if (n[axis] != 0.0) {
+      // Expansion components are never zero, so ilogb is finite.
       const int e = std::ilogb(n[axis]);
+      if (e > kSplitLimit) return std::nullopt;
       for (int i = 0; i < x.size(); ++i) {
-        const int sum_of_exponents = std::ilogb(x.data()[i]) + e;
-        if (sum_of_exponents < -960 || sum_of_exponents > 1000) return std::nullopt;
+        const int exponent = std::ilogb(x.data()[i]);
+        if (exponent > kSplitLimit || exponent + e < -960 || exponent + e > 1000) {
+          return std::nullopt;
+        }
       }
     }
     terms[axis] = kernel::scale(x, n[axis]);

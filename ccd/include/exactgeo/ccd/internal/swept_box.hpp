@@ -115,8 +115,10 @@ inline double half_perimeter(const FloatBox& b) noexcept {
 /// on every side; positions are 3 doubles per vertex at t0 and t1. A primitive's swept box
 /// is the union of its corners' boxes: rounding outward after the scaling is monotone, so
 /// the union of the rounded corner boxes is exactly the rounded box of all corners. With a
-/// margin, the bound +- margin is a rounded double first (off by at most half a double's
-/// ulp, far below a float's), so one more float step outward keeps the box conservative.
+/// margin, the bound +- margin is a rounded double first, off by at most half a double's
+/// ulp of it (or 2^-1075 below the normal range); the float next to it outward is farther
+/// than that from the float it rounds to (a float's ulp is 2^29 times a double's, and at
+/// least 2^-149), so one more float step outward keeps the box conservative.
 inline FloatBox vertex_swept_box(const double* t0, const double* t1, std::size_t v,
                                  const StepScale& scale, double margin = 0.0) noexcept {
   FloatBox box{};
