@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/json.hpp"
+#include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/seconds.hpp"
@@ -269,31 +270,13 @@ std::string per_query_csv(const RunResults& run) {
 
 }  // namespace
 
-namespace {
-
-/// The whole text as a decimal or hexadecimal floating-point number, else nullopt.
-std::optional<double> whole_number(const std::string& text) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size()) return std::nullopt;
-  return value;
-}
-
-}  // namespace
-
-std::optional<double> parse_min_separation(const std::string& text) {
-  const auto value = whole_number(text);
-  if (!value || !ccd::is_valid_min_separation(*value)) return std::nullopt;
-  return value;
-}
-
 ExitCode run_ccd(const CcdCommandOptions& given, std::ostream& out, std::ostream& err) {
   CcdCommandOptions options = given;
   if (options.min_separation) {
-    const auto delta = parse_min_separation(*options.min_separation);
+    std::string error;
+    const auto delta = parse_min_separation(*options.min_separation, error);
     if (!delta) {
-      err << "exactgeo ccd: --min-separation must be a finite number >= 0, got '"
-          << *options.min_separation << "'\n";
+      err << "exactgeo ccd: --min-separation must be a finite number >= 0: " << error << "\n";
       return ExitCode::input_error;
     }
     const ccd::Method m = options.ccd.method;
@@ -412,10 +395,10 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
                   "cubic only: distance tolerance (default 1e-6)")
       ->check(CLI::Validator(
           [](std::string& text) {
-            const auto value = whole_number(text);
-            return value && *value > 0.0 && std::isfinite(*value)
-                       ? std::string()
-                       : "expected a positive number, got '" + text + "'";
+            std::string error;
+            const auto value = number_option(text, error);
+            if (!value) return "expected a positive number: " + error;
+            return *value > 0.0 ? std::string() : "expected a positive number, got '" + text + "'";
           },
           "POSITIVE"));
   sub->add_option_function<double>(

@@ -31,10 +31,6 @@ struct CcdCommandOptions {
   std::vector<std::string> paths;
 };
 
-/// A --min-separation value as typed: a whole decimal or hexadecimal floating-point
-/// number, finite and >= 0 (so not "nan", "inf", "-1" or "1e999"), else nullopt.
-std::optional<double> parse_min_separation(const std::string& text);
-
 /// Reads every file first (an input error prints nothing on `out`), then runs and reports.
 ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostream& err);
 

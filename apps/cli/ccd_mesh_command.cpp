@@ -14,11 +14,11 @@
 #include <string_view>
 #include <vector>
 
-#include "cli/ccd_command.hpp"
 #include "cli/json.hpp"
 #include "cli/marked_ply.hpp"
 #include "cli/mesh_format_option.hpp"
 #include "cli/mesh_marks.hpp"
+#include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
 #include "exactgeo/ccd/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
@@ -206,11 +206,9 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
   }
   double min_separation = 0.0;
   if (options.min_separation) {
-    const auto delta = parse_min_separation(*options.min_separation);
-    if (!delta) {
-      return fail("--min-separation must be a finite number >= 0, got '" + *options.min_separation +
-                  "'");
-    }
+    std::string error;
+    const auto delta = parse_min_separation(*options.min_separation, error);
+    if (!delta) return fail("--min-separation must be a finite number >= 0: " + error);
     if (*delta > 0.0 && options.method != ccd::Method::exact) {
       return fail("--min-separation needs --method exact");
     }

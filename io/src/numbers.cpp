@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "exactgeo/io/input_error.hpp"
+#include "exactgeo/io/text_scan.hpp"
 
 namespace exactgeo::io {
 
@@ -12,15 +13,6 @@ namespace {
 
 bool starts_with_hex_prefix(std::string_view s) {
   return s.size() >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
-}
-
-std::string quoted(std::string_view token) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string shown(token.substr(0, kMaxShown));
-  for (char& c : shown) {
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-  }
-  return "'" + shown + (token.size() > kMaxShown ? "...'" : "'");
 }
 
 }  // namespace
@@ -37,8 +29,13 @@ std::optional<double> parse_number(std::string_view token, std::string& error) {
     format = std::chars_format::hex;
     body.remove_prefix(2);
   }
-  // from_chars would accept a second sign, "inf" and "nan": reject them first.
-  if (body.empty() || !(std::isdigit(static_cast<unsigned char>(body[0])) || body[0] == '.')) {
+  // from_chars would accept a second sign, "inf" and "nan": reject them first. A hexfloat's
+  // first digit may be a letter ("0xAp-3", as C's %a can write it).
+  const auto digit = [&](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return format == std::chars_format::hex ? std::isxdigit(u) != 0 : std::isdigit(u) != 0;
+  };
+  if (body.empty() || !(digit(body[0]) || body[0] == '.')) {
     error = quoted(token) + " is not a number";
     return std::nullopt;
   }

@@ -119,9 +119,18 @@ fi
 
 # --min-separation: a finite number >= 0, exact only, no --toi-width yet; the contact
 # truth is not compared at a larger separation, and every contact stays a collision.
-for bad in -1 nan inf -inf 1e999 abc ""; do
+# Read as every input number: below the smallest double is refused, not taken as 0.
+for bad in -1 nan inf -inf 1e999 abc "" 1e-400 0x1p-1080 0x1p-1076; do
   expect 2 "ccd min-separation '$bad'" "" ccd --min-separation "$bad" "$unit"
 done
+for good in 0xAp-3 0x1p-1074 4.9406564584124654e-324 -0; do
+  expect 0 "ccd min-separation '$good'" "" ccd --min-separation "$good" "$unit"
+done
+message=$("$exe" ccd --min-separation 1e-400 "$unit" 2>&1 >/dev/null)
+case "$message" in
+  *"'1e-400' is outside the range of double"*) ;;
+  *) echo "FAIL: ccd --min-separation 1e-400 says: $message"; failures=$((failures + 1)) ;;
+esac
 expect 2 "ccd min-separation with parity" "" ccd --method parity --min-separation 0.1 "$unit"
 expect 0 "ccd min-separation with toi" "" ccd --toi-width 0.01 --min-separation 0.1 "$unit"
 expect 0 "ccd min-separation zero" "" ccd --min-separation 0 "$unit"
@@ -357,9 +366,14 @@ expect 2 "ccd-mesh unknown method" "" ccd-mesh --method bogus "$vf0" "$vf1"
 expect 2 "ccd-mesh --toi with parity" "" ccd-mesh --toi --method parity "$vf0" "$vf1"
 expect 2 "ccd-mesh zero --toi-width" "" ccd-mesh --toi-width 0 "$vf0" "$vf1"
 expect 2 "ccd-mesh NaN --toi-width" "" ccd-mesh --toi-width nan "$vf0" "$vf1"
-for bad in -1 nan inf 1e999 abc ""; do
+for bad in 0 -1 1e-400 abc; do
+  expect 2 "ccd tolerance '$bad'" "" ccd --method cubic --tolerance "$bad" "$unit"
+done
+expect 0 "ccd tolerance hexfloat" "" ccd --method cubic --tolerance 0x1p-20 "$unit"
+for bad in -1 nan inf 1e999 abc "" 1e-400 0x1p-1080; do
   expect 2 "ccd-mesh min-separation '$bad'" "" ccd-mesh --min-separation "$bad" "$vf0" "$vf1"
 done
+expect 0 "ccd-mesh min-separation hexfloat" "" ccd-mesh --min-separation 0xAp-3 "$vf0" "$vf1"
 expect 0 "ccd-mesh min-separation with toi" "" ccd-mesh --toi --min-separation 0.1 "$vf0" "$vf1"
 expect 2 "ccd-mesh min-separation with parity" "" ccd-mesh --method parity --min-separation 0.1 "$vf0" "$vf1"
 expect 0 "ccd-mesh min-separation" "" ccd-mesh --min-separation 0.1 "$vf0" "$vf1"

@@ -4,10 +4,16 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
+#include <string>
+#include <string_view>
 
 #include "exactgeo/io/input_error.hpp"
 #include "support/generators.hpp"
@@ -59,6 +65,58 @@ TEST(ParseNumber, HexfloatIsExact) {
   EXPECT_EQ(parsed("-0X1.fffffffffffffp+1023"), -DBL_MAX);
   EXPECT_EQ(parsed("0x1p-1074"), std::nextafter(0.0, 1.0));
   EXPECT_EQ(parsed("0x.8p1"), 1.0);
+  // A first digit that is a letter, as C's %a may write it.
+  EXPECT_EQ(parsed("0xAp-3"), 1.25);
+  EXPECT_EQ(parsed("0xcp-3"), 1.5);
+  EXPECT_EQ(parsed("0xFFp0"), 255.0);
+  EXPECT_EQ(parsed("-0xa.8P0"), -10.5);
+  EXPECT_EQ(parsed("0xAbCdEf"), 11259375.0);
+  EXPECT_EQ(parsed("0xf.ffffffffffff8p+1020"), DBL_MAX);
+}
+
+/// Random tokens of the whole grammar (sign, decimal or hexadecimal digits of either case,
+/// with or without a point, an exponent of either case and sign), against glibc's strtod,
+/// which rounds correctly: the same double wherever the value is in the double range.
+TEST(ParseNumber, GrammarAgreesWithACorrectlyRoundedReference) {
+  testing::Rng rng = testing::seeded_engine("parse-grammar");
+  const auto pick = [&](std::string_view from) {
+    return from[static_cast<std::size_t>(testing::uniform_int(rng, 0, int(from.size()) - 1))];
+  };
+  int compared = 0;
+  for (int i = 0; i < 40000; ++i) {
+    const bool hex = i % 2 == 1;
+    std::string token;
+    if (testing::uniform_int(rng, 0, 2) == 0) token += pick("+-");
+    if (hex) token += testing::uniform_int(rng, 0, 1) ? "0x" : "0X";
+    const std::string_view digits = hex ? "0123456789abcdefABCDEF" : "0123456789";
+    const int before = testing::uniform_int(rng, 0, 25), after = testing::uniform_int(rng, 0, 25);
+    for (int k = 0; k < before; ++k)
+      token += pick(digits);
+    if (after > 0 || testing::uniform_int(rng, 0, 3) == 0) token += '.';
+    for (int k = 0; k < after; ++k)
+      token += pick(digits);
+    if (before + after == 0) token += pick(digits);
+    if (hex || testing::uniform_int(rng, 0, 1)) {
+      token += hex ? pick("pP") : pick("eE");
+      if (testing::uniform_int(rng, 0, 1)) token += pick("+-");
+      token += std::to_string(testing::uniform_int(rng, 0, hex ? 1000 : 300));
+    }
+    errno = 0;
+    char* end = nullptr;
+    const double reference = std::strtod(token.c_str(), &end);
+    ASSERT_EQ(end, token.c_str() + token.size()) << token;  // the grammar is strtod's
+    std::string error;
+    const auto x = parse_number(token, error);
+    if (errno == ERANGE && (std::isinf(reference) || reference == 0.0)) {
+      EXPECT_FALSE(x) << token << " is beyond the double range";
+      continue;
+    }
+    ASSERT_TRUE(x) << token << ": " << error;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(*x), std::bit_cast<std::uint64_t>(reference))
+        << token << std::hexfloat << ": " << *x << " against " << reference;
+    ++compared;
+  }
+  EXPECT_GT(compared, 30000);
 }
 
 TEST(ParseNumber, RoundTripsEveryPrintedDouble) {

@@ -1,0 +1,23 @@
+#include "number_option.hpp"
+
+#include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/io/numbers.hpp"
+#include "exactgeo/io/text_scan.hpp"
+
+namespace exactgeo::cli {
+
+std::optional<double> number_option(const std::string& text, std::string& error) {
+  return io::parse_number(text, error);
+}
+
+std::optional<double> parse_min_separation(const std::string& text, std::string& error) {
+  const auto value = number_option(text, error);
+  if (!value) return std::nullopt;
+  if (!ccd::is_valid_min_separation(*value)) {
+    error = io::quoted(text) + " is negative";
+    return std::nullopt;
+  }
+  return *value + 0.0;  // -0 as +0
+}
+
+}  // namespace exactgeo::cli
