@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "exactgeo/io/input_error.hpp"
@@ -28,6 +29,27 @@ bool is_integer_token(std::string_view token) {
     return std::isdigit(static_cast<unsigned char>(c)) != 0;
   });
 }
+
+/// The values a vertex line holds after the keyword's prefixes: x y z, then a normal
+/// (N: 3), a colour (C: RGB or RGBA), texture coordinates (ST: 2).
+struct VertexColumns {
+  bool normal = false;
+  bool colour = false;
+  bool texture = false;
+
+  bool allows(std::size_t values) const noexcept {
+    const std::size_t fixed = 3 + (normal ? 3 : 0) + (texture ? 2 : 0);
+    return colour ? values == fixed + 3 || values == fixed + 4 : values == fixed;
+  }
+  /// "x y z", "x y z nx ny nz r g b [a]", ...
+  std::string expected() const {
+    std::string s = "x y z";
+    if (normal) s.append(" nx ny nz");
+    if (colour) s.append(" r g b [a]");
+    if (texture) s.append(" s t");
+    return s;
+  }
+};
 
 class OffParser {
  public:
@@ -99,12 +121,24 @@ class OffParser {
     return static_cast<std::uint64_t>(*n);
   }
 
-  // "[ST][C][N]OFF", or nothing (the keyword is optional).
-  void read_keyword(std::string_view keyword) const {
+  // "[ST][C][N]OFF", or nothing (the keyword is optional). The prefixes say which columns
+  // follow x y z on a vertex line: N a normal (3 values), C a colour (RGB or RGBA: 3 or 4
+  // values), ST texture coordinates (2 values), in that order.
+  void read_keyword(std::string_view keyword) {
+    keyword_ = keyword;
     std::string_view k = keyword;
-    if (k.substr(0, 2) == "ST") k.remove_prefix(2);
-    if (k.substr(0, 1) == "C") k.remove_prefix(1);
-    if (k.substr(0, 1) == "N") k.remove_prefix(1);
+    if (k.substr(0, 2) == "ST") {
+      columns_.texture = true;
+      k.remove_prefix(2);
+    }
+    if (k.substr(0, 1) == "C") {
+      columns_.colour = true;
+      k.remove_prefix(1);
+    }
+    if (k.substr(0, 1) == "N") {
+      columns_.normal = true;
+      k.remove_prefix(1);
+    }
     if (k == "4OFF" || k == "nOFF" || k == "4nOFF") {
       std::string what = quoted(keyword);
       what.append(": 4D and n-dimensional OFF are not supported");
@@ -160,15 +194,20 @@ class OffParser {
         what.append(" vertices");
         fail(what);
       }
-      if (tokens_.size() < 3) {
+      if (!columns_.allows(tokens_.size())) {
         std::string what = "vertex ";
         what.append(std::to_string(v));
-        what.append(": expected x y z, found ");
+        what.append(": expected ");
+        what.append(columns_.expected());
+        what.append(keyword_.empty() ? std::string(" (no keyword)") : " under " + quoted(keyword_));
+        what.append(", found ");
         what.append(std::to_string(tokens_.size()));
         what.append(tokens_.size() == 1 ? " value" : " values");
         fail(what);
       }
       vertices.push_back({number(0), number(1), number(2)});
+      for (std::size_t i = 3; i < tokens_.size(); ++i)
+        (void)number(i);  // normal, colour and texture values: numbers, not read
     }
   }
 
@@ -221,6 +260,8 @@ class OffParser {
   LoadedMesh out_;
   std::vector<std::string_view> tokens_;
   std::vector<VertexIndex> corners_;
+  VertexColumns columns_;
+  std::string_view keyword_;  ///< as written; empty when the file has none
   std::uint64_t vertex_count_ = 0;
   std::uint64_t face_count_ = 0;
 };

@@ -525,18 +525,50 @@ TEST_F(mesh_io, PentagonsAreRefusedOrSplitIntoFans) {
 // OFF specifics
 
 TEST_F(mesh_io, OffHeaderVariantsExtraColumnsAndColours) {
-  const std::string body =
-      "0 0 0 0 0 1 0.5 0.5 0.5 1\n1 0 0 0 0 1 1 1 1 1\n0 1 0 0 0 1 1 1 1 1\n"
-      "3 0 1 2 0.1 0.2 0.3 1\n";
-  for (const char* header :
-       {"OFF\n3 1 0\n", "OFF 3 1 0\n", "COFF\n3 1 0\n", "NOFF\n3 1\n", "CNOFF\n3 1 3\n",
-        "STCNOFF 3 1 0\n", "3 1 0\n", "# first\n\nOFF # header\n\n# counts next\n3 1 0\n"}) {
-    SCOPED_TRACE(header);
-    const LoadedMesh m = load("h.off", cat(header, body));
+  // Each keyword with the vertex columns it announces: N a normal, C a colour (RGB or
+  // RGBA), ST texture coordinates; a face may carry a colour after its indices.
+  struct Variant {
+    const char* header;
+    const char* extra;  ///< the values after x y z on every vertex line
+  };
+  for (const Variant& v :
+       {Variant{"OFF\n3 1 0\n", ""}, Variant{"OFF 3 1 0\n", ""},
+        Variant{"COFF\n3 1 0\n", " 0.5 0.5 0.5 1"}, Variant{"COFF\n3 1 0\n", " 255 128 0"},
+        Variant{"NOFF\n3 1\n", " 0 0 1"}, Variant{"CNOFF\n3 1 3\n", " 0 0 1 1 1 1 1"},
+        Variant{"STCNOFF 3 1 0\n", " 0 0 1 1 1 1 1 0.25 0.75"},
+        Variant{"STOFF 3 1 0\n", " 0.25 0.75"}, Variant{"3 1 0\n", ""},
+        Variant{"# first\n\nOFF # header\n\n# counts next\n3 1 0\n", ""}}) {
+    SCOPED_TRACE(v.header);
+    const std::string body =
+        cat("0 0 0", v.extra, "\n1 0 0", v.extra, "\n0 1 0", v.extra, "\n3 0 1 2 0.1 0.2 0.3 1\n");
+    const LoadedMesh m = load("h.off", cat(v.header, body));
     ASSERT_EQ(m.mesh.vertices.size(), 3u);
     EXPECT_EQ(m.mesh.vertices[1], (Point3{1, 0, 0}));
     EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
   }
+}
+
+TEST_F(mesh_io, OffVertexLinesHoldExactlyTheColumnsTheKeywordAllows) {
+  // Under a plain OFF a fourth value is not a colour: "2 4 6 2" is refused, not read as
+  // (2, 4, 6), and two vertices on one line are not silently split differently.
+  const std::string face = "3 0 1 2\n";
+  EXPECT_MESSAGE_HAS(load_error("g.off", cat("OFF\n3 1 0\n0 0 0\n1 2 3 garbage\n0 1 0\n", face)),
+                     "g.off:4:", "vertex 1", "expected x y z under 'OFF'", "found 4 values");
+  EXPECT_MESSAGE_HAS(load_error("w.off", cat("OFF\n3 1 0\n2 4 6 2\n1 0 0\n0 1 0\n", face)),
+                     "w.off:3:", "vertex 0", "found 4 values");
+  EXPECT_MESSAGE_HAS(
+      load_error("two.off", cat("OFF\n3 1 0\n0 0 0 1 0 0\n0 1 0\n", face, "3 0 1 2\n")),
+      "two.off:3:", "vertex 0", "found 6 values");
+  EXPECT_MESSAGE_HAS(load_error("none.off", cat("3 1 0\n0 0 0 1\n1 0 0\n0 1 0\n", face)),
+                     "none.off:2:", "(no keyword)");
+  // With a keyword, the columns must match it, and they must be numbers.
+  EXPECT_MESSAGE_HAS(load_error("n.off", cat("NOFF\n3 1 0\n0 0 0 0 0\n1 0 0 0 0 1\n", face)),
+                     "n.off:3:", "expected x y z nx ny nz under 'NOFF'", "found 5 values");
+  EXPECT_MESSAGE_HAS(load_error("c.off", cat("COFF\n3 1 0\n0 0 0 1 1\n", face)),
+                     "c.off:3:", "x y z r g b [a]");
+  EXPECT_MESSAGE_HAS(
+      load_error("cg.off", cat("COFF\n3 1 0\n0 0 0 1 1 red\n1 0 0 1 1 1\n0 1 0 1 1 1\n", face)),
+      "cg.off:3:", "'red'");
 }
 
 TEST_F(mesh_io, OffFacesWrappedOverLines) {
