@@ -77,6 +77,9 @@ std::optional<double> exact_ratio(std::string_view numerator, std::string_view d
   }
   mpq_class q(*num, *den);
   q.canonicalize();
+  // A zero keeps the sign of the quotient as written ("-0/1", "0/-1": -0), as a double
+  // division would; the rational has none.
+  if (sgn(q) == 0) return (numerator[0] == '-') != (denominator[0] == '-') ? -0.0 : 0.0;
   // mpq_get_d truncates toward zero: the value is a double iff converting back gives it.
   const double x = q.get_d();
   if (!std::isfinite(x) || mpq_class(x) != q) {

@@ -1,5 +1,6 @@
 #include "exactgeo/io/numbers.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -15,9 +16,10 @@ bool starts_with_hex_prefix(std::string_view s) {
   return s.size() >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
 }
 
-}  // namespace
-
-std::optional<double> parse_number(std::string_view token, std::string& error) {
+/// The literal as the nearest T (double or float: rounded once, straight to T's
+/// precision), or nullopt with the reason.
+template <class T>
+std::optional<T> parse_literal(std::string_view token, std::string& error, const char* range) {
   std::string_view body = token;
   bool negative = false;
   if (!body.empty() && (body[0] == '+' || body[0] == '-')) {
@@ -39,10 +41,10 @@ std::optional<double> parse_number(std::string_view token, std::string& error) {
     error = quoted(token) + " is not a number";
     return std::nullopt;
   }
-  double value = 0;
+  T value = 0;
   const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value, format);
   if (ec == std::errc::result_out_of_range) {
-    error = quoted(token) + " is outside the range of double";
+    error = quoted(token) + " is outside the range of " + range;
     return std::nullopt;
   }
   if (ec != std::errc() || end != body.data() + body.size()) {
@@ -54,6 +56,18 @@ std::optional<double> parse_number(std::string_view token, std::string& error) {
     return std::nullopt;
   }
   return negative ? -value : value;
+}
+
+}  // namespace
+
+std::optional<double> parse_number(std::string_view token, std::string& error) {
+  return parse_literal<double>(token, error, "double");
+}
+
+std::optional<double> parse_float32(std::string_view token, std::string& error) {
+  const auto x = parse_literal<float>(token, error, "float");
+  if (!x) return std::nullopt;
+  return *x;  // widening is exact
 }
 
 std::vector<std::string_view> split_fields(std::string_view line) {

@@ -39,6 +39,52 @@ std::string out_of_range(std::int64_t index, std::size_t vertex_count) {
   return what;
 }
 
+/// Whether a literal parse_number accepts denotes exactly 1, decided on its digits (a
+/// rounded value would take "1.00000000000000000001" for 1): the significant digits,
+/// stripped of leading and trailing zeros, are one digit d, and d times the literal's
+/// power of the base is 1 (decimal: d = 1 at 10^0; hexadecimal: d = 2^k at 2^-k).
+bool denotes_one(std::string_view token) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  if (token.empty() || token[0] == '-') return false;
+  const bool hex = token.size() > 1 && token[0] == '0' && (token[1] == 'x' || token[1] == 'X');
+  if (hex) token.remove_prefix(2);
+  const std::size_t marker = token.find_first_of(hex ? "pP" : "eE");
+  const std::string_view mantissa = token.substr(0, marker);
+  long exponent = 0;  // of the base 2 (hex) or 10 (decimal); at most a few thousand in range
+  if (marker != std::string_view::npos) {
+    std::string error;
+    const auto e = io::parse_integer(token.substr(marker + 1), error);
+    if (!e || *e < -100000 || *e > 100000) return false;
+    exponent = static_cast<long>(*e);
+  }
+  // The digits as an integer D times base^(-fraction digits): keep the significant ones.
+  std::string digits;
+  long fraction = 0;
+  bool after_point = false;
+  for (const char c : mantissa) {
+    if (c == '.') {
+      after_point = true;
+      continue;
+    }
+    if (digits.empty() && c == '0') {
+      fraction += after_point ? 1 : 0;
+      continue;
+    }
+    digits.push_back(c);
+    fraction += after_point ? 1 : 0;
+  }
+  while (!digits.empty() && digits.back() == '0') {
+    digits.pop_back();
+    --fraction;
+  }
+  if (digits.size() != 1) return false;
+  if (!hex) return digits[0] == '1' && exponent - fraction == 0;
+  // One hexadecimal digit 2^k times 16^-fraction times 2^exponent.
+  const std::string_view powers_of_two = "1248";
+  const std::size_t k = powers_of_two.find(digits[0]);
+  return k != std::string_view::npos && static_cast<long>(k) - 4 * fraction + exponent == 0;
+}
+
 class ObjParser {
  public:
   ObjParser(std::string_view text, const std::string& source, const LoadOptions& options)
@@ -88,8 +134,8 @@ class ObjParser {
     }
     const Point3 p{number(tokens_[1]), number(tokens_[2]), number(tokens_[3])};
     for (std::size_t i = 4; i < tokens_.size(); ++i) {
-      const double value = number(tokens_[i]);
-      if (values == 4 && value != 1.0) {
+      (void)number(tokens_[i]);  // a number, whatever it is for
+      if (values == 4 && !denotes_one(tokens_[i])) {
         // Dividing x, y, z by w would round: refuse rather than change the geometry.
         std::string what = "w = ";
         what.append(tokens_[i]);

@@ -167,6 +167,28 @@ class HeaderParser {
 
 }  // namespace
 
+std::string_view ply_type_name(PlyType type) noexcept {
+  switch (type) {
+    case PlyType::int8:
+      return "char";
+    case PlyType::uint8:
+      return "uchar";
+    case PlyType::int16:
+      return "short";
+    case PlyType::uint16:
+      return "ushort";
+    case PlyType::int32:
+      return "int";
+    case PlyType::uint32:
+      return "uint";
+    case PlyType::float32:
+      return "float";
+    case PlyType::float64:
+      return "double";
+  }
+  return "?";
+}
+
 std::size_t ply_type_size(PlyType type) noexcept {
   switch (type) {
     case PlyType::int8:

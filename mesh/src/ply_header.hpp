@@ -17,6 +17,8 @@ enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
 enum class PlyType { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
 
 std::size_t ply_type_size(PlyType type) noexcept;
+/// "char", "uchar", ..., "double": the type's name in PLY 1.0's first spelling.
+std::string_view ply_type_name(PlyType type) noexcept;
 bool ply_type_is_integer(PlyType type) noexcept;
 
 struct PlyProperty {

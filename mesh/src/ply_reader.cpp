@@ -6,6 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <optional>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -19,6 +22,7 @@ namespace exactgeo::mesh {
 
 using io::InputError;
 using io::LineCursor;
+using io::parse_float32;
 using io::parse_integer;
 using io::parse_number;
 using io::printable;
@@ -90,6 +94,29 @@ std::int64_t load_integer(PlyType type, const char* bytes, bool swap) {
       return 0;
     }
   });
+}
+
+/// One ASCII value read as its declared type, as a binary copy of the file would hold it:
+/// an integer type's value must be an integer in its range ("0.5" or "300" for a uchar
+/// are refused), a float is rounded once to float ("0.1" is 0.100000001490116...), a
+/// double as every number. Else nullopt and the reason.
+std::optional<double> ascii_value(PlyType type, std::string_view token, std::string& error) {
+  if (type == PlyType::float64) return parse_number(token, error);
+  if (type == PlyType::float32) return parse_float32(token, error);
+  const std::optional<std::int64_t> n = parse_integer(token, error);
+  if (!n) return std::nullopt;
+  const bool in_range = with_scalar_type(type, [&](auto tag) {
+    using T = decltype(tag);
+    return *n >= static_cast<std::int64_t>(std::numeric_limits<T>::lowest()) &&
+           *n <= static_cast<std::int64_t>(std::numeric_limits<T>::max());
+  });
+  if (!in_range) {
+    error = quoted(token);
+    error.append(" is outside the range of ");
+    error.append(ply_type_name(type));
+    return std::nullopt;
+  }
+  return static_cast<double>(*n);
 }
 
 std::string instance_name(const PlyElement& element, std::uint64_t index) {
@@ -256,40 +283,51 @@ class PlyReader {
       }
       return tokens_[t++];
     };
+    // Every value as its declared type, read or skipped alike.
+    auto value = [&](PlyType type, std::string_view token, const PlyProperty& property) {
+      const std::optional<double> x = ascii_value(type, token, error);
+      if (!x) {
+        std::string what = "property ";
+        what.append(quoted(property.name));
+        what.append(": ");
+        what.append(error);
+        fail(what);
+      }
+      return *x;
+    };
     for (std::size_t k = 0; k < props.size(); ++k) {
       const Role role = p.roles[k];
       const std::string_view token = next_token(props[k]);
       if (!props[k].is_list) {
-        if (role != Role::skip) {
-          const std::optional<double> x = parse_number(token, error);
-          if (!x) fail(error);
-          point[axis_of(role)] = *x;
-        }
+        const double x = value(props[k].type, token, props[k]);
+        if (role != Role::skip) point[axis_of(role)] = x;
         continue;
       }
-      const std::optional<std::int64_t> n = parse_integer(token, error);
-      if (!n) fail("list length: " + error);
-      if (*n < 0 || static_cast<std::uint64_t>(*n) > tokens_.size() - t) {
+      // An integer (ascii_value checked it), so the conversion is exact.
+      const auto n = static_cast<std::int64_t>(value(props[k].count_type, token, props[k]));
+      if (static_cast<std::uint64_t>(n) > tokens_.size() - t) {
         std::string what = "the list ";
         what.append(quoted(props[k].name));
         what.append(" has length ");
-        what.append(std::to_string(*n));
+        what.append(std::to_string(n));
         what.append(" but the line has ");
         what.append(std::to_string(tokens_.size() - t));
         what.append(" more values");
         fail(what);
       }
+      if (role == Role::corners) corners_.clear();
+      for (std::size_t j = 0; j < static_cast<std::size_t>(n); ++j) {
+        const double item = value(props[k].type, tokens_[t + j], props[k]);
+        if (role != Role::corners) continue;
+        // An integer type's value (plan() requires one for the corners): exact.
+        const auto index = static_cast<std::int64_t>(item);
+        if (auto why = zero_based_index_problem(index, vertex_count_)) fail(*why);
+        corners_.push_back(static_cast<VertexIndex>(index));
+      }
       if (role == Role::corners) {
-        corners_.clear();
-        for (std::size_t j = 0; j < static_cast<std::size_t>(*n); ++j) {
-          const std::optional<std::int64_t> index = parse_integer(tokens_[t + j], error);
-          if (!index) fail(error);
-          if (auto why = zero_based_index_problem(*index, vertex_count_)) fail(*why);
-          corners_.push_back(static_cast<VertexIndex>(*index));
-        }
         if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);
       }
-      t += static_cast<std::size_t>(*n);
+      t += static_cast<std::size_t>(n);
     }
     if (t != tokens_.size()) {
       std::string what = "more values than the header declares (";

@@ -39,6 +39,11 @@ TEST(ExactRatio, IntegersOfAnySizeWhoseRatioIsADouble) {
   }();
   EXPECT_EQ(ratio("1", two_to_1074), std::nextafter(0.0, 1.0));
   EXPECT_EQ(ratio("+5", "-10"), -0.5);
+  // A zero keeps the sign of the quotient as written.
+  EXPECT_TRUE(std::signbit(ratio("-0", "1")));
+  EXPECT_TRUE(std::signbit(ratio("0", "-8")));
+  EXPECT_FALSE(std::signbit(ratio("-0", "-8")));
+  EXPECT_FALSE(std::signbit(ratio("+0", "1")));
 }
 
 TEST(ExactRatio, RefusesWhatIsNotExactlyADouble) {

@@ -454,6 +454,20 @@ TEST_F(mesh_io, ObjErrorsNameFileAndLine) {
   std::string e = load_error("w.obj", "v 1 2 3 0.5\nf 1 1 1\n");
   EXPECT_MESSAGE_HAS(e, "w.obj:1:", "w = 0.5");
   EXPECT_NO_THROW((void)load("w1.obj", "v 1 2 3 1\nv 0 0 0 1.0\nv 0 1 0\nf 1 2 3\n"));
+  // w is compared with 1 exactly, on its digits: every spelling of 1 is 1, and a value
+  // that only rounds to 1 is not.
+  for (const char* one : {"1", "+1", "1.000", "001.0", "10e-1", "0.1E+1", "1e0", "100e-2", "0x1p0",
+                          "0x.8p1", "0X10P-4", "0x2p-1", "0x0.08p5", "0x1.000p+0"}) {
+    EXPECT_NO_THROW((void)load("w1.obj", cat("v 0 0 0 ", one, "\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")))
+        << one;
+  }
+  for (const char* not_one :
+       {"1.00000000000000000001", "0.99999999999999999999", "-1", "0", "1e-1", "10",
+        "0x1.0000000000000000001p0", "0x3p-1", "0x1p1", "0.1", "2e-1"}) {
+    const std::string expected = cat("w = ", not_one);
+    EXPECT_MESSAGE_HAS(load_error("w2.obj", cat("v 0 0 0 ", not_one, "\nf 1 1 1\n")),
+                       "w2.obj:1:", expected);
+  }
 
   EXPECT_MESSAGE_HAS(load_error("token.obj", "v 0 0 0\nv 1 abc 3\n"), "token.obj:2:", "'abc'");
   EXPECT_MESSAGE_HAS(load_error("nan.obj", "v nan 0 0\n"), "nan.obj:1:", "'nan'");
@@ -735,7 +749,7 @@ TEST_F(mesh_io, PlyAsciiDataErrors) {
   EXPECT_MESSAGE_HAS(load_error("range.ply", cat(header, v, "3 0 1 3\n")),
                      "range.ply:13:", "face 0", "vertex index 3", "0..2");
   EXPECT_MESSAGE_HAS(load_error("wrap.ply", cat(header, v, "3 0 1 4294967296\n")),
-                     "wrap.ply:13:", "4294967296", "out of range");
+                     "wrap.ply:13:", "'4294967296' is outside the range of int");
   EXPECT_MESSAGE_HAS(load_error("neg.ply", cat(header, v, "3 0 1 -1\n")), "neg.ply:13:", "-1");
   EXPECT_MESSAGE_HAS(load_error("len.ply", cat(header, v, "4 0 1 2\n")), "len.ply:13:", "face 0",
                      "has length 4");
@@ -743,6 +757,51 @@ TEST_F(mesh_io, PlyAsciiDataErrors) {
                      "absurd.ply:12:", "vertex 3", "4000000000");
   EXPECT_MESSAGE_HAS(load_error("nof.ply", cat(ply_header("ascii", 3, 0), v)), "nof.ply",
                      "no faces");
+}
+
+TEST_F(mesh_io, PlyAsciiValuesAreReadAsTheirDeclaredTypes) {
+  // A float "0.1" is the float nearest 0.1, as a binary copy of the same mesh holds it,
+  // not the double 0.1; a double "0.1" is the double.
+  const std::string v = "0.1 0.2 0.3\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const LoadedMesh f = load("f.ply", cat(ply_header("ascii", 3, 1, "float"), v));
+  EXPECT_EQ(f.mesh.vertices[0], (Point3{double(0.1f), double(0.2f), double(0.3f)}));
+  const LoadedMesh d = load("d.ply", cat(ply_header("ascii", 3, 1, "double"), v));
+  EXPECT_EQ(d.mesh.vertices[0], (Point3{0.1, 0.2, 0.3}));
+  // Rounded once, to float: a decimal between two floats goes to the nearer (a double
+  // rounding through the double nearest could land on the other one).
+  const LoadedMesh once =
+      load("once.ply", cat(ply_header("ascii", 3, 1, "float"),
+                           "1.000000059604644775390625000000001 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_EQ(once.mesh.vertices[0][0], double(std::nextafter(1.0f, 2.0f)));
+  // Integer types take integers in their range, and every value is checked, read or not.
+  const std::string with_colour =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nproperty uchar red\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n";  // 10 header lines
+  const std::string faces = "3 0 1 2\n";
+  EXPECT_EQ(
+      load("c.ply", cat(with_colour, "0 0 0 255\n1 0 0 0\n0 1 0 7\n", faces)).mesh.vertices.size(),
+      3u);
+  EXPECT_MESSAGE_HAS(
+      load_error("c300.ply", cat(with_colour, "0 0 0 300\n1 0 0 0\n0 1 0 7\n", faces)),
+      "c300.ply:11:", "vertex 0", "property 'red'", "'300' is outside the range of uchar");
+  EXPECT_MESSAGE_HAS(
+      load_error("chalf.ply", cat(with_colour, "0 0 0 1\n1 0 0 0.5\n0 1 0 7\n", faces)),
+      "chalf.ply:12:", "vertex 1", "'0.5' is not an integer");
+  EXPECT_MESSAGE_HAS(
+      load_error("cneg.ply", cat(with_colour, "0 0 0 1\n1 0 0 1\n0 1 0 -1\n", faces)),
+      "cneg.ply:13:", "vertex 2", "'-1' is outside the range of uchar");
+  const std::string v3 = "0 0 0 1\n1 0 0 1\n0 1 0 1\n";
+  EXPECT_MESSAGE_HAS(load_error("len.ply", cat(with_colour, v3, "256 0 1 2\n")),
+                     "len.ply:14:", "face 0", "'256' is outside the range of uchar");
+  EXPECT_MESSAGE_HAS(load_error("idx.ply", cat(with_colour, v3, "3 0 1 2.0\n")),
+                     "idx.ply:14:", "'2.0' is not an integer");
+  EXPECT_MESSAGE_HAS(load_error("big.ply", cat(ply_header("ascii", 3, 1, "float"),
+                                               "1e39 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")),
+                     "big.ply:10:", "'1e39' is outside the range of float");
+  EXPECT_MESSAGE_HAS(load_error("int.ply", cat(ply_header("ascii", 3, 1, "int"),
+                                               "0.5 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")),
+                     "int.ply:10:", "property 'x'", "'0.5' is not an integer");
 }
 
 TEST_F(mesh_io, PlyBinaryErrorsNameElementAndIndex) {

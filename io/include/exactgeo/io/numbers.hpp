@@ -21,6 +21,11 @@ namespace exactgeo::io {
 /// The number, or nullopt with `error` set to a short reason.
 std::optional<double> parse_number(std::string_view token, std::string& error);
 
+/// The same literal rounded once, straight to the nearest float (a value a file declares
+/// 32-bit, as a binary copy of it holds), returned exactly as a double. Refused beyond the
+/// float range, as parse_number refuses beyond the double range.
+std::optional<double> parse_float32(std::string_view token, std::string& error);
+
 /// Splits a line into fields (whitespace and/or commas; '#' starts a comment). An empty
 /// field between two commas is returned as an empty string_view so it can be reported.
 std::vector<std::string_view> split_fields(std::string_view line);
