@@ -185,15 +185,6 @@ inline Vector3 closest_on_triangle(const Vector3& a, const Vector3& b, const Vec
   return best;
 }
 
-/// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
-/// (edge-edge). Candidate separating planes through the origin: orthogonal to the
-/// direction of the slice's point closest to the origin, parallel to the slice's plane
-/// (the origin off that plane), or parallel to a plane through one of its edges and
-/// orthogonal to it (the origin beside the polygon); last, the plane turning from one
-/// slice's closest direction to the other's. As a piece of the step shrinks, its corners
-/// approach one slice and one of these planes separates unless the origin is on the
-/// image. The normals are computed in plain doubles from the rounded corners: any normal
-/// will do, because the side of every corner is then certified.
 /// The direction to the slice's point closest to the origin: stable when the primitives
 /// stay close and nearly parallel, where the slice's own plane turns quickly with time.
 template <std::size_t H>
@@ -250,36 +241,80 @@ bool culled_before_parity(const kernel::Offsets<C>& a) noexcept {
   return outside_bounding_box(a) || separated_by_closest_direction(a);
 }
 
+/// A normal facing a slice that spans no plane (a segment or a point: a degenerate
+/// primitive, or primitives lying along one line): the plane through the origin parallel
+/// to the line through the slice, perpendicular to the plane of that line and the origin.
+/// The line passes through x[0] with direction e, the slice's longest extent, or, for a
+/// slice that is a point, the corner's own motion to `other` (the same corner in the
+/// other slice). (e x x0) x e = |e|^2 p, with p the component of x0 orthogonal to e,
+/// points from the origin to the line, as closest_direction does. Computed as two cross
+/// products, not as x0 minus its projection on e: that difference cancels to the
+/// distance d of the line from the origin and leaves the direction off by about u |x0| /
+/// d, which tilts the plane across corners |x0| away once d falls below about
+/// sqrt(u) |x0|; the rounding of e x x0 enters the plane's side of the line's points only
+/// at second order, so this plane separates down to distances near u |x0|.
+template <std::size_t H>
+Vector3 line_facing_normal(const std::array<Vector3, H>& x, const Vector3& other) noexcept {
+  Vector3 e = kernel::difference(other, x[0]);
+  double longest = 0.0;
+  for (std::size_t k = 1; k < H; ++k) {
+    const Vector3 edge = kernel::difference(x[k], x[0]);
+    const double length = kernel::dot3(edge, edge);
+    if (length > longest) {
+      longest = length;
+      e = edge;
+    }
+  }
+  return cross(cross(e, x[0]), e);
+}
+
 /// The image of one time slice is flat: a triangle (vertex-face) or a parallelogram
 /// (edge-edge). Candidate separating planes through the origin: orthogonal to the
 /// direction of the slice's point closest to the origin, parallel to the slice's plane
 /// (the origin off that plane), or parallel to a plane through one of its edges and
-/// orthogonal to it (the origin beside the polygon); last, the plane turning from one
-/// slice's closest direction to the other's. As a piece of the step shrinks, its corners
-/// approach one slice and one of these planes separates unless the origin is on the
-/// image. The normals are computed in plain doubles from the rounded corners: any normal
-/// will do, because the side of every corner is then certified.
+/// orthogonal to it (the origin beside the polygon); for a slice that spans no plane (a
+/// segment or a point), parallel to its line instead (line_facing_normal); last, the
+/// plane turning from one slice's facing normal to the other's. As a piece of the step
+/// shrinks, its corners approach one slice and one of these planes separates unless the
+/// origin is on the image. The normals are computed in plain doubles from the rounded
+/// corners: any normal will do, because the side of every corner is then certified.
 template <std::size_t C>
 bool separated_by_slice_planes(const kernel::Offsets<C>& a) noexcept {
   constexpr std::size_t H = C / 2;
-  std::array<Vector3, 2> closest_of_slice{};
+  const std::array<std::array<Vector3, H>, 2> slices{slice_corners(a, 0), slice_corners(a, 1)};
+  std::array<Vector3, 2> facing{};  // per slice, a normal pointing from the origin to it
+  std::array<Vector3, 2> plane{};   // per slice, its plane's normal (zero if it spans none)
   for (std::size_t slice = 0; slice < 2; ++slice) {
-    const std::array<Vector3, H> x = slice_corners(a, slice);
-    const Vector3 closest = closest_direction(x);
-    closest_of_slice[slice] = closest;
-    if (usable(closest) && on_one_side(a, closest)) return true;
+    const std::array<Vector3, H>& x = slices[slice];
+    facing[slice] = closest_direction(x);
+    if (usable(facing[slice]) && on_one_side(a, facing[slice])) return true;
     const Vector3 normal =
         H == 3 ? cross(kernel::difference(x[1], x[0]), kernel::difference(x[2], x[0]))
                : cross(kernel::difference(x[2], x[0]), kernel::difference(x[3], x[1]));
-    if (!usable(normal)) continue;
+    if (!usable(normal)) {
+      const Vector3 along_line = line_facing_normal(x, slices[1 - slice][0]);
+      if (!usable(along_line)) continue;
+      facing[slice] = along_line;
+      if (on_one_side(a, along_line)) return true;
+      continue;
+    }
+    plane[slice] = normal;
     if (on_one_side(a, normal)) return true;
     for (std::size_t k = 0; k < H; ++k) {
       const Vector3 lateral = cross(kernel::difference(x[(k + 1) % H], x[k]), normal);
       if (usable(lateral) && on_one_side(a, lateral)) return true;
     }
   }
-  return usable(closest_of_slice[0]) && usable(closest_of_slice[1]) &&
-         separated_by_turning_plane(a, closest_of_slice[0], closest_of_slice[1]);
+  if (usable(facing[0]) && usable(facing[1]) &&
+      separated_by_turning_plane(a, facing[0], facing[1])) {
+    return true;
+  }
+  // The slices' own planes turning from one to the other (the same formula orients both
+  // alike): next to a transversal contact the origin is off the slice planes by about
+  // the time to the contact, and n(s) . F(s) is then the coplanarity cubic up to a term
+  // quadratic in the piece's length, with normals exact to rounding, where the closest
+  // directions above lose half the digits.
+  return usable(plane[0]) && usable(plane[1]) && separated_by_turning_plane(a, plane[0], plane[1]);
 }
 
 /// Both tests; `filterable` false (a piece whose rounded corners are not within the

@@ -31,11 +31,15 @@
 //
 // A piece with some root and width at most the requested one is the answer: no root
 // before its start, a root within it. With no width requested (collision only) the first
-// piece known to hold a root ends the search. A piece that still has even parity at the
-// depth limit is reported as a root, conservatively: it cannot be culled even at width
-// 2^-max_depth, which happens for tangential contacts (a double root of the coplanarity
-// cubic) and for near misses closer than the depth resolves. It never misses a root:
-// every piece is either proven empty or explored.
+// piece known to hold a root ends the search. A piece one double spacing wide cannot be
+// split (its midpoint is not a double): with some root it is the answer, whatever width
+// was asked. A piece that still has even parity at the depth limit, or at one double
+// spacing, is reported as a root, conservatively: it cannot be culled even there, which
+// happens for tangential contacts (a double root of the coplanarity cubic), for near
+// misses closer than the depth resolves, and next to a contact closer than the culling
+// planes' double normals resolve (within about 2^-40 of the contact time on the public
+// queries, docs/ccd.md). It never misses a root: every piece is either proven empty or
+// explored.
 
 #include <algorithm>
 #include <cstddef>
@@ -85,14 +89,16 @@ class RootSearch {
   std::optional<FoundRoot> earliest(const TimePiece<C>& piece, std::optional<RootParity> parity,
                                     const Coefficients& p) noexcept {
     deepest_ = std::max(deepest_, piece.depth);
+    // The last level: the depth limit, or a piece one double spacing wide.
+    const bool last = piece.depth >= max_depth_ || !splittable(piece);
     const bool answer_width = piece.t_end - piece.t_start <= width_;
-    if (!parity && ((earliest_asked() && answer_width) || piece.depth >= max_depth_ ||
-                    piece.depth % kParityEvery == 0)) {
+    if (!parity &&
+        ((earliest_asked() && answer_width) || last || piece.depth % kParityEvery == 0)) {
       parity = parity_of(piece);
     }
     const bool some_root = parity && *parity != RootParity::even;
-    if (some_root && answer_width) return FoundRoot{piece.t_start, piece.t_end, false};
-    if (piece.depth >= max_depth_) return FoundRoot{piece.t_start, piece.t_end, !some_root};
+    if (some_root && (answer_width || last)) return FoundRoot{piece.t_start, piece.t_end, false};
+    if (last) return FoundRoot{piece.t_start, piece.t_end, true};
     const auto [p_left, p_right] = split_coefficients(p);
     bool unsplittable = false;
     auto found = visit(piece, Half::left, p_left, std::nullopt, unsplittable);

@@ -29,6 +29,7 @@
 #include <optional>
 #include <utility>
 
+#include "exactgeo/predicates/kernel/error_free.hpp"
 #include "exactgeo/predicates/kernel/exact_vector.hpp"
 #include "exactgeo/predicates/kernel/offset.hpp"
 
@@ -167,10 +168,21 @@ std::optional<TimePiece<C>> whole_step(const Offsets<C>& corners) noexcept {
   return piece;
 }
 
+/// Whether the piece's midpoint time is a double. Times are dyadic, and a split stores its
+/// corners at the exact midpoint: once the midpoint needs a bit more than a double has (a
+/// piece one double spacing wide), the halves' times would round and no longer be the
+/// times of their corners. Such a piece is as narrow as a time of impact can be stated.
+template <std::size_t C>
+bool splittable(const TimePiece<C>& p) noexcept {
+  const auto [sum, error] = exactgeo::kernel::two_sum(p.t_start, p.t_end);
+  const double mid = 0.5 * sum;
+  return error == 0.0 && mid + mid == sum && p.t_start < mid && mid < p.t_end;
+}
+
 enum class Half { left, right };
 
 /// One half of a piece, split at its midpoint time, or nullopt when the midpoint corners
-/// cannot be stored exactly (see above).
+/// cannot be stored exactly (see above). Precondition: splittable(p).
 template <std::size_t C>
 std::optional<TimePiece<C>> half(const TimePiece<C>& p, Half which) noexcept {
   constexpr std::size_t H = C / 2;
@@ -192,7 +204,7 @@ std::optional<TimePiece<C>> half(const TimePiece<C>& p, Half which) noexcept {
     }
   }
   if (!complete_corners(x)) return std::nullopt;
-  const double t_mid = 0.5 * (p.t_start + p.t_end);  // exact: dyadic, depth < 1000
+  const double t_mid = 0.5 * (p.t_start + p.t_end);  // exact: splittable(p)
   piece->t_start = which == Half::left ? p.t_start : t_mid;
   piece->t_end = which == Half::left ? t_mid : p.t_end;
   piece->depth = p.depth + 1;
