@@ -107,6 +107,17 @@ MUTANTS = [
      "      case Crossing::degenerate:\n        return RayCount::degenerate;",
      "      case Crossing::degenerate:\n        break;",
      ["predicates_tests", "ccd_tests", "inside_tests"]),
+    ("float_box_padding_below_the_origin_rounding",
+     "inside/include/exactgeo/inside/internal/float_frame.hpp",
+     "static constexpr double kPad = 0x1p-20;", "static constexpr double kPad = 0x1p-25;",
+     ["inside_tests"]),
+    ("bounded_double_difference_unrounded",
+     "ccd/include/exactgeo/ccd/internal/bounded_double.hpp",
+     "  const double v = a.value - b.value;\n"
+     "  return {v, (a.error + b.error + BoundedDouble::kUnit * std::fabs(v)) * BoundedDouble::kGrow};",
+     "  const double v = a.value - b.value;\n"
+     "  return {v, (a.error + b.error) * BoundedDouble::kGrow};",
+     ["ccd_tests"]),
 ]
 
 

@@ -167,6 +167,69 @@ INSTANTIATE_TEST_SUITE_P(Magnitudes, EmbreeCandidatesTest,
                            return name;
                          });
 
+/// The padding at its edge: an axis-aligned box, its faces split in a grid, whose face
+/// and grid coordinates map into the float frame exactly halfway between two floats, so
+/// that the nearest float (ties to even) moves an origin on them off the box by the full
+/// rounding, 2^-25 in frame units (for |x| in [1/2, 1)), outward on half of them. Origins
+/// on the faces, edges and corners then sit on or beyond a float box's face, and Embree's
+/// slab arithmetic decides the rest: every face the exact ray touches must still be
+/// proposed. (With kPad at 2^-25 or below, or 0, this test finds misses.)
+TEST(EmbreeCandidates, OriginsOnAxisAlignedFacesWhoseCoordinatesAreNotFloats) {
+  auto rng = testing::seeded_engine("inside.candidates.ties");
+  // Mapped coordinates: the box's half-extent 1/2 + 3 2^-25 (between two floats, rounds
+  // up, away from the centre), grid lines at +-(1/4 + 3 2^-26) (also ties) and 0.
+  const double h = 0.5 + 3 * 0x1p-25;
+  const std::array<double, 5> lines{-h, -(0.25 + 3 * 0x1p-26), 0.0, 0.25 + 3 * 0x1p-26, h};
+  for (const auto& [k, centre] :
+       {std::pair{0, 0.0}, std::pair{1000, 0.0}, std::pair{-1000, 0.0}, std::pair{0, 3.0}}) {
+    SCOPED_TRACE(k);
+    const auto at = [&](double x) { return std::ldexp(x, k) + centre; };
+    // Each face a 4 x 4 grid of quads on its plane.
+    Mesh mesh;
+    const auto vertex = [&](const Point3& p) {
+      mesh.vertices.push_back({at(p[0]), at(p[1]), at(p[2])});
+      return static_cast<VertexIndex>(mesh.vertices.size() - 1);
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const double side : {-h, h}) {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+          for (std::size_t j = 0; j + 1 < lines.size(); ++j) {
+            std::array<VertexIndex, 4> c;
+            const std::array<std::pair<std::size_t, std::size_t>, 4> corners{
+                {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
+            for (std::size_t m = 0; m < 4; ++m) {
+              Point3 p;
+              p[axis] = side;
+              p[u] = lines[corners[m].first];
+              p[v] = lines[corners[m].second];
+              c[m] = vertex(p);
+            }
+            mesh.faces.push_back(make_quad(c[0], c[1], c[2], c[3]));
+          }
+        }
+      }
+    }
+    const internal::EmbreeCandidates embree(mesh, *internal::corner_box(mesh));
+    std::uniform_int_distribution<std::size_t> line(0, lines.size() - 1);
+    std::uniform_int_distribution<int> odd(0, (1 << 20) - 1);
+    std::uniform_int_distribution<std::size_t> direction(0, 40);
+    std::size_t touched = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+      // On a face: its coordinate +-h; the others on grid lines (edges and corners) or
+      // odd multiples of 2^-26 (ties too, inside a grid cell).
+      Point3 p;
+      const int axis = trial % 3;
+      p[axis] = trial % 2 ? h : -h;
+      for (const int other : {(axis + 1) % 3, (axis + 2) % 3}) {
+        p[other] = trial % 4 < 2 ? lines[line(rng)] : (2.0 * odd(rng) + 1) * 0x1p-26 - 0.5 * h;
+      }
+      touched += expect_complete(mesh, embree, {at(p[0]), at(p[1]), at(p[2])}, direction(rng));
+    }
+    EXPECT_GE(touched, 400u);  // every origin lies on at least one face
+  }
+}
+
 TEST(FloatFrame, BoundsEncloseTheMappedValueWithPadding) {
   auto rng = testing::seeded_engine("inside.float_frame");
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
