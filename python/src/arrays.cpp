@@ -1,7 +1,10 @@
 #include "arrays.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
+#include <vector>
 
 namespace exactgeo::python {
 
@@ -48,25 +51,103 @@ void require_shape(const py::array& array, std::string_view name,
 
 void require_finite(const Doubles& array, std::string_view name) {
   const double* values = array.data();
-  const auto size = static_cast<std::size_t>(array.size());
-  for (std::size_t i = 0; i < size; ++i) {
-    if (std::isfinite(values[i])) continue;
-    const std::size_t row_length = size / static_cast<std::size_t>(array.shape(0));
-    throw py::value_error(std::string(name) + "[" + std::to_string(i / row_length) +
-                          "] has a non-finite coordinate (" + std::to_string(values[i]) + ")");
+  const double* end = values + array.size();
+  // The search alone in the loop (libstdc++ unrolls it); the message is made outside.
+  const double* bad = std::find_if_not(values, end, [](double x) { return std::isfinite(x); });
+  if (bad == end) return;
+  const auto row_length = static_cast<std::size_t>(array.size() / array.shape(0));
+  coordinate(*bad, {name, static_cast<std::size_t>(bad - values) / row_length});  // throws
+}
+
+namespace {
+
+std::vector<py::ssize_t> shape_of(const py::array& array) {
+  return {array.shape(), array.shape() + array.ndim()};
+}
+
+/// A list or a tuple: NumPy would give its numbers their common type and round them into
+/// it (a Python int and a float together become float64, and so do a uint64 and a negative
+/// int), so they are read one by one instead, each as what it is.
+bool is_python_sequence(const py::object& object) {
+  return py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object);
+}
+
+/// A list's or tuple's elements as the Python objects they are, in a C-contiguous object
+/// array of the nested lists' shape; none when NumPy makes no array of them.
+std::optional<py::array> objects_of(const py::object& sequence) {
+  const py::module_ numpy = py::module_::import("numpy");
+  try {
+    return numpy.attr("asarray")(sequence, py::arg("dtype") = numpy.attr("object_"),
+                                 py::arg("order") = "C");
+  } catch (const py::error_already_set&) {
+    return std::nullopt;
   }
 }
 
+/// Calls `visit(element, where)` for each element of a C-contiguous array of Elements, in
+/// order, with the element's row.
+template <typename Element, typename Visit>
+void for_each_element(const py::array& array, std::string_view name, Visit&& visit) {
+  const auto* elements = static_cast<const Element*>(array.data());
+  const std::size_t rows = array.ndim() == 0 ? 1 : static_cast<std::size_t>(array.shape(0));
+  const std::size_t row_length = rows == 0 ? 0 : static_cast<std::size_t>(array.size()) / rows;
+  for (std::size_t row = 0; row < rows; ++row) {
+    const Where where{name, row};
+    for (std::size_t k = 0; k < row_length; ++k, ++elements)
+      visit(*elements, where);
+  }
+}
+
+/// The elements of a C-contiguous array of Elements (numbers, or PyObject* for an object
+/// array) in a new float64 array of the same shape, each through `coordinate`: checked and
+/// converted in one pass.
+template <typename Element>
+Doubles doubles_from(const py::array& array, std::string_view name) {
+  Doubles doubles(shape_of(array));
+  double* out = doubles.mutable_data();
+  for_each_element<Element>(array, name, [&](Element element, const Where& where) {
+    if constexpr (std::is_same_v<Element, PyObject*>) {
+      *out++ = coordinate(py::handle(element), where);
+    } else {
+      *out++ = coordinate(element, where);
+    }
+  });
+  return doubles;
+}
+
+/// The same from an array of any dtype, first converted to Number without loss.
+template <typename Number>
+Doubles doubles_via(const py::array& array, std::string_view name) {
+  using Numbers = py::array_t<Number, py::array::c_style | py::array::forcecast>;
+  return doubles_from<Number>(Numbers::ensure(array), name);
+}
+
+}  // namespace
+
 Doubles coordinates(const py::object& object, std::string_view name,
                     std::initializer_list<py::ssize_t> shape) {
+  if (is_python_sequence(object)) {
+    const std::optional<py::array> objects = objects_of(object);
+    if (!objects) throw py::type_error(std::string(name) + " must be an array of coordinates");
+    require_shape(*objects, name, shape);
+    return doubles_from<PyObject*>(*objects, name);
+  }
   const py::array array = py::array::ensure(object);
   if (!array) throw py::type_error(std::string(name) + " must be an array of coordinates");
   const char kind = array.dtype().kind();
-  if (kind != 'f' && kind != 'i' && kind != 'u') {
+  if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'O') {
     throw py::type_error(std::string(name) + " must hold real numbers, got dtype " +
                          std::string(py::str(array.dtype())));
   }
   require_shape(array, name, shape);
+  if (kind == 'O')
+    return doubles_from<PyObject*>(py::array::ensure(array, py::array::c_style), name);
+  const auto itemsize = static_cast<std::size_t>(array.dtype().itemsize());
+  if (kind == 'f' && itemsize > sizeof(double)) return doubles_via<long double>(array, name);
+  if (kind == 'i' && itemsize == 8) return doubles_via<std::int64_t>(array, name);
+  if (kind == 'u' && itemsize == 8) return doubles_via<std::uint64_t>(array, name);
+  // float16, float32, float64 and integers of up to 32 bits: every value is a double. A
+  // C-contiguous float64 array is not copied; the others are converted exactly.
   Doubles doubles = Doubles::ensure(array);
   require_finite(doubles, name);
   return doubles;

@@ -1,8 +1,9 @@
 #pragma once
 
 // NumPy arrays and options into the extension: every batch function takes its arrays and
-// its options through these checks, so a wrong shape, a non-finite coordinate or a bad option is a
-// ValueError that names the argument and the row, never a crash or a silent NaN label.
+// its options through these checks, so a wrong shape, a non-finite coordinate, a number
+// that would be rounded on the way in, or a bad option is a ValueError that names the
+// argument and the row, never a crash, a silent NaN label or a different input.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -15,6 +16,7 @@
 #include <string>
 #include <string_view>
 
+#include "exact_numbers.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/point.hpp"
@@ -23,8 +25,9 @@ namespace exactgeo::python {
 
 namespace py = pybind11;
 
-/// A C-contiguous float64 array. As an argument type, pybind11 converts any other input
-/// (another dtype, a nested list, a strided view) into a fresh one on the way in.
+/// A C-contiguous float64 array. Not an argument type: pybind11 would convert any input
+/// into one on the way in, rounding int64 and long double values silently; arguments come
+/// as objects and through coordinates().
 using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// The same for integer indices (faces). Float input is refused before this conversion
@@ -32,10 +35,13 @@ using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 
 /// `object` (an array or anything NumPy makes one of) as a C-contiguous float64 array of
-/// `shape` (-1: any length) with finite values. Real numbers only: integer and float
-/// dtypes are converted, every other one (complex, strings, booleans, objects) is a
-/// TypeError; a wrong shape or a NaN or infinity is a ValueError naming the argument and
-/// the row.
+/// `shape` (-1: any length), every value exactly as given. Real numbers only: float16,
+/// float32 and float64 arrays and integers of up to 32 bits widen exactly; int64, uint64
+/// and long double values, and the numbers of a list, tuple or object array (Python ints of
+/// any size, floats, NumPy numbers), are taken when they are exactly doubles. Every other
+/// dtype or element (complex, strings, booleans, other objects) is a TypeError; a wrong
+/// shape, a NaN or infinity, or a value that is not exactly a double is a ValueError naming
+/// the argument and the row. A C-contiguous float64 array is used as it is.
 Doubles coordinates(const py::object& object, std::string_view name,
                     std::initializer_list<py::ssize_t> shape);
 

@@ -183,8 +183,8 @@ min_separation: a collision is then a time at which the primitives' Euclidean di
 threads: worker threads, 0 for all hardware threads. The GIL is released.
 
 Returns an (n,) bool array, or (collisions, brackets) with toi_width.
-Raises ValueError for a wrong shape or a non-finite coordinate (naming its row), and for a
-negative, NaN or infinite min_separation.)doc";
+Raises ValueError for a wrong shape or a coordinate that is not finite or not exactly a
+double (naming its row), and for a negative, NaN or infinite min_separation.)doc";
 
 }  // namespace
 

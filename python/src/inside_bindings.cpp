@@ -88,12 +88,13 @@ faces, with the counts and the first few offending edges or faces.)doc")
            py::arg("threads") = 0,
            R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY.
 
-points: (n, 3) coordinates (float64, or converted), finite.
+points: (n, 3) coordinates (float64, or converted exactly), finite.
 method: "exact" (default) or "double" (the same traversal in plain doubles: faster,
     wrong near the surface, for comparison).
 threads: worker threads, 0 for all hardware threads. The GIL is released.
 
-Raises ValueError for a wrong shape or a non-finite point (naming its row).)doc")
+Raises ValueError for a wrong shape, or for a coordinate that is not finite or not exactly
+a double, such as the int64 2**53 + 1 (naming its row).)doc")
       .def("contains", &contains, py::arg("points"), py::kw_only(), py::arg("boundary") = true,
            py::arg("method") = "exact", py::arg("threads") = 0,
            R"doc(A bool array: inside the solid, or on its boundary when `boundary` is true.)doc");

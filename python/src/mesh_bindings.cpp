@@ -201,12 +201,13 @@ ever chosen); coordinates are kept exactly as given.)doc")
       .def(py::init(&mesh_from_arrays), py::arg("vertices"), py::arg("faces"),
            R"doc(A mesh from arrays.
 
-vertices: (n, 3) float64 coordinates (finite; converted from other dtypes).
+vertices: (n, 3) coordinates, finite and each exactly a double (other dtypes are
+    converted exactly or refused: see docs/python.md).
 faces: an (m, 3) or (m, 4) integer array of 0-based vertex indices, or a list whose
     items are triangles (3 indices) and quads (4 indices), mixed.
 
 Raises ValueError naming the row of a wrong face (index out of range, wrong corner
-count) or of a non-finite vertex.)doc")
+count) or of a vertex that is not finite or not exactly a double.)doc")
       .def_property_readonly("vertices", &vertices_of, "(n, 3) float64 copy of the coordinates")
       .def_property_readonly("faces", &faces_of,
                              "(m, 3) int64 when every face is a triangle, else (m, 4) with -1 "

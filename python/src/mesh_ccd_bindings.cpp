@@ -189,7 +189,8 @@ Raises ValueError for a negative index, an index >= vertex_count or a repeated c
            py::arg("toi") = false, py::arg("threads") = 0, py::arg("min_separation") = 0.0,
            R"doc(Every colliding pair over one step, as a MeshCcdStep.
 
-x0, x1: (vertex_count, 3) positions at the start and the end of the step.
+x0, x1: (vertex_count, 3) positions at the start and the end of the step, each exactly a
+    double (other dtypes are converted exactly or refused: see docs/python.md).
 method: "exact" (default) or "parity" (the others are accepted for measurements).
 toi: also bracket the earliest contact (exact only): True for a width of 1e-6, or the
     width as a float.

@@ -69,13 +69,16 @@ void bind_predicates(py::module_& module) {
 Positive when d lies on the side of the plane (a, b, c) from which a, b, c appear
 clockwise: orient3d((0,0,0), (1,0,0), (0,1,0), (0,0,1)) is 1.
 
-a, b, c, d: points of shape (3,), or arrays of shape (n, 3) (one determinant per row).
+a, b, c, d: points of shape (3,), or arrays of shape (n, 3) (one determinant per row),
+    each coordinate exactly a double (ints and other dtypes are converted exactly or
+    refused: see docs/python.md).
 method: "exact" (default; correct for every finite input, subnormal and huge values
     included) or "double" (the determinant rounded in plain doubles, for comparison).
 threads: worker threads, 0 for all hardware threads.
 
 Returns an int (-1, 0, 1) for single points, an int8 array of shape (n,) for arrays.
-Raises ValueError for a wrong shape or a non-finite coordinate.)doc");
+Raises ValueError for a wrong shape, or for a coordinate that is not finite or not exactly
+a double (naming its row).)doc");
 }
 
 }  // namespace exactgeo::python

@@ -2,6 +2,7 @@
 answer), never a crash, never a NaN-derived label."""
 
 import itertools
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -13,11 +14,14 @@ WRONG = [None, "points", 3.0, [], [[]], [1, 2, 3], np.float64(1.0), np.zeros(())
          np.zeros((0,)), np.zeros((2, 0)), np.zeros((4, 3, 1)), np.zeros((1, 4, 3, 1)),
          np.array([[1, 2, 3]], dtype=object), np.array([["1", "2", "3"]]),
          np.array([[1 + 2j, 0, 0]]), np.full((2, 3), np.nan), np.full((2, 4, 3), -np.inf),
-         {"x": 1}, np.zeros((3, 3), dtype=np.float16), np.ones((5, 4, 3), dtype=bool)]
+         {"x": 1}, np.zeros((3, 3), dtype=np.float16), np.ones((5, 4, 3), dtype=bool),
+         np.array([[1, Fraction(1, 2), 3]], dtype=object), [[1, "2", 3.0]],
+         np.full((2, 4, 3), 2**53 + 1), [[2**64 + 1, 0, 0.5]], np.full((1, 3), 1 / 3, np.longdouble)]
 
 
-# Not real numbers: refused (TypeError) wherever coordinates are expected.
-NOT_REAL = {12, 13, 14, 19}
+# Not real numbers: refused (TypeError) wherever coordinates are expected. (An object array
+# of Python ints, 12, is real numbers: converted exactly.)
+NOT_REAL = {13, 14, 19}
 COORDINATE_CALLS = {"classify", "contains", "vertex_face_ccd x0", "edge_edge_ccd x1",
                     "orient3d", "Mesh vertices", "MeshCcd.step"}
 
