@@ -153,16 +153,73 @@ Doubles coordinates(const py::object& object, std::string_view name,
   return doubles;
 }
 
-Indices integer_array(const py::object& object, std::string_view name) {
-  const py::array array = py::array::ensure(object);
-  if (!array) throw py::value_error(std::string(name) + " must be an array of integers");
-  const char kind = array.dtype().kind();
-  // An empty list becomes a float64 array: no index is lost in converting it.
-  if (kind != 'i' && kind != 'u' && array.size() > 0) {
-    throw py::value_error(std::string(name) + " must hold integers, got dtype " +
-                          std::string(py::str(array.dtype())));
+namespace {
+
+[[noreturn]] void refuse_face_shape(const py::array& array, std::string_view name,
+                                    std::initializer_list<py::ssize_t> widths) {
+  std::string expected;
+  for (const py::ssize_t width : widths)
+    expected +=
+        (expected.empty() ? "" : " or ") + std::string("(m, ") + std::to_string(width) + ")";
+  throw py::value_error(std::string(name) + " must have shape " + expected + ", got " +
+                        python::shape_text(array));
+}
+
+bool has_face_shape(const py::array& array, std::initializer_list<py::ssize_t> widths) {
+  return array.ndim() == 2 &&
+         std::find(widths.begin(), widths.end(), array.shape(1)) != widths.end();
+}
+
+/// The checked indices of a C-contiguous array of Elements (integers, or PyObject*).
+template <typename Element>
+py::array_t<VertexIndex> indices_from(const py::array& array, std::string_view name,
+                                      const IndexRange& range) {
+  py::array_t<VertexIndex> indices(shape_of(array));
+  VertexIndex* out = indices.mutable_data();
+  for_each_element<Element>(array, name, [&](Element element, const Where& where) {
+    if constexpr (std::is_same_v<Element, PyObject*>) {
+      *out++ = corner_index(py::handle(element), where, range);
+    } else {
+      *out++ = corner_index(element, where, range);
+    }
+  });
+  return indices;
+}
+
+/// The checked indices of an array of any dtype (vertex_indices).
+py::array_t<VertexIndex> indices_of(const py::array& array, std::string_view name,
+                                    std::initializer_list<py::ssize_t> widths,
+                                    const IndexRange& range) {
+  // An empty list (or an empty array of any dtype) is no faces.
+  if (array.size() == 0 && array.ndim() == 1) {
+    return py::array_t<VertexIndex>(std::vector<py::ssize_t>{0, *widths.begin()});
   }
-  return Indices::ensure(array);
+  if (!has_face_shape(array, widths)) refuse_face_shape(array, name, widths);
+  if (array.size() == 0) return py::array_t<VertexIndex>(shape_of(array));  // no index to lose
+  const char kind = array.dtype().kind();
+  if (kind == 'O') {
+    return indices_from<PyObject*>(py::array::ensure(array, py::array::c_style), name, range);
+  }
+  // Signed and unsigned dtypes apart: a uint64 of 2^63 or more would wrap in an int64.
+  using Signed = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+  using Unsigned = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>;
+  if (kind == 'i') return indices_from<std::int64_t>(Signed::ensure(array), name, range);
+  if (kind == 'u') return indices_from<std::uint64_t>(Unsigned::ensure(array), name, range);
+  throw py::value_error(std::string(name) + " must hold integers, got dtype " +
+                        std::string(py::str(array.dtype())));
+}
+
+}  // namespace
+
+py::array_t<VertexIndex> vertex_indices(const py::object& object, std::string_view name,
+                                        std::initializer_list<py::ssize_t> widths,
+                                        const IndexRange& range) {
+  const std::optional<py::array> array =
+      is_python_sequence(object) ? objects_of(object) : py::array::ensure(object);
+  if (!array || !*array) {
+    throw py::value_error(std::string(name) + " must be an array of integers");
+  }
+  return indices_of(*array, name, widths, range);
 }
 
 std::span<const Point3> points_of(const Doubles& array) {

@@ -2,8 +2,8 @@
 
 // NumPy arrays and options into the extension: every batch function takes its arrays and
 // its options through these checks, so a wrong shape, a non-finite coordinate, a number
-// that would be rounded on the way in, or a bad option is a ValueError that names the
-// argument and the row, never a crash, a silent NaN label or a different input.
+// that would be rounded or truncated on the way in, or a bad option is a ValueError that
+// names the argument and the row, never a crash, a silent NaN label or a different input.
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -30,10 +30,6 @@ namespace py = pybind11;
 /// as objects and through coordinates().
 using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// The same for integer indices (faces). Float input is refused before this conversion
-/// (integer_array), so an index is never truncated.
-using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
-
 /// `object` (an array or anything NumPy makes one of) as a C-contiguous float64 array of
 /// `shape` (-1: any length), every value exactly as given. Real numbers only: float16,
 /// float32 and float64 arrays and integers of up to 32 bits widen exactly; int64, uint64
@@ -57,9 +53,14 @@ void require_shape(const py::array& array, std::string_view name,
 /// an infinity. Precondition: the shape was checked (at least one axis).
 void require_finite(const Doubles& array, std::string_view name);
 
-/// `object` as a C-contiguous int64 array; throws ValueError unless it holds integers
-/// (a float array would otherwise be truncated silently).
-Indices integer_array(const py::object& object, std::string_view name);
+/// The vertex indices of a faces argument: `object` (an (m, k) integer array, a list of
+/// rows, an object array) as a C-contiguous (m, k) array, k one of `widths`; an empty list
+/// is (0, first width). Integer dtypes only (a float array is a ValueError naming its
+/// dtype); the elements of a list or an object array by corner_index (exact_numbers.hpp); every
+/// index is checked against `range` as given (a uint64 index never wraps).
+py::array_t<VertexIndex> vertex_indices(const py::object& object, std::string_view name,
+                                        std::initializer_list<py::ssize_t> widths,
+                                        const IndexRange& range);
 
 /// The rows of an (n, 3) array as points. Precondition: require_shape(array, ..., {-1, 3}).
 std::span<const Point3> points_of(const Doubles& array);

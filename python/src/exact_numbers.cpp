@@ -120,6 +120,30 @@ double numpy_coordinate(const py::array& scalar, const Where& where) {
   }
 }
 
+bool is_bool(py::handle value) {
+  if (PyBool_Check(value.ptr())) return true;
+  if (py::isinstance<py::array>(value)) {
+    return py::reinterpret_borrow<py::array>(value).dtype().kind() == 'b';
+  }
+  return py::isinstance(value, py::module_::import("numpy").attr("bool_"));
+}
+
+/// `value` as a Python int when it is an integer: an int, or anything else with __index__
+/// (NumPy integers, 0-d integer arrays) but a bool (True has __index__, but a bool array is
+/// not indices either). Floats, Fractions and Decimals have no __index__.
+std::optional<py::object> integer_of(py::handle value) {
+  PyObject* object = value.ptr();
+  if (PyLong_Check(object) && !PyBool_Check(object))
+    return py::reinterpret_borrow<py::object>(value);
+  if (!PyIndex_Check(object) || is_bool(value)) return std::nullopt;
+  PyObject* integer = PyNumber_Index(object);
+  if (integer == nullptr) {
+    PyErr_Clear();
+    return std::nullopt;
+  }
+  return py::reinterpret_steal<py::object>(integer);
+}
+
 }  // namespace
 
 void refuse_non_finite(const Where& where, const std::string& value) {
@@ -149,6 +173,47 @@ double coordinate(py::handle value, const Where& where) {
     return numpy_coordinate(*scalar, where);
   }
   refuse_not_real(value, where);
+}
+
+IndexRange vertex_range(std::optional<std::uint64_t> vertex_count) {
+  // The largest VertexIndex marks a missing corner (mesh::kNoVertex): it is no vertex's.
+  constexpr std::uint64_t kIndices = std::numeric_limits<VertexIndex>::max();
+  if (!vertex_count || *vertex_count > kIndices) {
+    return {kIndices, "but a vertex index is at most " + std::to_string(kIndices - 1)};
+  }
+  if (*vertex_count == 0) return {0, "but there are no vertices"};
+  return {*vertex_count, "but the vertices are 0.." + std::to_string(*vertex_count - 1)};
+}
+
+void refuse_corner(const Where& where, std::string_view given, const IndexRange& range) {
+  throw py::value_error(where.text() + " has corner index " + std::string(given) + ", " +
+                        range.text);
+}
+
+VertexIndex corner_index(py::handle corner, const Where& where, const IndexRange& range) {
+  const std::optional<py::object> integer = integer_of(corner);
+  if (!integer) {
+    throw py::value_error(where.text() +
+                          " holds a corner that is not an integer: " + described(corner));
+  }
+  int overflow = 0;
+  const long long value = PyLong_AsLongLongAndOverflow(integer->ptr(), &overflow);
+  if (overflow != 0) refuse_corner(where, repr_of(*integer), range);
+  return corner_index(value, where, range);
+}
+
+std::uint64_t count_of(py::handle value, std::string_view name, std::uint64_t largest) {
+  const std::optional<py::object> integer = integer_of(value);
+  if (!integer) {
+    throw py::type_error(std::string(name) + " must be an integer, got " + described(value));
+  }
+  int overflow = 0;
+  const long long count = PyLong_AsLongLongAndOverflow(integer->ptr(), &overflow);
+  if (overflow != 0 || std::cmp_less(count, 0) || std::cmp_greater(count, largest)) {
+    throw py::value_error(std::string(name) + " must be in 0.." + std::to_string(largest) +
+                          ", got " + repr_of(*integer));
+  }
+  return static_cast<std::uint64_t>(count);
 }
 
 }  // namespace exactgeo::python

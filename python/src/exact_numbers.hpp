@@ -2,7 +2,9 @@
 
 // Single numbers from Python, exactly or not at all. A coordinate is a double: a value that
 // is not exactly one (a 64-bit integer with more than 53 significant bits, a long double
-// between two doubles, a Python int of any size) is refused by name, never rounded.
+// between two doubles, a Python int of any size) is refused by name, never rounded. A vertex
+// index is an integer: a float, a Fraction or a Decimal is refused whatever its value, never
+// truncated, and an index out of range is reported as given, never wrapped.
 
 #include <pybind11/pybind11.h>
 
@@ -11,9 +13,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
+
+#include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::python {
 
@@ -77,5 +83,40 @@ double coordinate(long double value, const Where& where);
 /// array) of an integer or floating dtype, each read as what it is. Anything else (a bool,
 /// a complex, a string, a Fraction, a Decimal) is a TypeError naming the row.
 double coordinate(py::handle value, const Where& where);
+
+/// The valid vertex indices of a faces argument, 0 <= index < end, and how a message says
+/// so ("the vertices are 0..7").
+struct IndexRange {
+  std::uint64_t end;
+  std::string text;
+};
+
+/// The indices of `vertex_count` vertices, or when that is not known, every index a vertex
+/// can have (up to 2^32 - 2: 2^32 - 1 marks a missing corner).
+IndexRange vertex_range(std::optional<std::uint64_t> vertex_count);
+
+/// Throws ValueError "faces[0] has corner index 18446744073709551615, but the vertices are
+/// 0..7": the index as it was given.
+[[noreturn]] void refuse_corner(const Where& where, std::string_view given,
+                                const IndexRange& range);
+
+/// An integer corner index, checked against `range` exactly whatever its type (a uint64 of
+/// 2^63 or more is itself, not a negative int64).
+template <typename Integer>
+VertexIndex corner_index(Integer value, const Where& where, const IndexRange& range) {
+  if (std::cmp_less(value, 0) || std::cmp_greater_equal(value, range.end)) {
+    refuse_corner(where, std::to_string(value), range);
+  }
+  return static_cast<VertexIndex>(value);
+}
+
+/// A corner index from a Python object: an int, a NumPy integer or anything else with
+/// __index__, except a bool. A float (Python or NumPy, integral or not), a Fraction or a
+/// Decimal is a ValueError naming the row and the value, never truncated.
+VertexIndex corner_index(py::handle corner, const Where& where, const IndexRange& range);
+
+/// An integer from a Python object (a vertex count), by the rules of corner_index: a
+/// TypeError for what is not an integer, a ValueError outside 0..`largest`.
+std::uint64_t count_of(py::handle value, std::string_view name, std::uint64_t largest);
 
 }  // namespace exactgeo::python

@@ -24,37 +24,27 @@ namespace {
 using mesh::Face;
 using mesh::kNoVertex;
 
-/// Checks one face's corner indices (3 or 4 of them, each in range) and makes the face.
-Face face_from(const std::int64_t* corners, std::size_t count, std::size_t row,
-               std::size_t vertex_count) {
+/// Checks one face's corner count (3 or 4; the indices were checked) and makes the face.
+Face face_from(const VertexIndex* corners, std::size_t count, std::size_t row) {
   if (count != 3 && count != 4) {
     throw py::value_error("faces[" + std::to_string(row) + "] has " + std::to_string(count) +
                           " corners; a face is a triangle (3) or a quad (4)");
   }
   Face face;
-  for (std::size_t k = 0; k < count; ++k) {
-    if (corners[k] < 0 || static_cast<std::uint64_t>(corners[k]) >= vertex_count) {
-      throw py::value_error("faces[" + std::to_string(row) + "] has corner index " +
-                            std::to_string(corners[k]) + ", but the vertices are 0.." +
-                            std::to_string(static_cast<std::int64_t>(vertex_count) - 1));
-    }
-    face.corners[k] = static_cast<VertexIndex>(corners[k]);
-  }
+  std::copy_n(corners, count, face.corners.begin());
   return face;
 }
 
 /// Faces from an (m, 3) or (m, 4) integer array, or from a sequence of 3- and 4-sequences.
 std::vector<Face> faces_from(const py::object& faces, std::size_t vertex_count) {
+  const IndexRange range = vertex_range(vertex_count);
   std::vector<Face> result;
   if (py::isinstance<py::array>(faces)) {
-    const Indices array = integer_array(faces, "faces");
-    if (array.ndim() != 2 || (array.shape(1) != 3 && array.shape(1) != 4)) {
-      throw py::value_error("faces must have shape (m, 3) or (m, 4), got " + shape_text(array));
-    }
+    const py::array_t<VertexIndex> array = vertex_indices(faces, "faces", {3, 4}, range);
     const auto width = static_cast<std::size_t>(array.shape(1));
     result.reserve(static_cast<std::size_t>(array.shape(0)));
     for (std::size_t row = 0; row < static_cast<std::size_t>(array.shape(0)); ++row)
-      result.push_back(face_from(array.data() + row * width, width, row, vertex_count));
+      result.push_back(face_from(array.data() + row * width, width, row));
     return result;
   }
   if (!py::isinstance<py::sequence>(faces) || py::isinstance<py::str>(faces)) {
@@ -62,21 +52,18 @@ std::vector<Face> faces_from(const py::object& faces, std::size_t vertex_count) 
   }
   std::size_t row = 0;
   for (const py::handle face : faces) {
-    std::int64_t corners[4] = {};
+    VertexIndex corners[4] = {};
     std::size_t count = 0;  // all of them, though only the first four are kept
     try {
       for (const py::handle corner : face) {
-        const auto index = py::cast<std::int64_t>(corner);
+        const VertexIndex index = corner_index(corner, {"faces", row}, range);
         if (count < 4) corners[count] = index;
         ++count;
       }
     } catch (const py::error_already_set&) {
       throw py::value_error("faces[" + std::to_string(row) + "] is not a sequence of indices");
-    } catch (const py::cast_error&) {
-      throw py::value_error("faces[" + std::to_string(row) +
-                            "] holds a corner that is not an integer");
     }
-    result.push_back(face_from(corners, count, row, vertex_count));
+    result.push_back(face_from(corners, count, row));
     ++row;
   }
   return result;
@@ -204,10 +191,11 @@ ever chosen); coordinates are kept exactly as given.)doc")
 vertices: (n, 3) coordinates, finite and each exactly a double (other dtypes are
     converted exactly or refused: see docs/python.md).
 faces: an (m, 3) or (m, 4) integer array of 0-based vertex indices, or a list whose
-    items are triangles (3 indices) and quads (4 indices), mixed.
+    items are triangles (3 indices) and quads (4 indices), mixed; ints, never floats.
 
-Raises ValueError naming the row of a wrong face (index out of range, wrong corner
-count) or of a vertex that is not finite or not exactly a double.)doc")
+Raises ValueError naming the row of a wrong face (an index out of range or not an
+integer, a wrong corner count) or of a vertex that is not finite or not exactly a
+double.)doc")
       .def_property_readonly("vertices", &vertices_of, "(n, 3) float64 copy of the coordinates")
       .def_property_readonly("faces", &faces_of,
                              "(m, 3) int64 when every face is a triangle, else (m, 4) with -1 "

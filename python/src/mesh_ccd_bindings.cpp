@@ -39,33 +39,22 @@ struct StepResult {
   double narrow_phase_seconds = 0.0;
 };
 
-std::unique_ptr<MeshCcdObject> make(const py::object& faces_in,
-                                    std::optional<std::int64_t> vertex_count_in) {
-  const Indices faces = integer_array(faces_in, "faces");
-  if (faces.size() == 0 && faces.ndim() == 1) {
-    // an empty list: no faces
-  } else {
-    require_shape(faces, "faces", {-1, 3});
-  }
-  std::vector<ccd::Triangle> triangles(faces.ndim() == 2 ? static_cast<std::size_t>(faces.shape(0))
-                                                         : 0);
-  std::int64_t largest = -1;
+std::unique_ptr<MeshCcdObject> make(const py::object& faces_in, const py::object& vertex_count_in) {
+  std::optional<std::uint64_t> vertex_count;
+  if (!vertex_count_in.is_none())
+    vertex_count = count_of(vertex_count_in, "vertex_count", UINT32_MAX);
+  const py::array_t<VertexIndex> faces =
+      vertex_indices(faces_in, "faces", {3}, vertex_range(vertex_count));
+  std::vector<ccd::Triangle> triangles(static_cast<std::size_t>(faces.shape(0)));
+  std::uint64_t used = 0;  // the largest index + 1
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     for (std::size_t k = 0; k < 3; ++k) {
-      const std::int64_t index = faces.data()[3 * f + k];
-      if (index < 0 || index > std::int64_t{UINT32_MAX} - 1) {
-        throw py::value_error("faces[" + std::to_string(f) + "] has corner index " +
-                              std::to_string(index));
-      }
-      triangles[f][k] = static_cast<VertexIndex>(index);
-      largest = std::max(largest, index);
+      triangles[f][k] = faces.data()[3 * f + k];
+      used = std::max<std::uint64_t>(used, triangles[f][k] + std::uint64_t{1});
     }
   }
-  const std::int64_t vertex_count = vertex_count_in.value_or(largest + 1);
-  if (vertex_count < 0 || vertex_count > std::int64_t{UINT32_MAX}) {
-    throw py::value_error("vertex_count must be in 0.." + std::to_string(UINT32_MAX));
-  }
-  return std::make_unique<MeshCcdObject>(static_cast<std::size_t>(vertex_count), triangles);
+  return std::make_unique<MeshCcdObject>(static_cast<std::size_t>(vertex_count.value_or(used)),
+                                         triangles);
 }
 
 StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object& x1_in,
@@ -184,7 +173,9 @@ same vector, are skipped. Exact by default: no collision is ever missed.)doc")
            R"doc(faces: (m, 3) integer array of vertex indices.
 vertex_count: the number of vertices (default: the largest index + 1).
 
-Raises ValueError for a negative index, an index >= vertex_count or a repeated corner.)doc")
+Indices are integers (ints, integer arrays), never floats. Raises ValueError for an index
+that is negative, not an integer or >= vertex_count (naming the row and the index as
+given), and for a repeated corner.)doc")
       .def("step", &step, py::arg("x0"), py::arg("x1"), py::kw_only(), py::arg("method") = "exact",
            py::arg("toi") = false, py::arg("threads") = 0, py::arg("min_separation") = 0.0,
            R"doc(Every colliding pair over one step, as a MeshCcdStep.

@@ -1,7 +1,9 @@
 """Numbers in, exactly or refused. A coordinate that is not exactly a double (a 64-bit
 integer beyond 2^53 with too many significant bits, a long double between two doubles, a
-Python int of any size) is refused with the argument, the row and the value, never rounded.
-Seeded tests compare every decision with Python's exact one (fractions)."""
+Python int of any size) is refused with the argument, the row and the value, never rounded;
+a corner index that is not an integer (a float, a Fraction, a Decimal) or beyond every
+index (a uint64 of 2^63 or more) is refused with the value as given, never truncated or
+wrapped. Seeded tests compare every decision with Python's exact one (fractions)."""
 
 import math
 import re
@@ -265,3 +267,71 @@ def test_random_long_doubles(rng):
         else:
             with pytest.raises(ValueError, match=not_exactly("vertices[0]", "the long double")):
                 converted(points)
+
+
+# Corner indices: integers only, and the value as given when out of range.
+
+@pytest.mark.parametrize("value", [np.float32(2.9), np.float16(2.9), Fraction(29, 10),
+                                   Decimal("2.9"), 2.0, np.float64(2.0), Fraction(2),
+                                   Decimal(2), True, np.bool_(True)],
+                         ids=lambda v: f"{type(v).__name__}({v})")
+def test_a_corner_that_is_not_an_integer_is_refused(value):
+    message = re.escape(f"faces[1] holds a corner that is not an integer: {value!r}")
+    faces = [[0, 1, 2], [0, 1, value]]
+    with pytest.raises(ValueError, match=message):
+        exactgeo.Mesh(CUBE_VERTICES, faces)
+    with pytest.raises(ValueError, match=message):
+        exactgeo.Mesh(CUBE_VERTICES, np.array(faces, dtype=object))
+    with pytest.raises(ValueError, match=message):
+        exactgeo.MeshCcd(faces)
+
+
+@pytest.mark.parametrize("dtype", [np.float16, np.float32, np.float64, bool])
+def test_an_index_array_of_another_dtype_is_refused(dtype):
+    faces = np.array([[0, 1, 2]], dtype=dtype)
+    with pytest.raises(ValueError, match="faces must hold integers, got dtype"):
+        exactgeo.Mesh(CUBE_VERTICES, faces)
+    with pytest.raises(ValueError, match="faces must hold integers, got dtype"):
+        exactgeo.MeshCcd(faces)
+
+
+@pytest.mark.parametrize("value", [2**63, 2**64 - 1])
+def test_a_uint64_index_is_refused_as_given(value):
+    faces = np.array([[0, 1, 2], [0, 1, value]], dtype=np.uint64)
+    with pytest.raises(ValueError, match=re.escape(
+            f"faces[1] has corner index {value}, but the vertices are 0..7")):
+        exactgeo.Mesh(CUBE_VERTICES, faces)
+    with pytest.raises(ValueError, match=re.escape(
+            f"faces[1] has corner index {value}, but a vertex index is at most 4294967294")):
+        exactgeo.MeshCcd(faces)
+    with pytest.raises(ValueError, match=re.escape(f"faces[1] has corner index {value},")):
+        exactgeo.Mesh(CUBE_VERTICES, [[0, 1, 2], [0, 1, value]])
+    with pytest.raises(ValueError, match=re.escape(f"faces[0] has corner index {value},")):
+        exactgeo.MeshCcd([[0, 1, value]], vertex_count=4)
+
+
+def test_integer_indices_of_every_form_are_taken():
+    quads = [[0, 2, 3, 1], [4, 5, 7, 6]]
+    forms = [quads, [[np.int64(0), np.uint8(2), np.int16(3), np.uint64(1)], [4, 5, 7, 6]],
+             np.array(quads, dtype=object)] + [np.array(quads, dtype=d) for d in SIGNED + UNSIGNED]
+    for faces in forms:
+        assert exactgeo.Mesh(CUBE_VERTICES, faces).faces.tolist() == quads
+    triangles = [[0, 2, 3], [4, 5, 7]]
+    forms = [triangles, [[np.int64(0), np.uint8(2), np.int16(3)], [4, np.uint64(5), 7]],
+             np.array(triangles, dtype=object)]
+    forms += [np.array(triangles, dtype=d) for d in SIGNED + UNSIGNED]
+    for faces in forms:
+        ccd = exactgeo.MeshCcd(faces)
+        assert ccd.vertex_count == 8
+        assert ccd.edges.tolist() == [[0, 2], [0, 3], [2, 3], [4, 5], [4, 7], [5, 7]]
+
+
+def test_vertex_count_is_an_integer():
+    for value in (np.float32(3.9), 4.0, Fraction(4), Decimal(4)):
+        with pytest.raises(TypeError, match=re.escape(f"vertex_count must be an integer, got "
+                                                      f"{value!r}")):
+            exactgeo.MeshCcd([[0, 1, 2]], vertex_count=value)
+    for value in (-1, 2**32, 2**64):
+        with pytest.raises(ValueError, match=f"vertex_count must be in 0..4294967295, got {value}"):
+            exactgeo.MeshCcd([[0, 1, 2]], vertex_count=value)
+    assert exactgeo.MeshCcd([[0, 1, 2]], vertex_count=np.uint8(5)).vertex_count == 5
