@@ -82,6 +82,9 @@ def _classify_block(block: np.ndarray, mesh_path: str, method: str, threads: int
     return classifier.classify(block, method=method, threads=threads)
 
 
+_LIST_CHUNK = 1_000_000  # points per task when the points come as a list
+
+
 def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld: bool = False,
              split_polygons: bool = False, allow_non_manifold: bool = False) -> da.Array:
     """The location of every point (OUTSIDE, INSIDE, BOUNDARY) as a lazy (n,) int8 array.
@@ -89,6 +92,7 @@ def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld
     mesh_path: a mesh file every worker can read (OBJ, OFF, PLY exactly; others via assimp).
     points: a dask array (or anything dask.array.asarray takes) of shape (n, 3); its chunks
         along n become the tasks (a few hundred thousand to a few million points each).
+        Coordinates are converted exactly or refused, as by Classifier.classify.
     method: "exact" (default) or "double".
     threads: threads per task; 1 by default, since Dask already runs one task per worker
         thread. Use 0 (all cores) with one worker thread per machine.
@@ -97,6 +101,11 @@ def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld
     A mesh that cannot be read or does not bound a solid fails the computation with the
     loader's or the classifier's message.
     """
+    if isinstance(points, (list, tuple)):
+        # NumPy would round a list's numbers into their common type (a Python int beside a
+        # float becomes float64); as objects, each block reaches the binding as given and is
+        # converted exactly or refused there. (Dask sizes no chunks of objects itself.)
+        points = da.from_array(np.asarray(points, dtype=object), chunks=(_LIST_CHUNK, -1))
     points = da.asarray(points)
     if points.ndim != 2 or points.shape[1] != 3:
         raise ValueError(f"points must have shape (n, 3), got {points.shape}")

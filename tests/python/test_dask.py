@@ -113,6 +113,17 @@ def test_a_bad_mesh_fails_with_the_loaders_message(client, tmp_path):
         exactgeo.dask.classify(bad, da.zeros((10, 2)))
 
 
+def test_coordinates_are_exact_or_refused(client, cube_file):
+    # A list's Python ints stay exact (NumPy alone would round 2^53 + 1 beside a float).
+    with pytest.raises(ValueError, match=r"points\[1\] has a coordinate that is not exactly"):
+        exactgeo.dask.classify(cube_file, [[0.5, 0.5, 0.5], [2**53 + 1, 0.5, 0]]).compute()
+    labels = exactgeo.dask.classify(cube_file, [[0.5, 0.5, 0.5], [2**53 + 2, 0.5, 0], [1, 0, 0]])
+    assert labels.compute().tolist() == [exactgeo.INSIDE, exactgeo.OUTSIDE, exactgeo.BOUNDARY]
+    int64 = da.from_array(np.array([[0, 0, 0], [2**53 + 1, 0, 0]]), chunks=(1, 3))
+    with pytest.raises(ValueError, match=r"points\[0\] has a coordinate that is not exactly"):
+        exactgeo.dask.classify(cube_file, int64).compute()
+
+
 def test_ccd_files_count_as_the_command_line(client, cli):
     folder = CCD / "sample-queries"
     counts = exactgeo.dask.ccd_files([folder])
