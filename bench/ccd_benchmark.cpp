@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 
 namespace {
 

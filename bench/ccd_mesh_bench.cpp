@@ -28,8 +28,8 @@
 
 #include "baseline/box_tree.hpp"
 #include "baseline/mesh_broad_phase.hpp"
-#include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "sweep_and_prune.hpp"
 

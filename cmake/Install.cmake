@@ -13,7 +13,7 @@ set(EXACTGEO_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/exactgeo)
 # exported too, as exactgeo::strict_fp. exactgeo_warnings is build-only and not exported.
 set_target_properties(exactgeo_strict_fp PROPERTIES EXPORT_NAME strict_fp)
 
-install(TARGETS exactgeo_predicates exactgeo_parallel exactgeo_io exactgeo_mesh exactgeo_ccd
+install(TARGETS exactgeo_predicates exactgeo_parallel exactgeo_io exactgeo_mesh exactgeo_ccd exactgeo_ccd_files
                 exactgeo_inside exactgeo_strict_fp
         EXPORT exactgeoTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}

@@ -112,7 +112,7 @@ MUTANTS = [
      "static constexpr double kPad = 0x1p-20;", "static constexpr double kPad = 0x1p-25;",
      ["inside_tests"]),
     ("bounded_double_difference_unrounded",
-     "ccd/include/exactgeo/ccd/internal/bounded_double.hpp",
+     "ccd/include/exactgeo/ccd/separation/internal/bounded_double.hpp",
      "  const double v = a.value - b.value;\n"
      "  return {v, (a.error + b.error + BoundedDouble::kUnit * std::fabs(v)) * BoundedDouble::kGrow};",
      "  const double v = a.value - b.value;\n"

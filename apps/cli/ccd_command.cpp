@@ -18,7 +18,7 @@
 #include "cli/output_file.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/seconds.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 #include "exactgeo/io/input_error.hpp"
 
 namespace exactgeo::cli {

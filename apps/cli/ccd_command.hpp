@@ -11,7 +11,7 @@
 
 #include "cli/exit_code.hpp"
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 
 namespace CLI {
 class App;

@@ -20,7 +20,7 @@
 #include "cli/mesh_marks.hpp"
 #include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {

@@ -2,7 +2,7 @@
 
 // `exactgeo ccd-mesh FRAME0 FRAME1`: every colliding vertex-face and edge-edge pair of a
 // triangle mesh over one time step, from two files holding the same mesh at the start and
-// at the end of the step (the command-line contract, README.md; exactgeo/ccd/mesh_ccd.hpp does the
+// at the end of the step (the command-line contract, README.md; exactgeo/ccd/mesh/mesh_ccd.hpp does the
 // work).
 
 #include <iosfwd>

@@ -9,7 +9,7 @@
 #include <span>
 
 #include "cli/marked_ply.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 

@@ -1,4 +1,4 @@
-// exactgeo-cloth: an example simulator loop on the mesh-level CCD (exactgeo/ccd/mesh_ccd.hpp).
+// exactgeo-cloth: an example simulator loop on the mesh-level CCD (exactgeo/ccd/mesh/mesh_ccd.hpp).
 //
 // A square cloth sheet falls onto a static floor with a raised block (scene.hpp), drapes
 // around it and folds onto itself. Each step the sheet's motion is predicted by a mass-spring
@@ -27,7 +27,7 @@
 
 #include "cloth_model.hpp"
 #include "collision_filter.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "obj_output.hpp"
 #include "scene.hpp"
 

@@ -41,7 +41,7 @@
 #include <span>
 #include <vector>
 
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
 namespace exactgeo::cloth {
 

@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <span>
 
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
 namespace exactgeo::cloth {
 

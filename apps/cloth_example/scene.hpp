@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
 namespace exactgeo::cloth {
 

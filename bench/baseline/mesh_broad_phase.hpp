@@ -5,7 +5,7 @@
 // dual-tree traversal, which builds a tree over the moving primitives every step and
 // queries it once per primitive box.
 //
-// The broad phase of mesh-level CCD (mesh_ccd.hpp): the vertex-face and edge-edge pairs
+// The broad phase of mesh-level CCD (ccd/mesh/mesh_ccd.hpp): the vertex-face and edge-edge pairs
 // whose swept boxes overlap, without pairs sharing a vertex and without pairs whose
 // corners all stand still. Standing primitives live in their own trees, kept from step to
 // step while the same vertices stand at the same place (and the step's scale, swept_box.hpp,
@@ -19,8 +19,8 @@
 
 #include "baseline/box_tree.hpp"
 #include "baseline/swept_box.hpp"
-#include "exactgeo/ccd/internal/mesh_broad_phase.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
 namespace exactgeo::ccd::bench::baseline {
 

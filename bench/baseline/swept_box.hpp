@@ -2,14 +2,14 @@
 
 // The baseline broad phase's boxes (baseline/mesh_broad_phase.hpp): a float box with the
 // index of its primitive, made from the primitive's corners in one pass. The rounding is
-// the library's (exactgeo/ccd/internal/swept_box.hpp), so both make the same boxes.
+// the library's (exactgeo/ccd/mesh/internal/swept_box.hpp), so both make the same boxes.
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 
-#include "exactgeo/ccd/internal/swept_box.hpp"
+#include "exactgeo/ccd/mesh/internal/swept_box.hpp"
 
 namespace exactgeo::ccd::bench::baseline {
 

@@ -16,7 +16,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 
 namespace exactgeo::python {

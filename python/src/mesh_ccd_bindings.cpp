@@ -12,7 +12,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
 namespace exactgeo::python {
 

@@ -17,7 +17,7 @@
 #include "ccd/exact_polynomial.hpp"
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/internal/boundary_image.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <string>
 
-#include "ccd/min_separation_oracle.hpp"
+#include "ccd/separation/min_separation_oracle.hpp"
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "support/generators.hpp"

@@ -12,7 +12,7 @@
 
 #include "ccd/query_transforms.hpp"
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"

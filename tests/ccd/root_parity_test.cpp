@@ -5,7 +5,7 @@
 #include "exactgeo/ccd/root_parity.hpp"
 
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/cubic.hpp"
+#include "exactgeo/ccd/baselines/cubic.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <utility>
 
 #include "ccd/query_transforms.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"

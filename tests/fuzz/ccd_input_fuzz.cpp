@@ -16,7 +16,7 @@
 #include <string>
 
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/query_files.hpp"
+#include "exactgeo/ccd/files/query_files.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
 #include "exactgeo/io/input_error.hpp"
 

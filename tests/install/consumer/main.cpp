@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/orient3d.hpp"

@@ -50,7 +50,7 @@ enum class Stage : std::uint8_t {
                      ///< bounded doubles on pieces of the step
   separation_roots,  ///< exact with min_separation > 0: exact roots of those conditions
   box_test,          ///< double with min_separation > 0: the per-axis box test, plain doubles
-                     ///< (separation_box_test.hpp)
+                     ///< (baselines/separation_box.hpp)
 };
 
 std::string_view to_string(Stage s) noexcept;
@@ -72,7 +72,7 @@ struct Options {
   /// Euclidean distance between the two primitives is at most δ (0: they touch), and the
   /// time of impact is the earliest such time. δ^2 is taken exactly. Precondition: finite
   /// and >= 0 (is_valid_min_separation). double: with δ > 0 the baseline per-axis box
-  /// test in plain doubles (separation_box_test.hpp). The other methods ignore it.
+  /// test in plain doubles (baselines/separation_box.hpp). The other methods ignore it.
   double min_separation = 0.0;
   /// cubic only: the distance tolerance (cubic.hpp).
   double cubic_tolerance = 1e-6;

@@ -1,3 +1,3 @@
 // Fixture for architecture.violations_are_reported: never compiled.
-#include "exactgeo/ccd/mesh_ccd.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/mesh.hpp"

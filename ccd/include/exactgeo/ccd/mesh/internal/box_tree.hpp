@@ -1,0 +1,232 @@
+#pragma once
+
+// A bounding-volume hierarchy over the swept boxes of one kind of mesh primitive
+// (vertices, edges or faces): built once, refitted every step.
+//
+// Build: top down, the primitives of a node are split at the median of their box centres
+// along the axis where the centres spread the most, down to leaves of at most eight
+// primitives. Nodes are stored depth first: a node's left child follows it, and it keeps
+// the index of its right child. A leaf's primitives are one Packet (box_packet.hpp).
+//
+// Refit: the mesh's connectivity is fixed, so the same tree serves every step. Each leaf
+// box is made anew from its corners' swept boxes, then each node box is the union of its
+// children's (children come after their parent, so one backward pass does it). A node's
+// box contains every box below it in any such tree, so a refitted tree finds exactly the
+// overlapping pairs a fresh one finds; it only gets slower when the mesh has moved far
+// from where the tree was built. looseness() measures that, and the owner rebuilds when
+// it has grown (src/mesh/broad_phase.cpp).
+//
+// Each node also knows whether all vertices below it move by one and the same vector
+// (standing still included): two subtrees that move together hold no pair of this step
+// (their pairs are rigid, mesh_ccd.hpp), nor does one such subtree with itself.
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "exactgeo/ccd/mesh/internal/box_packet.hpp"
+#include "exactgeo/ccd/mesh/internal/swept_box.hpp"
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo::ccd::internal {
+
+/// One step's motion of every vertex, as the trees see it (made in mesh_broad_phase.cpp).
+struct VertexSweep {
+  std::vector<FloatBox> box;          ///< the swept box, in the step's scale
+  std::vector<Vector3> displacement;  ///< p_t1 - p_t0, rounded
+  std::vector<std::uint8_t> moving;   ///< p_t1 != p_t0
+  /// A digest of the displacement: equal exact displacements have equal nonzero digests;
+  /// 0 exactly when the rounded displacement is not exact.
+  std::vector<std::uint32_t> motion;
+
+  /// Whether a and b move by one and the same exactly known vector (standing included).
+  bool move_together(VertexIndex a, VertexIndex b) const noexcept {
+    return motion[a] != 0 && motion[a] == motion[b] && displacement[a] == displacement[b];
+  }
+};
+
+template <std::size_t N>
+class BoxTree {
+ public:
+  using Corners = std::array<VertexIndex, N>;
+
+  using Leaf = Packet<N>;
+
+  struct Node {
+    FloatBox box;
+    float extent = 0;         ///< half_perimeter(box), which of two nodes to open first
+    std::uint32_t first = 0;  ///< leaf: its Packet; inner node: its right child
+    std::uint8_t count = 0;   ///< primitives of a leaf; 0 for an inner node
+    /// A vertex whose exact displacement every vertex below shares, or kNoVertex. Pairs
+    /// of primitives that all move by one vector (or all stand) are rigid, not candidates.
+    VertexIndex together = kNoVertex;
+
+    bool is_leaf() const noexcept { return count > 0; }
+  };
+
+  BoxTree() = default;
+
+  /// The tree over `primitives` (primitive i has corners primitives[i]) on this step's boxes.
+  BoxTree(std::span<const Corners> primitives, const VertexSweep& vertices) {
+    if (primitives.empty()) return;
+    std::vector<Built> order(primitives.size());
+    for (std::size_t i = 0; i < primitives.size(); ++i)
+      order[i] = {static_cast<std::uint32_t>(i), leaf_box(primitives[i], vertices)};
+    nodes_.reserve(primitives.size());  // 2 n / 4 at most: leaves hold 4 to 8 primitives
+    build(order, primitives, 0, order.size());
+    refit(vertices);
+    built_looseness_ = looseness_;
+  }
+
+  /// This step's boxes for the same primitives.
+  void refit(const VertexSweep& vertices) {
+    for (Leaf& leaf : leaves_)
+      fit_leaf(leaf, vertices);
+    fit_nodes(vertices);
+  }
+
+  /// The nodes' half-perimeters summed, over the primitives' summed plus the root's: the
+  /// walk's work per primitive, roughly. It grows when refitted boxes drift apart.
+  double looseness() const noexcept { return looseness_; }
+  /// looseness() when the tree was built.
+  double built_looseness() const noexcept { return built_looseness_; }
+
+  bool empty() const noexcept { return nodes_.empty(); }
+  const Node& node(std::uint32_t i) const noexcept { return nodes_[i]; }
+  const Leaf& leaf(const Node& n) const noexcept { return leaves_[n.first]; }
+
+ private:
+  struct Built {
+    std::uint32_t id;
+    FloatBox box;
+  };
+
+  static FloatBox leaf_box(const Corners& corners, const VertexSweep& vertices) noexcept {
+    FloatBox box = vertices.box[corners[0]];
+    for (std::size_t c = 1; c < N; ++c)
+      box = united(box, vertices.box[corners[c]]);
+    return box;
+  }
+
+  /// A box's centre on one axis (halves first: finite even for boxes reaching infinity, so
+  /// the median split always sees a strict weak order).
+  static float centre(const FloatBox& b, int axis) noexcept {
+    return b.lo[axis] / 2 + b.hi[axis] / 2;
+  }
+
+  /// Makes order[begin, end) a subtree and returns its root's index.
+  std::uint32_t build(std::vector<Built>& order, std::span<const Corners> primitives,
+                      std::size_t begin, std::size_t end) {
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.push_back({});
+    if (end - begin <= kPacketLanes) {
+      nodes_[index].first = static_cast<std::uint32_t>(leaves_.size());
+      nodes_[index].count = static_cast<std::uint8_t>(end - begin);
+      Leaf& leaf = leaves_.emplace_back();
+      for (std::size_t j = 0; j < kPacketLanes; ++j) {
+        const bool used = begin + j < end;
+        leaf.id[j] = used ? order[begin + j].id : kNoVertex;
+        for (std::size_t k = 0; k < N; ++k)
+          leaf.corner[k][j] = used ? primitives[leaf.id[j]][k] : kNoVertex;
+      }
+      return index;
+    }
+    std::array<float, 3> lo{}, hi{};
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = hi[k] = centre(order[begin].box, k);
+      for (std::size_t i = begin + 1; i < end; ++i) {
+        lo[k] = std::min(lo[k], centre(order[i].box, k));
+        hi[k] = std::max(hi[k], centre(order[i].box, k));
+      }
+    }
+    int axis = 0;
+    for (int k = 1; k < 3; ++k) {
+      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
+    }
+    const std::size_t middle = begin + (end - begin) / 2;
+    const auto by_centre = [axis](const Built& a, const Built& b) {
+      const float ca = centre(a.box, axis), cb = centre(b.box, axis);
+      return ca != cb ? ca < cb : a.id < b.id;
+    };
+    std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                     order.begin() + static_cast<std::ptrdiff_t>(middle),
+                     order.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
+    build(order, primitives, begin, middle);  // the left child is index + 1
+    nodes_[index].first = build(order, primitives, middle, end);
+    return index;
+  }
+
+  static void fit_leaf(Leaf& leaf, const VertexSweep& vertices) noexcept {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    leaf.moving = 0;
+    for (std::size_t j = 0; j < kPacketLanes; ++j) {
+      if (leaf.id[j] == kNoVertex) {
+        leaf.set_box(j, {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}});
+        continue;
+      }
+      const Corners corners = leaf.corners(j);
+      leaf.set_box(j, leaf_box(corners, vertices));
+      bool moving = false;
+      std::uint32_t motion = vertices.motion[corners[0]];
+      for (const VertexIndex v : corners) {
+        moving = moving || vertices.moving[v] != 0;
+        if (vertices.motion[v] != motion) motion = 0;
+      }
+      leaf.moving |= static_cast<unsigned>(moving) << j;
+      leaf.motion[j] = motion;
+    }
+  }
+
+  /// The vertex every corner of the leaf moves together with, or kNoVertex.
+  static VertexIndex together(const Leaf& leaf, std::size_t count, const VertexSweep& vertices) {
+    for (std::size_t j = 0; j < count; ++j) {
+      if (leaf.motion[j] == 0 || leaf.motion[j] != leaf.motion[0]) return kNoVertex;
+    }
+    const VertexIndex first = leaf.corner[0][0];
+    for (std::size_t j = 0; j < count; ++j) {
+      for (std::size_t k = 0; k < N; ++k) {
+        if (!vertices.move_together(first, leaf.corner[k][j])) return kNoVertex;
+      }
+    }
+    return first;
+  }
+
+  /// Every node's box, extent and `together`, and looseness_.
+  void fit_nodes(const VertexSweep& vertices) noexcept {
+    double node_sum = 0.0, leaf_sum = 0.0;
+    for (std::size_t i = nodes_.size(); i-- > 0;) {
+      Node& n = nodes_[i];
+      if (n.is_leaf()) {
+        const Leaf& p = leaves_[n.first];
+        n.box = p.box(0);
+        leaf_sum += half_perimeter(n.box);
+        for (std::size_t j = 1; j < n.count; ++j) {
+          n.box = united(n.box, p.box(j));
+          leaf_sum += half_perimeter(p.box(j));
+        }
+        n.together = together(p, n.count, vertices);
+      } else {
+        const Node &left = nodes_[i + 1], &right = nodes_[n.first];
+        n.box = united(left.box, right.box);
+        const bool same = left.together != kNoVertex && right.together != kNoVertex &&
+                          vertices.move_together(left.together, right.together);
+        n.together = same ? left.together : kNoVertex;
+      }
+      n.extent = static_cast<float>(half_perimeter(n.box));
+      node_sum += half_perimeter(n.box);
+    }
+    const double root = nodes_.empty() ? 0.0 : half_perimeter(nodes_[0].box);
+    looseness_ = leaf_sum + root > 0.0 ? node_sum / (leaf_sum + root) : 0.0;
+  }
+
+  std::vector<Node> nodes_;
+  std::vector<Leaf> leaves_;  // one Packet per leaf node
+  double looseness_ = 0.0;
+  double built_looseness_ = 0.0;
+};
+
+}  // namespace exactgeo::ccd::internal

@@ -1,0 +1,308 @@
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
+#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/parallel/blocks.hpp"
+
+namespace exactgeo::ccd {
+
+namespace {
+
+/// Narrow-phase answers of one block of candidates.
+struct BlockCollisions {
+  std::vector<VertexFacePair> vertex_face;
+  std::vector<internal::EdgeIndexPair> edge_edge;
+  /// With a time of impact asked for: each colliding pair's bracket, vertex-face first.
+  std::vector<TimeInterval> brackets;
+};
+
+/// The first round of the mesh's time of impact brackets every colliding pair to this
+/// width; only the pairs that can still hold the earliest root are refined further.
+constexpr double kCoarseWidth = 1.0 / 64;
+
+constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
+
+void check_frame(std::span<const double> positions, std::size_t vertex_count, const char* name) {
+  if (positions.size() != 3 * vertex_count) {
+    std::string message(name);
+    message.append(" holds ").append(std::to_string(positions.size())).append(" values; ");
+    message.append(std::to_string(3 * vertex_count)).append(" (3 per vertex) are needed");
+    throw std::invalid_argument(message);
+  }
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!std::isfinite(positions[i])) {
+      std::string message(name);
+      message.append(": vertex ")
+          .append(std::to_string(i / 3))
+          .append(" has a non-finite coordinate");
+      throw std::invalid_argument(message);
+    }
+  }
+}
+
+std::vector<Edge> unique_edges(std::span<const Triangle> faces) {
+  std::vector<Edge> edges;
+  edges.reserve(3 * faces.size());
+  for (const Triangle& f : faces) {
+    for (int i = 0; i < 3; ++i) {
+      const VertexIndex a = f[i];
+      const VertexIndex b = f[(i + 1) % 3];
+      edges.push_back({std::min(a, b), std::max(a, b)});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+Point3 position(std::span<const double> positions, VertexIndex v) noexcept {
+  return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void keep_earliest(std::optional<TimeInterval>& earliest, const TimeInterval& t) noexcept {
+  if (!earliest) {
+    earliest = t;
+    return;
+  }
+  // No root of any pair before the smallest start; some pair has a root by the smallest end.
+  earliest->start = std::min(earliest->start, t.start);
+  earliest->end = std::min(earliest->end, t.end);
+}
+
+}  // namespace
+
+struct MeshCcd::State {
+  State(std::size_t count, std::span<const Triangle> triangles)
+      : vertex_count(count),
+        faces(triangles.begin(), triangles.end()),
+        edges(unique_edges(faces)),
+        broad_phase(vertex_count, faces, edges) {}
+
+  std::size_t vertex_count;
+  std::vector<Triangle> faces;
+  std::vector<Edge> edges;
+  internal::MeshBroadPhase broad_phase;  // views faces and edges: State never moves
+  State(const State&) = delete;
+  State& operator=(const State&) = delete;
+};
+
+MeshCcd::MeshCcd(std::size_t vertex_count, std::span<const Triangle> faces) {
+  if (vertex_count > std::numeric_limits<VertexIndex>::max()) {
+    throw std::invalid_argument("MeshCcd: more than 2^32 - 1 vertices");
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Triangle& t = faces[f];
+    const auto problem = [f](const std::string& what) {
+      return std::invalid_argument("MeshCcd: face " + std::to_string(f) + ": " + what);
+    };
+    for (int i = 0; i < 3; ++i) {
+      if (t[i] >= vertex_count) {
+        throw problem("corner " + std::to_string(t[i]) + " is not a vertex (there are " +
+                      std::to_string(vertex_count) + ")");
+      }
+      if (t[i] == t[(i + 1) % 3]) throw problem("repeated corner " + std::to_string(t[i]));
+    }
+  }
+  state_ = std::make_unique<State>(vertex_count, faces);
+}
+
+MeshCcd::MeshCcd(MeshCcd&&) noexcept = default;
+MeshCcd& MeshCcd::operator=(MeshCcd&&) noexcept = default;
+MeshCcd::~MeshCcd() = default;
+
+std::size_t MeshCcd::vertex_count() const noexcept {
+  return state_->vertex_count;
+}
+std::span<const Triangle> MeshCcd::faces() const noexcept {
+  return state_->faces;
+}
+std::span<const Edge> MeshCcd::edges() const noexcept {
+  return state_->edges;
+}
+
+namespace {
+
+/// A step's frames as the pairs see them, their largest coordinate magnitude, and the
+/// separation in their units.
+struct StepFrames {
+  MeshFrames frames;
+  double largest;
+  double min_separation;
+};
+
+/// `frames`, or both frames scaled to magnitude 1 by one power of two, stored in `unit`,
+/// when they are far from it and the scaling is exact for them and for the separation
+/// (internal/unit_magnitude.hpp).
+StepFrames unit_magnitude_frames(const MeshFrames& frames, double min_separation,
+                                 std::vector<double>& unit) {
+  const double largest = std::max(internal::largest_magnitude(frames.positions_t0),
+                                  internal::largest_magnitude(frames.positions_t1));
+  const StepFrames as_given{frames, largest, min_separation};
+  if (internal::near_unit_magnitude(largest)) return as_given;
+  unit.assign(frames.positions_t0.begin(), frames.positions_t0.end());
+  unit.insert(unit.end(), frames.positions_t1.begin(), frames.positions_t1.end());
+  if (!internal::scale_to_unit_magnitude(unit, largest)) return as_given;
+  int exponent = 0;  // the scaling took largest to its significand in [1/2, 1), exactly
+  const double significand = std::frexp(largest, &exponent);
+  const double separation = internal::PowerOfTwo(-exponent)(min_separation);
+  if (internal::PowerOfTwo(exponent)(separation) != min_separation) return as_given;
+  const std::span<const double> both(unit);
+  return {{both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())},
+          significand,
+          separation};
+}
+
+/// The mesh's earliest root, bracketed to `width`, from every colliding pair's coarse
+/// bracket (result's pairs, in order: vertex-face, then edge-edge). Some pair has a root
+/// by E, the smallest bracket end, so a pair whose bracket starts after E has no root
+/// before E and cannot hold the earliest one: only the others are refined.
+TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeInterval> brackets,
+                             double min_separation, const MeshFrames& frames,
+                             std::span<const Triangle> faces, double width,
+                             const MeshCcdOptions& options) {
+  std::optional<TimeInterval> coarse;
+  for (const TimeInterval& t : brackets)
+    keep_earliest(coarse, t);
+  if (width >= kCoarseWidth) return *coarse;
+  std::vector<std::size_t> open;
+  for (std::size_t i = 0; i < brackets.size(); ++i) {
+    if (brackets[i].start <= coarse->end) open.push_back(i);
+  }
+  Options fine{options.method, width};
+  fine.min_separation = min_separation;
+  std::vector<TimeInterval> refined(open.size());
+  parallel::for_each_block(open.size(), options.threads, [&](std::size_t k) {
+    const std::size_t i = open[k];
+    const Result r =
+        i < result.vertex_face.size()
+            ? vertex_face_ccd(vertex_face_query(frames, faces, result.vertex_face[i]), fine)
+            : edge_edge_ccd(
+                  edge_edge_query(frames, result.edge_edge[i - result.vertex_face.size()]), fine);
+    refined[k] = r.time_of_impact.value_or(brackets[i]);
+  });
+  std::optional<TimeInterval> earliest;
+  for (const TimeInterval& t : refined)
+    keep_earliest(earliest, t);
+  return *earliest;
+}
+
+}  // namespace
+
+MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& options) {
+  State& s = *state_;
+  check_frame(frames.positions_t0, s.vertex_count, "positions_t0");
+  check_frame(frames.positions_t1, s.vertex_count, "positions_t1");
+  if (!is_valid_min_separation(options.min_separation)) {
+    throw std::invalid_argument("MeshCcd::step: min_separation must be finite and >= 0");
+  }
+  if (options.min_separation > 0.0 && options.method != Method::exact) {
+    throw std::invalid_argument("MeshCcd::step: min_separation > 0 needs the exact method");
+  }
+  MeshCcdResult result;
+  const auto broad_start = std::chrono::steady_clock::now();
+  // A step far from magnitude 1 is brought there once for all its pairs, both frames by
+  // one power of two (internal/unit_magnitude.hpp); no answer or time changes.
+  std::vector<double> unit;
+  const StepFrames step_frames = unit_magnitude_frames(frames, options.min_separation, unit);
+  const MeshFrames& scaled = step_frames.frames;
+
+  const internal::MeshCandidates candidates = s.broad_phase.candidates(
+      scaled, step_frames.largest, options.threads, step_frames.min_separation);
+  result.trees_rebuilt = candidates.trees_rebuilt;
+  result.vertex_face_candidates = candidates.vertex_face.size();
+  result.edge_edge_candidates = candidates.edge_edge.size();
+  result.broad_phase_seconds = seconds_since(broad_start);
+
+  // Narrow phase: blocks of candidates, vertex-face first, then edge-edge.
+  const auto narrow_start = std::chrono::steady_clock::now();
+  const std::optional<double> width = options.time_of_impact_width;
+  Options pair_options{options.method,
+                       width ? std::optional(std::max(*width, kCoarseWidth)) : std::nullopt};
+  pair_options.min_separation = step_frames.min_separation;
+  const std::size_t vf_blocks = (candidates.vertex_face.size() + kNarrowBlock - 1) / kNarrowBlock;
+  const std::size_t ee_blocks = (candidates.edge_edge.size() + kNarrowBlock - 1) / kNarrowBlock;
+  std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);
+  parallel::for_each_block(collisions.size(), options.threads, [&](std::size_t b) {
+    BlockCollisions& out = collisions[b];
+    // One bracket per colliding pair, so brackets and pairs stay aligned; a method
+    // without a time of impact brackets the whole step.
+    const auto note = [&](const Result& r) {
+      if (r.collision && width) out.brackets.push_back(r.time_of_impact.value_or(TimeInterval{}));
+      return r.collision;
+    };
+    if (b < vf_blocks) {
+      const std::size_t end = std::min(candidates.vertex_face.size(), (b + 1) * kNarrowBlock);
+      for (std::size_t i = b * kNarrowBlock; i < end; ++i) {
+        const VertexFacePair pair = candidates.vertex_face[i];
+        if (note(vertex_face_ccd(vertex_face_query(scaled, s.faces, pair), pair_options)))
+          out.vertex_face.push_back(pair);
+      }
+      return;
+    }
+    const std::size_t first = (b - vf_blocks) * kNarrowBlock;
+    const std::size_t end = std::min(candidates.edge_edge.size(), first + kNarrowBlock);
+    for (std::size_t i = first; i < end; ++i) {
+      const internal::EdgeIndexPair pair = candidates.edge_edge[i];
+      const EdgeEdgePair edges{s.edges[pair.a], s.edges[pair.b]};
+      if (note(edge_edge_ccd(edge_edge_query(scaled, edges), pair_options)))
+        out.edge_edge.push_back(pair);
+    }
+  });
+  // Blocks of vertex-face candidates come first, so this is the order of the pairs in
+  // result (vertex-face, then edge-edge), which is also the order of the brackets.
+  std::vector<TimeInterval> brackets;
+  for (const BlockCollisions& c : collisions) {
+    result.vertex_face.insert(result.vertex_face.end(), c.vertex_face.begin(), c.vertex_face.end());
+    for (const internal::EdgeIndexPair& pair : c.edge_edge)
+      result.edge_edge.push_back({s.edges[pair.a], s.edges[pair.b]});
+    brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
+  }
+  if (!brackets.empty()) {
+    result.time_of_impact = refine_earliest(result, brackets, step_frames.min_separation, scaled,
+                                            s.faces, *width, options);
+  }
+  std::sort(result.vertex_face.begin(), result.vertex_face.end());
+  std::sort(result.edge_edge.begin(), result.edge_edge.end());
+  result.narrow_phase_seconds = seconds_since(narrow_start);
+  return result;
+}
+
+MeshCcdResult find_collisions(std::span<const Triangle> faces, const MeshFrames& frames,
+                              const MeshCcdOptions& options) {
+  if (frames.positions_t0.size() % 3 != 0) {
+    throw std::invalid_argument("positions_t0 holds " + std::to_string(frames.positions_t0.size()) +
+                                " values, not a multiple of 3");
+  }
+  return MeshCcd(frames.positions_t0.size() / 3, faces).step(frames, options);
+}
+
+VertexFaceQuery vertex_face_query(const MeshFrames& frames, std::span<const Triangle> faces,
+                                  VertexFacePair pair) noexcept {
+  const Triangle& f = faces[pair.face];
+  const auto& t0 = frames.positions_t0;
+  const auto& t1 = frames.positions_t1;
+  return {position(t0, pair.vertex), position(t0, f[0]), position(t0, f[1]), position(t0, f[2]),
+          position(t1, pair.vertex), position(t1, f[0]), position(t1, f[1]), position(t1, f[2])};
+}
+
+EdgeEdgeQuery edge_edge_query(const MeshFrames& frames, const EdgeEdgePair& pair) noexcept {
+  const auto& t0 = frames.positions_t0;
+  const auto& t1 = frames.positions_t1;
+  return {position(t0, pair.a[0]), position(t0, pair.a[1]), position(t0, pair.b[0]),
+          position(t0, pair.b[1]), position(t1, pair.a[0]), position(t1, pair.a[1]),
+          position(t1, pair.b[0]), position(t1, pair.b[1])};
+}
+
+}  // namespace exactgeo::ccd

@@ -1,0 +1,266 @@
+#include "exactgeo/ccd/separation/internal/exact_roots.hpp"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <vector>
+
+#include "exactgeo/ccd/separation/internal/real_roots.hpp"
+#include "exactgeo/ccd/separation/internal/features.hpp"
+
+namespace exactgeo::ccd::internal {
+
+namespace {
+
+RationalPolynomial power_form(const Homogeneous<mpq_class>& p) {
+  return RationalPolynomial::from_homogeneous(
+      std::vector<mpq_class>(p.c.begin(), p.c.begin() + p.degree + 1));
+}
+
+/// A feature's polynomials in the power basis of the step's time.
+struct ExactFeature {
+  RationalPolynomial gap;
+  RationalPolynomial weight;
+  std::vector<RationalPolynomial> inside;
+
+  explicit ExactFeature(const Feature<mpq_class>& f)
+      : gap(power_form(f.gap)), weight(power_form(f.weight)) {
+    for (int i = 0; i < f.inside_count; ++i)
+      inside.push_back(power_form(f.inside[i]));
+  }
+};
+
+bool holds_at_end(const Feature<mpq_class>& f, bool end) {
+  auto sign = [end](const Homogeneous<mpq_class>& p) {
+    return sgn(end ? p.at_end() : p.at_start());
+  };
+  if (sign(f.gap) > 0 || sign(f.weight) <= 0) return false;
+  for (int i = 0; i < f.inside_count; ++i) {
+    if (sign(f.inside[i]) < 0) return false;
+  }
+  return true;
+}
+
+/// The weight and inside conditions at a root of the squarefree `p`.
+bool inside_at_root(const ExactFeature& f, const RationalPolynomial& p, const IsolatedRoot& root) {
+  if (sign_at_root(f.weight, p, root) != Sign::positive) return false;
+  for (const RationalPolynomial& q : f.inside) {
+    if (sign_at_root(q, p, root) == Sign::negative) return false;
+  }
+  return true;
+}
+
+bool inside_at(const ExactFeature& f, const mpq_class& t) {
+  if (f.weight.sign_at(t) != Sign::positive) return false;
+  for (const RationalPolynomial& q : f.inside) {
+    if (q.sign_at(t) == Sign::negative) return false;
+  }
+  return true;
+}
+
+/// A rational strictly between the roots r < s of the squarefree p (either may be an
+/// exact sentinel such as 0 or 1).
+mpq_class point_between(IsolatedRoot r, IsolatedRoot s, const RationalPolynomial& p) {
+  for (;;) {
+    const mpq_class upper = r.exact ? *r.exact : r.hi;
+    const mpq_class lower = s.exact ? *s.exact : s.lo;
+    if (upper < lower) return (upper + lower) / 2;
+    if (!r.exact) {
+      internal::halve_isolating_interval(p, r);
+    } else {
+      internal::halve_isolating_interval(p, s);
+    }
+  }
+}
+
+/// A time within δ: a root of the squarefree `p`, or an exact rational (p unused).
+struct WithinTime {
+  IsolatedRoot root;
+  RationalPolynomial p;
+};
+
+WithinTime at_rational(const mpq_class& t) {
+  return {{t, t, t}, {}};
+}
+
+/// a < b, for two times each isolated against its own polynomial. Equal roots of two
+/// polynomials are roots of their gcd, which divides both and so has at most one root in
+/// the overlap of the two isolating intervals (whose ends are roots of neither).
+bool earlier(WithinTime a, WithinTime b) {
+  for (;;) {
+    const mpq_class a_hi = a.root.exact ? *a.root.exact : a.root.hi;
+    const mpq_class b_lo = b.root.exact ? *b.root.exact : b.root.lo;
+    if (a_hi < b_lo) return true;
+    const mpq_class a_lo = a.root.exact ? *a.root.exact : a.root.lo;
+    const mpq_class b_hi = b.root.exact ? *b.root.exact : b.root.hi;
+    if (b_hi < a_lo) return false;
+    if (a.root.exact && b.root.exact) return false;  // equal
+    if (a.root.exact) {
+      if (b.p.sign_at(*a.root.exact) == Sign::zero) return false;  // b's only root there
+    } else if (b.root.exact) {
+      if (a.p.sign_at(*b.root.exact) == Sign::zero) return false;
+    } else {
+      const RationalPolynomial g = gcd(a.p, b.p);
+      const mpq_class lo = std::max(a_lo, b_lo), hi = std::min(a_hi, b_hi);
+      if (g.degree() >= 1 && lo < hi && g.sign_at(lo) != g.sign_at(hi)) return false;
+    }
+    if (!a.root.exact) halve_isolating_interval(a.p, a.root);
+    if (!b.root.exact) halve_isolating_interval(b.p, b.root);
+  }
+}
+
+/// The feature's earliest time in (0, 1) with its conditions, gap aside (it vanishes
+/// identically): tested at every root and between every two roots of the product of its
+/// polynomials, in time order.
+std::optional<WithinTime> earliest_inside(const ExactFeature& f) {
+  if (f.weight.is_zero()) return std::nullopt;
+  RationalPolynomial product = f.weight;
+  for (const RationalPolynomial& q : f.inside) {
+    if (!q.is_zero()) product = product * q;
+  }
+  const RationalPolynomial p = squarefree_part(product);
+  std::vector<IsolatedRoot> samples{{mpq_class(0), 0, 0}};
+  for (const IsolatedRoot& r : roots_between(p, 0, 1))
+    samples.push_back(r);
+  samples.push_back({mpq_class(1), 1, 1});
+  for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
+    if (i > 0 && inside_at_root(f, p, samples[i])) return WithinTime{samples[i], p};
+    const mpq_class between = point_between(samples[i], samples[i + 1], p);
+    if (inside_at(f, between)) return at_rational(between);
+  }
+  return std::nullopt;
+}
+
+/// A rational in (lo, hi) that is not a root of p (one of a few tries: p has few roots).
+mpq_class split_point(const RationalPolynomial& p, const mpq_class& lo, const mpq_class& hi) {
+  for (int k = 2;; ++k) {
+    const mpq_class m = lo + (hi - lo) / k;
+    if (p.sign_at(m) != Sign::zero) return m;
+  }
+}
+
+/// The gap's roots in (lo, hi) (not roots themselves) with the feature's other conditions:
+/// a cluster of roots is settled whole when its Tarski queries agree (none with weight > 0,
+/// or one inside polynomial negative at every root; or every condition strict at every
+/// root), and split otherwise. With `earliest` the first such root, isolated; without,
+/// some such root (its interval then need not isolate it).
+std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolynomial& p,
+                                      const TarskiQueries& queries, const mpq_class& lo,
+                                      const mpq_class& hi, bool earliest) {
+  const int n = queries.count(lo, hi);
+  if (n == 0) return std::nullopt;
+  const int weight = queries.query(0, lo, hi);  // the weight is never negative
+  if (weight == 0) return std::nullopt;
+  bool all_strict = weight == n;
+  bool single_holds = weight == 1;
+  for (std::size_t i = 0; i < f.inside.size(); ++i) {
+    const int q = queries.query(i + 1, lo, hi);
+    if (q == -n) return std::nullopt;
+    all_strict = all_strict && q == n;
+    single_holds = single_holds && q >= 0;
+  }
+  if (n == 1) {
+    if (!single_holds) return std::nullopt;
+    return WithinTime{{std::nullopt, lo, hi}, p};
+  }
+  if (all_strict) {
+    if (!earliest) return WithinTime{{std::nullopt, lo, hi}, p};
+    return WithinTime{roots_between(p, lo, hi).front(), p};
+  }
+  const mpq_class m = split_point(p, lo, hi);
+  if (auto left = gap_root_in(f, p, queries, lo, m, earliest)) return left;
+  return gap_root_in(f, p, queries, m, hi, earliest);
+}
+
+/// The feature's earliest root of its gap in (0, 1) with its other conditions.
+std::optional<WithinTime> earliest_root(const ExactFeature& f, bool earliest) {
+  RationalPolynomial p = squarefree_part(f.gap);
+  // Roots at the step's ends are not inside it: divide them out (p is squarefree).
+  if (p.sign_at(0) == Sign::zero) p = p / RationalPolynomial({mpq_class(0), mpq_class(1)});
+  if (p.sign_at(1) == Sign::zero) p = p / RationalPolynomial({mpq_class(-1), mpq_class(1)});
+  if (p.degree() < 1) return std::nullopt;
+  std::vector<RationalPolynomial> conditions{f.weight};
+  conditions.insert(conditions.end(), f.inside.begin(), f.inside.end());
+  return gap_root_in(f, p, TarskiQueries(p, conditions), 0, 1, earliest);
+}
+
+/// The earliest time within δ (with `earliest` false: some time within δ), or nullopt.
+/// Among the candidates, each a time within δ, is the earliest one t*: 0 or 1 if they
+/// are within; otherwise t* is attained by the feature holding the closest point, whose
+/// conditions hold at t* (its weight positive), so it is that feature's earliest gap root
+/// or, when its gap vanishes identically, its earliest sample.
+template <class FeaturesOf>
+std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std::size_t count,
+                                         FeaturesOf feature_of, bool earliest) {
+  std::array<Moving<mpq_class>, 4> m;
+  for (int k = 0; k < 4; ++k) {
+    for (int axis = 0; axis < 3; ++axis) {
+      m[k][axis] = Homogeneous<mpq_class>::linear(mpq_class(x[k][axis]), mpq_class(x[k + 4][axis]));
+    }
+  }
+  const mpq_class delta2 = mpq_class(delta) * mpq_class(delta);
+  std::vector<Feature<mpq_class>> features;
+  for (std::size_t i = 0; i < count; ++i)
+    features.push_back(feature_of(i, m, delta2));
+  for (const Feature<mpq_class>& f : features) {
+    if (holds_at_end(f, false)) return at_rational(0);
+  }
+  std::optional<WithinTime> best;
+  for (const Feature<mpq_class>& g : features) {
+    const ExactFeature f(g);
+    const auto t = f.gap.is_zero() ? earliest_inside(f) : earliest_root(f, earliest);
+    if (t && !earliest) return t;
+    if (t && (!best || earlier(*t, *best))) best = t;
+  }
+  if (best) return best;
+  for (const Feature<mpq_class>& f : features) {
+    if (holds_at_end(f, true)) return at_rational(1);
+  }
+  return std::nullopt;
+}
+
+/// A bracket of doubles around the time, of width at most `width` where doubles allow:
+/// the isolating interval halved until narrow enough, or until its ends would not be
+/// doubles; then its ends rounded outward.
+TimeInterval bracket_of(WithinTime t, double width) {
+  auto is_double = [](const mpq_class& q) { return mpq_class(q.get_d()) == q; };
+  while (!t.root.exact && t.root.hi - t.root.lo > mpq_class(width)) {
+    IsolatedRoot narrower = t.root;
+    halve_isolating_interval(t.p, narrower);
+    const bool doubles = narrower.exact ? is_double(*narrower.exact)
+                                        : is_double(narrower.lo) && is_double(narrower.hi);
+    if (!doubles) break;
+    t.root = narrower;
+  }
+  const mpq_class lo = t.root.exact ? *t.root.exact : t.root.lo;
+  const mpq_class hi = t.root.exact ? *t.root.exact : t.root.hi;
+  const double start = lo.get_d();  // truncated toward zero: at most lo (lo >= 0)
+  double end = hi.get_d();
+  if (mpq_class(end) < hi) end = std::nextafter(end, 2.0);
+  return {start, end};
+}
+
+}  // namespace
+
+ExactSeparation exact_separation(const QueryPoints& x, bool vertex_face, double delta,
+                                 std::optional<double> width) {
+  const auto t = vertex_face ? exactly_within(
+                                   x, delta, kVertexFaceFeatures,
+                                   [](std::size_t i, const auto& m, const mpq_class& d2) {
+                                     return vertex_face_feature(i, m, d2);
+                                   },
+                                   width.has_value())
+                             : exactly_within(
+                                   x, delta, kEdgeEdgeFeatures,
+                                   [](std::size_t i, const auto& m, const mpq_class& d2) {
+                                     return edge_edge_feature(i, m, d2);
+                                   },
+                                   width.has_value());
+  if (!t) return {false, std::nullopt};
+  return {true, width ? std::optional<TimeInterval>(bracket_of(*t, *width)) : std::nullopt};
+}
+
+}  // namespace exactgeo::ccd::internal
