@@ -198,8 +198,8 @@ std::vector<std::array<std::uint32_t, 3>> sorted_pairs(const Candidates& c) {
   return pairs;
 }
 
-BroadPhaseComparison compare_broad_phases(const ccd::MeshCcd& mesh, const ccd::MeshFrames& first,
-                                          const ccd::MeshFrames& next, unsigned threads,
+BroadPhaseComparison compare_broad_phases(const ccd::MeshCcd& mesh, const ccd::StepPositions& first,
+                                          const ccd::StepPositions& next, unsigned threads,
                                           int repeat) {
   BroadPhaseComparison c;
   ccd::internal::MeshBroadPhase library(mesh.vertex_count(), mesh.faces(), mesh.edges());
@@ -207,9 +207,8 @@ BroadPhaseComparison compare_broad_phases(const ccd::MeshCcd& mesh, const ccd::M
   // The library's broad phase is handed the step's largest magnitude, which MeshCcd::step
   // has from its magnitude check; here it is found inside the timed region, as the
   // baseline finds it.
-  const auto largest = [](const ccd::MeshFrames& f) {
-    return std::max(ccd::internal::largest_magnitude(f.positions_t0),
-                    ccd::internal::largest_magnitude(f.positions_t1));
+  const auto largest = [](const ccd::StepPositions& f) {
+    return std::max(ccd::internal::largest_magnitude(f.t0), ccd::internal::largest_magnitude(f.t1));
   };
   library.candidates(first, largest(first), threads);
   baseline.candidates(first, threads);  // its standing trees, as a MeshCcd would keep them
@@ -286,7 +285,7 @@ int main(int argc, char** argv) {
     random_motion(frames, motion, standing, seed);
   }
 
-  const ccd::MeshFrames view{frames.t0, frames.t1};
+  const ccd::StepPositions view{frames.t0, frames.t1};
   const ccd::MeshCcdOptions options{method, std::nullopt, threads};
   ccd::MeshCcdResult best, second;
   double best_total = INFINITY;
@@ -308,7 +307,7 @@ int main(int argc, char** argv) {
   }
   const BroadPhaseComparison broad =
       compare_broad_phases(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), view,
-                           ccd::MeshFrames{following.t0, following.t1}, threads, repeat);
+                           ccd::StepPositions{following.t0, following.t1}, threads, repeat);
 
   std::optional<StructureComparison> structures;
   if (compare)

@@ -36,10 +36,10 @@ namespace {
 /// Every stage, in the order of the reports. The tallies index by a stage's value: one
 /// slot for each.
 constexpr std::array kStages{
-    ccd::Stage::culled,      ccd::Stage::parity,           ccd::Stage::polynomials,
-    ccd::Stage::subdivision, ccd::Stage::depth_limit,      ccd::Stage::cubic,
-    ccd::Stage::separation,  ccd::Stage::separation_roots, ccd::Stage::box_test};
-static_assert(static_cast<std::size_t>(ccd::Stage::box_test) + 1 == kStages.size());
+    ccd::DecidedBy::culled,      ccd::DecidedBy::parity,           ccd::DecidedBy::polynomials,
+    ccd::DecidedBy::subdivision, ccd::DecidedBy::depth_limit,      ccd::DecidedBy::cubic,
+    ccd::DecidedBy::separation,  ccd::DecidedBy::separation_roots, ccd::DecidedBy::box_test};
+static_assert(static_cast<std::size_t>(ccd::DecidedBy::box_test) + 1 == kStages.size());
 
 /// Counts for one query type, or for all.
 struct Tally {
@@ -174,7 +174,7 @@ void write_query_times(std::ostream& out, const RunResults& run, std::optional<Q
   }
   out << ", \"query_ns\": {\"all\": ";
   write_distribution(out, std::move(all));
-  for (const ccd::Stage stage : kStages) {
+  for (const ccd::DecidedBy stage : kStages) {
     std::vector<double>& ns = by_stage[static_cast<std::size_t>(stage)];
     if (ns.empty()) continue;
     out << ", " << json_string(ccd::to_string(stage)) << ": ";

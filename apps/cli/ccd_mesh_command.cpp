@@ -108,7 +108,7 @@ std::vector<ccd::Triangle> triangles_of(const mesh::Mesh& mesh) {
   return triangles;
 }
 
-/// x, y, z of vertex 0, then of vertex 1, ... (MeshFrames' layout).
+/// x, y, z of vertex 0, then of vertex 1, ... (StepPositions' layout).
 std::vector<double> flat_positions(const std::vector<Point3>& vertices) {
   std::vector<double> flat;
   flat.reserve(3 * vertices.size());

@@ -46,12 +46,12 @@ struct Displacements {
   std::vector<Vector3> d;
   std::vector<std::uint8_t> exact;
 
-  explicit Displacements(const MeshFrames& frames) {
-    const std::size_t n = frames.positions_t0.size() / 3;
+  explicit Displacements(const StepPositions& frames) {
+    const std::size_t n = frames.t0.size() / 3;
     d.resize(n);
     exact.assign(n, 1);
     for (std::size_t i = 0; i < 3 * n; ++i) {
-      const auto diff = exactgeo::kernel::two_diff(frames.positions_t1[i], frames.positions_t0[i]);
+      const auto diff = exactgeo::kernel::two_diff(frames.t1[i], frames.t0[i]);
       d[i / 3][i % 3] = diff.head;
       if (diff.tail != 0.0 || !std::isfinite(diff.head)) exact[i / 3] = 0;
     }
@@ -82,12 +82,12 @@ struct Displacements {
 template <std::size_t N>
 Boxes boxes_of(std::span<const std::array<VertexIndex, N>> primitives,
                const std::vector<std::uint8_t>& moving_vertex, bool moving,
-               const MeshFrames& frames, const StepScale& scale) {
+               const StepPositions& frames, const StepScale& scale) {
   Boxes boxes;
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     if (any_moves(primitives[i], moving_vertex) != moving) continue;
-    boxes.push_back(swept_box(primitives[i], static_cast<std::uint32_t>(i),
-                              frames.positions_t0.data(), frames.positions_t1.data(), scale));
+    boxes.push_back(swept_box(primitives[i], static_cast<std::uint32_t>(i), frames.t0.data(),
+                              frames.t1.data(), scale));
   }
   return boxes;
 }
@@ -102,20 +102,20 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
 }
 
 bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
-                                        const MeshFrames& frames, const StepScale& scale) const {
+                                        const StepPositions& frames, const StepScale& scale) const {
   if (!standing_valid_ || moving != moving_ || scale.exponent() != standing_scale_.exponent())
     return false;
   for (std::size_t i = 0; i < 3 * vertex_count_; ++i) {
-    if (moving_[i / 3] == 0 && frames.positions_t0[i] != standing_positions_[i]) return false;
+    if (moving_[i / 3] == 0 && frames.t0[i] != standing_positions_[i]) return false;
   }
   return true;
 }
 
-void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames,
+void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const StepPositions& frames,
                                       const StepScale& scale) {
   moving_ = std::move(moving);
   standing_scale_ = scale;
-  standing_positions_.assign(frames.positions_t0.begin(), frames.positions_t0.end());
+  standing_positions_.assign(frames.t0.begin(), frames.t0.end());
   standing_vertices_ = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_),
                                         moving_, false, frames, scale));
   standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames, scale));
@@ -123,12 +123,11 @@ void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const Me
   standing_valid_ = true;
 }
 
-MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, unsigned threads) {
+MeshCandidates MeshBroadPhase::candidates(const StepPositions& frames, unsigned threads) {
   MeshCandidates result;
   const Displacements motion(frames);
   const std::vector<std::uint8_t> moving = motion.moving();
-  const StepScale scale(
-      std::max(largest_magnitude(frames.positions_t0), largest_magnitude(frames.positions_t1)));
+  const StepScale scale(std::max(largest_magnitude(frames.t0), largest_magnitude(frames.t1)));
   if (!standing_unchanged(moving, frames, scale)) {
     rebuild_standing(moving, frames, scale);
     result.standing_rebuilt = true;

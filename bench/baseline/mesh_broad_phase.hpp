@@ -41,14 +41,14 @@ class MeshBroadPhase {
 
   /// Every candidate pair of the step, in an order that depends only on the input.
   /// Precondition: frames hold 3 * vertex_count finite values each.
-  MeshCandidates candidates(const MeshFrames& frames, unsigned threads);
+  MeshCandidates candidates(const StepPositions& frames, unsigned threads);
 
  private:
   using Boxes = std::vector<SweptBox>;
 
-  bool standing_unchanged(const std::vector<std::uint8_t>& moving, const MeshFrames& frames,
+  bool standing_unchanged(const std::vector<std::uint8_t>& moving, const StepPositions& frames,
                           const StepScale& scale) const;
-  void rebuild_standing(std::vector<std::uint8_t> moving, const MeshFrames& frames,
+  void rebuild_standing(std::vector<std::uint8_t> moving, const StepPositions& frames,
                         const StepScale& scale);
 
   std::size_t vertex_count_;

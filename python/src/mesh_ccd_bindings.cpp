@@ -104,7 +104,7 @@ StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object
 
   ccd::MeshCcdResult result;
   {
-    const ccd::MeshFrames frames{{x0.data(), 3 * n}, {x1.data(), 3 * n}};
+    const ccd::StepPositions frames{{x0.data(), 3 * n}, {x1.data(), 3 * n}};
     py::gil_scoped_release release;
     const std::lock_guard lock(object.stepping);
     result = object.ccd.step(frames, options);

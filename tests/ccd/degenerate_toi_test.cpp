@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <string>
 
-#include "ccd/separation/min_separation_oracle.hpp"
 #include "ccd/query_transforms.hpp"
+#include "ccd/separation/min_separation_oracle.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
@@ -151,7 +151,7 @@ void expect_bracketed(const Query& q, double delta, const std::string& what, Tal
         what + numbers + ", decided by " + std::string(to_string(r.decided_by));
     ASSERT_EQ(r.collision, truth.within) << where;
     if (!r.collision) continue;
-    EXPECT_NE(r.decided_by, Stage::depth_limit) << where;
+    EXPECT_NE(r.decided_by, DecidedBy::depth_limit) << where;
     ASSERT_TRUE(r.time_of_impact.has_value()) << where;
     const TimeInterval t = *r.time_of_impact;
     EXPECT_LE(mpq_class(t.start), truth.earliest_lo) << where << std::hexfloat << ": " << t.start;

@@ -75,17 +75,17 @@ TEST(ExactCcdData, BundledDataHasNoErrorsAndSeesWhatParityMisses) {
     const Result r = on_query(d, [](const auto& q) { return exact(q); });
     const RootParity p = on_query(d, [](const auto& q) { return parity(q); });
     ASSERT_EQ(r.collision, *d.record.truth) << d.where;
-    ASSERT_NE(r.decided_by, Stage::depth_limit) << d.where;
+    ASSERT_NE(r.decided_by, DecidedBy::depth_limit) << d.where;
     if (p != RootParity::even) {
       ASSERT_TRUE(r.collision) << d.where;  // exact never contradicts parity
     } else if (r.collision) {
       // Parity missed it: an even number of interior roots, found by splitting time
       // (pieces, or polynomials alone).
-      ASSERT_TRUE(r.decided_by == Stage::subdivision || r.decided_by == Stage::polynomials)
+      ASSERT_TRUE(r.decided_by == DecidedBy::subdivision || r.decided_by == DecidedBy::polynomials)
           << d.where;
       ++two_root_cases;
     }
-    subdivided += r.decided_by == Stage::subdivision || r.decided_by == Stage::polynomials;
+    subdivided += r.decided_by == DecidedBy::subdivision || r.decided_by == DecidedBy::polynomials;
     ++queries;
   }
   std::printf("[ info     ] %d bundled queries, %d two-root collisions, %d decided by splitting\n",
@@ -274,7 +274,7 @@ TEST(ExactCcd, DepthLimitIsHonouredExactly) {
     const Result r = exact(q, o);
     ASSERT_TRUE(r.collision) << "max_depth " << limit;
     EXPECT_EQ(r.depth, limit) << "max_depth " << limit;
-    EXPECT_EQ(r.decided_by, Stage::parity) << "max_depth " << limit;  // a root, proven
+    EXPECT_EQ(r.decided_by, DecidedBy::parity) << "max_depth " << limit;  // a root, proven
     ASSERT_TRUE(r.time_of_impact.has_value());
     EXPECT_EQ(r.time_of_impact->end - r.time_of_impact->start, std::ldexp(1.0, -limit))
         << "max_depth " << limit;
@@ -296,7 +296,7 @@ TEST(ExactCcd, DepthLimitZeroOnTwoRootCasesIsConservative) {
     o.max_depth = 0;
     const Result r = on_query(d, [&](const auto& q) { return exact(q, o); });
     ASSERT_TRUE(r.collision) << d.where;
-    EXPECT_EQ(r.decided_by, Stage::depth_limit) << d.where;
+    EXPECT_EQ(r.decided_by, DecidedBy::depth_limit) << d.where;
     EXPECT_EQ(r.depth, 0) << d.where;
     ASSERT_TRUE(r.time_of_impact.has_value()) << d.where;
     EXPECT_EQ(r.time_of_impact->start, 0.0) << d.where;
@@ -321,7 +321,7 @@ TEST(ExactCcdData, FullSharedSetsHaveNoErrors) {
   int queries = 0, false_positives = 0, false_negatives = 0;
   for (const DataQuery& d : queries_under(root)) {
     const Result result = on_query(d, [](const auto& q) { return exact(q); });
-    ASSERT_NE(result.decided_by, Stage::depth_limit) << d.where;  // every answer proven
+    ASSERT_NE(result.decided_by, DecidedBy::depth_limit) << d.where;  // every answer proven
     const bool r = result.collision;
     false_positives += r && !*d.record.truth;
     false_negatives += !r && *d.record.truth;

@@ -4,8 +4,8 @@
 
 #include "exactgeo/ccd/root_parity.hpp"
 
-#include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/baselines/cubic.hpp"
+#include "exactgeo/ccd/ccd.hpp"
 
 #include <gtest/gtest.h>
 
@@ -292,9 +292,9 @@ TEST(RootParity, ParityMethodAnswersAsRootParity) {
     const Result re = edge_edge_ccd(e, parity);
     ASSERT_EQ(re.collision, edge_edge_root_parity(e).collision()) << "edge-edge case " << i;
     for (const Result& r : {rv, re}) {
-      culled += r.decided_by == Stage::culled;
-      counted += r.decided_by == Stage::parity;
-      if (r.decided_by == Stage::culled) {
+      culled += r.decided_by == DecidedBy::culled;
+      counted += r.decided_by == DecidedBy::parity;
+      if (r.decided_by == DecidedBy::culled) {
         ASSERT_FALSE(r.collision);
       }
     }

@@ -36,16 +36,16 @@ std::uint32_t motion_digest(const Vector3& d) noexcept {
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
-VertexSweep sweep_of(const MeshFrames& frames, double largest, double min_separation,
+VertexSweep sweep_of(const StepPositions& positions, double largest, double min_separation,
                      unsigned threads) {
-  const std::size_t n = frames.positions_t0.size() / 3;
+  const std::size_t n = positions.t0.size() / 3;
   VertexSweep s;
   s.box.resize(n);
   s.displacement.resize(n);
   s.moving.resize(n);
   s.motion.resize(n);
-  const double* t0 = frames.positions_t0.data();
-  const double* t1 = frames.positions_t1.data();
+  const double* t0 = positions.t0.data();
+  const double* t1 = positions.t1.data();
   const StepScale scale(largest);
   // Each box grows by half the separation δ: two primitives within δ of each other have
   // boxes within δ on every axis (a distance bounds each coordinate difference), so grown
@@ -127,10 +127,10 @@ bool MeshBroadPhase::fit_trees(const VertexSweep& sweep, unsigned threads) {
   return built[0] || built[1] || built[2];
 }
 
-MeshCandidates MeshBroadPhase::candidates(const MeshFrames& frames, double largest,
+MeshCandidates MeshBroadPhase::candidates(const StepPositions& positions, double largest,
                                           unsigned threads, double min_separation) {
   MeshCandidates result;
-  const VertexSweep sweep = sweep_of(frames, largest, min_separation, threads);
+  const VertexSweep sweep = sweep_of(positions, largest, min_separation, threads);
   result.trees_rebuilt = fit_trees(sweep, threads);
 
   // Both walks split into node pairs, vertex-face first; each pair's candidates in its

@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 
 namespace exactgeo::ccd {
@@ -30,7 +30,8 @@ constexpr double kCoarseWidth = 1.0 / 64;
 
 constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
 
-void check_frame(std::span<const double> positions, std::size_t vertex_count, const char* name) {
+void check_positions(std::span<const double> positions, std::size_t vertex_count,
+                     const char* name) {
   if (positions.size() != 3 * vertex_count) {
     std::string message(name);
     message.append(" holds ").append(std::to_string(positions.size())).append(" values; ");
@@ -134,32 +135,32 @@ std::span<const Edge> MeshCcd::edges() const noexcept {
 
 namespace {
 
-/// A step's frames as the pairs see them, their largest coordinate magnitude, and the
+/// A step's positions as the pairs see them, their largest coordinate magnitude, and the
 /// separation in their units.
-struct StepFrames {
-  MeshFrames frames;
+struct ScaledStep {
+  StepPositions positions;
   double largest;
   double min_separation;
 };
 
-/// `frames`, or both frames scaled to magnitude 1 by one power of two, stored in `unit`,
+/// `positions`, or both ends scaled to magnitude 1 by one power of two, stored in `unit`,
 /// when they are far from it and the scaling is exact for them and for the separation
 /// (internal/unit_magnitude.hpp).
-StepFrames unit_magnitude_frames(const MeshFrames& frames, double min_separation,
-                                 std::vector<double>& unit) {
-  const double largest = std::max(internal::largest_magnitude(frames.positions_t0),
-                                  internal::largest_magnitude(frames.positions_t1));
-  const StepFrames as_given{frames, largest, min_separation};
+ScaledStep at_unit_magnitude(const StepPositions& positions, double min_separation,
+                             std::vector<double>& unit) {
+  const double largest = std::max(internal::largest_magnitude(positions.t0),
+                                  internal::largest_magnitude(positions.t1));
+  const ScaledStep as_given{positions, largest, min_separation};
   if (internal::near_unit_magnitude(largest)) return as_given;
-  unit.assign(frames.positions_t0.begin(), frames.positions_t0.end());
-  unit.insert(unit.end(), frames.positions_t1.begin(), frames.positions_t1.end());
+  unit.assign(positions.t0.begin(), positions.t0.end());
+  unit.insert(unit.end(), positions.t1.begin(), positions.t1.end());
   if (!internal::scale_to_unit_magnitude(unit, largest)) return as_given;
   int exponent = 0;  // the scaling took largest to its significand in [1/2, 1), exactly
   const double significand = std::frexp(largest, &exponent);
   const double separation = internal::PowerOfTwo(-exponent)(min_separation);
   if (internal::PowerOfTwo(exponent)(separation) != min_separation) return as_given;
   const std::span<const double> both(unit);
-  return {{both.first(frames.positions_t0.size()), both.subspan(frames.positions_t0.size())},
+  return {{both.first(positions.t0.size()), both.subspan(positions.t0.size())},
           significand,
           separation};
 }
@@ -169,7 +170,7 @@ StepFrames unit_magnitude_frames(const MeshFrames& frames, double min_separation
 /// by E, the smallest bracket end, so a pair whose bracket starts after E has no root
 /// before E and cannot hold the earliest one: only the others are refined.
 TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeInterval> brackets,
-                             double min_separation, const MeshFrames& frames,
+                             double min_separation, const StepPositions& positions,
                              std::span<const Triangle> faces, double width,
                              const MeshCcdOptions& options) {
   std::optional<TimeInterval> coarse;
@@ -187,9 +188,10 @@ TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeIn
     const std::size_t i = open[k];
     const Result r =
         i < result.vertex_face.size()
-            ? vertex_face_ccd(vertex_face_query(frames, faces, result.vertex_face[i]), fine)
+            ? vertex_face_ccd(vertex_face_query(positions, faces, result.vertex_face[i]), fine)
             : edge_edge_ccd(
-                  edge_edge_query(frames, result.edge_edge[i - result.vertex_face.size()]), fine);
+                  edge_edge_query(positions, result.edge_edge[i - result.vertex_face.size()]),
+                  fine);
     refined[k] = r.time_of_impact.value_or(brackets[i]);
   });
   std::optional<TimeInterval> earliest;
@@ -200,10 +202,10 @@ TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeIn
 
 }  // namespace
 
-MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& options) {
+MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions& options) {
   State& s = *state_;
-  check_frame(frames.positions_t0, s.vertex_count, "positions_t0");
-  check_frame(frames.positions_t1, s.vertex_count, "positions_t1");
+  check_positions(positions.t0, s.vertex_count, "positions.t0");
+  check_positions(positions.t1, s.vertex_count, "positions.t1");
   if (!is_valid_min_separation(options.min_separation)) {
     throw std::invalid_argument("MeshCcd::step: min_separation must be finite and >= 0");
   }
@@ -212,14 +214,14 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   }
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
-  // A step far from magnitude 1 is brought there once for all its pairs, both frames by
+  // A step far from magnitude 1 is brought there once for all its pairs, both ends by
   // one power of two (internal/unit_magnitude.hpp); no answer or time changes.
   std::vector<double> unit;
-  const StepFrames step_frames = unit_magnitude_frames(frames, options.min_separation, unit);
-  const MeshFrames& scaled = step_frames.frames;
+  const ScaledStep scaled_step = at_unit_magnitude(positions, options.min_separation, unit);
+  const StepPositions& scaled = scaled_step.positions;
 
   const internal::MeshCandidates candidates = s.broad_phase.candidates(
-      scaled, step_frames.largest, options.threads, step_frames.min_separation);
+      scaled, scaled_step.largest, options.threads, scaled_step.min_separation);
   result.trees_rebuilt = candidates.trees_rebuilt;
   result.vertex_face_candidates = candidates.vertex_face.size();
   result.edge_edge_candidates = candidates.edge_edge.size();
@@ -230,7 +232,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   const std::optional<double> width = options.time_of_impact_width;
   Options pair_options{options.method,
                        width ? std::optional(std::max(*width, kCoarseWidth)) : std::nullopt};
-  pair_options.min_separation = step_frames.min_separation;
+  pair_options.min_separation = scaled_step.min_separation;
   const std::size_t vf_blocks = (candidates.vertex_face.size() + kNarrowBlock - 1) / kNarrowBlock;
   const std::size_t ee_blocks = (candidates.edge_edge.size() + kNarrowBlock - 1) / kNarrowBlock;
   std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);
@@ -270,7 +272,7 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
     brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
   }
   if (!brackets.empty()) {
-    result.time_of_impact = refine_earliest(result, brackets, step_frames.min_separation, scaled,
+    result.time_of_impact = refine_earliest(result, brackets, scaled_step.min_separation, scaled,
                                             s.faces, *width, options);
   }
   std::sort(result.vertex_face.begin(), result.vertex_face.end());
@@ -279,27 +281,27 @@ MeshCcdResult MeshCcd::step(const MeshFrames& frames, const MeshCcdOptions& opti
   return result;
 }
 
-MeshCcdResult find_collisions(std::span<const Triangle> faces, const MeshFrames& frames,
+MeshCcdResult find_collisions(std::span<const Triangle> faces, const StepPositions& positions,
                               const MeshCcdOptions& options) {
-  if (frames.positions_t0.size() % 3 != 0) {
-    throw std::invalid_argument("positions_t0 holds " + std::to_string(frames.positions_t0.size()) +
+  if (positions.t0.size() % 3 != 0) {
+    throw std::invalid_argument("positions.t0 holds " + std::to_string(positions.t0.size()) +
                                 " values, not a multiple of 3");
   }
-  return MeshCcd(frames.positions_t0.size() / 3, faces).step(frames, options);
+  return MeshCcd(positions.t0.size() / 3, faces).step(positions, options);
 }
 
-VertexFaceQuery vertex_face_query(const MeshFrames& frames, std::span<const Triangle> faces,
+VertexFaceQuery vertex_face_query(const StepPositions& positions, std::span<const Triangle> faces,
                                   VertexFacePair pair) noexcept {
   const Triangle& f = faces[pair.face];
-  const auto& t0 = frames.positions_t0;
-  const auto& t1 = frames.positions_t1;
+  const auto& t0 = positions.t0;
+  const auto& t1 = positions.t1;
   return {position(t0, pair.vertex), position(t0, f[0]), position(t0, f[1]), position(t0, f[2]),
           position(t1, pair.vertex), position(t1, f[0]), position(t1, f[1]), position(t1, f[2])};
 }
 
-EdgeEdgeQuery edge_edge_query(const MeshFrames& frames, const EdgeEdgePair& pair) noexcept {
-  const auto& t0 = frames.positions_t0;
-  const auto& t1 = frames.positions_t1;
+EdgeEdgeQuery edge_edge_query(const StepPositions& positions, const EdgeEdgePair& pair) noexcept {
+  const auto& t0 = positions.t0;
+  const auto& t1 = positions.t1;
   return {position(t0, pair.a[0]), position(t0, pair.a[1]), position(t0, pair.b[0]),
           position(t0, pair.b[1]), position(t1, pair.a[0]), position(t1, pair.a[1]),
           position(t1, pair.b[0]), position(t1, pair.b[1])};

@@ -9,17 +9,17 @@
 #include <utility>
 
 #include "exactgeo/ccd/baselines/cubic.hpp"
+#include "exactgeo/ccd/baselines/separation_box.hpp"
 #include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/internal/coplanarity.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
-#include "exactgeo/ccd/separation/internal/min_separation.hpp"
 #include "exactgeo/ccd/internal/polynomial_decision.hpp"
 #include "exactgeo/ccd/internal/root_parity_core.hpp"
 #include "exactgeo/ccd/internal/root_search.hpp"
 #include "exactgeo/ccd/internal/time_pieces.hpp"
 #include "exactgeo/ccd/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
-#include "exactgeo/ccd/baselines/separation_box.hpp"
+#include "exactgeo/ccd/separation/internal/min_separation.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 
 namespace exactgeo::ccd {
@@ -46,10 +46,10 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   // The cheap cull first: most queries a broad phase proposes are near misses, which it
   // settles for a fraction of parity's cost. The other planes cost more and wait for an
   // even parity.
-  if (internal::culled_before_parity(corners)) return {false, Stage::culled, 0, {}};
+  if (internal::culled_before_parity(corners)) return {false, DecidedBy::culled, 0, {}};
   const bool toi = options.time_of_impact_width.has_value();
   const double width = toi ? *options.time_of_impact_width : 1.0;
-  auto collision = [toi](Stage stage, int depth, TimeInterval when) {
+  auto collision = [toi](DecidedBy stage, int depth, TimeInterval when) {
     return Result{true, stage, static_cast<std::uint8_t>(depth),
                   toi ? std::optional<TimeInterval>(when) : std::nullopt};
   };
@@ -59,7 +59,7 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
   constexpr std::size_t C = std::tuple_size_v<decltype(corners)>;
   const auto coplanarity = internal::Coplanarity::of(corners);
   if (coplanarity && coplanarity->nonzero(coplanarity->whole_step())) {
-    return {false, Stage::culled, 0, {}};
+    return {false, DecidedBy::culled, 0, {}};
   }
   auto decided_by_polynomials = [&]() -> std::optional<Result> {
     if (toi || !coplanarity) return std::nullopt;
@@ -68,8 +68,8 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
     const auto verdict =
         internal::decide_by_polynomials<C>(*coplanarity, *sides, kPolynomialBudget);
     if (!verdict) return std::nullopt;
-    if (*verdict == internal::PieceVerdict::root) return collision(Stage::polynomials, 0, {});
-    return Result{false, Stage::polynomials, 0, {}};
+    if (*verdict == internal::PieceVerdict::root) return collision(DecidedBy::polynomials, 0, {});
+    return Result{false, DecidedBy::polynomials, 0, {}};
   };
   // A cubic with the same sign at both ends of the step that may vanish in between
   // "dips": two coplanar moments. Then the primitives often pass through each other and
@@ -81,24 +81,26 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
     if (const auto result = decided_by_polynomials()) return *result;
   }
   const RootParity parity = internal::root_parity(exactgeo::kernel::ExactSigns{}, corners).parity;
-  if (parity != RootParity::even && !toi) return collision(Stage::parity, 0, {});
+  if (parity != RootParity::even && !toi) return collision(DecidedBy::parity, 0, {});
   if (parity == RootParity::even) {
     if (!dips) {
       if (const auto result = decided_by_polynomials()) return *result;
     }
     // Where the cubic dips, the planes of the whole step rarely separate: the search
     // splits first. Otherwise the planes are tried on the whole step.
-    if (!dips && internal::certainly_no_root(corners)) return {false, Stage::culled, 0, {}};
+    if (!dips && internal::certainly_no_root(corners)) return {false, DecidedBy::culled, 0, {}};
   }
-  const Stage searched = parity == RootParity::even ? Stage::subdivision : Stage::parity;
+  const DecidedBy searched =
+      parity == RootParity::even ? DecidedBy::subdivision : DecidedBy::parity;
   const auto piece = internal::whole_step<C>(corners);
   if (!piece) {  // corners beyond exact storage: report the step, unproven if even
-    return collision(parity == RootParity::even ? Stage::depth_limit : Stage::parity, 0, {});
+    return collision(parity == RootParity::even ? DecidedBy::depth_limit : DecidedBy::parity, 0,
+                     {});
   }
   internal::RootSearch<C> search(std::max(options.max_depth, 0), width, coplanarity);
   const auto found = search.earliest(*piece, parity);
   if (!found) return {false, searched, static_cast<std::uint8_t>(search.deepest()), {}};
-  return collision(found->conservative ? Stage::depth_limit : searched, search.deepest(),
+  return collision(found->conservative ? DecidedBy::depth_limit : searched, search.deepest(),
                    {found->start, found->end});
 }
 
@@ -109,7 +111,7 @@ Result exact_ccd(const Query& query, const Options& options) noexcept {
 template <class Query>
 Result separation_ccd(const Query& query, const Options& options) noexcept {
   const double delta = options.min_separation;
-  if (internal::separation_apart(query, delta)) return {false, Stage::culled, 0, {}};
+  if (internal::separation_apart(query, delta)) return {false, DecidedBy::culled, 0, {}};
   const std::optional<double> width = options.time_of_impact_width;
   if (!width) {
     // Only the contact question's cheap stages: a near miss it would search deeply is
@@ -119,13 +121,11 @@ Result separation_ccd(const Query& query, const Options& options) noexcept {
     contact.min_separation = 0.0;
     contact.max_depth = std::min(options.max_depth, kSeparationContactDepth);
     const Result touch = exact_ccd(query, contact);
-    if (touch.collision && touch.decided_by != Stage::depth_limit) return touch;
+    if (touch.collision && touch.decided_by != DecidedBy::depth_limit) return touch;
   }
   const internal::SeparationVerdict verdict = internal::separation_within(query, delta, width);
-  const Stage stage = verdict.stage == internal::SeparationStage::bounded_doubles
-                          ? Stage::separation
-                          : Stage::separation_roots;
-  return {verdict.within, stage, 0, width && verdict.within ? verdict.earliest : std::nullopt};
+  return {verdict.within, verdict.decided_by, 0,
+          width && verdict.within ? verdict.earliest : std::nullopt};
 }
 
 bool box_baseline(const VertexFaceQuery& q, double delta) noexcept {
@@ -142,9 +142,9 @@ bool box_baseline(const EdgeEdgeQuery& q, double delta) noexcept {
 template <class Query>
 Result parity_ccd(const Query& query) noexcept {
   const auto corners = internal::corner_images(query);
-  if (internal::culled_before_parity(corners)) return {false, Stage::culled, 0, {}};
+  if (internal::culled_before_parity(corners)) return {false, DecidedBy::culled, 0, {}};
   const RootParity parity = internal::root_parity(exactgeo::kernel::ExactSigns{}, corners).parity;
-  return {parity != RootParity::even, Stage::parity, 0, {}};
+  return {parity != RootParity::even, DecidedBy::parity, 0, {}};
 }
 
 template <class Query, class ParityFn, class CubicFn>
@@ -157,17 +157,17 @@ Result dispatch_as_given(const Query& query, const Options& options, ParityFn pa
     case Method::parity:
       return parity_ccd(query);
     case Method::cubic:
-      return {cubic_fn(query, CubicOptions{options.cubic_tolerance}), Stage::cubic, 0, {}};
+      return {cubic_fn(query, CubicOptions{options.cubic_tolerance}), DecidedBy::cubic, 0, {}};
     case Method::plain_double:
       if (options.min_separation > 0.0) {
-        return {box_baseline(query, options.min_separation), Stage::box_test, 0, {}};
+        return {box_baseline(query, options.min_separation), DecidedBy::box_test, 0, {}};
       }
       break;
     case Method::rational:
       break;
   }
   return {parity_fn(query, unculled_parity_arithmetic(options.method)).collision(),
-          Stage::parity,
+          DecidedBy::parity,
           0,
           {}};
 }
@@ -245,25 +245,25 @@ std::optional<Method> parse_method(std::string_view name) noexcept {
   return std::nullopt;
 }
 
-std::string_view to_string(Stage s) noexcept {
+std::string_view to_string(DecidedBy s) noexcept {
   switch (s) {
-    case Stage::culled:
+    case DecidedBy::culled:
       return "culled";
-    case Stage::parity:
+    case DecidedBy::parity:
       return "parity";
-    case Stage::subdivision:
+    case DecidedBy::subdivision:
       return "subdivision";
-    case Stage::depth_limit:
+    case DecidedBy::depth_limit:
       return "depth_limit";
-    case Stage::cubic:
+    case DecidedBy::cubic:
       return "cubic";
-    case Stage::polynomials:
+    case DecidedBy::polynomials:
       return "polynomials";
-    case Stage::separation:
+    case DecidedBy::separation:
       return "separation";
-    case Stage::separation_roots:
+    case DecidedBy::separation_roots:
       return "separation_roots";
-    case Stage::box_test:
+    case DecidedBy::box_test:
       return "box_test";
   }
   return "?";

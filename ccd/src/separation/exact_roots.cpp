@@ -8,8 +8,8 @@
 #include <optional>
 #include <vector>
 
-#include "exactgeo/ccd/separation/internal/real_roots.hpp"
 #include "exactgeo/ccd/separation/internal/features.hpp"
+#include "exactgeo/ccd/separation/internal/real_roots.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -24,12 +24,12 @@ RationalPolynomial power_form(const Homogeneous<mpq_class>& p) {
 struct ExactFeature {
   RationalPolynomial gap;
   RationalPolynomial weight;
-  std::vector<RationalPolynomial> inside;
+  std::vector<RationalPolynomial> in_feature;
 
   explicit ExactFeature(const Feature<mpq_class>& f)
       : gap(power_form(f.gap)), weight(power_form(f.weight)) {
-    for (int i = 0; i < f.inside_count; ++i)
-      inside.push_back(power_form(f.inside[i]));
+    for (int i = 0; i < f.in_feature_count; ++i)
+      in_feature.push_back(power_form(f.in_feature[i]));
   }
 };
 
@@ -38,24 +38,25 @@ bool holds_at_end(const Feature<mpq_class>& f, bool end) {
     return sgn(end ? p.at_end() : p.at_start());
   };
   if (sign(f.gap) > 0 || sign(f.weight) <= 0) return false;
-  for (int i = 0; i < f.inside_count; ++i) {
-    if (sign(f.inside[i]) < 0) return false;
+  for (int i = 0; i < f.in_feature_count; ++i) {
+    if (sign(f.in_feature[i]) < 0) return false;
   }
   return true;
 }
 
-/// The weight and inside conditions at a root of the squarefree `p`.
-bool inside_at_root(const ExactFeature& f, const RationalPolynomial& p, const IsolatedRoot& root) {
+/// The weight and in-feature conditions at a root of the squarefree `p`.
+bool conditions_at_root(const ExactFeature& f, const RationalPolynomial& p,
+                        const IsolatedRoot& root) {
   if (sign_at_root(f.weight, p, root) != Sign::positive) return false;
-  for (const RationalPolynomial& q : f.inside) {
+  for (const RationalPolynomial& q : f.in_feature) {
     if (sign_at_root(q, p, root) == Sign::negative) return false;
   }
   return true;
 }
 
-bool inside_at(const ExactFeature& f, const mpq_class& t) {
+bool conditions_at(const ExactFeature& f, const mpq_class& t) {
   if (f.weight.sign_at(t) != Sign::positive) return false;
-  for (const RationalPolynomial& q : f.inside) {
+  for (const RationalPolynomial& q : f.in_feature) {
     if (q.sign_at(t) == Sign::negative) return false;
   }
   return true;
@@ -115,10 +116,10 @@ bool earlier(WithinTime a, WithinTime b) {
 /// The feature's earliest time in (0, 1) with its conditions, gap aside (it vanishes
 /// identically): tested at every root and between every two roots of the product of its
 /// polynomials, in time order.
-std::optional<WithinTime> earliest_inside(const ExactFeature& f) {
+std::optional<WithinTime> earliest_with_conditions(const ExactFeature& f) {
   if (f.weight.is_zero()) return std::nullopt;
   RationalPolynomial product = f.weight;
-  for (const RationalPolynomial& q : f.inside) {
+  for (const RationalPolynomial& q : f.in_feature) {
     if (!q.is_zero()) product = product * q;
   }
   const RationalPolynomial p = squarefree_part(product);
@@ -127,9 +128,9 @@ std::optional<WithinTime> earliest_inside(const ExactFeature& f) {
     samples.push_back(r);
   samples.push_back({mpq_class(1), 1, 1});
   for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
-    if (i > 0 && inside_at_root(f, p, samples[i])) return WithinTime{samples[i], p};
+    if (i > 0 && conditions_at_root(f, p, samples[i])) return WithinTime{samples[i], p};
     const mpq_class between = point_between(samples[i], samples[i + 1], p);
-    if (inside_at(f, between)) return at_rational(between);
+    if (conditions_at(f, between)) return at_rational(between);
   }
   return std::nullopt;
 }
@@ -144,7 +145,7 @@ mpq_class split_point(const RationalPolynomial& p, const mpq_class& lo, const mp
 
 /// The gap's roots in (lo, hi) (not roots themselves) with the feature's other conditions:
 /// a cluster of roots is settled whole when its Tarski queries agree (none with weight > 0,
-/// or one inside polynomial negative at every root; or every condition strict at every
+/// or one in-feature polynomial negative at every root; or every condition strict at every
 /// root), and split otherwise. With `earliest` the first such root, isolated; without,
 /// some such root (its interval then need not isolate it).
 std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolynomial& p,
@@ -156,7 +157,7 @@ std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolyn
   if (weight == 0) return std::nullopt;
   bool all_strict = weight == n;
   bool single_holds = weight == 1;
-  for (std::size_t i = 0; i < f.inside.size(); ++i) {
+  for (std::size_t i = 0; i < f.in_feature.size(); ++i) {
     const int q = queries.query(i + 1, lo, hi);
     if (q == -n) return std::nullopt;
     all_strict = all_strict && q == n;
@@ -183,7 +184,7 @@ std::optional<WithinTime> earliest_root(const ExactFeature& f, bool earliest) {
   if (p.sign_at(1) == Sign::zero) p = p / RationalPolynomial({mpq_class(-1), mpq_class(1)});
   if (p.degree() < 1) return std::nullopt;
   std::vector<RationalPolynomial> conditions{f.weight};
-  conditions.insert(conditions.end(), f.inside.begin(), f.inside.end());
+  conditions.insert(conditions.end(), f.in_feature.begin(), f.in_feature.end());
   return gap_root_in(f, p, TarskiQueries(p, conditions), 0, 1, earliest);
 }
 
@@ -211,7 +212,7 @@ std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std
   std::optional<WithinTime> best;
   for (const Feature<mpq_class>& g : features) {
     const ExactFeature f(g);
-    const auto t = f.gap.is_zero() ? earliest_inside(f) : earliest_root(f, earliest);
+    const auto t = f.gap.is_zero() ? earliest_with_conditions(f) : earliest_root(f, earliest);
     if (t && !earliest) return t;
     if (t && (!best || earlier(*t, *best))) best = t;
   }

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <optional>
 
-#include "exactgeo/ccd/separation/internal/bounded_double.hpp"
 #include "exactgeo/ccd/internal/culling.hpp"
-#include "exactgeo/ccd/separation/internal/features.hpp"
-#include "exactgeo/ccd/separation/internal/exact_roots.hpp"
 #include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/separation/internal/bounded_double.hpp"
+#include "exactgeo/ccd/separation/internal/exact_roots.hpp"
+#include "exactgeo/ccd/separation/internal/features.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -161,8 +161,8 @@ bool all_negative(const Homogeneous<BoundedDouble>& p) noexcept {
 /// No time of the piece satisfies the feature's conditions.
 bool excluded(const Feature<BoundedDouble>& f) noexcept {
   if (all_positive(f.gap)) return true;
-  for (int i = 0; i < f.inside_count; ++i) {
-    if (all_negative(f.inside[i])) return true;
+  for (int i = 0; i < f.in_feature_count; ++i) {
+    if (all_negative(f.in_feature[i])) return true;
   }
   return false;
 }
@@ -171,8 +171,8 @@ bool excluded(const Feature<BoundedDouble>& f) noexcept {
 bool holds_at_end(const Feature<BoundedDouble>& f, bool end) noexcept {
   auto at = [end](const Homogeneous<BoundedDouble>& p) { return end ? p.at_end() : p.at_start(); };
   if (!at(f.gap).certainly_nonpositive() || !at(f.weight).certainly_positive()) return false;
-  for (int i = 0; i < f.inside_count; ++i) {
-    if (!at(f.inside[i]).certainly_nonnegative()) return false;
+  for (int i = 0; i < f.in_feature_count; ++i) {
+    if (!at(f.in_feature[i]).certainly_nonnegative()) return false;
   }
   return true;
 }
@@ -228,7 +228,7 @@ struct FilterAnswer {
   std::optional<TimeInterval> earliest;  ///< with a width: the earliest time's bracket
 };
 
-/// Stage 2. Depth first, left half first: when a piece is taken, every time before its
+/// Test 2. Depth first, left half first: when a piece is taken, every time before its
 /// start is proven apart. So a feature holding at a piece's start makes that start the
 /// earliest time within δ, and one holding at its end brackets it in the piece, which is
 /// split on until it is no wider than `width`.
@@ -289,10 +289,10 @@ SeparationVerdict within(const Query& query, double delta, std::optional<double>
                          FeatureOf feature_of) noexcept {
   const QueryPoints x = points_of(query);
   if (const auto verdict = bounded_within<N>(x, delta, width, feature_of)) {
-    return {verdict->within, SeparationStage::bounded_doubles, verdict->earliest};
+    return {verdict->within, DecidedBy::separation, verdict->earliest};
   }
   const ExactSeparation exact = exact_separation(x, N == kVertexFaceFeatures, delta, width);
-  return {exact.within, SeparationStage::exact_roots, exact.earliest};
+  return {exact.within, DecidedBy::separation_roots, exact.earliest};
 }
 
 }  // namespace

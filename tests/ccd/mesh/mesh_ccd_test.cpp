@@ -49,7 +49,7 @@ struct MovingMesh {
   std::vector<double> t0, t1;  ///< x, y, z of each vertex at the start and the end of the step
 
   std::size_t vertex_count() const { return t0.size() / 3; }
-  MeshFrames frames() const { return {t0, t1}; }
+  StepPositions frames() const { return {t0, t1}; }
 
   VertexIndex add_vertex(const Point3& p0, const Point3& p1) {
     const auto v = static_cast<VertexIndex>(vertex_count());
@@ -84,8 +84,8 @@ void set_position(std::vector<double>& p, VertexIndex v, const Point3& x) {
 Point3 plus(const Point3& a, const Vector3& d) {
   return {a[0] + d[0], a[1] + d[1], a[2] + d[2]};
 }
-bool stands(const MeshFrames& f, VertexIndex v) {
-  return position(f.positions_t0, v) == position(f.positions_t1, v);
+bool stands(const StepPositions& f, VertexIndex v) {
+  return position(f.t0, v) == position(f.t1, v);
 }
 
 VertexIndex grid_index(int n, int i, int j) {
@@ -216,18 +216,18 @@ std::vector<Edge> unique_edges(std::span<const Triangle> faces) {
   return edges;
 }
 
-VertexFaceQuery expected_vertex_face_query(const MeshFrames& f, std::span<const Triangle> faces,
+VertexFaceQuery expected_vertex_face_query(const StepPositions& f, std::span<const Triangle> faces,
                                            VertexFacePair pair) {
   const Triangle& t = faces[pair.face];
-  const auto& p0 = f.positions_t0;
-  const auto& p1 = f.positions_t1;
+  const auto& p0 = f.t0;
+  const auto& p1 = f.t1;
   return {position(p0, pair.vertex), position(p0, t[0]), position(p0, t[1]), position(p0, t[2]),
           position(p1, pair.vertex), position(p1, t[0]), position(p1, t[1]), position(p1, t[2])};
 }
 
-EdgeEdgeQuery expected_edge_edge_query(const MeshFrames& f, const EdgeEdgePair& pair) {
-  const auto& p0 = f.positions_t0;
-  const auto& p1 = f.positions_t1;
+EdgeEdgeQuery expected_edge_edge_query(const StepPositions& f, const EdgeEdgePair& pair) {
+  const auto& p0 = f.t0;
+  const auto& p1 = f.t1;
   return {position(p0, pair.a[0]), position(p0, pair.a[1]), position(p0, pair.b[0]),
           position(p0, pair.b[1]), position(p1, pair.a[0]), position(p1, pair.a[1]),
           position(p1, pair.b[0]), position(p1, pair.b[1])};
@@ -262,11 +262,11 @@ MotionClasses motion_classes(const MovingMesh& m, bool group) {
   MotionClasses classes(m.vertex_count(), -1);
   if (!group) return classes;
   std::map<std::array<mpq_class, 3>, int> ids;
-  const MeshFrames f = m.frames();
+  const StepPositions f = m.frames();
   for (VertexIndex v = 0; v < m.vertex_count(); ++v) {
     std::array<mpq_class, 3> d;
     for (std::size_t k = 0; k < 3; ++k)
-      d[k] = mpq_class(f.positions_t1[3 * v + k]) - mpq_class(f.positions_t0[3 * v + k]);
+      d[k] = mpq_class(f.t1[3 * v + k]) - mpq_class(f.t0[3 * v + k]);
     classes[v] = ids.emplace(d, static_cast<int>(ids.size())).first->second;
   }
   return classes;
@@ -280,7 +280,7 @@ bool same_motion(const MotionClasses& classes, std::initializer_list<VertexIndex
 
 void add_vertex_face_pairs(const MovingMesh& m, const MotionClasses& motion, Method method,
                            Expected& out) {
-  const MeshFrames f = m.frames();
+  const StepPositions f = m.frames();
   for (VertexIndex v = 0; v < m.vertex_count(); ++v) {
     for (FaceIndex i = 0; i < m.faces.size(); ++i) {
       const Triangle& t = m.faces[i];
@@ -298,7 +298,7 @@ void add_vertex_face_pairs(const MovingMesh& m, const MotionClasses& motion, Met
 
 void add_edge_edge_pairs(const MovingMesh& m, const MotionClasses& motion, Method method,
                          Expected& out) {
-  const MeshFrames f = m.frames();
+  const StepPositions f = m.frames();
   const std::vector<Edge> edges = unique_edges(m.faces);  // sorted: edges[i] < edges[j]
   for (std::size_t i = 0; i < edges.size(); ++i) {
     for (std::size_t j = i + 1; j < edges.size(); ++j) {
@@ -1167,7 +1167,7 @@ std::array<Point3, 8> points_of(const EdgeEdgeQuery& q) {
 TEST(MeshCcdApi, PairQueriesAreTheOraclesQueries) {
   Rng rng = testing::seeded_engine("mesh-ccd-queries");
   const MovingMesh m = crumpling_sheet(rng, 5);
-  const MeshFrames f = m.frames();
+  const StepPositions f = m.frames();
   for (VertexIndex v = 0; v < m.vertex_count(); ++v) {
     for (FaceIndex i = 0; i < m.faces.size(); ++i) {
       if (is_corner(v, m.faces[i])) continue;

@@ -134,8 +134,8 @@ TEST(BoundedDouble, FeaturePolynomialsKeepTheInvariant) {
       };
       note(f.gap);
       note(f.weight);
-      for (int k = 0; k < f.inside_count; ++k)
-        note(f.inside[k]);
+      for (int k = 0; k < f.in_feature_count; ++k)
+        note(f.in_feature[k]);
     }
   }
   std::printf("[ bound    ] largest error / bound over %d feature coefficients: %.3g\n",

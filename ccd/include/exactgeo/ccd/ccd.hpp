@@ -37,7 +37,7 @@ std::string_view to_string(Method m) noexcept;
 std::optional<Method> parse_method(std::string_view name) noexcept;
 
 /// What decided a query.
-enum class Stage : std::uint8_t {
+enum class DecidedBy : std::uint8_t {
   culled,            ///< exact, parity: the corner images provably do not surround the origin
   parity,            ///< the root parity count (for exact: a boundary root or odd parity)
   subdivision,       ///< exact: even parity, decided by splitting time
@@ -53,7 +53,7 @@ enum class Stage : std::uint8_t {
                      ///< (baselines/separation_box.hpp)
 };
 
-std::string_view to_string(Stage s) noexcept;
+std::string_view to_string(DecidedBy s) noexcept;
 
 /// A closed time interval within the step [0, 1].
 struct TimeInterval {
@@ -80,7 +80,7 @@ struct Options {
 
 struct Result {
   bool collision = false;
-  Stage decided_by = Stage::parity;
+  DecidedBy decided_by = DecidedBy::parity;
   /// exact: the deepest split visited (0 when no splitting was needed).
   std::uint8_t depth = 0;
   /// exact with time_of_impact_width set and a collision: the earliest root's interval.

@@ -57,9 +57,9 @@ struct EdgeEdgePair {
 
 /// Positions at both ends of the step: x, y, z of vertex 0, then of vertex 1, ...
 /// (3 * vertex_count doubles each, finite).
-struct MeshFrames {
-  std::span<const double> positions_t0;
-  std::span<const double> positions_t1;
+struct StepPositions {
+  std::span<const double> t0;
+  std::span<const double> t1;
 };
 
 struct MeshCcdOptions {
@@ -109,7 +109,7 @@ class MeshCcd {
   /// method than exact.
   /// Not const: it keeps the broad phase's trees for the next step. One
   /// MeshCcd per thread; different MeshCcd objects are independent.
-  MeshCcdResult step(const MeshFrames& frames, const MeshCcdOptions& options = {});
+  MeshCcdResult step(const StepPositions& positions, const MeshCcdOptions& options = {});
 
   std::size_t vertex_count() const noexcept;
   std::span<const Triangle> faces() const noexcept;
@@ -121,14 +121,14 @@ class MeshCcd {
   std::unique_ptr<State> state_;
 };
 
-/// One step without keeping anything: MeshCcd(vertex_count, faces).step(frames, options).
-MeshCcdResult find_collisions(std::span<const Triangle> faces, const MeshFrames& frames,
+/// One step without keeping anything: MeshCcd(vertex_count, faces).step(positions, options).
+MeshCcdResult find_collisions(std::span<const Triangle> faces, const StepPositions& positions,
                               const MeshCcdOptions& options = {});
 
 /// The per-pair queries of a mesh, for simulators that run their own broad phase.
-/// Preconditions: indices in range, frames as for MeshCcd::step.
-VertexFaceQuery vertex_face_query(const MeshFrames& frames, std::span<const Triangle> faces,
+/// Preconditions: indices in range, positions as for MeshCcd::step.
+VertexFaceQuery vertex_face_query(const StepPositions& positions, std::span<const Triangle> faces,
                                   VertexFacePair pair) noexcept;
-EdgeEdgeQuery edge_edge_query(const MeshFrames& frames, const EdgeEdgePair& pair) noexcept;
+EdgeEdgeQuery edge_edge_query(const StepPositions& positions, const EdgeEdgePair& pair) noexcept;
 
 }  // namespace exactgeo::ccd

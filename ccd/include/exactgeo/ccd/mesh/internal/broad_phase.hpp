@@ -39,11 +39,11 @@ class MeshBroadPhase {
 
   /// Every candidate pair of the step, in an order that depends only on the input and on
   /// the steps before (through the trees), never on the thread count.
-  /// Preconditions: frames hold 3 * vertex_count finite values each; `largest` is their
+  /// Preconditions: positions hold 3 * vertex_count finite values each; `largest` is their
   /// largest magnitude (MeshCcd::step has it already; it sets the boxes' StepScale).
-  /// With min_separation > 0 (in the frames' units), also every pair whose swept boxes
+  /// With min_separation > 0 (in the positions' units), also every pair whose swept boxes
   /// are within it.
-  MeshCandidates candidates(const MeshFrames& frames, double largest, unsigned threads,
+  MeshCandidates candidates(const StepPositions& positions, double largest, unsigned threads,
                             double min_separation = 0.0);
 
  private:

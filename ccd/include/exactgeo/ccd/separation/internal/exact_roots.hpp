@@ -1,11 +1,11 @@
 #pragma once
 
-// Stage 3 of the minimum-separation decision (min_separation.hpp): exact roots.
+// Test 3 of the minimum-separation decision (min_separation.hpp): exact roots.
 //
 // The set of times within δ is closed (the distance is continuous in time). If neither end
 // of the step is in it but some time is, its earliest time t* has distance exactly δ,
 // attained by the feature whose relative interior holds the closest point: at t* that
-// feature's weight is positive, its inside conditions hold and its gap is zero. So both
+// feature's weight is positive, its in-feature conditions hold and its gap is zero. So both
 // ends and the roots in (0, 1) of every gap polynomial decide (features.hpp),
 // in GMP rationals (real_roots.hpp). The roots are taken by clusters: Sturm's sequence
 // counts them in an interval and one Tarski query per condition counts those where it is

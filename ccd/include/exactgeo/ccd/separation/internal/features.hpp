@@ -134,13 +134,13 @@ Moving<T> cross(const Moving<T>& a, const Moving<T>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
-/// One feature's conjunction: gap <= 0, every inside[i] >= 0 and weight > 0 (weight is
-/// the constant 1 for a vertex).
+/// One feature's conjunction: gap <= 0, every in_feature[i] >= 0 (the projection lies in
+/// the feature) and weight > 0 (weight is the constant 1 for a vertex).
 template <class T>
 struct Feature {
   Homogeneous<T> gap;
-  std::array<Homogeneous<T>, 4> inside{};
-  int inside_count = 0;
+  std::array<Homogeneous<T>, 4> in_feature{};
+  int in_feature_count = 0;
   Homogeneous<T> weight;
 };
 
@@ -164,8 +164,8 @@ Feature<T> edge_feature(const Moving<T>& p, const Moving<T>& a, const Moving<T>&
   const Homogeneous<T> we = dot(w, e);
   Feature<T> f;
   f.weight = ee;
-  f.inside = {we, ee - we};
-  f.inside_count = 2;
+  f.in_feature = {we, ee - we};
+  f.in_feature_count = 2;
   f.gap = dot(w, w) * ee - we * we - Homogeneous<T>::constant(delta2) * ee;
   return f;
 }
@@ -179,9 +179,9 @@ Feature<T> face_feature(const Moving<T>& p, const Moving<T>& a, const Moving<T>&
   const Homogeneous<T> height = dot(n, p - a);
   Feature<T> f;
   f.weight = nn;
-  f.inside = {dot(n, cross(b - a, p - a)), dot(n, cross(c - b, p - b)),
-              dot(n, cross(a - c, p - c))};
-  f.inside_count = 3;
+  f.in_feature = {dot(n, cross(b - a, p - a)), dot(n, cross(c - b, p - b)),
+                  dot(n, cross(a - c, p - c))};
+  f.in_feature_count = 3;
   f.gap = height * height - Homogeneous<T>::constant(delta2) * nn;
   return f;
 }
@@ -200,8 +200,8 @@ Feature<T> segments_feature(const Moving<T>& a0, const Moving<T>& a1, const Movi
   const Homogeneous<T> height = dot(w, r);
   Feature<T> f;
   f.weight = ww;
-  f.inside = {s, ww - s, u, ww - u};
-  f.inside_count = 4;
+  f.in_feature = {s, ww - s, u, ww - u};
+  f.in_feature_count = 4;
   f.gap = height * height - Homogeneous<T>::constant(delta2) * ww;
   return f;
 }
