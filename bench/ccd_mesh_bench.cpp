@@ -166,7 +166,7 @@ StructureComparison compare_structures(const ccd::MeshCcd& mesh, const Frames& f
   }
   {
     const auto start = std::chrono::steady_clock::now();
-    const ccd::bench::baseline::BoxTree face_tree(faces), edge_tree(edges);
+    const ccd::bench::baseline::QueryTree face_tree(faces), edge_tree(edges);
     std::size_t n = 0;
     for (const auto& v : vertices)
       face_tree.query(v, [&n](std::uint32_t) { ++n; });

@@ -13,7 +13,8 @@ set(EXACTGEO_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/exactgeo)
 # exported too, as exactgeo::strict_fp. exactgeo_warnings is build-only and not exported.
 set_target_properties(exactgeo_strict_fp PROPERTIES EXPORT_NAME strict_fp)
 
-install(TARGETS exactgeo_predicates exactgeo_parallel exactgeo_io exactgeo_mesh exactgeo_ccd exactgeo_ccd_files
+install(TARGETS exactgeo_predicates exactgeo_parallel exactgeo_io exactgeo_boxes exactgeo_mesh
+                exactgeo_ccd exactgeo_ccd_files
                 exactgeo_inside exactgeo_strict_fp
         EXPORT exactgeoTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -25,7 +26,7 @@ install(TARGETS exactgeo_mesh_files EXPORT exactgeoMeshFilesTargets
 install(TARGETS exactgeo RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Every public header, internal/ included: the public templates include those.
-foreach(folder predicates parallel io mesh ccd inside)
+foreach(folder predicates parallel io boxes mesh ccd inside)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
           FILES_MATCHING PATTERN "*.hpp")

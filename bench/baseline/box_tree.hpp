@@ -5,7 +5,8 @@
 // dual-tree traversal, which builds a tree over the moving primitives every step and
 // queries it once per primitive box.
 //
-// A bounding-volume hierarchy over swept boxes: the broad phase of mesh-level CCD.
+// A bounding-volume hierarchy over swept boxes, queried one box at a time (a QueryTree,
+// apart from the box trees of exactgeo::boxes, which are walked against each other).
 //
 // Built top down: the boxes of a node are split at the median of their centres along the
 // axis where the centres spread the most, down to leaves of at most kLeafSize boxes. A
@@ -26,11 +27,11 @@
 
 namespace exactgeo::ccd::bench::baseline {
 
-class BoxTree {
+class QueryTree {
  public:
-  BoxTree() = default;
+  QueryTree() = default;
   /// Takes the boxes (their order is not kept).
-  explicit BoxTree(std::vector<SweptBox> boxes) : boxes_(std::move(boxes)) {
+  explicit QueryTree(std::vector<SweptBox> boxes) : boxes_(std::move(boxes)) {
     if (boxes_.empty()) return;
     nodes_.reserve(2 * boxes_.size() / kLeafSize + 1);
     build_all();

@@ -19,7 +19,7 @@ enum class PairKind { vertex_face, edge_edge };
 /// One pass of the broad phase: every query box against a tree.
 struct TreePass {
   std::span<const SweptBox> queries;
-  const BoxTree* tree;
+  const QueryTree* tree;
   PairKind kind;
   bool same_set;  ///< queries and tree hold the same primitives: keep each pair once
 };
@@ -82,7 +82,7 @@ struct Displacements {
 template <std::size_t N>
 Boxes boxes_of(std::span<const std::array<VertexIndex, N>> primitives,
                const std::vector<std::uint8_t>& moving_vertex, bool moving,
-               const StepPositions& frames, const StepScale& scale) {
+               const StepPositions& frames, const boxes::Scale& scale) {
   Boxes boxes;
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     if (any_moves(primitives[i], moving_vertex) != moving) continue;
@@ -102,7 +102,7 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
 }
 
 bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
-                                        const StepPositions& frames, const StepScale& scale) const {
+                                        const StepPositions& frames, const boxes::Scale& scale) const {
   if (!standing_valid_ || moving != moving_ || scale.exponent() != standing_scale_.exponent())
     return false;
   for (std::size_t i = 0; i < 3 * vertex_count_; ++i) {
@@ -112,14 +112,14 @@ bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
 }
 
 void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const StepPositions& frames,
-                                      const StepScale& scale) {
+                                      const boxes::Scale& scale) {
   moving_ = std::move(moving);
   standing_scale_ = scale;
   standing_positions_.assign(frames.t0.begin(), frames.t0.end());
-  standing_vertices_ = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_),
+  standing_vertices_ = QueryTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_),
                                         moving_, false, frames, scale));
-  standing_edges_ = BoxTree(boxes_of(edges_, moving_, false, frames, scale));
-  standing_faces_ = BoxTree(boxes_of(faces_, moving_, false, frames, scale));
+  standing_edges_ = QueryTree(boxes_of(edges_, moving_, false, frames, scale));
+  standing_faces_ = QueryTree(boxes_of(faces_, moving_, false, frames, scale));
   standing_valid_ = true;
 }
 
@@ -127,22 +127,22 @@ MeshCandidates MeshBroadPhase::candidates(const StepPositions& frames, unsigned 
   MeshCandidates result;
   const Displacements motion(frames);
   const std::vector<std::uint8_t> moving = motion.moving();
-  const StepScale scale(std::max(largest_magnitude(frames.t0), largest_magnitude(frames.t1)));
+  const boxes::Scale scale(std::max(largest_magnitude(frames.t0), largest_magnitude(frames.t1)));
   if (!standing_unchanged(moving, frames, scale)) {
     rebuild_standing(moving, frames, scale);
     result.standing_rebuilt = true;
   }
   // The three trees of moving primitives are built side by side. Queries run in tree
-  // order (BoxTree::boxes), which keeps them spatially coherent.
-  std::array<BoxTree, 3> trees;
+  // order (QueryTree::boxes), which keeps them spatially coherent.
+  std::array<QueryTree, 3> trees;
   parallel::for_each_block(3, threads, [&](std::size_t k) {
     if (k == 0)
-      trees[0] = BoxTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving,
+      trees[0] = QueryTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving,
                                   true, frames, scale));
-    if (k == 1) trees[1] = BoxTree(boxes_of(edges_, moving, true, frames, scale));
-    if (k == 2) trees[2] = BoxTree(boxes_of(faces_, moving, true, frames, scale));
+    if (k == 1) trees[1] = QueryTree(boxes_of(edges_, moving, true, frames, scale));
+    if (k == 2) trees[2] = QueryTree(boxes_of(faces_, moving, true, frames, scale));
   });
-  const BoxTree &moving_vertex_tree = trees[0], &moving_edge_tree = trees[1],
+  const QueryTree &moving_vertex_tree = trees[0], &moving_edge_tree = trees[1],
                 &moving_face_tree = trees[2];
   const auto moving_vertices = moving_vertex_tree.boxes();
   const auto moving_edges = moving_edge_tree.boxes();

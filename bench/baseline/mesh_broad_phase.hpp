@@ -25,7 +25,6 @@
 namespace exactgeo::ccd::bench::baseline {
 
 using internal::EdgeIndexPair;  // the library's: the candidates of both are compared
-using internal::StepScale;
 
 struct MeshCandidates {
   std::vector<VertexFacePair> vertex_face;
@@ -47,9 +46,9 @@ class MeshBroadPhase {
   using Boxes = std::vector<SweptBox>;
 
   bool standing_unchanged(const std::vector<std::uint8_t>& moving, const StepPositions& frames,
-                          const StepScale& scale) const;
+                          const boxes::Scale& scale) const;
   void rebuild_standing(std::vector<std::uint8_t> moving, const StepPositions& frames,
-                        const StepScale& scale);
+                        const boxes::Scale& scale);
 
   std::size_t vertex_count_;
   std::span<const Triangle> faces_;
@@ -59,9 +58,9 @@ class MeshBroadPhase {
   bool standing_valid_ = false;
   std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
   std::vector<double> standing_positions_;  // t0 positions then (standing ones compared)
-  StepScale standing_scale_;                // the scale their boxes were made in
-  BoxTree standing_vertices_;               // a tree only for its spatial order of queries
-  BoxTree standing_edges_, standing_faces_;
+  boxes::Scale standing_scale_;                // the scale their boxes were made in
+  QueryTree standing_vertices_;               // a tree only for its spatial order of queries
+  QueryTree standing_edges_, standing_faces_;
 };
 
 }  // namespace exactgeo::ccd::bench::baseline

@@ -15,7 +15,6 @@ namespace exactgeo::ccd::bench::baseline {
 
 using internal::float_above;
 using internal::float_below;
-using internal::StepScale;
 
 struct SweptBox {
   std::array<float, 3> lo;
@@ -35,7 +34,7 @@ inline bool overlap(const SweptBox& a, const SweptBox& b) noexcept {
 /// scale; positions are 3 doubles per vertex at t0 and at t1.
 template <std::size_t N>
 SweptBox swept_box(const std::array<std::uint32_t, N>& ids, std::uint32_t id, const double* t0,
-                   const double* t1, const StepScale& scale = {}) noexcept {
+                   const double* t1, const boxes::Scale& scale = {}) noexcept {
   SweptBox box{};
   box.id = id;
   for (int k = 0; k < 3; ++k) {

@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "exactgeo/boxes/float_box.hpp"
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/inside/internal/embree_scene.hpp"
@@ -17,11 +18,6 @@
 namespace exactgeo::inside::internal {
 namespace {
 
-struct FloatBox {
-  std::array<float, 3> lower;
-  std::array<float, 3> upper;
-};
-
 /// The context Embree hands to the callbacks: its own part first, then the output list.
 struct RecordingContext {
   RTCIntersectContext embree;
@@ -29,15 +25,15 @@ struct RecordingContext {
 };
 
 void face_bounds(const RTCBoundsFunctionArguments* args) {
-  const auto* boxes = static_cast<const FloatBox*>(args->geometryUserPtr);
-  const FloatBox& b = boxes[args->primID];
+  const auto* boxes = static_cast<const boxes::FloatBox*>(args->geometryUserPtr);
+  const boxes::FloatBox& b = boxes[args->primID];
   RTCBounds* out = args->bounds_o;
-  out->lower_x = b.lower[0];
-  out->lower_y = b.lower[1];
-  out->lower_z = b.lower[2];
-  out->upper_x = b.upper[0];
-  out->upper_y = b.upper[1];
-  out->upper_z = b.upper[2];
+  out->lower_x = b.lo[0];
+  out->lower_y = b.lo[1];
+  out->lower_z = b.lo[2];
+  out->upper_x = b.hi[0];
+  out->upper_y = b.hi[1];
+  out->upper_z = b.hi[2];
 }
 
 void record(int valid, RTCIntersectContext* context, unsigned primitive) {
@@ -57,7 +53,7 @@ void record_occluded(const RTCOccludedFunctionNArguments* args) {
 
 struct EmbreeCandidates::Scene {
   FloatFrame frame;
-  std::vector<FloatBox> boxes;
+  std::vector<boxes::FloatBox> boxes;
   EmbreeScene embree;
 };
 
@@ -73,8 +69,8 @@ EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh, const mesh::Box& box)
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     const mesh::Box b = corner_box(mesh, mesh.faces[f]);
     for (int i = 0; i < 3; ++i) {
-      scene_->boxes[f].lower[i] = frame.lower_bound(i, b.lower[i]);
-      scene_->boxes[f].upper[i] = frame.upper_bound(i, b.upper[i]);
+      scene_->boxes[f].lo[i] = frame.lower_bound(i, b.lower[i]);
+      scene_->boxes[f].hi[i] = frame.upper_bound(i, b.upper[i]);
     }
   }
 

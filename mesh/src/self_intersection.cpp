@@ -1,13 +1,16 @@
 #include "exactgeo/mesh/self_intersection.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <utility>
 #include <vector>
 
+#include "exactgeo/boxes/box_tree.hpp"
+#include "exactgeo/boxes/tree_pairs.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 #include "face_contact/convex_polygons.hpp"
 #include "face_contact/edge_method.hpp"
-#include "face_contact/face_box_tree.hpp"
 #include "face_contact/face_geometry.hpp"
 #include "face_contact/separating_planes.hpp"
 
@@ -15,7 +18,8 @@
 // shape class of each face (face_geometry.hpp), planes through corners
 // (separating_planes.hpp), the exact test of two convex polygons (convex_polygons.hpp),
 // edge-pair axes (separating_planes.hpp), then the edge method (edge_method.hpp). The
-// broad phase (face_box_tree.hpp) only proposes the pairs.
+// broad phase, a box tree of exactgeo::boxes walked against itself, only proposes the
+// pairs.
 
 namespace exactgeo::mesh {
 
@@ -30,10 +34,6 @@ using face_contact_detail::separated_by_corner_plane;
 using face_contact_detail::separated_by_edge_pair_axis;
 using face_contact_detail::Shape;
 using face_contact_detail::shape_of;
-// The broad phase.
-using face_contact_detail::Aabb;
-using face_contact_detail::box_of;
-using face_contact_detail::BoxTree;
 
 /// The filters first (cheapest and most often decisive first: on a smooth quad mesh a
 /// corner plane of one face settles most neighbours), then the exact method of the pair.
@@ -71,16 +71,51 @@ FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b) {
                  geometry_of(mesh, fb, shape_of(mesh, fb)));
 }
 
+namespace {
+
+/// The faces' boxes at rest in one tree: every pair of faces whose closed boxes overlap,
+/// faces that share corners included (they may still cross). Any other pair is apart: a
+/// face lies in the box of its corners (a bilinear patch is a convex combination of
+/// them), and the float boxes hold the exact ones (boxes/float_box.hpp), so no pair is
+/// lost to rounding. The scale comes from the faces' corners only: a far vertex that no
+/// face uses would shrink every box to a few float ulps and make every pair overlap.
+template <class Report>
+void overlapping_face_pairs(const Mesh& mesh, const std::vector<std::size_t>& faces,
+                            Report&& report) {
+  if (faces.empty()) return;
+  double largest = 0.0;
+  std::vector<std::array<VertexIndex, 4>> corners(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Face& f = mesh.faces[faces[i]];
+    for (std::size_t k = 0; k < 4; ++k) {
+      corners[i][k] = f.corner(k);  // a triangle's third corner twice
+      for (const double x : mesh.vertices[corners[i][k]])
+        largest = std::max(largest, std::fabs(x));
+    }
+  }
+  const boxes::Scale scale(largest);
+  std::vector<boxes::FloatBox> vertex_boxes(mesh.vertices.size());
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v)
+    vertex_boxes[v] = boxes::point_box(mesh.vertices[v], scale);
+  const boxes::VertexBoxes at_rest = boxes::VertexBoxes::at_rest(std::move(vertex_boxes));
+  const boxes::BoxTree<4> tree(corners, at_rest);
+  const boxes::Walk<4, 4> walk{tree, tree, at_rest, boxes::SharedCorners::keep};
+  std::vector<boxes::NodePair> stack;
+  boxes::overlapping_pairs(walk, {0, 0}, stack,
+                           [&](const boxes::Packet<4>& a, std::size_t i, const boxes::Packet<4>& b,
+                               std::size_t j) { report(faces[a.id[i]], faces[b.id[j]]); });
+}
+
+}  // namespace
+
 SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads) {
   const std::size_t n = mesh.faces.size();
   std::vector<Shape> shapes(n);
-  std::vector<Aabb> boxes(n);
-  std::vector<std::size_t> items;
-  items.reserve(n);
+  std::vector<std::size_t> faces;  // the non-degenerate ones, which alone can intersect
+  faces.reserve(n);
   for (std::size_t f = 0; f < n; ++f) {
     shapes[f] = shape_of(mesh, mesh.faces[f]);
-    boxes[f] = box_of(mesh, mesh.faces[f]);
-    if (shapes[f] != Shape::degenerate) items.push_back(f);
+    if (shapes[f] != Shape::degenerate) faces.push_back(f);
   }
 
   // The tree's pairs gather in `pending`; each time it is full they are decided in blocks
@@ -108,8 +143,7 @@ SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads) {
     result.candidate_pairs += pending.size();
     pending.clear();
   };
-  const BoxTree tree(std::move(items), boxes);
-  tree.overlapping_pairs([&](std::size_t i, std::size_t j) {
+  overlapping_face_pairs(mesh, faces, [&](std::size_t i, std::size_t j) {
     pending.push_back({std::min(i, j), std::max(i, j)});
     if (pending.size() == kPending) decide_pending();
   });

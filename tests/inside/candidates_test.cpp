@@ -28,7 +28,7 @@ using mesh::make_quad;
 using mesh::make_triangle;
 using mesh::Mesh;
 
-using internal::FaceIndex;
+
 
 /// A closed torus of nu x nv quads with dyadic coordinates (at most about 24 significant
 /// bits), every vertex moved by random dyadic noise so most quads are skew; the first

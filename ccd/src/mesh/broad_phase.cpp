@@ -5,11 +5,18 @@
 #include <bit>
 #include <cmath>
 
-#include "exactgeo/ccd/mesh/internal/tree_pairs.hpp"
+#include "exactgeo/boxes/tree_pairs.hpp"
+#include "exactgeo/ccd/mesh/internal/swept_box.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/kernel/error_free.hpp"
 
 namespace exactgeo::ccd::internal {
+
+using boxes::BoxTree;
+using boxes::NodePair;
+using boxes::Packet;
+using boxes::VertexBoxes;
+using boxes::Walk;
 
 namespace {
 
@@ -36,17 +43,17 @@ std::uint32_t motion_digest(const Vector3& d) noexcept {
 /// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
 /// displacement is exactly a double, and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
-VertexSweep sweep_of(const StepPositions& positions, double largest, double min_separation,
+VertexBoxes sweep_of(const StepPositions& positions, double largest, double min_separation,
                      unsigned threads) {
   const std::size_t n = positions.t0.size() / 3;
-  VertexSweep s;
+  VertexBoxes s;
   s.box.resize(n);
   s.displacement.resize(n);
   s.moving.resize(n);
   s.motion.resize(n);
   const double* t0 = positions.t0.data();
   const double* t1 = positions.t1.data();
-  const StepScale scale(largest);
+  const boxes::Scale scale(largest);
   // Each box grows by half the separation δ: two primitives within δ of each other have
   // boxes within δ on every axis (a distance bounds each coordinate difference), so grown
   // boxes overlap. In the step's scale S (two products by powers of two) that needs
@@ -83,7 +90,7 @@ VertexSweep sweep_of(const StepPositions& positions, double largest, double min_
 /// stay the same during the step. Unequal digests rule it out without reading vertices.
 template <std::size_t NA, std::size_t NB>
 bool rigid(const Packet<NA>& a, std::size_t i, const Packet<NB>& b, std::size_t k,
-           const VertexSweep& sweep) noexcept {
+           const VertexBoxes& sweep) noexcept {
   if (a.motion[i] == 0 || a.motion[i] != b.motion[k]) return false;
   const VertexIndex first = a.corner[0][i];
   for (std::size_t c = 0; c < NA; ++c) {
@@ -104,7 +111,7 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
     vertices_[v] = {static_cast<VertexIndex>(v)};
 }
 
-bool MeshBroadPhase::fit_trees(const VertexSweep& sweep, unsigned threads) {
+bool MeshBroadPhase::fit_trees(const VertexBoxes& sweep, unsigned threads) {
   // One job per tree, the largest (edges) first: on two threads the edge tree takes as
   // long as the other two together.
   std::array<bool, 3> built{};
@@ -130,13 +137,13 @@ bool MeshBroadPhase::fit_trees(const VertexSweep& sweep, unsigned threads) {
 MeshCandidates MeshBroadPhase::candidates(const StepPositions& positions, double largest,
                                           unsigned threads, double min_separation) {
   MeshCandidates result;
-  const VertexSweep sweep = sweep_of(positions, largest, min_separation, threads);
+  const VertexBoxes sweep = sweep_of(positions, largest, min_separation, threads);
   result.trees_rebuilt = fit_trees(sweep, threads);
 
   // Both walks split into node pairs, vertex-face first; each pair's candidates in its
   // own list, joined in order, so the order does not depend on the thread count.
-  const Walk<1, 3> vertex_face{vertex_tree_, face_tree_, sweep};
-  const Walk<2, 2> edge_edge{edge_tree_, edge_tree_, sweep};
+  const Walk<1, 3> vertex_face{vertex_tree_, face_tree_, sweep, boxes::SharedCorners::skip};
+  const Walk<2, 2> edge_edge{edge_tree_, edge_tree_, sweep, boxes::SharedCorners::skip};
   const std::vector<NodePair> vertex_face_pairs = split_pairs(vertex_face, kWalkPairs);
   const std::vector<NodePair> edge_edge_pairs = split_pairs(edge_edge, kWalkPairs);
   struct Found {

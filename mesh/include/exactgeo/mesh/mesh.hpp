@@ -17,7 +17,7 @@
 namespace exactgeo::mesh {
 
 using exactgeo::VertexIndex;  // predicates/point.hpp
-inline constexpr VertexIndex kNoVertex = std::numeric_limits<VertexIndex>::max();
+using exactgeo::kNoVertex;    // predicates/point.hpp
 
 struct Face {
   std::array<VertexIndex, 4> corners{kNoVertex, kNoVertex, kNoVertex, kNoVertex};

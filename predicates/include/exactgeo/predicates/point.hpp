@@ -15,5 +15,10 @@ using Vector3 = std::array<double, 3>;
 
 /// The position of a point in a list of points (a mesh's vertices, a face set's corners).
 using VertexIndex = std::uint32_t;
+/// No vertex: a slot that holds none.
+inline constexpr VertexIndex kNoVertex = std::numeric_limits<VertexIndex>::max();
+
+/// The position of a face in a list of faces (a mesh's, a mesh step's triangles).
+using FaceIndex = std::uint32_t;
 
 }  // namespace exactgeo

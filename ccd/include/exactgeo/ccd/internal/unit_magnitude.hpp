@@ -14,18 +14,11 @@
 #include <cmath>
 #include <span>
 
+#include "exactgeo/predicates/kernel/power_of_two.hpp"
+
 namespace exactgeo::ccd::internal {
 
-/// 2^k as two factors, each a double (2^k alone is not one for k > 1023 or k < -1074):
-/// x * first * second is x 2^k, exact wherever that is a normal double (or a subnormal
-/// with no bits lost), else rounded, and monotone in x either way.
-struct PowerOfTwo {
-  explicit PowerOfTwo(int k) noexcept
-      : first(std::ldexp(1.0, k / 2)), second(std::ldexp(1.0, k - k / 2)) {}
-  double operator()(double x) const noexcept { return x * first * second; }
-  double first;
-  double second;
-};
+using kernel::PowerOfTwo;
 
 inline double largest_magnitude(std::span<const double> values) noexcept {
   double largest = 0.0;

@@ -15,8 +15,6 @@
 
 namespace exactgeo::inside::internal {
 
-using FaceIndex = std::uint32_t;
-
 /// Every face: the oracle the accelerated finder is tested against, and the fallback for
 /// directions a single-precision tracer cannot represent exactly.
 inline void all_faces(const mesh::Mesh& mesh, std::vector<FaceIndex>& out) {

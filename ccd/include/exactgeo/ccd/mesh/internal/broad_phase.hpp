@@ -3,10 +3,10 @@
 // The broad phase of mesh-level CCD (mesh_ccd.hpp): the vertex-face and edge-edge pairs
 // whose swept boxes overlap, without pairs sharing a vertex and without rigid pairs.
 //
-// One box tree per kind of primitive (box_tree.hpp), built on the first step and refitted
-// on the next ones; rebuilt when refitting has made it too loose. The pairs come from
-// walking the vertex tree against the face tree and the edge tree against itself
-// (tree_pairs.hpp).
+// One box tree per kind of primitive (boxes/box_tree.hpp) over the vertices' swept boxes,
+// built on the first step and refitted on the next ones; rebuilt when refitting has made
+// it too loose. The pairs come from walking the vertex tree against the face tree and
+// the edge tree against itself (boxes/tree_pairs.hpp), adjacent pairs skipped.
 
 #include <array>
 #include <cstddef>
@@ -14,7 +14,7 @@
 #include <span>
 #include <vector>
 
-#include "exactgeo/ccd/mesh/internal/box_tree.hpp"
+#include "exactgeo/boxes/box_tree.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
 namespace exactgeo::ccd::internal {
@@ -40,7 +40,7 @@ class MeshBroadPhase {
   /// Every candidate pair of the step, in an order that depends only on the input and on
   /// the steps before (through the trees), never on the thread count.
   /// Preconditions: positions hold 3 * vertex_count finite values each; `largest` is their
-  /// largest magnitude (MeshCcd::step has it already; it sets the boxes' StepScale).
+  /// largest magnitude (MeshCcd::step has it already; it sets the boxes' Scale).
   /// With min_separation > 0 (in the positions' units), also every pair whose swept boxes
   /// are within it.
   MeshCandidates candidates(const StepPositions& positions, double largest, unsigned threads,
@@ -48,15 +48,15 @@ class MeshBroadPhase {
 
  private:
   /// Refits the trees to this step's boxes, or builds them; returns whether it built.
-  bool fit_trees(const VertexSweep& sweep, unsigned threads);
+  bool fit_trees(const boxes::VertexBoxes& sweep, unsigned threads);
 
   std::span<const Triangle> faces_;
   std::span<const Edge> edges_;
   std::vector<std::array<VertexIndex, 1>> vertices_;  // {0}, {1}, ...: vertices as primitives
   bool built_ = false;
-  BoxTree<1> vertex_tree_;
-  BoxTree<2> edge_tree_;
-  BoxTree<3> face_tree_;
+  boxes::BoxTree<1> vertex_tree_;
+  boxes::BoxTree<2> edge_tree_;
+  boxes::BoxTree<3> face_tree_;
 };
 
 }  // namespace exactgeo::ccd::internal

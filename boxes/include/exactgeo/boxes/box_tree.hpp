@@ -1,24 +1,28 @@
 #pragma once
 
-// A bounding-volume hierarchy over the swept boxes of one kind of mesh primitive
-// (vertices, edges or faces): built once, refitted every step.
+// A bounding-volume hierarchy over the boxes of one kind of mesh primitive (vertices,
+// edges, triangles or quads, given by their corners): built once, refitted as the
+// vertices' boxes change. The mesh broad phase builds one per kind over the vertices'
+// swept boxes (ccd/src/mesh/broad_phase.cpp), self-intersection one over the faces at
+// rest (mesh/src/self_intersection.cpp).
 //
 // Build: top down, the primitives of a node are split at the median of their box centres
 // along the axis where the centres spread the most, down to leaves of at most eight
 // primitives. Nodes are stored depth first: a node's left child follows it, and it keeps
-// the index of its right child. A leaf's primitives are one Packet (box_packet.hpp).
+// the index of its right child. A leaf's primitives are one Packet (packet.hpp).
 //
-// Refit: the mesh's connectivity is fixed, so the same tree serves every step. Each leaf
-// box is made anew from its corners' swept boxes, then each node box is the union of its
-// children's (children come after their parent, so one backward pass does it). A node's
-// box contains every box below it in any such tree, so a refitted tree finds exactly the
-// overlapping pairs a fresh one finds; it only gets slower when the mesh has moved far
-// from where the tree was built. looseness() measures that, and the owner rebuilds when
-// it has grown (src/mesh/broad_phase.cpp).
+// Refit: with the connectivity fixed, the same tree serves every new set of vertex boxes.
+// Each leaf box is made anew from its corners' boxes, then each node box is the union of
+// its children's (children come after their parent, so one backward pass does it). A
+// node's box contains every box below it in any such tree, so a refitted tree finds
+// exactly the overlapping pairs a fresh one finds; it only gets slower when the vertices
+// have moved far from where the tree was built. looseness() measures that, and the owner
+// rebuilds when it has grown.
 //
 // Each node also knows whether all vertices below it move by one and the same vector
-// (standing still included): two subtrees that move together hold no pair of this step
-// (their pairs are rigid, mesh_ccd.hpp), nor does one such subtree with itself.
+// (standing still included): two subtrees that move together hold no pair that can
+// collide (their pairs are rigid), nor does one such subtree with itself. Boxes at rest,
+// with no motion known, never move together.
 
 #include <algorithm>
 #include <array>
@@ -26,26 +30,39 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <utility>
 #include <vector>
 
-#include "exactgeo/ccd/mesh/internal/box_packet.hpp"
-#include "exactgeo/ccd/mesh/internal/swept_box.hpp"
+#include "exactgeo/boxes/float_box.hpp"
+#include "exactgeo/boxes/packet.hpp"
 #include "exactgeo/predicates/point.hpp"
 
-namespace exactgeo::ccd::internal {
+namespace exactgeo::boxes {
 
-/// One step's motion of every vertex, as the trees see it (made in mesh_broad_phase.cpp).
-struct VertexSweep {
-  std::vector<FloatBox> box;          ///< the swept box, in the step's scale
-  std::vector<Vector3> displacement;  ///< p_t1 - p_t0, rounded
-  std::vector<std::uint8_t> moving;   ///< p_t1 != p_t0
+/// Every vertex's box and what is known of its motion, as the trees see it: for a CCD
+/// step, its swept box and exact displacement (ccd/src/mesh/broad_phase.cpp); at rest,
+/// its box alone (at_rest).
+struct VertexBoxes {
+  std::vector<FloatBox> box;          ///< the vertex's box, in one Scale for all
+  std::vector<Vector3> displacement;  ///< p_t1 - p_t0, rounded (empty at rest)
+  /// 0 when the vertex is known to stand still, else 1 (at rest: 1, nothing is known)
+  std::vector<std::uint8_t> moving;
   /// A digest of the displacement: equal exact displacements have equal nonzero digests;
-  /// 0 exactly when the rounded displacement is not exact.
+  /// 0 when no exact displacement is known (then the vertex moves together with none).
   std::vector<std::uint32_t> motion;
 
   /// Whether a and b move by one and the same exactly known vector (standing included).
   bool move_together(VertexIndex a, VertexIndex b) const noexcept {
     return motion[a] != 0 && motion[a] == motion[b] && displacement[a] == displacement[b];
+  }
+
+  /// Boxes of vertices with no motion: every pair of primitives over them counts.
+  static VertexBoxes at_rest(std::vector<FloatBox> boxes) {
+    VertexBoxes v;
+    v.moving.assign(boxes.size(), 1);
+    v.motion.assign(boxes.size(), 0);
+    v.box = std::move(boxes);
+    return v;
   }
 };
 
@@ -71,7 +88,7 @@ class BoxTree {
   BoxTree() = default;
 
   /// The tree over `primitives` (primitive i has corners primitives[i]) on this step's boxes.
-  BoxTree(std::span<const Corners> primitives, const VertexSweep& vertices) {
+  BoxTree(std::span<const Corners> primitives, const VertexBoxes& vertices) {
     if (primitives.empty()) return;
     std::vector<Built> order(primitives.size());
     for (std::size_t i = 0; i < primitives.size(); ++i)
@@ -83,7 +100,7 @@ class BoxTree {
   }
 
   /// This step's boxes for the same primitives.
-  void refit(const VertexSweep& vertices) {
+  void refit(const VertexBoxes& vertices) {
     for (Leaf& leaf : leaves_)
       fit_leaf(leaf, vertices);
     fit_nodes(vertices);
@@ -105,7 +122,7 @@ class BoxTree {
     FloatBox box;
   };
 
-  static FloatBox leaf_box(const Corners& corners, const VertexSweep& vertices) noexcept {
+  static FloatBox leaf_box(const Corners& corners, const VertexBoxes& vertices) noexcept {
     FloatBox box = vertices.box[corners[0]];
     for (std::size_t c = 1; c < N; ++c)
       box = united(box, vertices.box[corners[c]]);
@@ -160,7 +177,7 @@ class BoxTree {
     return index;
   }
 
-  static void fit_leaf(Leaf& leaf, const VertexSweep& vertices) noexcept {
+  static void fit_leaf(Leaf& leaf, const VertexBoxes& vertices) noexcept {
     constexpr float kInf = std::numeric_limits<float>::infinity();
     leaf.moving = 0;
     for (std::size_t j = 0; j < kPacketLanes; ++j) {
@@ -182,7 +199,7 @@ class BoxTree {
   }
 
   /// The vertex every corner of the leaf moves together with, or kNoVertex.
-  static VertexIndex together(const Leaf& leaf, std::size_t count, const VertexSweep& vertices) {
+  static VertexIndex together(const Leaf& leaf, std::size_t count, const VertexBoxes& vertices) {
     for (std::size_t j = 0; j < count; ++j) {
       if (leaf.motion[j] == 0 || leaf.motion[j] != leaf.motion[0]) return kNoVertex;
     }
@@ -196,7 +213,7 @@ class BoxTree {
   }
 
   /// Every node's box, extent and `together`, and looseness_.
-  void fit_nodes(const VertexSweep& vertices) noexcept {
+  void fit_nodes(const VertexBoxes& vertices) noexcept {
     double node_sum = 0.0, leaf_sum = 0.0;
     for (std::size_t i = nodes_.size(); i-- > 0;) {
       Node& n = nodes_[i];
@@ -229,4 +246,4 @@ class BoxTree {
   double built_looseness_ = 0.0;
 };
 
-}  // namespace exactgeo::ccd::internal
+}  // namespace exactgeo::boxes

@@ -4,13 +4,17 @@
 // walking both trees at once.
 //
 // A pair of nodes whose boxes are disjoint, or below which every vertex moves by one and
-// the same exact vector (standing still included, box_tree.hpp), holds no pair of the
-// step and is dropped whole. Otherwise the larger node (by half-perimeter) is opened, until
-// two leaves meet and their primitives are compared, eight at a time (box_packet.hpp). Within one
-// tree, a node paired with itself opens into its two children each with itself, plus the children
-// with each other, so every unordered pair is met once. Against one query per primitive
-// this drops whole groups of pairs at once and walks each tree path once per group
-// instead of once per primitive.
+// the same exact vector (standing still included, box_tree.hpp), holds no pair and is
+// dropped whole. Otherwise the larger node (by half-perimeter) is opened, until two
+// leaves meet and their primitives are compared, eight at a time (packet.hpp). Within one
+// tree, a node paired with itself opens into its two children each with itself, plus the
+// children with each other, so every unordered pair is met once. Against one query per
+// primitive this drops whole groups of pairs at once and walks each tree path once per
+// group instead of once per primitive.
+//
+// Which overlapping pairs count is the walk's rule: for collisions, pairs that share a
+// corner (adjacent primitives) and pairs that both stand still are skipped; for
+// intersections at rest, every overlapping pair counts.
 //
 // For threads, the walk is first opened breadth first into a fixed number of node pairs
 // (split_pairs); each is then walked on its own. The split does not depend on the thread
@@ -21,9 +25,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "exactgeo/ccd/mesh/internal/box_tree.hpp"
+#include "exactgeo/boxes/box_tree.hpp"
 
-namespace exactgeo::ccd::internal {
+namespace exactgeo::boxes {
 
 /// Node a of the first tree with node b of the second; with one tree, a == b stands for
 /// the pairs within node a.
@@ -32,13 +36,20 @@ struct NodePair {
   std::uint32_t b;
 };
 
-/// The two trees of a walk (the same tree twice for a walk of a tree with itself), and
-/// the vertices' motion in this step.
+/// Whether primitives that share a corner are paired.
+enum class SharedCorners : std::uint8_t {
+  skip,  ///< collisions: adjacent primitives touch by construction
+  keep,  ///< intersections: adjacent faces may still cross
+};
+
+/// The two trees of a walk (the same tree twice for a walk of a tree with itself), the
+/// vertices' boxes they were fitted to, and the rule for adjacent primitives.
 template <std::size_t NA, std::size_t NB>
 struct Walk {
   const BoxTree<NA>& a;
   const BoxTree<NB>& b;
-  const VertexSweep& sweep;
+  const VertexBoxes& vertices;
+  SharedCorners shared = SharedCorners::skip;
 
   /// Whether p stands for the pairs within one node of a tree walked with itself.
   bool within(NodePair p) const noexcept {
@@ -60,7 +71,7 @@ bool holds_pairs(const Walk<NA, NB>& w, NodePair p) {
   const auto& b = w.b.node(p.b);
   if (!overlap(a.box, b.box)) return false;
   return a.together == kNoVertex || b.together == kNoVertex ||
-         !w.sweep.move_together(a.together, b.together);
+         !w.vertices.move_together(a.together, b.together);
 }
 
 /// For a pair that holds_pairs: true when both nodes are leaves, whose primitives are then
@@ -114,8 +125,8 @@ std::vector<NodePair> split_pairs(const Walk<NA, NB>& w, std::size_t wanted) {
 
 /// Calls visit(leaf_a, i, leaf_b, j) for every pair of primitives below `start` (a pair
 /// that holds_pairs; lane i of a leaf of the first tree, lane j of one of the second) whose
-/// boxes overlap, which share no corner, and of which at least one moves; with one tree,
-/// each unordered pair once.
+/// boxes overlap, of which at least one may move, and which share no corner unless the
+/// walk keeps those; with one tree, each unordered pair once.
 template <std::size_t NA, std::size_t NB, class Visit>
 void overlapping_pairs(const Walk<NA, NB>& w, NodePair start, std::vector<NodePair>& stack,
                        Visit&& visit) {
@@ -131,7 +142,8 @@ void overlapping_pairs(const Walk<NA, NB>& w, NodePair start, std::vector<NodePa
     // Only the lanes of a whose box meets b's leaf box can meet one of b's boxes.
     for (unsigned lanes = overlap_mask(b.box, la); lanes != 0; lanes &= lanes - 1) {
       const auto i = static_cast<std::size_t>(std::countr_zero(lanes));
-      unsigned hits = overlap_mask(la.box(i), lb) & ~shared_corner_mask(la.corners(i), lb);
+      unsigned hits = overlap_mask(la.box(i), lb);
+      if (w.shared == SharedCorners::skip) hits &= ~shared_corner_mask(la.corners(i), lb);
       if ((la.moving >> i & 1) == 0) hits &= lb.moving;
       if (within) hits &= ~((2u << i) - 1);  // each pair once: lanes after i only
       for (; hits != 0; hits &= hits - 1)
@@ -140,4 +152,4 @@ void overlapping_pairs(const Walk<NA, NB>& w, NodePair start, std::vector<NodePa
   }
 }
 
-}  // namespace exactgeo::ccd::internal
+}  // namespace exactgeo::boxes

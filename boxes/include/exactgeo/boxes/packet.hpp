@@ -19,16 +19,15 @@
 #include <emmintrin.h>
 #endif
 
-#include "exactgeo/ccd/mesh/internal/swept_box.hpp"
+#include "exactgeo/boxes/float_box.hpp"
 #include "exactgeo/predicates/point.hpp"
 
-namespace exactgeo::ccd::internal {
+namespace exactgeo::boxes {
 
 inline constexpr std::size_t kPacketLanes = 8;
 
-/// A lane that holds no primitive: corners that are no vertex, and the empty box
-/// (lo = +inf, hi = -inf), which overlaps nothing.
-inline constexpr VertexIndex kNoVertex = 0xFFFFFFFF;
+// A lane that holds no primitive has corners kNoVertex (predicates/point.hpp) and the
+// empty box (lo = +inf, hi = -inf), which overlaps nothing.
 
 /// Up to kPacketLanes primitives with N corners each.
 template <std::size_t N>
@@ -37,10 +36,10 @@ struct Packet {
   std::array<std::array<float, kPacketLanes>, 3> hi;
   std::array<std::array<VertexIndex, kPacketLanes>, N> corner;
   std::array<std::uint32_t, kPacketLanes> id;  ///< the primitive's index; kNoVertex if none
-  /// The motion digest its corners share (VertexSweep::motion, box_tree.hpp), or 0: two
+  /// The motion digest its corners share (VertexBoxes::motion, box_tree.hpp), or 0: two
   /// primitives can only move rigidly together when their digests are equal and nonzero.
   std::array<std::uint32_t, kPacketLanes> motion;
-  unsigned moving = 0;  ///< bit j: the primitive in lane j moves
+  unsigned moving = 0;  ///< bit j: the primitive in lane j may move (VertexBoxes::moving)
 
   FloatBox box(std::size_t j) const noexcept {
     return {{lo[0][j], lo[1][j], lo[2][j]}, {hi[0][j], hi[1][j], hi[2][j]}};
@@ -124,4 +123,4 @@ unsigned shared_corner_mask(const std::array<VertexIndex, M>& corners,
   return mask;
 }
 
-}  // namespace exactgeo::ccd::internal
+}  // namespace exactgeo::boxes

@@ -1,10 +1,10 @@
-// The lane masks of box tree leaves (internal/box_packet.hpp) against the scalar tests
+// The lane masks of box tree leaves (boxes/packet.hpp) against the scalar tests
 // they replace (and the SSE2 lane bits against the portable ones): overlap_mask bit j is overlap(a,
 // box j) for closed boxes (touching, equal, nested, disjoint by one float ulp on one axis), unused
 // lanes never overlap, and shared_corner_mask bit j says whether lane j's primitive has one of the
 // given corners.
 
-#include "exactgeo/ccd/mesh/internal/box_packet.hpp"
+#include "exactgeo/boxes/packet.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
-namespace exactgeo::ccd::internal {
+namespace exactgeo::boxes {
 namespace {
 
 constexpr float kInf = std::numeric_limits<float>::infinity();
@@ -97,4 +97,4 @@ TEST(BoxPacket, SharedCornerMaskFindsEveryCommonCorner) {
 }
 
 }  // namespace
-}  // namespace exactgeo::ccd::internal
+}  // namespace exactgeo::boxes

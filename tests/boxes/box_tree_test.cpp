@@ -1,0 +1,142 @@
+// The box tree's walk (boxes/box_tree.hpp, boxes/tree_pairs.hpp) against brute force: every
+// pair of primitives whose boxes overlap is reported exactly once, within one tree and
+// between two, with adjacent pairs kept or skipped as the walk's rule says; a refitted
+// tree reports what a fresh one does; split walks report the same pairs as one walk.
+
+#include "exactgeo/boxes/box_tree.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "exactgeo/boxes/tree_pairs.hpp"
+#include "support/generators.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::boxes {
+namespace {
+
+using Pairs = std::set<std::pair<std::uint32_t, std::uint32_t>>;
+
+/// Random points in a cube, their boxes at rest.
+VertexBoxes random_vertices(testing::Rng& rng, std::size_t n, double spread) {
+  const Scale scale(spread);
+  std::vector<FloatBox> boxes(n);
+  for (FloatBox& b : boxes)
+    b = point_box(testing::random_point(rng, spread), scale);
+  return VertexBoxes::at_rest(std::move(boxes));
+}
+
+/// Primitives of N corners on random vertices, some sharing corners.
+template <std::size_t N>
+std::vector<std::array<VertexIndex, N>> random_primitives(testing::Rng& rng, std::size_t count,
+                                                          std::size_t vertices) {
+  std::vector<std::array<VertexIndex, N>> p(count);
+  for (auto& corners : p) {
+    const auto first = static_cast<VertexIndex>(testing::uniform_int(rng, 0, int(vertices) - 1));
+    for (std::size_t k = 0; k < N; ++k) {  // near each other, so boxes stay small
+      const int step = testing::uniform_int(rng, 0, 6);
+      corners[k] = static_cast<VertexIndex>((first + step) % vertices);
+    }
+  }
+  return p;
+}
+
+template <std::size_t N>
+FloatBox box_of(const std::array<VertexIndex, N>& corners, const VertexBoxes& v) {
+  FloatBox b = v.box[corners[0]];
+  for (std::size_t k = 1; k < N; ++k)
+    b = united(b, v.box[corners[k]]);
+  return b;
+}
+
+template <std::size_t NA, std::size_t NB>
+bool share_corner(const std::array<VertexIndex, NA>& a, const std::array<VertexIndex, NB>& b) {
+  for (const VertexIndex x : a)
+    if (std::find(b.begin(), b.end(), x) != b.end()) return true;
+  return false;
+}
+
+/// Every pair the walk reports, each asserted to be new (reported once).
+template <std::size_t NA, std::size_t NB>
+Pairs walked(const Walk<NA, NB>& walk, std::size_t splits) {
+  Pairs found;
+  std::vector<NodePair> stack;
+  for (const NodePair start : split_pairs(walk, splits)) {
+    overlapping_pairs(walk, start, stack,
+                      [&](const Packet<NA>& a, std::size_t i, const Packet<NB>& b, std::size_t j) {
+                        auto pair = std::pair{a.id[i], b.id[j]};
+                        if (walk.within({0, 0}) && pair.first > pair.second) {
+                          std::swap(pair.first, pair.second);
+                        }
+                        EXPECT_TRUE(found.insert(pair).second) << "reported twice";
+                      });
+  }
+  return found;
+}
+
+TEST(BoxTree, OneTreeReportsEveryOverlappingPairOnce) {
+  auto rng = testing::seeded_engine("boxes.box_tree.self");
+  for (int round = 0; round < 6; ++round) {
+    const std::size_t vertices = 400;
+    const VertexBoxes v = random_vertices(rng, vertices, round % 2 ? 1e-300 : 1.0);
+    const auto faces = random_primitives<4>(rng, 600, vertices);
+    const BoxTree<4> tree(faces, v);
+    for (const SharedCorners rule : {SharedCorners::keep, SharedCorners::skip}) {
+      Pairs expected;
+      for (std::uint32_t i = 0; i < faces.size(); ++i) {
+        for (std::uint32_t j = i + 1; j < faces.size(); ++j) {
+          if (!overlap(box_of(faces[i], v), box_of(faces[j], v))) continue;
+          if (rule == SharedCorners::skip && share_corner(faces[i], faces[j])) continue;
+          expected.insert({i, j});
+        }
+      }
+      const Walk<4, 4> walk{tree, tree, v, rule};
+      EXPECT_EQ(walked(walk, 1), expected) << "round " << round;
+      EXPECT_EQ(walked(walk, 64), expected) << "round " << round << ", split walk";
+      EXPECT_GT(expected.size(), 100u);
+    }
+  }
+}
+
+TEST(BoxTree, TwoTreesAndARefitReportWhatBruteForceDoes) {
+  auto rng = testing::seeded_engine("boxes.box_tree.two");
+  const std::size_t vertices = 300;
+  VertexBoxes v = random_vertices(rng, vertices, 1.0);
+  std::vector<std::array<VertexIndex, 1>> points(vertices);
+  for (VertexIndex i = 0; i < vertices; ++i)
+    points[i] = {i};
+  const auto triangles = random_primitives<3>(rng, 500, vertices);
+  BoxTree<1> point_tree(points, v);
+  BoxTree<3> triangle_tree(triangles, v);
+  for (int round = 0; round < 3; ++round) {
+    if (round > 0) {  // the vertices move: refit, and compare with fresh trees
+      v = random_vertices(rng, vertices, 1.0);
+      point_tree.refit(v);
+      triangle_tree.refit(v);
+    }
+    Pairs expected;
+    for (std::uint32_t i = 0; i < vertices; ++i) {
+      for (std::uint32_t j = 0; j < triangles.size(); ++j) {
+        if (overlap(v.box[i], box_of(triangles[j], v)) && !share_corner(points[i], triangles[j])) {
+          expected.insert({i, j});
+        }
+      }
+    }
+    const Walk<1, 3> refitted{point_tree, triangle_tree, v, SharedCorners::skip};
+    EXPECT_EQ(walked(refitted, 16), expected) << "round " << round;
+    const BoxTree<1> fresh_points(points, v);
+    const BoxTree<3> fresh_triangles(triangles, v);
+    const Walk<1, 3> fresh{fresh_points, fresh_triangles, v, SharedCorners::skip};
+    EXPECT_EQ(walked(fresh, 16), expected) << "round " << round;
+    EXPECT_GT(expected.size(), 50u);
+  }
+}
+
+}  // namespace
+}  // namespace exactgeo::boxes
