@@ -55,17 +55,15 @@
 
 namespace exactgeo::ccd::internal {
 
-namespace slice_sides_detail {
-
 using exactgeo::kernel::Vec3;
 
 template <class T>
-constexpr Vec3<T> sum(const Vec3<T>& a, const Vec3<T>& b) {
+constexpr Vec3<T> vector_sum(const Vec3<T>& a, const Vec3<T>& b) {
   return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
 
 template <class T>
-constexpr Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
+constexpr Vec3<T> vector_cross(const Vec3<T>& a, const Vec3<T>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 
@@ -74,7 +72,8 @@ constexpr Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
 template <class T>
 constexpr std::array<Vec3<T>, 3> cross_quadratic(const Vec3<T>& x_a, const Vec3<T>& x_b,
                                                  const Vec3<T>& y_a, const Vec3<T>& y_b) {
-  return {cross(x_a, y_a), sum(cross(x_a, y_b), cross(x_b, y_a)), cross(x_b, y_b)};
+  return {vector_cross(x_a, y_a), vector_sum(vector_cross(x_a, y_b), vector_cross(x_b, y_a)),
+          vector_cross(x_b, y_b)};
 }
 
 template <class T>
@@ -139,8 +138,6 @@ inline constexpr SideBound kSideBound = [] {
   return bound;
 }();
 
-}  // namespace slice_sides_detail
-
 /// The side quartics of a step with C corners (6: vertex-face, 8: edge-edge).
 template <std::size_t C>
 class SliceSides {
@@ -158,10 +155,10 @@ class SliceSides {
       for (int axis = 0; axis < 3; ++axis)
         largest = std::max({largest, std::fabs(start[k][axis]), std::fabs(end[k][axis])});
     }
-    constexpr auto& bound = slice_sides_detail::kSideBound<H>;
+    constexpr auto& bound = kSideBound<H>;
     if (!(largest >= bound.guard_low && largest <= bound.guard_high)) return std::nullopt;
     SliceSides sides;
-    sides.whole_step_ = slice_sides_detail::side_quartics<double, H>(start, end);
+    sides.whole_step_ = side_quartics<double, H>(start, end);
     const double m2 = largest * largest;
     sides.threshold_ =
         (bound.epsilon + 800 * 0x1p-53 * bound.magnitude) * (m2 * m2) * (1 + 0x1p-40) + 0x1p-1064;

@@ -64,12 +64,10 @@ struct TimePiece {
   }
 };
 
-namespace time_piece_detail {
-
 /// The exponent of a nonzero finite double: floor(log2 |c|) for normal numbers, -1023 for
 /// subnormals (above their true exponent; their last bit, 2^-1074, is the lowest anyway).
 /// Read from the bits: this runs for every component of every piece.
-inline int exponent_of(double c) noexcept {
+inline int component_exponent(double c) noexcept {
   return static_cast<int>((std::bit_cast<std::uint64_t>(c) >> 52) & 0x7ff) - 1023;
 }
 
@@ -80,13 +78,13 @@ struct ComponentRange {
   int top = -2000;
   int grain = 2000;
   void include(double c) noexcept {
-    const int e = exponent_of(c);
+    const int e = component_exponent(c);
     top = std::max(top, e);
     grain = std::min(grain, std::max(e - 52, -1074));
   }
 };
 
-inline Coordinate scaled(const Coordinate& x, int s) noexcept {
+inline Coordinate scaled_coordinate(const Coordinate& x, int s) noexcept {
   Coordinate r = x;
   if (s == 0) return r;
   for (int i = 0; i < r.size(); ++i)
@@ -95,21 +93,19 @@ inline Coordinate scaled(const Coordinate& x, int s) noexcept {
 }
 
 /// 2 x: exact (pieces keep their components far below overflow).
-inline Coordinate doubled(const Coordinate& x) noexcept {
+inline Coordinate doubled_coordinate(const Coordinate& x) noexcept {
   Coordinate r = x;
   for (int i = 0; i < r.size(); ++i)
     r.mutable_data()[i] = 2.0 * r.data()[i];
   return r;
 }
 
-}  // namespace time_piece_detail
-
 /// Completes corners whose exact coordinates are set, in place: rescales every component
 /// by the same power of two so that the largest lies in [1, 2) (or as close as exactness
 /// allows), then sets the rounded values. False when the corners cannot be stored.
 template <std::size_t C>
 bool complete_corners(std::array<ExactVector, C>& corners) noexcept {
-  time_piece_detail::ComponentRange range;
+  ComponentRange range;
   for (const ExactVector& corner : corners) {
     for (const Coordinate& c : corner.exact) {
       for (int i = 0; i < c.size(); ++i)
@@ -125,7 +121,7 @@ bool complete_corners(std::array<ExactVector, C>& corners) noexcept {
     if (range.top + s > 1000) return false;
     for (ExactVector& corner : corners) {
       for (Coordinate& c : corner.exact)
-        c = time_piece_detail::scaled(c, s);
+        c = scaled_coordinate(c, s);
     }
   }
   for (ExactVector& corner : corners)
@@ -195,11 +191,11 @@ std::optional<TimePiece<C>> half(const TimePiece<C>& p, Half which) noexcept {
       auto mid = (start + end).compress().template narrow<ExactVector::kCapacity>();
       if (!mid) return std::nullopt;
       if (which == Half::left) {
-        x[k].exact[axis] = time_piece_detail::doubled(start);
+        x[k].exact[axis] = doubled_coordinate(start);
         x[H + k].exact[axis] = *mid;
       } else {
         x[k].exact[axis] = *mid;
-        x[H + k].exact[axis] = time_piece_detail::doubled(end);
+        x[H + k].exact[axis] = doubled_coordinate(end);
       }
     }
   }
