@@ -10,6 +10,7 @@
 #include <string>
 
 #include "exactgeo/io/input_error.hpp"
+#include "exactgeo/predicates/kernel/rational.hpp"
 
 namespace exactgeo::ccd {
 
@@ -75,14 +76,13 @@ std::optional<double> exact_ratio(std::string_view numerator, std::string_view d
     error = "zero denominator";
     return std::nullopt;
   }
-  mpq_class q(*num, *den);
-  q.canonicalize();
+  const kernel::Rational q(mpq_class(*num, *den));
   // A zero keeps the sign of the quotient as written ("-0/1", "0/-1": -0), as a double
   // division would; the rational has none.
-  if (sgn(q) == 0) return (numerator[0] == '-') != (denominator[0] == '-') ? -0.0 : 0.0;
-  // mpq_get_d truncates toward zero: the value is a double iff converting back gives it.
-  const double x = q.get_d();
-  if (!std::isfinite(x) || mpq_class(x) != q) {
+  if (q.is_zero()) return (numerator[0] == '-') != (denominator[0] == '-') ? -0.0 : 0.0;
+  // The value is a double iff the double toward zero from it is the value.
+  const double x = q.toward_zero();
+  if (!std::isfinite(x) || kernel::Rational(x) != q) {
     error = quoted_ratio(numerator, denominator) + " is not exactly a finite double";
     return std::nullopt;
   }

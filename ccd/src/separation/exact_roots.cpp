@@ -15,9 +15,9 @@ namespace exactgeo::ccd::internal {
 
 namespace {
 
-RationalPolynomial power_form(const Homogeneous<mpq_class>& p) {
+RationalPolynomial power_form(const Homogeneous<Rational>& p) {
   return RationalPolynomial::from_homogeneous(
-      std::vector<mpq_class>(p.c.begin(), p.c.begin() + p.degree + 1));
+      std::vector<Rational>(p.c.begin(), p.c.begin() + p.degree + 1));
 }
 
 /// A feature's polynomials in the power basis of the step's time.
@@ -26,20 +26,20 @@ struct ExactFeature {
   RationalPolynomial weight;
   std::vector<RationalPolynomial> in_feature;
 
-  explicit ExactFeature(const Feature<mpq_class>& f)
+  explicit ExactFeature(const Feature<Rational>& f)
       : gap(power_form(f.gap)), weight(power_form(f.weight)) {
     for (int i = 0; i < f.in_feature_count; ++i)
       in_feature.push_back(power_form(f.in_feature[i]));
   }
 };
 
-bool holds_at_end(const Feature<mpq_class>& f, bool end) {
-  auto sign = [end](const Homogeneous<mpq_class>& p) {
-    return sgn(end ? p.at_end() : p.at_start());
+bool holds_at_end(const Feature<Rational>& f, bool end) {
+  auto sign = [end](const Homogeneous<Rational>& p) {
+    return (end ? p.at_end() : p.at_start()).sign();
   };
-  if (sign(f.gap) > 0 || sign(f.weight) <= 0) return false;
+  if (sign(f.gap) == Sign::positive || sign(f.weight) != Sign::positive) return false;
   for (int i = 0; i < f.in_feature_count; ++i) {
-    if (sign(f.in_feature[i]) < 0) return false;
+    if (sign(f.in_feature[i]) == Sign::negative) return false;
   }
   return true;
 }
@@ -54,7 +54,7 @@ bool conditions_at_root(const ExactFeature& f, const RationalPolynomial& p,
   return true;
 }
 
-bool conditions_at(const ExactFeature& f, const mpq_class& t) {
+bool conditions_at(const ExactFeature& f, const Rational& t) {
   if (f.weight.sign_at(t) != Sign::positive) return false;
   for (const RationalPolynomial& q : f.in_feature) {
     if (q.sign_at(t) == Sign::negative) return false;
@@ -64,10 +64,10 @@ bool conditions_at(const ExactFeature& f, const mpq_class& t) {
 
 /// A rational strictly between the roots r < s of the squarefree p (either may be an
 /// exact sentinel such as 0 or 1).
-mpq_class point_between(IsolatedRoot r, IsolatedRoot s, const RationalPolynomial& p) {
+Rational point_between(IsolatedRoot r, IsolatedRoot s, const RationalPolynomial& p) {
   for (;;) {
-    const mpq_class upper = r.exact ? *r.exact : r.hi;
-    const mpq_class lower = s.exact ? *s.exact : s.lo;
+    const Rational upper = r.exact ? *r.exact : r.hi;
+    const Rational lower = s.exact ? *s.exact : s.lo;
     if (upper < lower) return (upper + lower) / 2;
     if (!r.exact) {
       internal::halve_isolating_interval(p, r);
@@ -83,7 +83,7 @@ struct WithinTime {
   RationalPolynomial p;
 };
 
-WithinTime at_rational(const mpq_class& t) {
+WithinTime at_rational(const Rational& t) {
   return {{t, t, t}, {}};
 }
 
@@ -92,11 +92,11 @@ WithinTime at_rational(const mpq_class& t) {
 /// the overlap of the two isolating intervals (whose ends are roots of neither).
 bool earlier(WithinTime a, WithinTime b) {
   for (;;) {
-    const mpq_class a_hi = a.root.exact ? *a.root.exact : a.root.hi;
-    const mpq_class b_lo = b.root.exact ? *b.root.exact : b.root.lo;
+    const Rational a_hi = a.root.exact ? *a.root.exact : a.root.hi;
+    const Rational b_lo = b.root.exact ? *b.root.exact : b.root.lo;
     if (a_hi < b_lo) return true;
-    const mpq_class a_lo = a.root.exact ? *a.root.exact : a.root.lo;
-    const mpq_class b_hi = b.root.exact ? *b.root.exact : b.root.hi;
+    const Rational a_lo = a.root.exact ? *a.root.exact : a.root.lo;
+    const Rational b_hi = b.root.exact ? *b.root.exact : b.root.hi;
     if (b_hi < a_lo) return false;
     if (a.root.exact && b.root.exact) return false;  // equal
     if (a.root.exact) {
@@ -105,7 +105,7 @@ bool earlier(WithinTime a, WithinTime b) {
       if (a.p.sign_at(*b.root.exact) == Sign::zero) return false;
     } else {
       const RationalPolynomial g = gcd(a.p, b.p);
-      const mpq_class lo = std::max(a_lo, b_lo), hi = std::min(a_hi, b_hi);
+      const Rational lo = std::max(a_lo, b_lo), hi = std::min(a_hi, b_hi);
       if (g.degree() >= 1 && lo < hi && g.sign_at(lo) != g.sign_at(hi)) return false;
     }
     if (!a.root.exact) halve_isolating_interval(a.p, a.root);
@@ -123,22 +123,22 @@ std::optional<WithinTime> earliest_with_conditions(const ExactFeature& f) {
     if (!q.is_zero()) product = product * q;
   }
   const RationalPolynomial p = squarefree_part(product);
-  std::vector<IsolatedRoot> samples{{mpq_class(0), 0, 0}};
+  std::vector<IsolatedRoot> samples{{Rational(0), 0, 0}};
   for (const IsolatedRoot& r : roots_between(p, 0, 1))
     samples.push_back(r);
-  samples.push_back({mpq_class(1), 1, 1});
+  samples.push_back({Rational(1), 1, 1});
   for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
     if (i > 0 && conditions_at_root(f, p, samples[i])) return WithinTime{samples[i], p};
-    const mpq_class between = point_between(samples[i], samples[i + 1], p);
+    const Rational between = point_between(samples[i], samples[i + 1], p);
     if (conditions_at(f, between)) return at_rational(between);
   }
   return std::nullopt;
 }
 
 /// A rational in (lo, hi) that is not a root of p (one of a few tries: p has few roots).
-mpq_class split_point(const RationalPolynomial& p, const mpq_class& lo, const mpq_class& hi) {
+Rational split_point(const RationalPolynomial& p, const Rational& lo, const Rational& hi) {
   for (int k = 2;; ++k) {
-    const mpq_class m = lo + (hi - lo) / k;
+    const Rational m = lo + (hi - lo) / k;
     if (p.sign_at(m) != Sign::zero) return m;
   }
 }
@@ -149,8 +149,8 @@ mpq_class split_point(const RationalPolynomial& p, const mpq_class& lo, const mp
 /// root), and split otherwise. With `earliest` the first such root, isolated; without,
 /// some such root (its interval then need not isolate it).
 std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolynomial& p,
-                                      const TarskiQueries& queries, const mpq_class& lo,
-                                      const mpq_class& hi, bool earliest) {
+                                      const TarskiQueries& queries, const Rational& lo,
+                                      const Rational& hi, bool earliest) {
   const int n = queries.count(lo, hi);
   if (n == 0) return std::nullopt;
   const int weight = queries.query(0, lo, hi);  // the weight is never negative
@@ -171,7 +171,7 @@ std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolyn
     if (!earliest) return WithinTime{{std::nullopt, lo, hi}, p};
     return WithinTime{roots_between(p, lo, hi).front(), p};
   }
-  const mpq_class m = split_point(p, lo, hi);
+  const Rational m = split_point(p, lo, hi);
   if (auto left = gap_root_in(f, p, queries, lo, m, earliest)) return left;
   return gap_root_in(f, p, queries, m, hi, earliest);
 }
@@ -180,8 +180,8 @@ std::optional<WithinTime> gap_root_in(const ExactFeature& f, const RationalPolyn
 std::optional<WithinTime> earliest_root(const ExactFeature& f, bool earliest) {
   RationalPolynomial p = squarefree_part(f.gap);
   // Roots at the step's ends are not inside it: divide them out (p is squarefree).
-  if (p.sign_at(0) == Sign::zero) p = p / RationalPolynomial({mpq_class(0), mpq_class(1)});
-  if (p.sign_at(1) == Sign::zero) p = p / RationalPolynomial({mpq_class(-1), mpq_class(1)});
+  if (p.sign_at(0) == Sign::zero) p = p / RationalPolynomial({Rational(0), Rational(1)});
+  if (p.sign_at(1) == Sign::zero) p = p / RationalPolynomial({Rational(-1), Rational(1)});
   if (p.degree() < 1) return std::nullopt;
   std::vector<RationalPolynomial> conditions{f.weight};
   conditions.insert(conditions.end(), f.in_feature.begin(), f.in_feature.end());
@@ -196,28 +196,28 @@ std::optional<WithinTime> earliest_root(const ExactFeature& f, bool earliest) {
 template <class FeaturesOf>
 std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std::size_t count,
                                          FeaturesOf feature_of, bool earliest) {
-  std::array<Moving<mpq_class>, 4> m;
+  std::array<Moving<Rational>, 4> m;
   for (int k = 0; k < 4; ++k) {
     for (int axis = 0; axis < 3; ++axis) {
-      m[k][axis] = Homogeneous<mpq_class>::linear(mpq_class(x[k][axis]), mpq_class(x[k + 4][axis]));
+      m[k][axis] = Homogeneous<Rational>::linear(Rational(x[k][axis]), Rational(x[k + 4][axis]));
     }
   }
-  const mpq_class delta2 = mpq_class(delta) * mpq_class(delta);
-  std::vector<Feature<mpq_class>> features;
+  const Rational delta2 = Rational(delta) * Rational(delta);
+  std::vector<Feature<Rational>> features;
   for (std::size_t i = 0; i < count; ++i)
     features.push_back(feature_of(i, m, delta2));
-  for (const Feature<mpq_class>& f : features) {
+  for (const Feature<Rational>& f : features) {
     if (holds_at_end(f, false)) return at_rational(0);
   }
   std::optional<WithinTime> best;
-  for (const Feature<mpq_class>& g : features) {
+  for (const Feature<Rational>& g : features) {
     const ExactFeature f(g);
     const auto t = f.gap.is_zero() ? earliest_with_conditions(f) : earliest_root(f, earliest);
     if (t && !earliest) return t;
     if (t && (!best || earlier(*t, *best))) best = t;
   }
   if (best) return best;
-  for (const Feature<mpq_class>& f : features) {
+  for (const Feature<Rational>& f : features) {
     if (holds_at_end(f, true)) return at_rational(1);
   }
   return std::nullopt;
@@ -227,8 +227,8 @@ std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std
 /// the isolating interval halved until narrow enough, or until its ends would not be
 /// doubles; then its ends rounded outward.
 TimeInterval bracket_of(WithinTime t, double width) {
-  auto is_double = [](const mpq_class& q) { return mpq_class(q.get_d()) == q; };
-  while (!t.root.exact && t.root.hi - t.root.lo > mpq_class(width)) {
+  auto is_double = [](const Rational& q) { return Rational(q.toward_zero()) == q; };
+  while (!t.root.exact && t.root.hi - t.root.lo > Rational(width)) {
     IsolatedRoot narrower = t.root;
     halve_isolating_interval(t.p, narrower);
     const bool doubles = narrower.exact ? is_double(*narrower.exact)
@@ -236,11 +236,11 @@ TimeInterval bracket_of(WithinTime t, double width) {
     if (!doubles) break;
     t.root = narrower;
   }
-  const mpq_class lo = t.root.exact ? *t.root.exact : t.root.lo;
-  const mpq_class hi = t.root.exact ? *t.root.exact : t.root.hi;
-  const double start = lo.get_d();  // truncated toward zero: at most lo (lo >= 0)
-  double end = hi.get_d();
-  if (mpq_class(end) < hi) end = std::nextafter(end, 2.0);
+  const Rational lo = t.root.exact ? *t.root.exact : t.root.lo;
+  const Rational hi = t.root.exact ? *t.root.exact : t.root.hi;
+  const double start = lo.toward_zero();  // truncated toward zero: at most lo (lo >= 0)
+  double end = hi.toward_zero();
+  if (Rational(end) < hi) end = std::nextafter(end, 2.0);
   return {start, end};
 }
 
@@ -250,13 +250,13 @@ ExactSeparation exact_separation(const QueryPoints& x, bool vertex_face, double 
                                  std::optional<double> width) {
   const auto t = vertex_face ? exactly_within(
                                    x, delta, kVertexFaceFeatures,
-                                   [](std::size_t i, const auto& m, const mpq_class& d2) {
+                                   [](std::size_t i, const auto& m, const Rational& d2) {
                                      return vertex_face_feature(i, m, d2);
                                    },
                                    width.has_value())
                              : exactly_within(
                                    x, delta, kEdgeEdgeFeatures,
-                                   [](std::size_t i, const auto& m, const mpq_class& d2) {
+                                   [](std::size_t i, const auto& m, const Rational& d2) {
                                      return edge_edge_feature(i, m, d2);
                                    },
                                    width.has_value());

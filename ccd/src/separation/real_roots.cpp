@@ -7,11 +7,6 @@ namespace exactgeo::ccd::internal {
 
 namespace {
 
-Sign sign_of(const mpq_class& x) {
-  const int s = sgn(x);
-  return s > 0 ? Sign::positive : s < 0 ? Sign::negative : Sign::zero;
-}
-
 /// The signed remainder sequence a, b, -rem(a, b), ... (to the last nonzero member).
 std::vector<RationalPolynomial> signed_remainders(const RationalPolynomial& a,
                                                   const RationalPolynomial& b) {
@@ -21,7 +16,7 @@ std::vector<RationalPolynomial> signed_remainders(const RationalPolynomial& a,
   while (s.back().degree() > 0) {
     const RationalPolynomial r = s[s.size() - 2] % s.back();
     if (r.is_zero()) break;
-    s.push_back(r * RationalPolynomial({mpq_class(-1)}));
+    s.push_back(r * RationalPolynomial({Rational(-1)}));
   }
   return s;
 }
@@ -33,7 +28,7 @@ std::vector<RationalPolynomial> sturm_sequence(const RationalPolynomial& p) {
 }
 
 /// Sign changes of the sequence at t, zeros skipped.
-int sign_changes(const std::vector<RationalPolynomial>& sequence, const mpq_class& t) {
+int sign_changes(const std::vector<RationalPolynomial>& sequence, const Rational& t) {
   int changes = 0;
   Sign previous = Sign::zero;
   for (const RationalPolynomial& p : sequence) {
@@ -48,14 +43,14 @@ int sign_changes(const std::vector<RationalPolynomial>& sequence, const mpq_clas
 /// Distinct roots in (lo, hi]: Sturm's theorem for a squarefree p. It holds with either
 /// end a root: at a simple root the sequence's first member is skipped and the second, p',
 /// has the sign p takes just after it, so the count there is the count just after.
-int roots_in_half_open(const std::vector<RationalPolynomial>& sequence, const mpq_class& lo,
-                       const mpq_class& hi) {
+int roots_in_half_open(const std::vector<RationalPolynomial>& sequence, const Rational& lo,
+                       const Rational& hi) {
   return sign_changes(sequence, lo) - sign_changes(sequence, hi);
 }
 
 /// The roots in the open (lo, hi), either end possibly a root, in increasing order.
 void isolate(const RationalPolynomial& p, const std::vector<RationalPolynomial>& sequence,
-             const mpq_class& lo, const mpq_class& hi, std::vector<IsolatedRoot>& out) {
+             const Rational& lo, const Rational& hi, std::vector<IsolatedRoot>& out) {
   const bool hi_is_root = p.sign_at(hi) == Sign::zero;
   const int count = roots_in_half_open(sequence, lo, hi) - (hi_is_root ? 1 : 0);
   if (count == 0) return;
@@ -65,7 +60,7 @@ void isolate(const RationalPolynomial& p, const std::vector<RationalPolynomial>&
   }
   // Two roots or more, or an end is a root: halve (the single root then soon lies in a
   // half whose ends are not roots).
-  const mpq_class mid = (lo + hi) / 2;
+  const Rational mid = (lo + hi) / 2;
   isolate(p, sequence, lo, mid, out);
   if (p.sign_at(mid) == Sign::zero) out.push_back({mid, mid, mid});
   isolate(p, sequence, mid, hi, out);
@@ -73,20 +68,20 @@ void isolate(const RationalPolynomial& p, const std::vector<RationalPolynomial>&
 
 }  // namespace
 
-RationalPolynomial::RationalPolynomial(std::vector<mpq_class> coefficients)
+RationalPolynomial::RationalPolynomial(std::vector<Rational> coefficients)
     : c_(std::move(coefficients)) {
   trim();
 }
 
 void RationalPolynomial::trim() {
-  while (!c_.empty() && sgn(c_.back()) == 0)
+  while (!c_.empty() && c_.back().is_zero())
     c_.pop_back();
 }
 
-RationalPolynomial RationalPolynomial::from_homogeneous(const std::vector<mpq_class>& d) {
+RationalPolynomial RationalPolynomial::from_homogeneous(const std::vector<Rational>& d) {
   const int n = static_cast<int>(d.size()) - 1;
-  const RationalPolynomial one_minus_t({mpq_class(1), mpq_class(-1)});
-  const RationalPolynomial t({mpq_class(0), mpq_class(1)});
+  const RationalPolynomial one_minus_t({Rational(1), Rational(-1)});
+  const RationalPolynomial t({Rational(0), Rational(1)});
   RationalPolynomial sum;
   for (int k = 0; k <= n; ++k) {
     RationalPolynomial term({d[k]});
@@ -94,7 +89,7 @@ RationalPolynomial RationalPolynomial::from_homogeneous(const std::vector<mpq_cl
       term = term * one_minus_t;
     for (int i = 0; i < k; ++i)
       term = term * t;
-    std::vector<mpq_class> c = sum.c_;
+    std::vector<Rational> c = sum.c_;
     c.resize(std::max(c.size(), term.c_.size()));
     for (std::size_t i = 0; i < term.c_.size(); ++i)
       c[i] += term.c_[i];
@@ -103,19 +98,19 @@ RationalPolynomial RationalPolynomial::from_homogeneous(const std::vector<mpq_cl
   return sum;
 }
 
-mpq_class RationalPolynomial::operator()(const mpq_class& t) const {
-  mpq_class value = 0;
+Rational RationalPolynomial::operator()(const Rational& t) const {
+  Rational value = 0;
   for (auto k = c_.rbegin(); k != c_.rend(); ++k)
     value = value * t + *k;
   return value;
 }
 
-Sign RationalPolynomial::sign_at(const mpq_class& t) const {
-  return sign_of((*this)(t));
+Sign RationalPolynomial::sign_at(const Rational& t) const {
+  return (*this)(t).sign();
 }
 
 RationalPolynomial RationalPolynomial::derivative() const {
-  std::vector<mpq_class> d;
+  std::vector<Rational> d;
   for (std::size_t k = 1; k < c_.size(); ++k)
     d.push_back(c_[k] * static_cast<long>(k));
   return RationalPolynomial(std::move(d));
@@ -123,7 +118,7 @@ RationalPolynomial RationalPolynomial::derivative() const {
 
 RationalPolynomial operator*(const RationalPolynomial& a, const RationalPolynomial& b) {
   if (a.is_zero() || b.is_zero()) return {};
-  std::vector<mpq_class> c(a.c_.size() + b.c_.size() - 1);
+  std::vector<Rational> c(a.c_.size() + b.c_.size() - 1);
   for (std::size_t i = 0; i < a.c_.size(); ++i) {
     for (std::size_t j = 0; j < b.c_.size(); ++j)
       c[i + j] += a.c_[i] * b.c_[j];
@@ -134,18 +129,18 @@ RationalPolynomial operator*(const RationalPolynomial& a, const RationalPolynomi
 namespace {
 
 /// Quotient and remainder of a by the nonzero b.
-std::pair<std::vector<mpq_class>, std::vector<mpq_class>> divide(std::vector<mpq_class> r,
-                                                                 const std::vector<mpq_class>& b) {
+std::pair<std::vector<Rational>, std::vector<Rational>> divide(std::vector<Rational> r,
+                                                               const std::vector<Rational>& b) {
   assert(!b.empty());
-  std::vector<mpq_class> q(r.size() >= b.size() ? r.size() - b.size() + 1 : 0);
+  std::vector<Rational> q(r.size() >= b.size() ? r.size() - b.size() + 1 : 0);
   while (r.size() >= b.size()) {
-    const mpq_class factor = r.back() / b.back();
+    const Rational factor = r.back() / b.back();
     const std::size_t shift = r.size() - b.size();
     q[shift] = factor;
     for (std::size_t i = 0; i < b.size(); ++i)
       r[shift + i] -= factor * b[i];
     r.pop_back();  // exactly zero now
-    while (!r.empty() && sgn(r.back()) == 0)
+    while (!r.empty() && r.back().is_zero())
       r.pop_back();
   }
   return {std::move(q), std::move(r)};
@@ -168,9 +163,9 @@ RationalPolynomial gcd(RationalPolynomial a, RationalPolynomial b) {
     b = std::move(r);
   }
   if (a.is_zero()) return a;
-  std::vector<mpq_class> c = a.coefficients();
-  const mpq_class lead = c.back();
-  for (mpq_class& x : c)
+  std::vector<Rational> c = a.coefficients();
+  const Rational lead = c.back();
+  for (Rational& x : c)
     x /= lead;
   return RationalPolynomial(std::move(c));
 }
@@ -181,15 +176,15 @@ RationalPolynomial squarefree_part(const RationalPolynomial& p) {
   return p / gcd(p, p.derivative());
 }
 
-std::vector<IsolatedRoot> roots_between(const RationalPolynomial& p, const mpq_class& lo,
-                                        const mpq_class& hi) {
+std::vector<IsolatedRoot> roots_between(const RationalPolynomial& p, const Rational& lo,
+                                        const Rational& hi) {
   std::vector<IsolatedRoot> out;
   if (p.degree() >= 1) isolate(p, sturm_sequence(p), lo, hi, out);
   return out;
 }
 
 void halve_isolating_interval(const RationalPolynomial& p, IsolatedRoot& root) {
-  const mpq_class mid = (root.lo + root.hi) / 2;
+  const Rational mid = (root.lo + root.hi) / 2;
   const Sign at_mid = p.sign_at(mid);
   if (at_mid == Sign::zero) {
     root = {mid, mid, mid};
@@ -206,11 +201,11 @@ TarskiQueries::TarskiQueries(const RationalPolynomial& p, const std::vector<Rati
     sequences_.push_back(signed_remainders(p, p.derivative() * q));
 }
 
-int TarskiQueries::count(const mpq_class& lo, const mpq_class& hi) const {
+int TarskiQueries::count(const Rational& lo, const Rational& hi) const {
   return sign_changes(sturm_, lo) - sign_changes(sturm_, hi);
 }
 
-int TarskiQueries::query(std::size_t i, const mpq_class& lo, const mpq_class& hi) const {
+int TarskiQueries::query(std::size_t i, const Rational& lo, const Rational& hi) const {
   return sign_changes(sequences_[i], lo) - sign_changes(sequences_[i], hi);
 }
 

@@ -9,32 +9,34 @@
 //    of the signed remainder sequence of p and p' q across the isolating interval counts
 //    the roots of p there with q > 0 minus those with q < 0 (Sturm-Tarski), and r is the
 //    only one. No refinement, however close q's roots come to r.
-// Everything is exact (GMP rationals); nothing here is fast, and nothing needs to be.
-
-#include <gmpxx.h>
+// Everything is exact (kernel::Rational, GMP); nothing here is fast, and nothing needs to
+// be.
 
 #include <optional>
 #include <vector>
 
+#include "exactgeo/predicates/kernel/rational.hpp"
 #include "exactgeo/predicates/sign.hpp"
 
 namespace exactgeo::ccd::internal {
+
+using kernel::Rational;
 
 /// sum_k c[k] t^k; no trailing zero coefficients (the zero polynomial has none).
 class RationalPolynomial {
  public:
   RationalPolynomial() = default;
-  explicit RationalPolynomial(std::vector<mpq_class> coefficients);
+  explicit RationalPolynomial(std::vector<Rational> coefficients);
 
   /// sum_k d[k] (1 - t)^(n - k) t^k, n = d.size() - 1 (the homogeneous Bernstein form).
-  static RationalPolynomial from_homogeneous(const std::vector<mpq_class>& d);
+  static RationalPolynomial from_homogeneous(const std::vector<Rational>& d);
 
   bool is_zero() const noexcept { return c_.empty(); }
   int degree() const noexcept { return static_cast<int>(c_.size()) - 1; }
-  const std::vector<mpq_class>& coefficients() const noexcept { return c_; }
+  const std::vector<Rational>& coefficients() const noexcept { return c_; }
 
-  mpq_class operator()(const mpq_class& t) const;
-  Sign sign_at(const mpq_class& t) const;
+  Rational operator()(const Rational& t) const;
+  Sign sign_at(const Rational& t) const;
 
   RationalPolynomial derivative() const;
   friend RationalPolynomial operator*(const RationalPolynomial& a, const RationalPolynomial& b);
@@ -45,7 +47,7 @@ class RationalPolynomial {
 
  private:
   void trim();
-  std::vector<mpq_class> c_;
+  std::vector<Rational> c_;
 };
 
 /// The monic greatest common divisor (zero when both are zero).
@@ -57,15 +59,15 @@ RationalPolynomial squarefree_part(const RationalPolynomial& p);
 /// A real root of a squarefree polynomial: the rational `exact`, or the only root in the
 /// open interval (lo, hi), at whose ends the polynomial does not vanish.
 struct IsolatedRoot {
-  std::optional<mpq_class> exact;
-  mpq_class lo;
-  mpq_class hi;
+  std::optional<Rational> exact;
+  Rational lo;
+  Rational hi;
 };
 
 /// The roots of the squarefree p in the open interval (lo, hi), in increasing order (none
 /// for a constant p).
-std::vector<IsolatedRoot> roots_between(const RationalPolynomial& p, const mpq_class& lo,
-                                        const mpq_class& hi);
+std::vector<IsolatedRoot> roots_between(const RationalPolynomial& p, const Rational& lo,
+                                        const Rational& hi);
 
 /// Halves the isolating interval of a root of the squarefree p, keeping the root (sets
 /// `exact` when a midpoint is the root).
@@ -78,8 +80,8 @@ void halve_isolating_interval(const RationalPolynomial& p, IsolatedRoot& root);
 class TarskiQueries {
  public:
   TarskiQueries(const RationalPolynomial& p, const std::vector<RationalPolynomial>& qs);
-  int count(const mpq_class& lo, const mpq_class& hi) const;
-  int query(std::size_t i, const mpq_class& lo, const mpq_class& hi) const;
+  int count(const Rational& lo, const Rational& hi) const;
+  int query(std::size_t i, const Rational& lo, const Rational& hi) const;
 
  private:
   std::vector<RationalPolynomial> sturm_;
