@@ -37,8 +37,8 @@
 // spacing, is reported as a root, conservatively: it cannot be culled even there, which
 // happens for tangential contacts (a double root of the coplanarity cubic), for near
 // misses closer than the depth resolves, and next to a contact closer than the culling
-// planes' double normals resolve (within about 2^-40 of the contact time on the public
-// queries, docs/ccd.md). It never misses a root: every piece is either proven empty or
+// planes' double normals resolve (docs/ccd.md, "Time of impact", has where that begins on
+// the public queries). It never misses a root: every piece is either proven empty or
 // explored.
 
 #include <algorithm>
@@ -60,10 +60,9 @@ struct FoundRoot {
   bool conservative;  ///< at the depth limit (or corners beyond exact storage), not proven
 };
 
-/// Parity is computed at depths 0, 8, 16, ... (and where needed to answer). On the public
-/// handcrafted queries, whose searches all end without a root, edge-edge costs 80.1M
-/// instructions computing it at every depth, 59.3M every 4th, 52.6M every 8th and 49.1M
-/// every 16th; 8 keeps a collision's confirmation within 7 levels.
+/// Parity is computed at depths 0, 8, 16, ... (and where needed to answer): searches that
+/// end without a root never need it, and 8 keeps a collision's confirmation within 7
+/// levels (docs/ccd.md, "Parity only where it can answer", has the instruction counts).
 inline constexpr int kParityEvery = 8;
 
 template <std::size_t C>

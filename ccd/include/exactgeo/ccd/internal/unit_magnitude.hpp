@@ -6,9 +6,9 @@
 // coordinates, and times are not scaled, so multiplying every coordinate of a query (or
 // of a whole mesh step) by one power of two changes no answer. The filters, though, are
 // certified only where products neither overflow nor underflow: a query at 2^±900 misses
-// every filter and pays expansion arithmetic for every sign (60-300x slower on the
-// bundled queries). Inside [2^-64, 2^64] the products of the degrees used stay far from
-// both limits, so only coordinates outside it are scaled.
+// every filter and pays expansion arithmetic for every sign (docs/ccd.md measures how
+// much slower). Inside [2^-64, 2^64] the products of the degrees used stay far from both
+// limits, so only coordinates outside it are scaled.
 
 #include <algorithm>
 #include <cmath>
