@@ -30,7 +30,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
-#include <ranges>
 #include <span>
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
@@ -187,12 +186,28 @@ RayCount count_crossings(const Signs& signs, const PreparedFaces& faces,
   return odd ? RayCount::odd : RayCount::even;
 }
 
+/// The indices 0, 1, ..., n - 1 as a range for a range-based for (std::views::iota does
+/// not build with every toolchain the project supports: clang 14 on libstdc++ 12).
+struct FirstIndices {
+  struct Iterator {
+    std::size_t i;
+    std::size_t operator*() const noexcept { return i; }
+    Iterator& operator++() noexcept {
+      ++i;
+      return *this;
+    }
+    bool operator!=(const Iterator& other) const noexcept { return i != other.i; }
+  };
+  std::size_t n;
+  Iterator begin() const noexcept { return {0}; }
+  Iterator end() const noexcept { return {n}; }
+};
+
 /// The same with every face a candidate.
 template <class Signs, class CornerOffset>
 RayCount count_crossings(const Signs& signs, const PreparedFaces& faces, const CornerOffset& corner,
                          const kernel::Offset& direction) noexcept {
-  return count_crossings(signs, faces, std::views::iota(std::size_t{0}, faces.faces.size()), corner,
-                         direction);
+  return count_crossings(signs, faces, FirstIndices{faces.faces.size()}, corner, direction);
 }
 
 enum class CrossingParity : std::uint8_t {
