@@ -13,6 +13,11 @@ endif()
 # compile time in error_free.hpp (FLT_EVAL_METHOD must be 0).
 add_library(exactgeo_strict_fp INTERFACE)
 target_compile_options(exactgeo_strict_fp INTERFACE -ffp-contract=off -fno-fast-math)
+# The filter constants and certificate bounds are derived at compile time (roundoff.hpp):
+# clang's default budget of constexpr steps is too small for the slice-side quartics.
+if(CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+  target_compile_options(exactgeo_strict_fp INTERFACE -fconstexpr-steps=100000000)
+endif()
 
 if(EXACTGEO_SANITIZE)
   add_compile_options(-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)

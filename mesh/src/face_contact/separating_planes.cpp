@@ -79,7 +79,8 @@ class EdgePairAxis {
 bool separated_by_corner_plane(const FaceGeometry& f, const FaceGeometry& g) noexcept {
   const std::size_t planes = f.shape == Shape::skew || f.shape == Shape::other_flat ? 4 : 1;
   for (std::size_t t = 0; t < planes; ++t) {
-    const auto& [i, j, k] = kQuadTriples[t];
+    // Plain copies, not a structured binding: a lambda may not capture one in clang 14.
+    const std::size_t i = kQuadTriples[t][0], j = kQuadTriples[t][1], k = kQuadTriples[t][2];
     const auto side = [&](const Point3& x) {
       // A shared corner is on the plane: skip the exact stages that would prove it.
       if (x == f.p[i] || x == f.p[j] || x == f.p[k]) return Sign::zero;
