@@ -85,7 +85,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   ProgressLine progress(err, options.progress, "points");
   const std::optional<InsideMesh> built = build_inside_mesh(options, err, &progress);
   if (!built) return ExitCode::input_error;
-  progress.stage("classifying");
+  progress.phase("classifying");
   const std::optional<double> points_bytes = file_size(options.points);
 
   Tally tally;

@@ -78,7 +78,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
   const std::string source = mesh::mesh_source_name(options.mesh);
   std::optional<LoadedMesh> kept;
   try {
-    if (progress) progress->stage("reading " + source);
+    if (progress) progress->phase("reading " + source);
     LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
     first_index = loaded.first_index();
     if (options.mesh == "-") kept = loaded;  // to explain a refusal: it cannot be read again
@@ -88,7 +88,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
       });
     }
     if (progress) {
-      progress->stage("building the search structure (" + grouped(loaded.mesh.faces.size()) +
+      progress->phase("building the search structure (" + grouped(loaded.mesh.faces.size()) +
                       " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
     }
     const Clock::time_point start = Clock::now();
@@ -122,7 +122,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
     return std::nullopt;
   }
   if (options.self_intersection_check) {
-    if (progress && !beside.valid()) progress->stage("looking for faces that intersect");
+    if (progress && !beside.valid()) progress->phase("looking for faces that intersect");
     TimedCheck check;
     try {
       check = beside.valid() ? beside.get() : check_self_intersections(built.mesh(), 1);

@@ -47,7 +47,7 @@ struct InsideMesh {
 /// Loads the mesh, builds its classifier and (unless the options skip it) looks for faces
 /// that intersect: on such a mesh a warning on `err` says that the labels are those of
 /// the parity solid. nullopt once an error is on `err` ("exactgeo inside: ..."). `progress`,
-/// when given, shows the stages.
+/// when given, shows each phase.
 std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
                                             ProgressLine* progress = nullptr);
 
