@@ -77,13 +77,13 @@ void print_json_labels(const std::vector<inside::Location>& labels, std::ostream
 
 ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                     const std::string& points_source, std::ostream& out, std::ostream& err) {
-  if (options.slice.plane) return run_slice(options, out, err);
-  if (options.mesh == "-" && options.points == "-") {
+  if (options.slice.plane) return run_slice(options.mesh, options.slice, options.json, out, err);
+  if (options.mesh.path == "-" && options.points == "-") {
     err << "exactgeo inside: the mesh and the points cannot both come from standard input\n";
     return ExitCode::input_error;
   }
   ProgressLine progress(err, options.progress, "points");
-  const std::optional<InsideMesh> built = build_inside_mesh(options, err, &progress);
+  const std::optional<InsideMesh> built = build_inside_mesh(options.mesh, err, &progress);
   if (!built) return ExitCode::input_error;
   progress.phase("classifying");
   const std::optional<double> points_bytes = file_size(options.points);
@@ -106,7 +106,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
-      built->classify(block, locations, options);
+      built->classify(block, locations, options.mesh.arithmetic, options.mesh.threads);
       tally.seconds += seconds_since(start);
       tally.points += block.size();
       text.clear();
@@ -133,7 +133,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     out << "{\"points\": " << tally.points << ", \"inside\": " << count(inside::Location::inside)
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
-        << (options.float_rays ? "embree" : to_string(options.arithmetic)) << "\""
+        << method_name(options.mesh) << "\""
         << ", \"intersecting_face_pairs\": "
         << (built->self ? std::to_string(built->self->intersecting.size()) : "null")
         << ", \"undecided_face_pairs\": "
@@ -161,24 +161,25 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       "(inside, outside or boundary), in input order. POINTS is text (three numbers per line: "
       "decimal or hexfloat, separated by spaces and/or commas; '#' comments), raw "
       "little-endian float64 triples (f64), or a NumPy .npy array of shape (n, 3), float64.");
-  sub->add_option("mesh", options.mesh,
+  sub->add_option("mesh", options.mesh.path,
                   "OBJ, OFF or PLY (exact), or any format assimp reads; - for standard input "
                   "(with --format and a POINTS file)")
       ->required();
-  add_mesh_format_option(*sub, options.mesh_format);
+  add_mesh_format_option(*sub, options.mesh.load.format);
   sub->add_option("points", options.points, "points file, or - for standard input (default)");
   sub->add_option_function<std::string>(
          "--method",
          [&options](const std::string& m) {
-           options.float_rays = m == "embree";
-           if (!options.float_rays) options.arithmetic = *parse_arithmetic(m);
+           options.mesh.float_rays = m == "embree";
+           if (!options.mesh.float_rays) options.mesh.arithmetic = *parse_arithmetic(m);
          },
          "exact (default), double (the same traversal in plain doubles: fast, not exact) or "
          "embree (one float ray per point through Embree's own quads and triangles, hits "
          "counted: what float ray-casting tools do; a baseline, wrong on grazing rays, never "
          "boundary)")
       ->check(CLI::IsMember({"exact", "double", "embree"}));
-  sub->add_option("--threads", options.threads, "worker threads (default: all hardware threads)")
+  sub->add_option("--threads", options.mesh.threads,
+                  "worker threads (default: all hardware threads)")
       ->check(CLI::Range(1u, 1024u));
   sub->add_option_function<std::string>(
          "--points-format",
@@ -193,49 +194,21 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
                 "with --json: the labels too, as \"labels\": [...] in input order (held in "
                 "memory until the end, one byte per point)")
       ->needs(json);
-  sub->add_flag("--weld", options.weld, "merge vertices with exactly equal coordinates");
-  sub->add_flag("--split-polygons", options.split_polygons,
+  sub->add_flag("--weld", options.mesh.load.weld, "merge vertices with exactly equal coordinates");
+  sub->add_flag("--split-polygons", options.mesh.load.split_polygons,
                 "split faces with more than four corners into triangle fans");
-  sub->add_flag("--allow-non-manifold", options.allow_non_manifold,
+  sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,
                 "accept edges shared by 4, 6, ... faces (parity is still defined)");
-  sub->add_flag("!--no-self-intersection-check", options.self_intersection_check,
+  sub->add_flag("!--no-self-intersection-check", options.mesh.self_intersection_check,
                 "skip looking for faces that intersect (exact; about as long as building the "
                 "search structure). On a mesh whose faces intersect the labels are those of the "
                 "parity solid, and without the check nothing says so");
-  sub->add_flag("!--no-space-cells", options.space_cells,
+  sub->add_flag("!--no-space-cells", options.mesh.space_cells,
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");
 
-  // A cross-section picture instead of labels (cli/slice_image.hpp).
-  CLI::Option* slice =
-      sub->add_option_function<std::string>(
-             "--slice",
-             [&options](const std::string& text) {
-               std::string error;
-               options.slice.plane = parse_slice(text, error);
-             },
-             "draw a cross-section instead of reading POINTS: the plane AXIS=VALUE (AXIS x, y "
-             "or z; VALUE decimal or hexfloat, read exactly), written to --image. Each pixel "
-             "shows the exact label of its centre: inside sky blue, outside white, boundary "
-             "vermillion; the mesh's cross-section curve is drawn over it in black. The "
-             "picture spans the mesh's box in the other two axes, grown by 1/32 of its longer "
-             "side; to the right and up: x and y for z=..., y and z for x=..., x and z for "
-             "y=...")
-          ->check(CLI::Validator(
-              [](std::string& text) {
-                std::string error;
-                return parse_slice(text, error) ? std::string() : error;
-              },
-              "AXIS=VALUE"));
-  CLI::Option* image =
-      sub->add_option("--image", options.slice.image,
-                      "with --slice: the PNG file to write (written whole or not at all)");
-  sub->add_option("--resolution", options.slice.resolution,
-                  "with --slice: pixels along the picture's longer side (default 1024)")
-      ->check(CLI::Range(SliceOptions::kMinResolution, SliceOptions::kMaxResolution))
-      ->needs(slice);
-  slice->needs(image);
-  image->needs(slice);
+  // A cross-section picture instead of labels (cli/slice_options.hpp).
+  CLI::Option* slice = add_slice_options(*sub, options.slice);
   for (const char* name : {"points", "--labels", "--points-format"}) {
     slice->excludes(sub->get_option(name));
   }

@@ -10,9 +10,9 @@
 #include <string>
 
 #include "cli/exit_code.hpp"
-#include "cli/slice_image.hpp"
+#include "cli/inside_mesh.hpp"
+#include "cli/slice_options.hpp"
 #include "exactgeo/io/point_reader.hpp"
-#include "exactgeo/predicates/arithmetic.hpp"
 
 namespace CLI {
 class App;
@@ -21,27 +21,16 @@ class App;
 namespace exactgeo::cli {
 
 struct InsideCommandOptions {
-  std::string mesh;          ///< a file, or "-" for standard input (with mesh_format)
-  std::string mesh_format;   ///< --format: empty for the mesh file's extension
+  /// The mesh, its checks, the method and the threads (cli/inside_mesh.hpp).
+  InsideMeshOptions mesh;
   std::string points = "-";  ///< a file, or "-" for standard input
   /// nullopt: npy for a path ending in ".npy", text otherwise (io::default_point_format)
   std::optional<io::PointFormat> points_format;
-  Arithmetic arithmetic = Arithmetic::exact;
-  /// The float ray baseline (inside/float_ray_parity.hpp) instead of the classifier.
-  bool float_rays = false;
-  unsigned threads = 0;  ///< 0: one per hardware thread
   bool json = false;
-  bool labels = false;  ///< with json: the labels too, in input order
-  bool weld = false;
-  bool split_polygons = false;
-  bool allow_non_manifold = false;
-  bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
-  /// Look for faces that intersect (exactly) and warn: the labels are then those of the
-  /// parity solid.
-  bool self_intersection_check = true;
+  bool labels = false;    ///< with json: the labels too, in input order
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
-  /// are read (cli/slice_image.hpp).
+  /// are read (cli/slice_command.hpp).
   SliceOptions slice;
 };
 

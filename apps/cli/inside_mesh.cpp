@@ -20,27 +20,21 @@ using mesh::LoadedMesh;
 
 namespace {
 
-mesh::LoadOptions load_options(const InsideCommandOptions& options) {
-  return {.weld = options.weld,
-          .split_polygons = options.split_polygons,
-          .format = options.mesh_format};
-}
-
 /// A mesh refused by its checks, explained: the checks' message in the file's own
 /// numbering (OBJ counts vertices and faces from 1, OFF and PLY from 0), saying which, and
 /// whether merging the vertices that repeat another's coordinates (--weld) would make it
 /// acceptable. `message` as it is when the refusal was not the checks'. Only on this error
 /// path is a file read a second time; standard input cannot be, so `kept` is the copy of
 /// it taken before the build.
-std::string refusal_explained(const InsideCommandOptions& options, const std::string& message,
+std::string refusal_explained(const InsideMeshOptions& options, const std::string& message,
                               const std::optional<LoadedMesh>& kept) {
   try {
-    LoadedMesh loaded = kept ? *kept : load_mesh(options.mesh, load_options(options));
+    LoadedMesh loaded = kept ? *kept : load_mesh(options.path, options.load);
     const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded,
                                                       options.allow_non_manifold);
     if (!problem) return message;
     std::string text = *problem;
-    if (options.weld) return text;
+    if (options.load.weld) return text;
     const std::size_t merged = mesh::weld_vertices(loaded.mesh);
     if (merged > 0 &&
         !mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), options.allow_non_manifold)) {
@@ -67,7 +61,11 @@ TimedCheck check_self_intersections(const mesh::Mesh& mesh, unsigned threads) {
 
 }  // namespace
 
-std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
+std::string_view method_name(const InsideMeshOptions& options) noexcept {
+  return options.float_rays ? std::string_view("embree") : to_string(options.arithmetic);
+}
+
+std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, std::ostream& err,
                                             ProgressLine* progress) {
   InsideMesh built;
   std::size_t first_index = 0;
@@ -75,13 +73,13 @@ std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options,
   // copy of the mesh (the build takes the original), on the threads asked for; with one
   // thread asked for, after the build.
   std::future<TimedCheck> beside;
-  const std::string source = mesh::mesh_source_name(options.mesh);
+  const std::string source = mesh::mesh_source_name(options.path);
   std::optional<LoadedMesh> kept;
   try {
     if (progress) progress->phase("reading " + source);
-    LoadedMesh loaded = load_mesh(options.mesh, load_options(options));
+    LoadedMesh loaded = load_mesh(options.path, options.load);
     first_index = loaded.first_index();
-    if (options.mesh == "-") kept = loaded;  // to explain a refusal: it cannot be read again
+    if (options.path == "-") kept = loaded;  // to explain a refusal: it cannot be read again
     if (options.self_intersection_check && options.threads != 1) {
       beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {
         return check_self_intersections(copy, threads);

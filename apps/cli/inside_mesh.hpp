@@ -8,16 +8,39 @@
 #include <iosfwd>
 #include <optional>
 #include <span>
+#include <string>
+#include <string_view>
 
-#include "cli/inside_command.hpp"
 #include "cli/progress_line.hpp"
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/float_ray_parity.hpp"
+#include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/predicates/arithmetic.hpp"
 
 namespace exactgeo::cli {
+
+/// What the classifier is built from and how it classifies: the mesh, what its checks
+/// accept, the method and the threads. Nothing about the points or the report.
+struct InsideMeshOptions {
+  std::string path;        ///< a file, or "-" for standard input (with load.format)
+  mesh::LoadOptions load;  ///< --format, --weld, --split-polygons
+  bool allow_non_manifold = false;
+  Arithmetic arithmetic = Arithmetic::exact;
+  /// The float ray baseline (inside/float_ray_parity.hpp) instead of the classifier.
+  bool float_rays = false;
+  bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
+  /// Look for faces that intersect (exactly) and warn: the labels are then those of the
+  /// parity solid.
+  bool self_intersection_check = true;
+  unsigned threads = 0;  ///< 0: one per hardware thread
+};
+
+/// The --method name of what classifies: "embree" for the float ray baseline, else the
+/// arithmetic's name ("exact", "double", ...).
+std::string_view method_name(const InsideMeshOptions& options) noexcept;
 
 /// The classifier the options ask for: the exact one (in any arithmetic) or the float ray
 /// baseline, which keeps no mesh of its own (a slice's outline needs it, so it is kept here).
@@ -34,12 +57,14 @@ struct InsideMesh {
 
   const mesh::Mesh& mesh() const { return classifier ? classifier->mesh() : float_rays_mesh; }
 
+  /// Labels `points` on `threads` threads (0: all), the classifier's signs in `arithmetic`;
+  /// the float ray baseline has no arithmetic to choose.
   void classify(std::span<const Point3> points, std::span<inside::Location> locations,
-                const InsideCommandOptions& options) const {
+                Arithmetic arithmetic, unsigned threads) const {
     if (float_rays) {
-      inside::classify_batch(*float_rays, points, locations, options.threads);
+      inside::classify_batch(*float_rays, points, locations, threads);
     } else {
-      inside::classify_batch(*classifier, points, locations, options.arithmetic, options.threads);
+      inside::classify_batch(*classifier, points, locations, arithmetic, threads);
     }
   }
 };
@@ -48,7 +73,7 @@ struct InsideMesh {
 /// that intersect: on such a mesh a warning on `err` says that the labels are those of
 /// the parity solid. nullopt once an error is on `err` ("exactgeo inside: ..."). `progress`,
 /// when given, shows each phase.
-std::optional<InsideMesh> build_inside_mesh(const InsideCommandOptions& options, std::ostream& err,
+std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, std::ostream& err,
                                             ProgressLine* progress = nullptr);
 
 }  // namespace exactgeo::cli

@@ -22,10 +22,8 @@
 
 namespace exactgeo::cli {
 
-namespace {}  // namespace
-
-ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::ostream& err) {
-  const SliceOptions& slice = options.slice;
+ExitCode run_slice(const InsideMeshOptions& mesh_options, const SliceOptions& slice, bool json,
+                   std::ostream& out, std::ostream& err) {
   const SlicePlane plane = *slice.plane;
   // The destination first: an unwritable path is reported before any work is done.
   std::optional<OutputFile> png;
@@ -35,20 +33,21 @@ ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::
     err << "exactgeo inside: " << e.what() << "\n";
     return ExitCode::input_error;
   }
-  const std::optional<InsideMesh> built = build_inside_mesh(options, err);
+  const std::optional<InsideMesh> built = build_inside_mesh(mesh_options, err);
   if (!built) return ExitCode::input_error;
 
   SliceGrid grid;
   try {
     grid = slice_grid(built->mesh(), plane, slice.resolution);
   } catch (const std::invalid_argument& e) {
-    err << "exactgeo inside: " << mesh::mesh_source_name(options.mesh) << ": " << e.what() << "\n";
+    err << "exactgeo inside: " << mesh::mesh_source_name(mesh_options.path) << ": " << e.what()
+        << "\n";
     return ExitCode::input_error;
   }
   Clock::time_point start = Clock::now();
   const std::vector<inside::Location> labels =
       classify_pixels(grid, [&](std::span<const Point3> points, std::span<inside::Location> to) {
-        built->classify(points, to, options);
+        built->classify(points, to, mesh_options.arithmetic, mesh_options.threads);
       });
   const double classify_seconds = seconds_since(start);
   start = Clock::now();
@@ -78,9 +77,8 @@ ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::
   const double right = grid.left + double(grid.width) * grid.pixel;
   const double bottom = grid.top - double(grid.height) * grid.pixel;
   const bool meets_box = grid.axis_lower <= plane.value && plane.value <= grid.axis_upper;
-  const std::string_view method =
-      options.float_rays ? std::string_view("embree") : to_string(options.arithmetic);
-  if (options.json) {
+  const std::string_view method = method_name(mesh_options);
+  if (json) {
     out << "{\"image\": " << json_string(slice.image) << ", \"width\": " << grid.width
         << ", \"height\": " << grid.height << ", \"plane\": {\"axis\": \"" << to_char(plane.axis)
         << "\", \"value\": " << shortest(plane.value) << "}, \"horizontal\": {\"axis\": \""

@@ -6,12 +6,16 @@
 #include <iosfwd>
 
 #include "cli/exit_code.hpp"
-#include "cli/inside_command.hpp"
+#include "cli/inside_mesh.hpp"
+#include "cli/slice_options.hpp"
 
 namespace exactgeo::cli {
 
-/// Precondition: options.slice.plane is set. Reads no points. The image is reserved
-/// before any work (an unwritable path fails at once) and appears whole or not at all.
-ExitCode run_slice(const InsideCommandOptions& options, std::ostream& out, std::ostream& err);
+/// Draws `slice` (precondition: slice.plane is set) of the mesh `mesh_options` names,
+/// classified by its method on its threads, and reports it on `out` (one JSON object with
+/// `json`). Reads no points. The image is reserved before any work (an unwritable path fails
+/// at once) and appears whole or not at all.
+ExitCode run_slice(const InsideMeshOptions& mesh_options, const SliceOptions& slice, bool json,
+                   std::ostream& out, std::ostream& err);
 
 }  // namespace exactgeo::cli

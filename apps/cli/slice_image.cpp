@@ -4,8 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "exactgeo/io/numbers.hpp"
-
 namespace exactgeo::cli {
 namespace {
 
@@ -137,26 +135,6 @@ class PatchTracer {
 };
 
 }  // namespace
-
-char to_char(Axis axis) noexcept {
-  return static_cast<char>('x' + static_cast<int>(axis));
-}
-
-std::optional<SlicePlane> parse_slice(std::string_view text, std::string& error) {
-  const auto equals = text.find('=');
-  if (equals != 1 || (text[0] != 'x' && text[0] != 'y' && text[0] != 'z')) {
-    error = "expected AXIS=VALUE with AXIS x, y or z (for example z=0.3), got '" +
-            std::string(text) + "'";
-    return std::nullopt;
-  }
-  std::string number_error;
-  const auto value = io::parse_number(text.substr(2), number_error);
-  if (!value) {
-    error = "the value in '" + std::string(text) + "': " + number_error;
-    return std::nullopt;
-  }
-  return SlicePlane{static_cast<Axis>(text[0] - 'x'), *value};
-}
 
 ImageAxes image_axes(Axis axis) noexcept {
   switch (axis) {

@@ -14,41 +14,17 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <span>
-#include <string>
-#include <string_view>
 #include <vector>
 
 #include "cli/colour.hpp"
 #include "cli/png_image.hpp"
+#include "cli/slice_options.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::cli {
-
-enum class Axis : std::uint8_t { x, y, z };
-char to_char(Axis axis) noexcept;
-
-/// The plane axis = value.
-struct SlicePlane {
-  Axis axis = Axis::z;
-  double value = 0.0;
-};
-
-/// "z=0.3", "x=-0x1.8p-2": x, y or z, '=', then one whole decimal or hexfloat number read
-/// exactly (io::parse_number). nullopt, with `error` saying why, for anything else.
-std::optional<SlicePlane> parse_slice(std::string_view text, std::string& error);
-
-/// The options of `inside --slice` (InsideCommandOptions::slice).
-struct SliceOptions {
-  std::optional<SlicePlane> plane;  ///< set: draw a cross-section instead of reading points
-  std::string image;                ///< the PNG file to write
-  unsigned resolution = 1024;       ///< pixels along the picture's longer side
-  static constexpr unsigned kMinResolution = 16;
-  static constexpr unsigned kMaxResolution = 8192;
-};
 
 /// The coordinate indices drawn to the right and upward for a plane normal to `axis`.
 struct ImageAxes {

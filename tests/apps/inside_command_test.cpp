@@ -41,7 +41,7 @@ struct Outcome {
 /// Runs on the file `points` the way the binary does (opened in binary mode, named by its path).
 Outcome run_file(InsideCommandOptions options, const fs::path& points) {
   options.points = points.string();
-  options.threads = 2;
+  options.mesh.threads = 2;
   std::ifstream in(points, std::ios::binary);
   std::ostringstream out, err;
   const ExitCode code = run_inside(options, in, options.points, out, err);
@@ -122,7 +122,7 @@ TEST_F(InsideCommand, EveryPointFormatGivesTheSameLabels) {
   points.insert(points.end(), loaded.mesh.vertices.begin(), loaded.mesh.vertices.end());
 
   InsideCommandOptions options;
-  options.mesh = mesh;
+  options.mesh.path = mesh;
   write_file(dir_ / "points.txt", as_text(points));
   const Outcome text = run_file(options, dir_ / "points.txt");
   ASSERT_EQ(text.code, ExitCode::success) << text.err;
@@ -228,7 +228,7 @@ TEST_F(InsideCommand, MalformedBinaryInputIsRefusedNamingFileAndPlace) {
   for (const bool json : {false, true}) {
     for (const Case& c : cases) {
       InsideCommandOptions options;
-      options.mesh = kMeshes + "cgal/cube_quad.off";
+      options.mesh.path = kMeshes + "cgal/cube_quad.off";
       options.points_format = c.format;
       options.json = json;
       options.labels = json;
@@ -245,7 +245,7 @@ TEST_F(InsideCommand, MalformedBinaryInputIsRefusedNamingFileAndPlace) {
 
 TEST_F(InsideCommand, F64FromStandardInput) {
   InsideCommandOptions options;
-  options.mesh = kMeshes + "cgal/cube_quad.off";
+  options.mesh.path = kMeshes + "cgal/cube_quad.off";
   options.points_format = io::PointFormat::f64;
   const std::string f64 = float64_bytes({{0, 0, 0}, {2, 0, 0}, {1, 0, 0}});
   const Outcome labels = run_stdin(options, f64);
@@ -272,7 +272,7 @@ TEST_F(InsideCommand, F64FromStandardInput) {
 // on stdout are the same as without it.
 TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   InsideCommandOptions options;
-  options.mesh = kMeshes + "cgal/cube_quad.off";
+  options.mesh.path = kMeshes + "cgal/cube_quad.off";
   write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 0 0\n");
   const Outcome quiet = run_file(options, dir_ / "points.txt");
   options.progress = true;
@@ -281,7 +281,7 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   EXPECT_EQ(shown.out, quiet.out);
   EXPECT_EQ(quiet.err, "");
   const std::string& err = shown.err;
-  const std::size_t reading = err.find("reading " + options.mesh + "...");
+  const std::size_t reading = err.find("reading " + options.mesh.path + "...");
   const std::size_t building =
       err.find("building the search structure (6 faces) and looking for faces that intersect...");
   const std::size_t counted = err.find("2 points (100.0%)");
@@ -316,15 +316,15 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   write_file(dir_ / "two_cubes.obj", obj);
   write_file(dir_ / "points.txt", "0.25 0.25 0.25\n0.75 0.75 0.75\n1.25 1.25 1.25\n");
   InsideCommandOptions options;
-  options.mesh = (dir_ / "two_cubes.obj").string();
+  options.mesh.path = (dir_ / "two_cubes.obj").string();
   for (const unsigned threads : {2u, 1u}) {
-    options.threads = threads;
+    options.mesh.threads = threads;
     options.points = (dir_ / "points.txt").string();
     std::ifstream in(options.points, std::ios::binary);
     std::ostringstream out, err;
     ASSERT_EQ(run_inside(options, in, options.points, out, err), ExitCode::success) << err.str();
     EXPECT_EQ(out.str(), "inside\noutside\ninside\n");
-    EXPECT_EQ(err.str().rfind("exactgeo inside: warning: " + options.mesh +
+    EXPECT_EQ(err.str().rfind("exactgeo inside: warning: " + options.mesh.path +
                                   ": 6 pairs of faces intersect (first: 2-9, ",
                               0),
               0u)
@@ -339,7 +339,7 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   EXPECT_NE(json.out.find("\"intersecting_face_pairs\": 6, \"undecided_face_pairs\": 0"),
             std::string::npos)
       << json.out;
-  options.self_intersection_check = false;
+  options.mesh.self_intersection_check = false;
   const Outcome quiet = run_file(options, dir_ / "points.txt");
   EXPECT_EQ(quiet.err, "");
   EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;

@@ -22,6 +22,7 @@
 #include "cli/output_file.hpp"
 #include "cli/png_image.hpp"
 #include "cli/slice_image.hpp"
+#include "cli/slice_options.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "exactgeo/mesh/mesh.hpp"
@@ -132,14 +133,14 @@ class SliceImage : public ::testing::Test {
               const std::string& name = "slice.png", unsigned threads = 2,
               bool float_rays = false) {
     InsideCommandOptions options;
-    options.mesh = mesh_path;
+    options.mesh.path = mesh_path;
     std::string error;
     options.slice.plane = parse_slice(slice, error);
     EXPECT_TRUE(options.slice.plane) << error;
     options.slice.image = (dir_ / name).string();
     options.slice.resolution = resolution;
-    options.threads = threads;
-    options.float_rays = float_rays;
+    options.mesh.threads = threads;
+    options.mesh.float_rays = float_rays;
     options.json = true;
     std::istringstream in;
     std::ostringstream out, err;
