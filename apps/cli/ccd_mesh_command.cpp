@@ -16,7 +16,7 @@
 
 #include "cli/json.hpp"
 #include "cli/marked_ply.hpp"
-#include "cli/mesh_format_option.hpp"
+#include "cli/mesh_load_options.hpp"
 #include "cli/mesh_marks.hpp"
 #include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
@@ -343,9 +343,8 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
                 "accept quads: each quad c0 c1 c2 c3 becomes the triangles c0 c1 c2 and c0 c2 c3 "
                 "(its diagonal c0-c2), in place, so face indices in the output count triangles "
                 "in file order");
-  sub->add_flag("--split-polygons", options.split_polygons,
-                "split faces with more than four corners into triangle fans (the same split in "
-                "both frames) instead of refusing the files");
+  add_split_polygons_flag(*sub, options.split_polygons,
+                          " (the same split in both frames) instead of refusing the files");
   sub->add_flag("--json", options.json,
                 "print one JSON object (pairs, candidate counts, time of impact, seconds) "
                 "instead of the report");

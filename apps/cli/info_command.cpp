@@ -11,7 +11,7 @@
 
 #include "cli/json.hpp"
 #include "cli/marked_ply.hpp"
-#include "cli/mesh_format_option.hpp"
+#include "cli/mesh_load_options.hpp"
 #include "cli/mesh_marks.hpp"
 #include "cli/output_file.hpp"
 #include "exactgeo/io/input_error.hpp"
@@ -232,11 +232,8 @@ CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
                   "input (with --format)")
       ->required();
   add_mesh_format_option(*sub, options.load.format);
-  sub->add_flag("--weld", options.load.weld,
-                "merge vertices with exactly equal coordinates first (for face soups, STL)");
-  sub->add_flag("--split-polygons", options.load.split_polygons,
-                "split faces with more than four corners into triangle fans instead of "
-                "refusing the file");
+  add_weld_flag(*sub, options.load.weld, " first (for face soups, STL)");
+  add_split_polygons_flag(*sub, options.load.split_polygons, " instead of refusing the file");
   sub->add_flag("--json", options.json, "print one JSON object instead of the table");
   sub->add_option("--mark", options.mark,
                   "also write the mesh as a PLY file with a colour per face: intersecting, "

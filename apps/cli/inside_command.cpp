@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cli/inside_mesh.hpp"
-#include "cli/mesh_format_option.hpp"
+#include "cli/mesh_load_options.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/seconds.hpp"
 #include "cli/slice_command.hpp"
@@ -194,9 +194,8 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
                 "with --json: the labels too, as \"labels\": [...] in input order (held in "
                 "memory until the end, one byte per point)")
       ->needs(json);
-  sub->add_flag("--weld", options.mesh.load.weld, "merge vertices with exactly equal coordinates");
-  sub->add_flag("--split-polygons", options.mesh.load.split_polygons,
-                "split faces with more than four corners into triangle fans");
+  add_weld_flag(*sub, options.mesh.load.weld);
+  add_split_polygons_flag(*sub, options.mesh.load.split_polygons);
   sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,
                 "accept edges shared by 4, 6, ... faces (parity is still defined)");
   sub->add_flag("!--no-self-intersection-check", options.mesh.self_intersection_check,

@@ -1,0 +1,24 @@
+#include "cli/mesh_load_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace exactgeo::cli {
+
+void add_mesh_format_option(CLI::App& sub, std::string& format) {
+  sub.add_option("--format", format,
+                 "the mesh format when the name does not tell it (standard input, no "
+                 "extension): obj, off, ply (read exactly) or a format assimp reads (stl, "
+                 "glb, ...); overrides the extension")
+      ->type_name("NAME");
+}
+
+void add_weld_flag(CLI::App& sub, bool& weld, std::string_view more) {
+  sub.add_flag("--weld", weld, "merge vertices with exactly equal coordinates" + std::string(more));
+}
+
+void add_split_polygons_flag(CLI::App& sub, bool& split_polygons, std::string_view more) {
+  sub.add_flag("--split-polygons", split_polygons,
+               "split faces with more than four corners into triangle fans" + std::string(more));
+}
+
+}  // namespace exactgeo::cli
