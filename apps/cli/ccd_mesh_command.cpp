@@ -20,6 +20,7 @@
 #include "cli/mesh_marks.hpp"
 #include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
+#include "cli/threads_option.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 
@@ -337,8 +338,7 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
   sub->add_option("--min-separation", options.min_separation,
                   "exact only: also report pairs whose Euclidean distance drops to at most "
                   "this during the step (default 0: contact)");
-  sub->add_option("--threads", options.threads, "worker threads (default: all hardware threads)")
-      ->check(CLI::Range(1u, 1024u));
+  add_threads_option(*sub, options.threads);
   sub->add_flag("--split-quads", options.split_quads,
                 "accept quads: each quad c0 c1 c2 c3 becomes the triangles c0 c1 c2 and c0 c2 c3 "
                 "(its diagonal c0-c2), in place, so face indices in the output count triangles "

@@ -17,6 +17,7 @@
 #include "cli/progress_line.hpp"
 #include "cli/seconds.hpp"
 #include "cli/slice_command.hpp"
+#include "cli/threads_option.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/point_reader.hpp"
 
@@ -178,9 +179,7 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
          "counted: what float ray-casting tools do; a baseline, wrong on grazing rays, never "
          "boundary)")
       ->check(CLI::IsMember({"exact", "double", "embree"}));
-  sub->add_option("--threads", options.mesh.threads,
-                  "worker threads (default: all hardware threads)")
-      ->check(CLI::Range(1u, 1024u));
+  add_threads_option(*sub, options.mesh.threads);
   sub->add_option_function<std::string>(
          "--points-format",
          [&options](const std::string& f) { options.points_format = io::parse_point_format(f); },
