@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cli/ccd_method_option.hpp"
 #include "cli/json.hpp"
 #include "cli/marked_ply.hpp"
 #include "cli/mesh_load_options.hpp"
@@ -315,11 +316,9 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
                   "colliding vertices, edges and faces coloured (the legend is in the file's "
                   "comments and in the report)")
       ->type_name("OUT.ply");
-  sub->add_option_function<std::string>(
-         "--method", [&options](const std::string& m) { options.method = *ccd::parse_method(m); },
-         "exact (default: every root, exactly) or parity (the 2012 root parity algorithm: "
-         "misses pairs that touch an even number of times)")
-      ->check(CLI::IsMember({"exact", "parity"}));
+  add_ccd_method_option(*sub, options.method, {ccd::Method::exact, ccd::Method::parity},
+                        "exact (default: every root, exactly) or parity (the 2012 root parity "
+                        "algorithm: misses pairs that touch an even number of times)");
   sub->add_flag("--toi", options.time_of_impact,
                 "exact only: also report the earliest time of impact as an interval [start, "
                 "end] within the step [0, 1] (no collision before start, one by end) of width "

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <string>
 
+#include "cli/ccd_method_option.hpp"
 #include "cli/number_option.hpp"
 
 namespace exactgeo::cli {
@@ -44,13 +45,12 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
       "query's own time, in all and by deciding stage). Exit code 1 when a false negative "
       "is found.");
   sub->add_option("paths", options.paths, "query files or directories")->required();
-  sub->add_option_function<std::string>(
-         "--method",
-         [&options](const std::string& m) { options.ccd.method = *ccd::parse_method(m); },
-         "exact (default: any root, exactly), parity (the 2012 root parity algorithm), double "
-         "(parity in plain doubles), rational (parity in GMP rationals), cubic (coplanarity "
-         "cubic with --tolerance)")
-      ->check(CLI::IsMember({"exact", "parity", "double", "rational", "cubic"}));
+  add_ccd_method_option(*sub, options.ccd.method,
+                        {ccd::Method::exact, ccd::Method::parity, ccd::Method::plain_double,
+                         ccd::Method::rational, ccd::Method::cubic},
+                        "exact (default: any root, exactly), parity (the 2012 root parity "
+                        "algorithm), double (parity in plain doubles), rational (parity in GMP "
+                        "rationals), cubic (coplanarity cubic with --tolerance)");
   sub->add_option_function<std::string>(
          "--type",
          [&options](const std::string& t) {
