@@ -21,6 +21,7 @@
 #include "cli/mesh_marks.hpp"
 #include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
+#include "cli/plural.hpp"
 #include "cli/threads_option.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
@@ -33,13 +34,6 @@ using mesh::LoadedMesh;
 using mesh::LoadOptions;
 
 namespace {
-
-std::string plural(std::size_t count, std::string_view singular, std::string_view many) {
-  std::string s = std::to_string(count);
-  s.append(" ");
-  s.append(count == 1 ? singular : many);
-  return s;
-}
 
 /// "[a, b, c]" (or four corners for a quad).
 std::string corners_text(const mesh::Face& face) {

@@ -14,6 +14,7 @@
 #include "cli/mesh_load_options.hpp"
 #include "cli/mesh_marks.hpp"
 #include "cli/output_file.hpp"
+#include "cli/plural.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
@@ -42,13 +43,6 @@ std::string point_text(const Point3& p) {
 
 std::string yes_no(bool b) {
   return b ? "yes" : "no";
-}
-
-std::string plural(std::size_t count, std::string_view singular, std::string_view many) {
-  std::string s = std::to_string(count);
-  s.append(" ");
-  s.append(count == 1 ? singular : many);
-  return s;
 }
 
 /// Everything info found, for either form of the report.
