@@ -2,8 +2,9 @@
 
 // `exactgeo ccd-mesh FRAME0 FRAME1`: every colliding vertex-face and edge-edge pair of a
 // triangle mesh over one time step, from two files holding the same mesh at the start and
-// at the end of the step (the command-line contract, README.md; exactgeo/ccd/mesh/mesh_ccd.hpp does the
-// work).
+// at the end of the step (the command-line contract, README.md). exactgeo/ccd/mesh/mesh_ccd.hpp
+// does the work; the frames are read and checked in cli/ccd_mesh_frames.hpp, the reports
+// written in cli/ccd_mesh_report.hpp.
 
 #include <iosfwd>
 #include <optional>
