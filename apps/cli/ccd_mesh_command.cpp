@@ -137,15 +137,13 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
                 "exact only: also report the earliest time of impact as an interval [start, "
                 "end] within the step [0, 1] (no collision before start, one by end) of width "
                 "at most 1e-6, or as none");
-  sub->add_option_function<double>(
-      "--toi-width",
-      [&options](double width) {
-        if (!(width > 0.0) || !std::isfinite(width)) {
-          throw CLI::ValidationError("--toi-width",
-                                     "expected a positive number, got " + shortest(width));
-        }
+  add_number_option(
+      *sub, "--toi-width",
+      [&options](double width) -> std::optional<std::string> {
+        if (!(width > 0.0)) return "expected a positive number";
         options.time_of_impact = true;
         options.time_of_impact_width = width;
+        return std::nullopt;
       },
       "the widest time-of-impact interval (implies --toi; default 1e-6)");
   sub->add_option("--min-separation", options.min_separation,

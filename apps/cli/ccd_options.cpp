@@ -66,21 +66,23 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
   sub->add_option("--per-query", options.per_query,
                   "write path,index,type,result,truth,decided_by,ns,toi_start,toi_end for "
                   "every query to this CSV file");
-  sub->add_option("--tolerance", options.ccd.cubic_tolerance,
-                  "cubic only: distance tolerance (default 1e-6)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            std::string error;
-            const auto value = number_option(text, error);
-            if (!value) return "expected a positive number: " + error;
-            return *value > 0.0 ? std::string() : "expected a positive number, got '" + text + "'";
-          },
-          "POSITIVE"));
-  sub->add_option_function<double>(
-         "--toi-width", [&options](double w) { options.ccd.time_of_impact_width = w; },
-         "exact only: also bracket each colliding query's earliest contact to at most this "
-         "width (--per-query writes the brackets)")
-      ->check(CLI::Range(0x1p-60, 1.0));
+  add_number_option(
+      *sub, "--tolerance",
+      [&options](double t) -> std::optional<std::string> {
+        if (!(t > 0.0)) return "expected a positive number";
+        options.ccd.cubic_tolerance = t;
+        return std::nullopt;
+      },
+      "cubic only: distance tolerance (default 1e-6)");
+  add_number_option(
+      *sub, "--toi-width",
+      [&options](double w) -> std::optional<std::string> {
+        if (!(w >= 0x1p-60 && w <= 1.0)) return "expected a width in [2^-60, 1]";
+        options.ccd.time_of_impact_width = w;
+        return std::nullopt;
+      },
+      "exact only: also bracket each colliding query's earliest contact to at most this "
+      "width (--per-query writes the brackets)");
   sub->add_option("--min-separation", options.min_separation,
                   "a collision is a time at which the primitives' Euclidean distance is at "
                   "most this (default 0: contact), exactly; with --method double the per-axis "

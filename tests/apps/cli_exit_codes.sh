@@ -370,6 +370,12 @@ for bad in 0 -1 1e-400 abc; do
   expect 2 "ccd tolerance '$bad'" "" ccd --method cubic --tolerance "$bad" "$unit"
 done
 expect 0 "ccd tolerance hexfloat" "" ccd --method cubic --tolerance 0x1p-20 "$unit"
+# --toi-width is read as every number too: below the double range is refused, not 0.
+for bad in 1e-400 0x1p-61 2 abc; do
+  expect 2 "ccd toi-width '$bad'" "" ccd --toi-width "$bad" "$unit"
+done
+expect 0 "ccd toi-width 2^-60" "" ccd --toi-width 0x1p-60 "$unit"
+expect 2 "ccd-mesh toi-width 1e-400" "" ccd-mesh --toi-width 1e-400 "$vf0" "$vf1"
 for bad in -1 nan inf 1e999 abc "" 1e-400 0x1p-1080; do
   expect 2 "ccd-mesh min-separation '$bad'" "" ccd-mesh --min-separation "$bad" "$vf0" "$vf1"
 done
