@@ -178,7 +178,7 @@ exactgeo::kernel::StageCounts ray_patch_stages(Kind kind) {
     const auto corner = [&](exactgeo::VertexIndex i) {
       return Offset::between(c.origin, corners[i]);
     };
-    exactgeo::cross_face(signs, face, exactgeo::frame_of(signs, face, corners), corner,
+    exactgeo::cross_face(signs, face, exactgeo::span_of(signs, face, corners), corner,
                          Offset::vector(c.direction));
   }
   return counts;

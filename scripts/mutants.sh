@@ -74,7 +74,7 @@ MUTANTS = [
      "std::fabs(r - s) > 0x1p-52 * largest", "std::fabs(r - s) > 0x1p-56 * largest",
      ["predicates_tests", "ccd_tests"]),
     ("parallelogram_proof_ignores_tails",
-     "predicates/include/exactgeo/predicates/internal/patch_frame.hpp",
+     "predicates/include/exactgeo/predicates/internal/patch_span.hpp",
      "if (a.head != b.head || a.tail != b.tail) return false;",
      "if (a.head != b.head) return false;", ["predicates_tests", "ccd_tests"]),
     ("coplanarity_threshold_halved",

@@ -36,12 +36,12 @@ std::vector<SurfaceFace> surface_faces(const mesh::Mesh& mesh) {
 }
 
 template <class Signs>
-std::vector<PatchFrame> frames_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
-                                  std::span<const Point3> points) {
-  std::vector<PatchFrame> frames(faces.size());
+std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
+                                std::span<const Point3> points) {
+  std::vector<PatchSpan> spans(faces.size());
   for (std::size_t f = 0; f < faces.size(); ++f)
-    frames[f] = frame_of(signs, faces[f], points);
-  return frames;
+    spans[f] = span_of(signs, faces[f], points);
+  return spans;
 }
 
 }  // namespace
@@ -62,16 +62,16 @@ struct Classifier::State {
   mesh::Mesh mesh;
   mesh::Box box;
   std::vector<SurfaceFace> faces;
-  /// Every face's frame, found once with exact signs (for the exact and rational
+  /// Every face's span, found once with exact signs (for the exact and rational
   /// arithmetics, which agree on every sign) and with plain double signs (for the baseline,
   /// which runs the whole algorithm in doubles).
-  std::vector<PatchFrame> exact_frames;
-  std::vector<PatchFrame> double_frames;
+  std::vector<PatchSpan> exact_spans;
+  std::vector<PatchSpan> double_spans;
   std::optional<internal::EmbreeCandidates> embree;
   std::optional<internal::SpaceCells> cells;
 
   PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
-    return {faces, arithmetic == Arithmetic::plain_double ? double_frames : exact_frames};
+    return {faces, arithmetic == Arithmetic::plain_double ? double_spans : exact_spans};
   }
 };
 
@@ -123,8 +123,8 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   // the points outside it first). A closed mesh has faces, so the box exists.
   s.box = *internal::corner_box(s.mesh);
   s.faces = surface_faces(s.mesh);
-  s.exact_frames = frames_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
-  s.double_frames = frames_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
+  s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
+  s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
   if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
   if (options.space_cells) {
     ClassifierScratch scratch;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/internal/patch_span.hpp"
 
 namespace exactgeo {
 
@@ -45,16 +45,16 @@ std::string_view to_string(RayPatch r) noexcept {
 PatchShape classify_patch(const BilinearPatch& patch) noexcept {
   const kernel::ExactSigns signs;
   const auto x = internal::tensor_corners(patch);
-  const PatchFrame frame = internal::patch_frame(signs, x);
-  switch (frame.kind) {
-    case PatchFrame::Kind::skew:
+  const PatchSpan span = internal::patch_span(signs, x);
+  switch (span.kind) {
+    case PatchSpan::Kind::skew:
       return PatchShape::skew;
-    case PatchFrame::Kind::collinear:
+    case PatchSpan::Kind::collinear:
       return x[0] == x[1] && x[0] == x[2] && x[0] == x[3] ? PatchShape::point : PatchShape::segment;
-    case PatchFrame::Kind::planar:
+    case PatchSpan::Kind::planar:
       break;
   }
-  const int k = *internal::normal_axis(signs, x, frame.plane_triple);
+  const int k = *internal::normal_axis(signs, x, span.plane_triple);
   // The turn at each corner of the boundary polygon x0 -> x1 -> x3 -> x2.
   auto turn = [&](int prev, int at, int next) {
     return signs.cross2(k, Offset::between(x[prev], x[at]), Offset::between(x[prev], x[next]));
@@ -71,7 +71,7 @@ RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
                           const BilinearPatch& patch, Arithmetic arithmetic) noexcept {
   const auto x = internal::tensor_corners(patch);
   return kernel::with_signs(arithmetic, [&](const auto& signs) {
-    return internal::ray_patch_parity_offsets(signs, internal::patch_frame(signs, x),
+    return internal::ray_patch_parity_offsets(signs, internal::patch_span(signs, x),
                                               internal::offsets_from(origin, x),
                                               Offset::vector(direction));
   });

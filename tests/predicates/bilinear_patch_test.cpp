@@ -12,7 +12,7 @@
 #include <map>
 #include <string>
 
-#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/internal/patch_span.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
 #include "support/generators.hpp"
 #include "support/rational_oracle.hpp"
@@ -298,9 +298,9 @@ TEST(PatchShape, AgreesWithOracle) {
   }
 }
 
-/// The frame of a patch known only through offsets from an origin (as in CCD) is the frame
+/// The span of a patch known only through offsets from an origin (as in CCD) is the span
 /// of the patch itself, wherever the origin is.
-TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
+TEST(PatchSpan, FromOffsetsMatchesFromCorners) {
   Rng rng = testing::seeded_engine("patch-frame-offsets");
   for (int i = 0; i < 20000; ++i) {
     BilinearPatch p = i % 3 == 0
@@ -311,12 +311,12 @@ TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
     const auto x = internal::tensor_corners(p);
     const Point3 origin = i % 2 ? testing::random_point(rng, 4) : testing::integer_point(rng, 3);
     const kernel::ExactSigns signs;
-    const PatchFrame expected = internal::patch_frame(signs, x);
-    const PatchFrame got =
-        internal::patch_frame_from_offsets(signs, internal::offsets_from(origin, x));
+    const PatchSpan expected = internal::patch_span(signs, x);
+    const PatchSpan got =
+        internal::patch_span_from_offsets(signs, internal::offsets_from(origin, x));
     ASSERT_EQ(got.kind, expected.kind) << describe(origin, {0, 0, 0}, p);
     ASSERT_EQ(got.volume, expected.volume);
-    if (got.kind == PatchFrame::Kind::planar) {
+    if (got.kind == PatchSpan::Kind::planar) {
       // Any non-collinear triple will do; it must really be one.
       ASSERT_NE(testing::patch_shape_oracle(p), PatchShape::skew);
     }
@@ -324,8 +324,8 @@ TEST(PatchFrame, FromOffsetsMatchesFromCorners) {
 }
 
 /// CCD side patches: corners v(t) - f(t) sharing points, with static points making
-/// parallelograms and repeated corners (the frame's shortcuts). Checked exactly in mpq.
-TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
+/// parallelograms and repeated corners (the span's shortcuts). Checked exactly in mpq.
+TEST(PatchSpan, FromOffsetsIsExactOnCcdStyleCorners) {
   Rng rng = testing::seeded_engine("patch-frame-ccd");
   using Q = std::array<mpq_class, 3>;
   auto exact = [](const kernel::Offset& o) {
@@ -349,28 +349,28 @@ TEST(PatchFrame, FromOffsetsIsExactOnCcdStyleCorners) {
     // Side patch over the edge (f, g): p00 = v0 - f0, p10 = v1 - f1, p11 = v1 - g1, p01 = v0 - g0.
     const kernel::Offsets<4> a{kernel::Offset::between(f0, v0), kernel::Offset::between(f1, v1),
                                kernel::Offset::between(g0, v0), kernel::Offset::between(g1, v1)};
-    const PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
-    ++kinds[static_cast<int>(frame.kind)];
+    const PatchSpan span = internal::patch_span_from_offsets(kernel::ExactSigns{}, a);
+    ++kinds[static_cast<int>(span.kind)];
     std::array<Q, 4> c{exact(a[0]), exact(a[1]), exact(a[2]), exact(a[3])};
     const Q n012 = cross(sub(c[1], c[0]), sub(c[2], c[0]));
     const mpq_class volume = n012[0] * (c[3][0] - c[0][0]) + n012[1] * (c[3][1] - c[0][1]) +
                              n012[2] * (c[3][2] - c[0][2]);
-    ASSERT_EQ(frame.volume, sign_of(sgn(volume)));
+    ASSERT_EQ(span.volume, sign_of(sgn(volume)));
     bool all_collinear = true;
     for (const auto& t : internal::kFaceTriples) {
       all_collinear &= is_zero(cross(sub(c[t[1]], c[t[0]]), sub(c[t[2]], c[t[0]])));
     }
-    switch (frame.kind) {
-      case PatchFrame::Kind::skew:
+    switch (span.kind) {
+      case PatchSpan::Kind::skew:
         ASSERT_NE(volume, 0);
         break;
-      case PatchFrame::Kind::planar: {
+      case PatchSpan::Kind::planar: {
         ASSERT_EQ(volume, 0);
-        const auto& t = frame.plane_triple;
+        const auto& t = span.plane_triple;
         ASSERT_FALSE(is_zero(cross(sub(c[t[1]], c[t[0]]), sub(c[t[2]], c[t[0]]))));
         break;
       }
-      case PatchFrame::Kind::collinear:
+      case PatchSpan::Kind::collinear:
         ASSERT_TRUE(all_collinear);
         break;
     }

@@ -29,14 +29,14 @@ using testing::Rng;
 struct FaceSet {
   std::vector<Point3> points;
   std::vector<SurfaceFace> faces;
-  std::vector<PatchFrame> frames;
+  std::vector<PatchSpan> spans;
 
   void prepare() {
-    frames.clear();
+    spans.clear();
     for (const SurfaceFace& f : faces)
-      frames.push_back(frame_of(kernel::ExactSigns{}, f, points));
+      spans.push_back(span_of(kernel::ExactSigns{}, f, points));
   }
-  PreparedFaces prepared() const { return {faces, frames}; }
+  PreparedFaces prepared() const { return {faces, spans}; }
 };
 
 /// The oracle's answer for one face, reduced to a Crossing.
@@ -237,9 +237,9 @@ TEST(CrossingParity, GivesUpOnlyAfterMaxRays) {
   EXPECT_EQ(cast, 5);
 }
 
-TEST(CrossingParity, FramesFromPointsAndFromOffsetsAgree) {
+TEST(CrossingParity, SpansFromPointsAndFromOffsetsAgree) {
   // CCD prepares faces from offsets (corner images, origin 0), meshes from points. On the
-  // same corners both must give the same frame, for exactly flat, near-flat and skew
+  // same corners both must give the same span, for exactly flat, near-flat and skew
   // patches at any magnitude.
   Rng rng = testing::seeded_engine("CrossingParity.Frames");
   const kernel::ExactSigns signs;
@@ -273,19 +273,19 @@ TEST(CrossingParity, FramesFromPointsAndFromOffsetsAgree) {
     const int k = testing::uniform_int(rng, -900, 900);
     for (Point3& p : x)
       p = testing::scaled(p, k);
-    const PatchFrame from_points = frame_of(signs, face, x);
+    const PatchSpan from_points = span_of(signs, face, x);
     const auto corner = [&](VertexIndex i) { return Offset::vector(x[i]); };
-    const PatchFrame from_offsets = frame_of_offsets(signs, face, corner);
+    const PatchSpan from_offsets = span_of_offsets(signs, face, corner);
     ASSERT_EQ(from_points.kind, from_offsets.kind) << "trial " << trial;
     ASSERT_EQ(from_points.volume, from_offsets.volume) << "trial " << trial;
-    // Both frames are the oracle's shape class.
+    // Both spans are the oracle's shape class.
     const PatchShape shape = testing::patch_shape_oracle({x[0], x[1], x[2], x[3]});
-    const PatchFrame::Kind expected = shape == PatchShape::skew ? PatchFrame::Kind::skew
-                                      : shape == PatchShape::segment || shape == PatchShape::point
-                                          ? PatchFrame::Kind::collinear
-                                          : PatchFrame::Kind::planar;
+    const PatchSpan::Kind expected = shape == PatchShape::skew ? PatchSpan::Kind::skew
+                                     : shape == PatchShape::segment || shape == PatchShape::point
+                                         ? PatchSpan::Kind::collinear
+                                         : PatchSpan::Kind::planar;
     ASSERT_EQ(from_points.kind, expected) << "trial " << trial;
-    flat += expected != PatchFrame::Kind::skew;
+    flat += expected != PatchSpan::Kind::skew;
   }
   EXPECT_GT(flat, 500);
 }

@@ -20,19 +20,19 @@ using kernel::Offset;
 struct RayTarget {
   const FaceGeometry* geometry;
   SurfaceFace face;
-  PatchFrame frame;
+  PatchSpan span;
 
   explicit RayTarget(const FaceGeometry& g) noexcept
       : geometry(&g),
         face(g.n == 3 ? SurfaceFace::triangle(0, 1, 2) : SurfaceFace::patch(0, 1, 2, 3)),
-        frame(frame_of(kernel::ExactSigns{}, face, std::span<const Point3>(g.p.data(), g.n))) {}
+        span(span_of(kernel::ExactSigns{}, face, std::span<const Point3>(g.p.data(), g.n))) {}
 
   /// How the ray {origin + s (to - from) : s > 0} crosses the face. The direction is
   /// the exact difference of the two points, so rays from both ends of an edge run along
   /// one line.
   Crossing ray(const Point3& origin, const Offset& direction) const noexcept {
     const auto corner = [&](VertexIndex i) { return Offset::between(origin, geometry->p[i]); };
-    return cross_face(kernel::ExactSigns{}, face, frame, corner, direction);
+    return cross_face(kernel::ExactSigns{}, face, span, corner, direction);
   }
 
   bool has_edge(const Point3& x, const Point3& y) const noexcept {

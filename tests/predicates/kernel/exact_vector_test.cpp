@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/internal/patch_span.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
 #include "exactgeo/predicates/kernel/exact_stages.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
@@ -126,8 +126,8 @@ void expect_exact_vector_corners_match_oracle(const Point3& o, const Vector3& d,
   const Offset direction = Offset::vector(d);
   const RayPatch expected = testing::ray_patch_oracle(o, d, p);
   auto answer = [&](const auto& signs) {
-    return internal::ray_patch_parity_offsets(signs, internal::patch_frame_from_offsets(signs, a),
-                                              a, direction);
+    return internal::ray_patch_parity_offsets(signs, internal::patch_span_from_offsets(signs, a), a,
+                                              direction);
   };
   ASSERT_EQ(answer(kernel::ExactSigns{}), expected);
   ASSERT_EQ(answer(kernel::RationalSigns{}), expected);

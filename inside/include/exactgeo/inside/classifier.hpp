@@ -61,7 +61,7 @@ class Classifier {
 
   /// The location of `point` (finite coordinates). With Arithmetic::exact the answer is
   /// exact; plain_double runs the same traversal with plain double signs and per-face
-  /// frames found in plain doubles (fast, can be wrong; after 64 degenerate rays it calls
+  /// spans found in plain doubles (fast, can be wrong; after 64 degenerate rays it calls
   /// the point outside); rational is a slow reference.
   /// Thread-safe: concurrent calls need their own scratch.
   Location classify(const Point3& point, Arithmetic arithmetic, ClassifierScratch& scratch) const;

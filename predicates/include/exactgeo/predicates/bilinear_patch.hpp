@@ -28,9 +28,11 @@ constexpr std::array<T, 4> tensor_order(const T& p00, const T& p10, const T& p11
   return {p00, p10, p01, p11};
 }
 
-/// What the ray tests need to know about a patch independently of any ray, found once per
-/// patch (crossing_parity.hpp prepares it for a set of faces).
-struct PatchFrame {
+/// The affine span of a patch's corners: a solid (skew, with its volume sign), a plane
+/// (with three corners that span it) or a line. What the ray tests need to know about a
+/// patch independently of any ray, found once per patch (crossing_parity.hpp prepares it
+/// for a set of faces).
+struct PatchSpan {
   enum class Kind : std::uint8_t {
     skew,       ///< corners not coplanar
     planar,     ///< coplanar, not collinear

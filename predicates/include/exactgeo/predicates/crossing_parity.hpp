@@ -11,7 +11,7 @@
 //
 //   1. Prepare the faces once (PreparedFaces): corners as indices into a corner list,
 //      patches in tensor order (bilinear_patch.hpp), and each patch's ray-independent
-//      facts, its PatchFrame (skew with a volume sign, planar, or collinear).
+//      facts, its PatchSpan (skew with a volume sign, planar, or collinear).
 //   2. For one ray, ask each candidate face whether the ray crosses it (cross_face) and
 //      add up (count_crossings): an even or odd count, the ray's origin on a face, or a
 //      degenerate ray (it meets a face's boundary, or lies in a flat face's plane). A
@@ -33,7 +33,7 @@
 #include <span>
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
-#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/internal/patch_span.hpp"
 #include "exactgeo/predicates/internal/ray_patch_core.hpp"
 #include "exactgeo/predicates/internal/ray_triangle_core.hpp"
 #include "exactgeo/predicates/kernel/offset.hpp"
@@ -66,31 +66,31 @@ struct SurfaceFace {
   constexpr bool is_triangle() const noexcept { return kind == Kind::triangle; }
 };
 
-/// Faces ready for rays: frames[f] is the frame of faces[f] (unused for a triangle).
+/// Faces ready for rays: spans[f] is the span of faces[f] (unused for a triangle).
 struct PreparedFaces {
   std::span<const SurfaceFace> faces;
-  std::span<const PatchFrame> frames;
+  std::span<const PatchSpan> spans;
 };
 
-/// The frame of a face whose corners are points: found from differences of corners, so its
+/// The span of a face whose corners are points: found from differences of corners, so its
 /// filters are relative to the face's own size, wherever it lies.
 template <class Signs>
-PatchFrame frame_of(const Signs& signs, const SurfaceFace& face,
-                    std::span<const Point3> points) noexcept {
+PatchSpan span_of(const Signs& signs, const SurfaceFace& face,
+                  std::span<const Point3> points) noexcept {
   if (face.is_triangle()) return {};
   const auto& c = face.corners;
-  return internal::patch_frame(
+  return internal::patch_span(
       signs, std::array<Point3, 4>{points[c[0]], points[c[1]], points[c[2]], points[c[3]]});
 }
 
-/// The frame of a face whose corners are known only relative to some origin, as offsets
-/// corner(i) (CCD's corner images). The same frame as frame_of on the corners themselves.
+/// The span of a face whose corners are known only relative to some origin, as offsets
+/// corner(i) (CCD's corner images). The same span as span_of on the corners themselves.
 template <class Signs, class CornerOffset>
-PatchFrame frame_of_offsets(const Signs& signs, const SurfaceFace& face,
-                            const CornerOffset& corner) noexcept {
+PatchSpan span_of_offsets(const Signs& signs, const SurfaceFace& face,
+                          const CornerOffset& corner) noexcept {
   if (face.is_triangle()) return {};
   const auto& c = face.corners;
-  return internal::patch_frame_from_offsets(
+  return internal::patch_span_from_offsets(
       signs, kernel::Offsets<4>{corner(c[0]), corner(c[1]), corner(c[2]), corner(c[3])},
       face.kind == SurfaceFace::Kind::parallelogram ? internal::KnownShape::parallelogram
                                                     : internal::KnownShape::none);
@@ -140,7 +140,7 @@ constexpr Crossing crossing_of(RayPatch parity) noexcept {
 /// from their magnitudes serves them all. A policy that has a static bound already (the
 /// CCD's, per ray), and the others, are used as they are.
 template <class Signs, class CornerOffset>
-Crossing cross_face(const Signs& signs, const SurfaceFace& face, const PatchFrame& frame,
+Crossing cross_face(const Signs& signs, const SurfaceFace& face, const PatchSpan& span,
                     const CornerOffset& corner, const kernel::Offset& direction) noexcept {
   const auto& c = face.corners;
   if (face.is_triangle()) {
@@ -151,7 +151,7 @@ Crossing cross_face(const Signs& signs, const SurfaceFace& face, const PatchFram
   }
   const kernel::Offsets<4> x{corner(c[0]), corner(c[1]), corner(c[2]), corner(c[3])};
   const auto face_signs = kernel::with_static_filter(signs, x, direction.rounded());
-  return crossing_of(internal::ray_patch_parity_offsets(face_signs, frame, x, direction));
+  return crossing_of(internal::ray_patch_parity_offsets(face_signs, span, x, direction));
 }
 
 /// What one ray says about a set of faces.
@@ -171,7 +171,7 @@ RayCount count_crossings(const Signs& signs, const PreparedFaces& faces,
                          const kernel::Offset& direction) noexcept {
   bool odd = false;
   for (const auto f : candidates) {
-    switch (cross_face(signs, faces.faces[f], faces.frames[f], corner, direction)) {
+    switch (cross_face(signs, faces.faces[f], faces.spans[f], corner, direction)) {
       case Crossing::none:
         break;
       case Crossing::crossed:

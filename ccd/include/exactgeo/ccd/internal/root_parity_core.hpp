@@ -19,9 +19,9 @@ template <class Signs, std::size_t C>
 RootParityResult root_parity(const Signs& signs, const Offsets<C>& corners) noexcept {
   constexpr auto& faces = kDomainFaces<C>;
   const auto corner = [&corners](VertexIndex i) -> const Offset& { return corners[i]; };
-  std::array<PatchFrame, faces.size()> frames;
+  std::array<PatchSpan, faces.size()> frames;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    frames[f] = frame_of_offsets(signs, faces[f], corner);
+    frames[f] = span_of_offsets(signs, faces[f], corner);
   const PreparedFaces prepared{faces, frames};
   const auto found = crossing_parity(kRayDirectionCount, [&](std::size_t k) {
     // Every det3 sign of a ray test is on corners and the direction: one static bound.

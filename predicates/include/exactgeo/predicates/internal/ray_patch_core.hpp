@@ -188,16 +188,16 @@ RayPatch collinear_patch_parity(const Signs& signs, const Offsets<4>& a, const O
 }
 
 /// The ray test proper. `a` are the corners minus the origin (x0..x3 order), `d` the
-/// direction (nonzero), `frame` the patch's shape.
+/// direction (nonzero), `span` the patch's shape.
 template <class Signs>
-RayPatch ray_patch_parity_offsets(const Signs& signs, const PatchFrame& frame, const Offsets<4>& a,
+RayPatch ray_patch_parity_offsets(const Signs& signs, const PatchSpan& span, const Offsets<4>& a,
                                   const Offset& d) noexcept {
-  switch (frame.kind) {
-    case PatchFrame::Kind::skew:
-      return skew_patch_parity(signs, frame.volume, a, d);
-    case PatchFrame::Kind::planar:
-      return planar_patch_parity(signs, frame.plane_triple, a, d);
-    case PatchFrame::Kind::collinear:
+  switch (span.kind) {
+    case PatchSpan::Kind::skew:
+      return skew_patch_parity(signs, span.volume, a, d);
+    case PatchSpan::Kind::planar:
+      return planar_patch_parity(signs, span.plane_triple, a, d);
+    case PatchSpan::Kind::collinear:
       break;
   }
   return collinear_patch_parity(signs, a, d);

@@ -1,9 +1,9 @@
 // The ray-independent patch facts for corners given as differences of points (CCD's side
 // patches): the parallelogram shortcut may only claim what is exactly true, it must see
-// rigid translations (the common case it exists for), and the frame must equal the one
+// rigid translations (the common case it exists for), and the span must equal the one
 // an independent rational volume gives.
 
-#include "exactgeo/predicates/internal/patch_frame.hpp"
+#include "exactgeo/predicates/internal/patch_span.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -87,21 +87,20 @@ SidePatch translating_edge(Rng& rng) {
   return p;
 }
 
-TEST(PatchFrame, RigidTranslationIsACertainParallelogram) {
-  Rng rng = testing::seeded_engine("PatchFrame.RigidTranslation");
+TEST(PatchSpan, RigidTranslationIsACertainParallelogram) {
+  Rng rng = testing::seeded_engine("PatchSpan.RigidTranslation");
   for (int i = 0; i < 2000; ++i) {
     const SidePatch p = translating_edge(rng);
     ASSERT_TRUE(oracle_parallelogram(p.corners()));  // the construction is exact
     EXPECT_TRUE(internal::certainly_parallelogram(p.corners())) << "case " << i;
-    const PatchFrame frame =
-        internal::patch_frame_from_offsets(kernel::ExactSigns{}, p.corners());
-    EXPECT_EQ(frame.volume, Sign::zero);
-    EXPECT_NE(frame.kind, PatchFrame::Kind::skew);
+    const PatchSpan span = internal::patch_span_from_offsets(kernel::ExactSigns{}, p.corners());
+    EXPECT_EQ(span.volume, Sign::zero);
+    EXPECT_NE(span.kind, PatchSpan::Kind::skew);
   }
 }
 
-TEST(PatchFrame, OneUlpFromATranslationIsNotClaimed) {
-  Rng rng = testing::seeded_engine("PatchFrame.OneUlp");
+TEST(PatchSpan, OneUlpFromATranslationIsNotClaimed) {
+  Rng rng = testing::seeded_engine("PatchSpan.OneUlp");
   int skew = 0;
   for (int i = 0; i < 2000; ++i) {
     SidePatch p = translating_edge(rng);
@@ -112,21 +111,21 @@ TEST(PatchFrame, OneUlpFromATranslationIsNotClaimed) {
     if (internal::certainly_parallelogram(a)) {
       EXPECT_TRUE(parallelogram) << "case " << i;
     }
-    const PatchFrame frame = internal::patch_frame_from_offsets(kernel::ExactSigns{}, a);
+    const PatchSpan span = internal::patch_span_from_offsets(kernel::ExactSigns{}, a);
     const int volume = oracle_volume_sign(a);
-    EXPECT_EQ(static_cast<int>(frame.volume), volume) << "case " << i;
-    EXPECT_EQ(frame.kind == PatchFrame::Kind::skew, volume != 0) << "case " << i;
+    EXPECT_EQ(static_cast<int>(span.volume), volume) << "case " << i;
+    EXPECT_EQ(span.kind == PatchSpan::Kind::skew, volume != 0) << "case " << i;
     skew += volume != 0;
   }
   EXPECT_GT(skew, 1000);  // the perturbation does make most patches skew
 }
 
-TEST(PatchFrame, OverflowingDisplacements) {
+TEST(PatchSpan, OverflowingDisplacements) {
   constexpr double big = std::numeric_limits<double>::max();
   const Point3 v{1.0, 2.0, 3.0};
   const Point3 left{-big, 0.0, 0.0}, right{big, 0.0, 0.0}, up{0.0, 1.0, 0.0};
   // Both edge ends move by 2 big in x, beyond the double range: a parallelogram whose
-  // displacements overflow. Claiming it is optional; the frame must be exact either way.
+  // displacements overflow. Claiming it is optional; the span must be exact either way.
   const SidePatch same{v, v, left, right, plus(left, up), plus(right, up)};
   // One end's displacement one ulp shorter: still infinite when rounded, and not a
   // parallelogram, which must never be claimed.
@@ -136,9 +135,8 @@ TEST(PatchFrame, OverflowingDisplacements) {
   EXPECT_FALSE(oracle_parallelogram(shorter.corners()));
   EXPECT_FALSE(internal::certainly_parallelogram(shorter.corners()));
   for (const SidePatch& p : {same, shorter}) {
-    const PatchFrame frame =
-        internal::patch_frame_from_offsets(kernel::ExactSigns{}, p.corners());
-    EXPECT_EQ(static_cast<int>(frame.volume), oracle_volume_sign(p.corners()));
+    const PatchSpan span = internal::patch_span_from_offsets(kernel::ExactSigns{}, p.corners());
+    EXPECT_EQ(static_cast<int>(span.volume), oracle_volume_sign(p.corners()));
   }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// The ray-independent facts about a patch with double corners (PatchFrame), and its
+// The ray-independent facts about a patch with double corners (its PatchSpan), and its
 // public shape classification. Computed from differences of corners, so the filters are
 // relative to the patch's own size, not to its distance from any ray origin.
 
@@ -47,14 +47,14 @@ std::optional<int> normal_axis(const Signs& signs, const std::array<Point3, 4>& 
 }
 
 template <class Signs>
-PatchFrame patch_frame(const Signs& signs, const std::array<Point3, 4>& x) noexcept {
+PatchSpan patch_span(const Signs& signs, const std::array<Point3, 4>& x) noexcept {
   const Sign volume = signs.det3_by_axis(Offset::between(x[0], x[1]), Offset::between(x[0], x[2]),
                                          Offset::between(x[0], x[3]));
-  if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
+  if (volume != Sign::zero) return {PatchSpan::Kind::skew, volume, {}};
   for (const auto& triple : kFaceTriples) {
-    if (normal_axis(signs, x, triple)) return {PatchFrame::Kind::planar, Sign::zero, triple};
+    if (normal_axis(signs, x, triple)) return {PatchSpan::Kind::planar, Sign::zero, triple};
   }
-  return {PatchFrame::Kind::collinear, Sign::zero, {}};
+  return {PatchSpan::Kind::collinear, Sign::zero, {}};
 }
 
 /// (h1 - h0) == (h3 - h2) for certain: the same pairs of points, or the same exact
@@ -108,30 +108,30 @@ inline bool certainly_parallelogram(const Offsets<4>& a) noexcept {
   return disp_equal(0, 1, 2, 3) || disp_equal(0, 2, 1, 3);  // along u, or along v
 }
 
-/// The frame of a patch whose volume is zero: planar if some corner triple spans a plane,
+/// The span of a patch whose volume is zero: planar if some corner triple spans a plane,
 /// else collinear.
 template <class Signs>
-PatchFrame flat_patch_frame(const Signs& signs, const Offsets<4>& a) noexcept {
+PatchSpan flat_patch_span(const Signs& signs, const Offsets<4>& a) noexcept {
   for (const auto& t : kFaceTriples) {
     for (int axis = 0; axis < 3; ++axis) {
       if (signs.triangle_normal(axis, a[t[0]], a[t[1]], a[t[2]]) != Sign::zero) {
-        return {PatchFrame::Kind::planar, Sign::zero, t};
+        return {PatchSpan::Kind::planar, Sign::zero, t};
       }
     }
   }
-  return {PatchFrame::Kind::collinear, Sign::zero, {}};
+  return {PatchSpan::Kind::collinear, Sign::zero, {}};
 }
 
 /// Whether the patch is flat for a reason the caller knows (a parallelogram by
 /// construction), or its volume has to be found.
 enum class KnownShape { none, parallelogram };
 
-/// The same frame for corners known only relative to some origin (a_i = x_i - o), as in
+/// The same span for corners known only relative to some origin (a_i = x_i - o), as in
 /// continuous collision detection, where every corner is a difference of two inputs.
-/// Equal to patch_frame of the corners themselves; the filters are relative to |a_i|.
+/// Equal to patch_span of the corners themselves; the filters are relative to |a_i|.
 template <class Signs>
-PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a,
-                                    KnownShape known = KnownShape::none) noexcept {
+PatchSpan patch_span_from_offsets(const Signs& signs, const Offsets<4>& a,
+                                  KnownShape known = KnownShape::none) noexcept {
   // Corners that are the same difference of the same points coincide: with at most two
   // distinct ones the patch is a segment or a point (no evaluation needed).
   int distinct = 0;
@@ -146,7 +146,7 @@ PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a,
     }
     distinct += representative[i] == i;
   }
-  if (distinct <= 2) return {PatchFrame::Kind::collinear, Sign::zero, {}};
+  if (distinct <= 2) return {PatchSpan::Kind::collinear, Sign::zero, {}};
   if (distinct == 3) {
     // Flat; the three distinct corners are the only candidate non-collinear triple.
     std::array<std::uint8_t, 3> triple{};
@@ -156,15 +156,15 @@ PatchFrame patch_frame_from_offsets(const Signs& signs, const Offsets<4>& a,
     }
     for (int axis = 0; axis < 3; ++axis) {
       if (signs.triangle_normal(axis, a[triple[0]], a[triple[1]], a[triple[2]]) != Sign::zero) {
-        return {PatchFrame::Kind::planar, Sign::zero, triple};
+        return {PatchSpan::Kind::planar, Sign::zero, triple};
       }
     }
-    return {PatchFrame::Kind::collinear, Sign::zero, {}};
+    return {PatchSpan::Kind::collinear, Sign::zero, {}};
   }
-  if (known == KnownShape::parallelogram) return flat_patch_frame(signs, a);
+  if (known == KnownShape::parallelogram) return flat_patch_span(signs, a);
   const Sign volume = signs.tetrahedron_volume(a, [&] { return certainly_parallelogram(a); });
-  if (volume != Sign::zero) return {PatchFrame::Kind::skew, volume, {}};
-  return flat_patch_frame(signs, a);
+  if (volume != Sign::zero) return {PatchSpan::Kind::skew, volume, {}};
+  return flat_patch_span(signs, a);
 }
 
 }  // namespace exactgeo::internal
