@@ -46,18 +46,6 @@ std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFac
 
 }  // namespace
 
-std::string_view to_string(Location location) noexcept {
-  switch (location) {
-    case Location::outside:
-      return "outside";
-    case Location::inside:
-      return "inside";
-    case Location::boundary:
-      return "boundary";
-  }
-  return "?";
-}
-
 struct Classifier::State {
   mesh::Mesh mesh;
   mesh::Box box;

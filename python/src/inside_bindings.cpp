@@ -11,6 +11,7 @@
 #include "bindings.hpp"
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "mesh_object.hpp"
 
 namespace exactgeo::python {

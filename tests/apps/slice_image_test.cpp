@@ -24,6 +24,7 @@
 #include "cli/slice_image.hpp"
 #include "cli/slice_options.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "support/hexahedron.hpp"

@@ -19,6 +19,7 @@
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/float_ray_parity.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"

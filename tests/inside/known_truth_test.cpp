@@ -32,6 +32,7 @@
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"

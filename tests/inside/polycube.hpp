@@ -22,8 +22,9 @@
 #include <utility>
 #include <vector>
 
-#include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::inside::polycube {
 

@@ -14,6 +14,7 @@
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"

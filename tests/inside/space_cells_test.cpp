@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "inside/polycube.hpp"

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "support/hexahedron.hpp"
 #include "support/seed.hpp"

@@ -9,6 +9,7 @@
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 

@@ -7,6 +7,7 @@
 
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/float_ray_parity.hpp"
+#include "exactgeo/inside/location.hpp"
 
 namespace exactgeo::inside {
 

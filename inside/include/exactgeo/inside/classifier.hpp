@@ -15,17 +15,14 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <string_view>
 #include <vector>
 
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::inside {
-
-enum class Location : std::uint8_t { outside, inside, boundary };
-std::string_view to_string(Location location) noexcept;
 
 /// Where candidate faces come from.
 enum class CandidateSearch : std::uint8_t {

@@ -33,7 +33,7 @@
 
 #include <memory>
 
-#include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/point.hpp"
 

@@ -28,9 +28,10 @@
 #include <optional>
 #include <vector>
 
-#include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::inside::internal {
 
