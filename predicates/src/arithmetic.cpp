@@ -11,13 +11,13 @@ std::string_view to_string(Arithmetic a) noexcept {
     case Arithmetic::rational:
       return "rational";
   }
-  return "exact";
+  return "?";
 }
 
 std::optional<Arithmetic> parse_arithmetic(std::string_view name) noexcept {
-  if (name == "exact") return Arithmetic::exact;
-  if (name == "double") return Arithmetic::plain_double;
-  if (name == "rational") return Arithmetic::rational;
+  for (const Arithmetic a : {Arithmetic::exact, Arithmetic::plain_double, Arithmetic::rational}) {
+    if (name == to_string(a)) return a;
+  }
   return std::nullopt;
 }
 

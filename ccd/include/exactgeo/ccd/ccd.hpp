@@ -30,10 +30,18 @@
 
 namespace exactgeo::ccd {
 
+/// The methods are the arithmetics of exactgeo/predicates/arithmetic.hpp applied to the
+/// same algorithms, plus the baselines: `parity`, `plain_double` and `rational` are root
+/// parity with exact, plain double and rational signs (Arithmetic's exact, plain_double and
+/// rational), `exact` is the exact algorithm (any root), `cubic` the tolerance baseline.
+/// The shared names are Arithmetic's ("exact", "double", "rational"), and to_string and
+/// parse have Arithmetic's shape.
 enum class Method : std::uint8_t { exact, parity, plain_double, rational, cubic };
 
+/// The name of every enumerator: "exact", "parity", "double", "rational" or "cubic" (the
+/// command line's and Python's spelling); "?" for a value that is no enumerator.
 std::string_view to_string(Method m) noexcept;
-/// Parses "exact", "parity", "double", "rational" or "cubic".
+/// The method whose name (to_string) is exactly `name`; nullopt for any other string.
 std::optional<Method> parse_method(std::string_view name) noexcept;
 
 /// What decided a query.
