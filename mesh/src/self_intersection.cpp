@@ -26,14 +26,14 @@ namespace exactgeo::mesh {
 namespace {
 
 // The pair test.
-using face_contact_detail::convex_polygons_contact;
-using face_contact_detail::edge_method;
-using face_contact_detail::FaceGeometry;
-using face_contact_detail::geometry_of;
-using face_contact_detail::separated_by_corner_plane;
-using face_contact_detail::separated_by_edge_pair_axis;
-using face_contact_detail::Shape;
-using face_contact_detail::shape_of;
+using internal::convex_polygons_contact;
+using internal::edge_method;
+using internal::FaceGeometry;
+using internal::geometry_of;
+using internal::separated_by_corner_plane;
+using internal::separated_by_edge_pair_axis;
+using internal::Shape;
+using internal::shape_of;
 
 /// The filters first (cheapest and most often decisive first: on a smooth quad mesh a
 /// corner plane of one face settles most neighbours), then the exact method of the pair.

@@ -6,7 +6,7 @@
 #include "exactgeo/predicates/orient3d.hpp"
 #include "separating_planes.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 namespace {
 
@@ -137,4 +137,4 @@ FaceContact convex_polygons_contact(const FaceGeometry& a, const FaceGeometry& b
   return crossing_planes_contact(a, a_sides, b, b_sides);
 }
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

@@ -13,9 +13,9 @@
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "face_geometry.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 /// Precondition: a.convex_polygon() and b.convex_polygon().
 FaceContact convex_polygons_contact(const FaceGeometry& a, const FaceGeometry& b) noexcept;
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

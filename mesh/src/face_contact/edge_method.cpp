@@ -10,7 +10,7 @@
 #include "exactgeo/predicates/kernel/offset.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 namespace {
 
@@ -94,4 +94,4 @@ FaceContact edge_method(const FaceGeometry& a, const FaceGeometry& b) noexcept {
   return undecided ? FaceContact::undecided : FaceContact::apart;
 }
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

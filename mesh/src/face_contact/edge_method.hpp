@@ -12,7 +12,7 @@
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "face_geometry.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 /// An edge of one face crossing the other's interior an odd number of times crosses it
 /// transversally at some interior point z (multiplicities are 1 or 2, a tangency counts
@@ -20,4 +20,4 @@ namespace exactgeo::mesh::face_contact_detail {
 /// face near z, and the interiors meet.
 FaceContact edge_method(const FaceGeometry& a, const FaceGeometry& b) noexcept;
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

@@ -2,7 +2,7 @@
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 namespace {
 
@@ -45,4 +45,4 @@ FaceGeometry geometry_of(const Mesh& mesh, const Face& face, Shape shape) noexce
   return g;
 }
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

@@ -12,7 +12,7 @@
 
 #include "exactgeo/mesh/mesh.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 /// The shape classes that decide which method a pair gets.
 enum class Shape : std::uint8_t {
@@ -43,4 +43,4 @@ struct FaceGeometry {
 
 FaceGeometry geometry_of(const Mesh& mesh, const Face& face, Shape shape) noexcept;
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

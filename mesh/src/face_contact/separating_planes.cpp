@@ -7,7 +7,7 @@
 #include "exactgeo/predicates/kernel/signs.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 namespace {
 
@@ -106,4 +106,4 @@ bool separated_by_edge_pair_axis(const FaceGeometry& f, const FaceGeometry& g) n
   return false;
 }
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

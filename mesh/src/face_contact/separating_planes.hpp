@@ -17,7 +17,7 @@
 #include "exactgeo/predicates/sign.hpp"
 #include "face_geometry.hpp"
 
-namespace exactgeo::mesh::face_contact_detail {
+namespace exactgeo::mesh::internal {
 
 /// Which open sides of a plane a set of points reaches.
 struct Sides {
@@ -40,4 +40,4 @@ bool separated_by_corner_plane(const FaceGeometry& f, const FaceGeometry& g) noe
 /// of each face (EdgePairAxis in separating_planes.cpp). Symmetric in f, g.
 bool separated_by_edge_pair_axis(const FaceGeometry& f, const FaceGeometry& g) noexcept;
 
-}  // namespace exactgeo::mesh::face_contact_detail
+}  // namespace exactgeo::mesh::internal

@@ -80,7 +80,7 @@ void check_filter(const Offsets<N>& in, int parameter, Edge& edge) {
   const double ratio = error_ratio(value, exact, bound);
   edge.worst = std::max(edge.worst, ratio);
   ASSERT_LE(ratio, 1.0) << "the filter's error bound does not hold";
-  if (const auto f = detail::evaluate_filter<Formula, grouping>(in, parameter); f.certified) {
+  if (const auto f = internal::evaluate_filter<Formula, grouping>(in, parameter); f.certified) {
     ++edge.certified;
     if (std::fabs(value) < 8 * bound) ++edge.near_bound;
     ASSERT_EQ(sign_of(f.value), exact_sign) << "a certified sign is wrong";

@@ -38,14 +38,14 @@ struct ExactVector {
   bool filterable = true;
 };
 
-namespace exact_vector_detail {
+namespace internal {
 
 /// Half an ulp of a normal double s: ulp(s) / 2 = 2^(ilogb(s) - 53) <= u |s|.
 inline double half_ulp(double s) noexcept {
   return std::ldexp(1.0, std::ilogb(s) - 53);
 }
 
-}  // namespace exact_vector_detail
+}  // namespace internal
 
 /// A double within half an ulp of the (compressed, nonzero) expansion e, if e is in the
 /// normal range; nullopt otherwise. Starts from the recursive sum (within a few ulps) and
@@ -65,7 +65,7 @@ std::optional<double> within_half_ulp(const Expansion<K>& e) noexcept {
     if (!std::isfinite(s) || std::fabs(s) < 0x1p-1021) return std::nullopt;
     const Expansion<K + 1> error = e - Expansion<1>(s);
     if (error.is_zero()) return s;
-    const double half = exact_vector_detail::half_ulp(s);
+    const double half = internal::half_ulp(s);
     const Expansion<K + 1> magnitude = error.sign() == Sign::positive ? error : -error;
     if ((magnitude - Expansion<1>(half)).sign() != Sign::positive) return s;
     s = std::nextafter(s, error.sign() == Sign::positive ? INFINITY : -INFINITY);

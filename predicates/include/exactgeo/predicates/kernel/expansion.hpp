@@ -23,7 +23,7 @@
 
 namespace exactgeo::kernel {
 
-namespace expansion_detail {
+namespace internal {
 
 // h = e + f. Inputs nonoverlapping and increasing in magnitude, zero-free; so is h.
 // Returns the length of h (Shewchuk's FAST-EXPANSION-SUM with zero elimination; the
@@ -104,7 +104,7 @@ inline int compress(double* e, int e_len) noexcept {
   return top;
 }
 
-}  // namespace expansion_detail
+}  // namespace internal
 
 template <int N>
 class Expansion {
@@ -151,7 +151,7 @@ class Expansion {
   double head() const noexcept { return size_ == 0 ? 0.0 : c_[size_ - 1]; }
 
   Expansion& compress() noexcept {
-    size_ = expansion_detail::compress(c_, size_);
+    size_ = internal::compress(c_, size_);
     return *this;
   }
 
@@ -195,7 +195,7 @@ class Expansion {
 template <int N, int M>
 Expansion<N + M> operator+(const Expansion<N>& a, const Expansion<M>& b) noexcept {
   Expansion<N + M> r;
-  r.set_size(expansion_detail::sum(a.data(), a.size(), b.data(), b.size(), r.mutable_data()));
+  r.set_size(internal::sum(a.data(), a.size(), b.data(), b.size(), r.mutable_data()));
   return r;
 }
 
@@ -214,7 +214,7 @@ bool operator==(const Expansion<N>& a, const Expansion<M>& b) noexcept {
 template <int N>
 Expansion<2 * N> scale(const Expansion<N>& a, double b) noexcept {
   Expansion<2 * N> r;
-  r.set_size(expansion_detail::scale(a.data(), a.size(), b, r.mutable_data()));
+  r.set_size(internal::scale(a.data(), a.size(), b, r.mutable_data()));
   return r;
 }
 
@@ -230,11 +230,10 @@ Expansion<2 * N * M> operator*(const Expansion<N>& a, const Expansion<M>& b) noe
     int current = 0;
     for (int k = 0; k < b.size(); ++k) {
       double partial[2 * N];
-      const int len = expansion_detail::scale(a.data(), a.size(), b.data()[k], partial);
+      const int len = internal::scale(a.data(), a.size(), b.data()[k], partial);
       const Expansion<2 * N* M>& acc = buffers[current];
       Expansion<2 * N* M>& next = buffers[1 - current];
-      next.set_size(
-          expansion_detail::sum(acc.data(), acc.size(), partial, len, next.mutable_data()));
+      next.set_size(internal::sum(acc.data(), acc.size(), partial, len, next.mutable_data()));
       current = 1 - current;
     }
     return buffers[current];

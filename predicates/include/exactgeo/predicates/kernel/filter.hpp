@@ -151,7 +151,7 @@ inline VectorArray<double, N> filter_inputs(const Offsets<N>& in, int parameter)
   return x;
 }
 
-namespace detail {
+namespace internal {
 
 /// The filter's evaluation: the formula's double value and whether the bound certifies its
 /// sign. This is not a second way to say "undecided" (the stage's answer is filtered_sign's
@@ -172,7 +172,7 @@ inline FilterEvaluation evaluate_filter(const Offsets<N>& in, int parameter) noe
                      value, group_maxima<grouping>(x, parameter))};
 }
 
-}  // namespace detail
+}  // namespace internal
 
 /// Some group of inputs is exactly zero, so every term and the formula vanish. Asked only
 /// after the bound failed to certify (a zero maximum always fails the guard).
@@ -186,7 +186,7 @@ inline bool vanishing_group(const Offsets<N>& in, int parameter) noexcept {
 /// certified by the bound; Sign::zero where a group of inputs vanishes; else undecided.
 template <class Formula, Grouping grouping, std::size_t N>
 inline std::optional<Sign> filtered_sign(const Offsets<N>& in, int parameter) noexcept {
-  if (const auto f = detail::evaluate_filter<Formula, grouping>(in, parameter); f.certified) {
+  if (const auto f = internal::evaluate_filter<Formula, grouping>(in, parameter); f.certified) {
     return sign_of(f.value);
   }
   if (vanishing_group<Formula, grouping>(in, parameter)) return Sign::zero;

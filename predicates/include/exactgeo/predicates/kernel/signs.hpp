@@ -113,7 +113,7 @@ class ExactSigns : public NamedSigns<ExactSigns> {
   /// The filter, then expansions, then rationals: the first stage that decides.
   template <class Formula, Grouping grouping, std::size_t N>
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
-    if (const auto f = detail::evaluate_filter<Formula, grouping>(in, parameter); f.certified)
+    if (const auto f = internal::evaluate_filter<Formula, grouping>(in, parameter); f.certified)
         [[likely]] {
       count_filter();
       return sign_of(f.value);
@@ -123,7 +123,8 @@ class ExactSigns : public NamedSigns<ExactSigns> {
 
   template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
   Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
-    if (const auto f = detail::evaluate_filter<Formula, grouping>(in, 0); f.certified) [[likely]] {
+    if (const auto f = internal::evaluate_filter<Formula, grouping>(in, 0); f.certified)
+        [[likely]] {
       count_filter();
       return sign_of(f.value);
     }
