@@ -1,5 +1,5 @@
-# Type stub of the compiled extension (python/src); tests/python/test_stub.py checks that
-# it names exactly what the module defines.
+# Type stub of the compiled extension (python/src); tests/python/test_package.py checks
+# that it names exactly what the module defines.
 from os import PathLike
 from typing import Any, Optional, Sequence, Tuple, Union, overload
 
@@ -98,6 +98,9 @@ class MeshCcd:
     @property
     def edges(self) -> npt.NDArray[np.uint32]: ...
 
+# orient3d: the sign of det[b - a, c - a, d - a]. Positive when d lies on the side of the
+# plane (a, b, c) from which a, b, c appear counter-clockwise (the side (b - a) x (c - a)
+# points to): orient3d((0,0,0), (1,0,0), (0,1,0), (0,0,1)) is positive.
 @overload
 def orient3d(a: Sequence[float], b: Sequence[float], c: Sequence[float], d: Sequence[float], *,
              method: str = "exact", threads: int = 0) -> int: ...

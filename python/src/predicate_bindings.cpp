@@ -67,7 +67,8 @@ void bind_predicates(py::module_& module) {
              R"doc(The sign of det[b - a, c - a, d - a], exactly.
 
 Positive when d lies on the side of the plane (a, b, c) from which a, b, c appear
-clockwise: orient3d((0,0,0), (1,0,0), (0,1,0), (0,0,1)) is 1.
+counter-clockwise (the side (b - a) x (c - a) points to): orient3d((0,0,0), (1,0,0),
+(0,1,0), (0,0,1)) is positive.
 
 a, b, c, d: points of shape (3,), or arrays of shape (n, 3) (one determinant per row),
     each coordinate exactly a double (ints and other dtypes are converted exactly or

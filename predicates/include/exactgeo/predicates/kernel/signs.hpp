@@ -1,8 +1,8 @@
 #pragma once
 
 // Sign policies: the one interface through which the geometric algorithms (ray-triangle,
-// ray-patch, and later CCD) ask for the sign of a polynomial. Writing the algorithms
-// against a policy gives, from one source,
+// ray-patch and crossing parity here; CCD and mesh's face contacts above) ask for the sign
+// of a polynomial. Writing the algorithms against a policy gives, from one source,
 //
 //   ExactSigns     filter -> expansions -> rationals: the product (optionally counting
 //                  which stage decided, into a caller-owned StageCounts);
