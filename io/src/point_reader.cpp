@@ -157,8 +157,8 @@ PointXyz* PointReader::binary_destination(std::size_t max_points) {
   // A large read(2) copies from the page cache at the stream position's offset in its page
   // (for a file read from its start). A destination 8 to 24 bytes past that offset modulo
   // 4096, which is where malloc puts a large vector's data when a file is read from offset
-  // 0, made the copy 6x slower (AMD EPYC: 0.13 s instead of 0.02 s for 240 MB), so the
-  // block starts at the point of storage_ that lies about half a page away from it.
+  // 0, made the copy several times slower (docs/inside.md, "Point input"), so the block
+  // starts at the point of storage_ that lies about half a page away from it.
   constexpr std::size_t kPage = 4096;
   constexpr std::size_t kSlack = kPage / 8;  // 24 k runs through every multiple of 8 mod 4096
   if (storage_.size() < max_points + kSlack) storage_.resize(max_points + kSlack);

@@ -40,8 +40,8 @@ inline constexpr bool kFitsOnStack =
 // The exact stages are kept out of line, so that their kilobytes of stack-allocated
 // expansions are not part of the frame of every (filtered) sign. The expansion stage is
 // not marked cold: on exactly degenerate inputs (the public handcrafted CCD set) it runs
-// for most signs, and compiled for size it cost 5-6% more instructions there (parity,
-// callgrind), with no change on the simulation set. Rationals stay cold.
+// for most signs, and compiled for size, as cold code is, it costs instructions there
+// (docs/predicates.md, "Measurements"). Rationals stay cold.
 template <class Formula, std::size_t N>
 [[gnu::noinline]] std::optional<Sign> expansion_sign(const Offsets<N> in, int parameter) noexcept {
   // Exact-vector inputs (exact_vector.hpp) are sums of up to eight components. Where every
