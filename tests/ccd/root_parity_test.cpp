@@ -364,7 +364,7 @@ TEST(RootParityData, BundledSampleQueriesHaveNoFalsePositives) {
         false_negatives += t.false_negatives;
         // Root parity misses only queries with an even number of roots; this sample has
         // five such two-root collisions, all edge-edge unit tests (the exact method finds
-        // them: exact_ccd_test.cpp).
+        // them: ccd_test.cpp).
         if (std::string(scene) != "unit-tests" || std::string(type) != "edge-edge") {
           EXPECT_EQ(t.false_negatives, 0) << scene << " " << type << " " << file;
         }
@@ -380,7 +380,7 @@ TEST(RootParityData, BundledTimeOfImpactSampleHasNoFalsePositives) {
   const std::filesystem::path root =
       std::filesystem::path(EXACTGEO_TEST_DATA_DIR) / "ccd/scalable-ccd-data/cloth-funnel";
   // Parity misses only two-root collisions: none among these vertex-face queries, one
-  // among the edge-edge ones (the exact method finds it: exact_ccd_test.cpp).
+  // among the edge-edge ones (the exact method finds it: ccd_test.cpp).
   for (const auto& [stem, two_root] : {std::pair{"227vf", 0}, std::pair{"227ee", 1}}) {
     const auto files =
         ccd::read_query_files({(root / "queries" / (std::string(stem) + ".csv")).string()});

@@ -1,5 +1,6 @@
-// The exact (any-root) method: the cases parity cannot see, time of impact against exact
-// root times, symmetries, agreement with parity where parity decides, and the public data.
+// The entry points of ccd.hpp, exact (any-root) method: the cases parity cannot see, time of
+// impact against exact root times, symmetries, agreement with parity where parity decides,
+// and the public data.
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
