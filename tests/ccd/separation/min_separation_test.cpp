@@ -17,14 +17,13 @@
 #include <type_traits>
 #include <vector>
 
-#include "ccd/separation/min_separation_oracle.hpp"
 #include "ccd/query_transforms.hpp"
+#include "ccd/separation/min_separation_oracle.hpp"
+#include "ccd/separation/sampled_distance.hpp"
 #include "exactgeo/ccd/ccd.hpp"
-#include "exactgeo/ccd/internal/culling.hpp"
-#include "exactgeo/ccd/separation/internal/min_separation.hpp"
-#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/ccd/files/query_files.hpp"
-#include "exactgeo/ccd/baselines/separation_box.hpp"
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/ccd/separation/internal/min_separation.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
@@ -49,55 +48,6 @@ Result separated(const EdgeEdgeQuery& q, double delta) {
   Options o;
   o.min_separation = delta;
   return edge_edge_ccd(q, o);
-}
-
-/// The smallest distance over the step, estimated in plain doubles from samples (only to
-/// place δ near it: the oracle decides): at each sampled time, the length of the point of
-/// the slice of corner differences (a triangle or a parallelogram) closest to the origin,
-/// as the culling's closest_direction finds it.
-template <class Query>
-double sampled_distance(Query q, int samples) {
-  const std::array<Point3*, 8> p = points(q);
-  constexpr std::size_t H = std::is_same_v<Query, VertexFaceQuery> ? 3 : 4;
-  constexpr std::array<std::array<int, 2>, H> pairs = [] {
-    if constexpr (H == 3) {
-      return std::array<std::array<int, 2>, 3>{{{0, 1}, {0, 2}, {0, 3}}};
-    } else {
-      return std::array<std::array<int, 2>, 4>{{{0, 2}, {0, 3}, {1, 3}, {1, 2}}};
-    }
-  }();
-  double best = INFINITY;
-  for (int i = 0; i <= samples; ++i) {
-    const double t = static_cast<double>(i) / samples;
-    auto at = [&](int k, int axis) {
-      return (*p[k])[axis] + t * ((*p[k + 4])[axis] - (*p[k])[axis]);
-    };
-    std::array<Vector3, H> slice;
-    for (std::size_t c = 0; c < H; ++c) {
-      for (int axis = 0; axis < 3; ++axis)
-        slice[c][axis] = at(pairs[c][0], axis) - at(pairs[c][1], axis);
-    }
-    const Vector3 closest = internal::closest_direction(slice);
-    best = std::min(best, std::sqrt(closest[0] * closest[0] + closest[1] * closest[1] +
-                                    closest[2] * closest[2]));
-  }
-  return best;
-}
-
-/// δ values near the query's smallest distance and around it, and some spread ones.
-template <class Query>
-std::vector<double> deltas_for(const Query& q, Rng& rng) {
-  const double d = sampled_distance(q, 64);
-  std::vector<double> out{std::nextafter(d, 0.0), d, std::nextafter(d, INFINITY)};
-  if (std::isfinite(d) && d > 0.0) {
-    out.push_back(d * testing::uniform(rng, 0.5, 1.0));
-    out.push_back(d * testing::uniform(rng, 1.0, 1.5));
-  }
-  out.push_back(testing::uniform(rng, 0.0, 1.0));
-  out.erase(std::remove_if(out.begin(), out.end(),
-                           [](double x) { return !(x > 0.0) || !std::isfinite(x); }),
-            out.end());
-  return out;
 }
 
 template <class Query>
@@ -276,15 +226,15 @@ TEST(MinSeparation, ExtremeMagnitudesScaleWithDelta) {
 /// the step contradicts. The same with an edge falling onto a standing edge.
 TEST(MinSeparation, UnderflowingDeltaSquaredIsNotAProof) {
   const double a = 0x1p-560;
-  const VertexFaceQuery vf{{0, 0, 0x1p+10}, {-a, -a, 0}, {a, -a, 0}, {0, a, 0},
-                           {0, 0, 0x1p-542},  {-a, -a, 0}, {a, -a, 0}, {0, a, 0}};
+  const VertexFaceQuery vf{{0, 0, 0x1p+10},  {-a, -a, 0}, {a, -a, 0}, {0, a, 0},
+                           {0, 0, 0x1p-542}, {-a, -a, 0}, {a, -a, 0}, {0, a, 0}};
   const double delta = 0x1p-540;
   ASSERT_TRUE(testing::min_separation_oracle(vf, delta).within);
   EXPECT_FALSE(internal::separation_apart(vf, delta));
   const Result r = separated(vf, delta);
   EXPECT_TRUE(r.collision) << "decided by " << to_string(r.decided_by);
 
-  const EdgeEdgeQuery ee{{-a, 0, 0x1p+10}, {a, 0, 0x1p+10},  {0, -a, 0}, {0, a, 0},
+  const EdgeEdgeQuery ee{{-a, 0, 0x1p+10},  {a, 0, 0x1p+10},  {0, -a, 0}, {0, a, 0},
                          {-a, 0, 0x1p-542}, {a, 0, 0x1p-542}, {0, -a, 0}, {0, a, 0}};
   ASSERT_TRUE(testing::min_separation_oracle(ee, delta).within);
   EXPECT_FALSE(internal::separation_apart(ee, delta));
@@ -306,8 +256,8 @@ void tiny_separations_agree(const char* stream, int count) {
     // Every other query where the old bound failed: δ^2 just below the smallest double
     // and a long normal (n.n about 2^20 magnified its lost 2^-1075).
     const bool window = i % 2 == 0;
-    const int k = window ? testing::uniform_int(rng, -548, -530)
-                         : testing::uniform_int(rng, -1070, -500);
+    const int k =
+        window ? testing::uniform_int(rng, -548, -530) : testing::uniform_int(rng, -1070, -500);
     Query q = random_dyadic_query<Query>(rng);  // corners on a grid of [-2, 2]^3
     const std::array<Point3*, 8> p = points(q);
     const Point3 from = testing::random_magnitude_point(rng, window ? 9 : 0, 10);
@@ -317,7 +267,7 @@ void tiny_separations_agree(const char* stream, int count) {
     constexpr int kMoving = std::is_same_v<Query, VertexFaceQuery> ? 1 : 2;
     for (int c = 0; c < 4; ++c) {
       const Point3 shape = testing::scaled(*p[c], k - 3);  // within 2^(k-2) of 0
-      if (c < kMoving) {  // from magnitude 2^0..2^10 to the offset
+      if (c < kMoving) {                                   // from magnitude 2^0..2^10 to the offset
         *p[c + 4] = {offset[0] + shape[0], offset[1] + shape[1], offset[2] + shape[2]};
         *p[c] = {from[0] + shape[0], from[1] + shape[1], from[2] + shape[2]};
       } else {  // standing still at 0
@@ -366,8 +316,8 @@ TEST(MinSeparation, MeshStepWithAnUnderflowingDeltaSquared) {
   for (VertexIndex v = 0; v < 6; ++v) {
     const FaceIndex f = v < 3 ? 1 : 0;
     const Triangle& t = faces[f];
-    const VertexFaceQuery q{at(t0, v),    at(t0, t[0]), at(t0, t[1]), at(t0, t[2]),
-                            at(t1, v),    at(t1, t[0]), at(t1, t[1]), at(t1, t[2])};
+    const VertexFaceQuery q{at(t0, v), at(t0, t[0]), at(t0, t[1]), at(t0, t[2]),
+                            at(t1, v), at(t1, t[0]), at(t1, t[1]), at(t1, t[2])};
     if (testing::min_separation_oracle(q, delta).within) expected.push_back({v, f});
   }
   EXPECT_EQ(expected.size(), 6u);  // every corner ends 2^-542 from the other face
@@ -472,38 +422,6 @@ TEST(MinSeparation, VertexFaceTimeOfImpactBracketsTheEarliestTime) {
 
 TEST(MinSeparation, EdgeEdgeTimeOfImpactBracketsTheEarliestTime) {
   brackets_hold_the_earliest_time<EdgeEdgeQuery>("min-separation-toi-ee");
-}
-
-/// The baseline box test is conservative: every pair within δ is a yes. It also says yes
-/// for a pair up to sqrt(3) δ apart (the cube's corner), which the exact method rejects.
-TEST(SeparationBoxBaseline, NeverMissesAndSeesTheCubesCorners) {
-  Rng rng = testing::seeded_engine("min-separation-box-test");
-  int within = 0;
-  for (int i = 0; i < 100; ++i) {
-    const auto vf = varied_query<VertexFaceQuery>(rng, i);
-    const auto ee = varied_query<EdgeEdgeQuery>(rng, i);
-    for (const double delta : deltas_for(vf, rng)) {
-      if (separated(vf, delta).collision) {
-        ++within;
-        EXPECT_TRUE(vertex_face_separation_box_baseline(vf, delta)) << "vf #" << i << " " << delta;
-      }
-    }
-    for (const double delta : deltas_for(ee, rng)) {
-      if (separated(ee, delta).collision) {
-        ++within;
-        EXPECT_TRUE(edge_edge_separation_box_baseline(ee, delta)) << "ee #" << i << " " << delta;
-      }
-    }
-  }
-  EXPECT_GT(within, 100);
-  // A vertex standing 0.75 delta from a face corner along each axis: 1.3 delta away.
-  const double d = 0.5;
-  const Point3 v{-0.375, -0.375, 0.375};
-  const VertexFaceQuery corner{v, {0, 0, 0}, {1, 0, 0}, {0, 1, 0},
-                               v, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  EXPECT_TRUE(vertex_face_separation_box_baseline(corner, d));
-  EXPECT_FALSE(separated(corner, d).collision);
-  EXPECT_TRUE(separated(corner, 0.65).collision);  // |v| = 0.6495...
 }
 
 /// On every bundled benchmark query: δ = 0 answers as the contact question, with its
