@@ -4,6 +4,7 @@
 // Nothing of the library under test is called here, only its query types.
 
 #include "ccd/separation/min_separation_oracle.hpp"
+#include "ccd/separation/static_distance.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -24,93 +25,11 @@ namespace {
 using exactgeo::Point3;
 using exactgeo::ccd::EdgeEdgeQuery;
 using exactgeo::ccd::VertexFaceQuery;
+using exactgeo::testing::distance2_at;
 using exactgeo::testing::min_separation_oracle;
 using exactgeo::testing::MinSeparationAnswer;
 using exactgeo::testing::Rng;
 using Rational = mpq_class;
-
-// ---------------------------------------------------------------------------------------
-// Exact static distances at a rational time, by clamped projections and 2x2 Gram systems
-// (a different route from the oracle's sign conditions).
-
-using Vec = std::array<Rational, 3>;
-
-Vec at(const Point3& p0, const Point3& p1, const Rational& t) {
-  Vec x;
-  for (std::size_t i = 0; i < 3; ++i)
-    x[i] = Rational(p0[i]) + t * (Rational(p1[i]) - Rational(p0[i]));
-  return x;
-}
-
-Vec operator-(const Vec& a, const Vec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec operator+(const Vec& a, const Vec& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-Vec operator*(const Rational& k, const Vec& a) {
-  return {k * a[0], k * a[1], k * a[2]};
-}
-Rational dot(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-Rational point_segment_d2(const Vec& p, const Vec& a, const Vec& b) {
-  const Vec e = b - a, w = p - a;
-  const Rational ee = dot(e, e);
-  if (ee == 0) return dot(w, w);
-  const Rational s = std::clamp(Rational(dot(w, e) / ee), Rational(0), Rational(1));
-  const Vec d = w - s * e;
-  return dot(d, d);
-}
-
-Rational point_triangle_d2(const Vec& p, const Vec& a, const Vec& b, const Vec& c) {
-  Rational best =
-      std::min({point_segment_d2(p, a, b), point_segment_d2(p, b, c), point_segment_d2(p, c, a)});
-  // Stationary point of |w - x e1 - y e2|^2: [e1.e1 e1.e2; e1.e2 e2.e2] (x, y) = (e1.w, e2.w).
-  const Vec e1 = b - a, e2 = c - a, w = p - a;
-  const Rational g11 = dot(e1, e1), g12 = dot(e1, e2), g22 = dot(e2, e2);
-  const Rational det = g11 * g22 - g12 * g12;
-  if (det != 0) {
-    const Rational x = (dot(e1, w) * g22 - g12 * dot(e2, w)) / det;
-    const Rational y = (g11 * dot(e2, w) - g12 * dot(e1, w)) / det;
-    if (x >= 0 && y >= 0 && x + y <= 1) {
-      const Vec d = w - x * e1 - y * e2;
-      best = std::min(best, dot(d, d));
-    }
-  }
-  return best;
-}
-
-Rational segment_segment_d2(const Vec& a0, const Vec& a1, const Vec& b0, const Vec& b1) {
-  Rational best = std::min({point_segment_d2(a0, b0, b1), point_segment_d2(a1, b0, b1),
-                            point_segment_d2(b0, a0, a1), point_segment_d2(b1, a0, a1)});
-  // Stationary point of |r0 + s da - u db|^2 with r0 = a0 - b0:
-  // s da.da - u da.db = -r0.da,  s da.db - u db.db = -r0.db.
-  const Vec da = a1 - a0, db = b1 - b0, r0 = a0 - b0;
-  const Rational m11 = dot(da, da), m12 = -dot(da, db), m21 = dot(da, db), m22 = -dot(db, db);
-  const Rational det = m11 * m22 - m12 * m21;
-  if (det != 0) {
-    const Rational rhs1 = -dot(r0, da), rhs2 = -dot(r0, db);
-    const Rational s = (rhs1 * m22 - m12 * rhs2) / det;
-    const Rational u = (m11 * rhs2 - rhs1 * m21) / det;
-    if (s >= 0 && s <= 1 && u >= 0 && u <= 1) {
-      const Vec d = r0 + s * da - u * db;
-      best = std::min(best, dot(d, d));
-    }
-  }
-  return best;
-}
-
-Rational distance2_at(const VertexFaceQuery& q, const Rational& t) {
-  return point_triangle_d2(at(q.v_t0, q.v_t1, t), at(q.f0_t0, q.f0_t1, t), at(q.f1_t0, q.f1_t1, t),
-                           at(q.f2_t0, q.f2_t1, t));
-}
-
-Rational distance2_at(const EdgeEdgeQuery& q, const Rational& t) {
-  return segment_segment_d2(at(q.ea0_t0, q.ea0_t1, t), at(q.ea1_t0, q.ea1_t1, t),
-                            at(q.eb0_t0, q.eb0_t1, t), at(q.eb1_t0, q.eb1_t1, t));
-}
 
 Rational squared(double x) {
   const Rational r(x);
