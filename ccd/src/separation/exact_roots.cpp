@@ -226,22 +226,32 @@ std::optional<WithinTime> exactly_within(const QueryPoints& x, double delta, std
 /// A bracket of doubles around the time, of width at most `width` where doubles allow:
 /// the isolating interval halved until narrow enough, or until its ends would not be
 /// doubles; then its ends rounded outward.
-TimeInterval bracket_of(WithinTime t, double width) {
-  auto is_double = [](const Rational& q) { return Rational(q.toward_zero()) == q; };
-  while (!t.root.exact && t.root.hi - t.root.lo > Rational(width)) {
-    IsolatedRoot narrower = t.root;
-    halve_isolating_interval(t.p, narrower);
-    const bool doubles = narrower.exact ? is_double(*narrower.exact)
-                                        : is_double(narrower.lo) && is_double(narrower.hi);
-    if (!doubles) break;
-    t.root = narrower;
-  }
-  const Rational lo = t.root.exact ? *t.root.exact : t.root.lo;
-  const Rational hi = t.root.exact ? *t.root.exact : t.root.hi;
+/// The doubles around a root's isolating interval: its ends rounded outward.
+TimeInterval outward(const IsolatedRoot& r) {
+  const Rational lo = r.exact ? *r.exact : r.lo;
+  const Rational hi = r.exact ? *r.exact : r.hi;
   const double start = lo.toward_zero();  // truncated toward zero: at most lo (lo >= 0)
   double end = hi.toward_zero();
   if (Rational(end) < hi) end = std::nextafter(end, 2.0);
   return {start, end};
+}
+
+/// The root's bracket in doubles, at most `width` wide or one double spacing (no two
+/// doubles lie closer): the isolating interval is halved, exactly, until its outward
+/// rounding is that narrow. A root that is itself a double is found as one (bisection of
+/// an interval whose ends are not dyadic may never land on it).
+TimeInterval bracket_of(WithinTime t, double width) {
+  TimeInterval b = outward(t.root);
+  while (!t.root.exact && b.end - b.start > width && std::nextafter(b.start, 2.0) < b.end) {
+    const double between = std::nextafter(b.start, 2.0);
+    if (std::nextafter(between, 2.0) == b.end && t.p.sign_at(Rational(between)) == Sign::zero) {
+      t.root.exact = Rational(between);
+    } else {
+      halve_isolating_interval(t.p, t.root);
+    }
+    b = outward(t.root);
+  }
+  return b;
 }
 
 }  // namespace

@@ -63,6 +63,24 @@ bool narrow_enough(const TimeInterval& t, double width) {
   return t.end - t.start <= width || std::nextafter(t.start, 2.0) >= t.end;
 }
 
+/// A gap root at the midpoint of an interval makes the search split at a third: the
+/// isolating interval then has ends that are not doubles, and the bracket must still be
+/// halved down to the width asked (it used to stay [0, 1/3] at every width).
+TEST(ExactRoots, BracketIsAsNarrowAsAskedWhenAMidpointIsARoot) {
+  const EdgeEdgeQuery q{{-2, -3, 0}, {-2, -3, 0}, {0, 0, 0}, {1, 0, 0},
+                        {8, 5, 0},   {8, 5, 0},   {0, 0, 0}, {1, 0, 0}};
+  const VertexFaceQuery vf{{-2, -3, 0}, {0, 0, 0}, {1, 0, 0}, {0.5, 0, -1.5},
+                           {8, 5, 0},   {0, 0, 0}, {1, 0, 0}, {0.5, 0, -1.5}};
+  for (const double width : {0.25, 1e-3, 1e-9, 0x1p-60}) {
+    const ExactSeparation r = separation(q, 1.0, width);
+    expect_brackets(r, mpq_class(1, 4), mpq_class(1, 4), "edge-edge");
+    EXPECT_TRUE(narrow_enough(*r.earliest, width)) << width << " " << describe(*r.earliest);
+    const ExactSeparation s = separation(vf, 1.0, width);
+    ASSERT_TRUE(s.within);
+    EXPECT_TRUE(narrow_enough(*s.earliest, width)) << width << " " << describe(*s.earliest);
+  }
+}
+
 TEST(ExactRoots, TimesWorkedOutByHand) {
   const Point3 o{0, 0, 0}, x{1, 0, 0}, y{0, 1, 0};
   // A vertex falling onto the face from height 1 to -1: at height 1/4 when t = 3/8.
