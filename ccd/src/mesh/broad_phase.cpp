@@ -31,17 +31,20 @@ constexpr std::size_t kWalkPairs = 256;
 /// trades the cost of a build (a few refits' worth) against a slower walk.
 constexpr double kRebuildLooseness = 1.5;
 
-/// A digest of an exact displacement: equal vectors give equal digests (-0 and +0 are
-/// made one first), never 0.
-std::uint32_t motion_digest(const Vector3& d) noexcept {
+/// A digest of an exact displacement, head + tail: equal vectors give equal digests (-0
+/// and +0 are made one first), never 0.
+std::uint32_t motion_digest(const Vector3& head, const Vector3& tail) noexcept {
   std::uint64_t h = 0;
-  for (const double x : d)
-    h = (h ^ std::bit_cast<std::uint64_t>(x + 0.0)) * 0x9E3779B97F4A7C15u;
+  for (const Vector3* part : {&head, &tail}) {
+    for (const double x : *part)
+      h = (h ^ std::bit_cast<std::uint64_t>(x + 0.0)) * 0x9E3779B97F4A7C15u;
+  }
   return static_cast<std::uint32_t>(h >> 32) | 1u;
 }
 
-/// Each vertex's swept box and displacement p_t1 - p_t0: whether every coordinate of the
-/// displacement is exactly a double, and whether the vertex moves at all (the rounded
+/// Each vertex's swept box and exact displacement p_t1 - p_t0 (TwoDiff: its rounded value
+/// and the rest, unique for each exact difference, so that rigid motion by a vector that is
+/// not a double is recognised too), and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
 VertexBoxes sweep_of(const StepPositions& positions, double largest, double min_separation,
                      unsigned threads) {
@@ -49,6 +52,7 @@ VertexBoxes sweep_of(const StepPositions& positions, double largest, double min_
   VertexBoxes s;
   s.box.resize(n);
   s.displacement.resize(n);
+  s.displacement_tail.resize(n);
   s.moving.resize(n);
   s.motion.resize(n);
   const double* t0 = positions.t0.data();
@@ -72,14 +76,16 @@ VertexBoxes sweep_of(const StepPositions& positions, double largest, double min_
     for (std::size_t v = b * kVertexBlock; v < std::min(n, (b + 1) * kVertexBlock); ++v) {
       s.box[v] = vertex_swept_box(t0, t1, v, scale, margin);
       Vector3& d = s.displacement[v];
+      Vector3& rest = s.displacement_tail[v];
       bool exact = true;
       for (std::size_t k = 0; k < 3; ++k) {
         const auto diff = exactgeo::kernel::two_diff(t1[3 * v + k], t0[3 * v + k]);
         d[k] = diff.head;
-        exact = exact && diff.tail == 0.0 && std::isfinite(diff.head);
+        rest[k] = diff.tail;
+        exact = exact && std::isfinite(diff.head);  // TwoDiff is exact unless it overflows
       }
       s.moving[v] = d != Vector3{0.0, 0.0, 0.0} ? 1 : 0;
-      s.motion[v] = exact ? motion_digest(d) : 0;
+      s.motion[v] = exact ? motion_digest(d, rest) : 0;
     }
   });
   return s;

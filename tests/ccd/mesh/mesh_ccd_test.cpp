@@ -917,6 +917,24 @@ TEST(MeshCcdDegenerate, RigidlyMovingSheetsMatchExhaustivePairs) {
       << "some pairs are rigid, so skipping them is visible";
 }
 
+/// A rigid motion by a vector that is not a double: every vertex moves by (1 - 2^60, 0, 0),
+/// which needs 61 bits. The pair of triangles touches (vertex 3 on face 0) all through the
+/// step, rigidly, so it is skipped as when the vector is a double.
+TEST(MeshCcdDegenerate, RigidPairsMovingByAVectorThatIsNotADoubleAreSkipped) {
+  const double x = 0x1p60;
+  const std::vector<double> t0{x,       0,   0, x + 1024, 0,   0,    x,        1024, 0,
+                               x + 256, 256, 0, x + 256,  256, 1024, x + 1024, 1024, 1024};
+  const std::vector<double> t1{1,   0,   0, 1025, 0,   0,    1,    1024, 0,
+                               257, 256, 0, 257,  256, 1024, 1025, 1024, 1024};
+  const std::vector<Triangle> faces{{0, 1, 2}, {3, 4, 5}};
+  const MeshCcdResult r = find_collisions(faces, {t0, t1});
+  EXPECT_TRUE(r.vertex_face.empty() && r.edge_edge.empty());
+  // Not skipped when the two move apart by a hair: the touch at t = 0 is a collision.
+  std::vector<double> apart = t1;
+  apart[9] += 1.0;  // vertex 3 ends one unit further along x than the rigid motion takes it
+  EXPECT_FALSE(find_collisions(faces, {t0, apart}).vertex_face.empty());
+}
+
 TEST(MeshCcdDegenerate, StandingPairsAreSkippedMovingAgainstStandingAreNot) {
   const MovingMesh m = floor_and_falling_sheet();
   // The standing parts do intersect each other, so skipping them is visible.

@@ -43,17 +43,22 @@ namespace exactgeo::boxes {
 /// step, its swept box and exact displacement (ccd/src/mesh/broad_phase.cpp); at rest,
 /// its box alone (at_rest).
 struct VertexBoxes {
-  std::vector<FloatBox> box;          ///< the vertex's box, in one Scale for all
-  std::vector<Vector3> displacement;  ///< p_t1 - p_t0, rounded (empty at rest)
+  std::vector<FloatBox> box;  ///< the vertex's box, in one Scale for all
+  /// p_t1 - p_t0 exactly, as its rounded value and the rest (head + tail, TwoDiff: equal
+  /// differences have equal heads and tails); empty at rest
+  std::vector<Vector3> displacement;
+  std::vector<Vector3> displacement_tail;
   /// 0 when the vertex is known to stand still, else 1 (at rest: 1, nothing is known)
   std::vector<std::uint8_t> moving;
-  /// A digest of the displacement: equal exact displacements have equal nonzero digests;
-  /// 0 when no exact displacement is known (then the vertex moves together with none).
+  /// A digest of the exact displacement: equal displacements have equal nonzero digests;
+  /// 0 when none is known (an overflowing difference, or boxes at rest): the vertex then
+  /// moves together with none.
   std::vector<std::uint32_t> motion;
 
   /// Whether a and b move by one and the same exactly known vector (standing included).
   bool move_together(VertexIndex a, VertexIndex b) const noexcept {
-    return motion[a] != 0 && motion[a] == motion[b] && displacement[a] == displacement[b];
+    return motion[a] != 0 && motion[a] == motion[b] && displacement[a] == displacement[b] &&
+           displacement_tail[a] == displacement_tail[b];
   }
 
   /// Boxes of vertices with no motion: every pair of primitives over them counts.
