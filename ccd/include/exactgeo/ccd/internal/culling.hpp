@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 #include "exactgeo/ccd/internal/boundary_image.hpp"
@@ -277,9 +278,16 @@ Vector3 line_facing_normal(const std::array<Vector3, H>& x, const Vector3& other
 /// plane turning from one slice's facing normal to the other's. As a piece of the step
 /// shrinks, its corners approach one slice and one of these planes separates unless the
 /// origin is on the image. The normals are computed in plain doubles from the rounded
-/// corners: any normal will do, because the side of every corner is then certified.
+/// corners: any normal will do, because the side of every corner is then certified. With
+/// `Planes::all`, also the plane turning between the slices' own plane normals (below).
+enum class Planes : std::uint8_t {
+  usual,  ///< enough to decide whether a step holds a root
+  all,    ///< also for pieces next to a contact, where a time of impact is bracketed
+};
+
 template <std::size_t C>
-bool separated_by_slice_planes(const kernel::Offsets<C>& a) noexcept {
+bool separated_by_slice_planes(const kernel::Offsets<C>& a,
+                               Planes planes = Planes::usual) noexcept {
   constexpr std::size_t H = C / 2;
   const std::array<std::array<Vector3, H>, 2> slices{slice_corners(a, 0), slice_corners(a, 1)};
   std::array<Vector3, 2> facing{};  // per slice, a normal pointing from the origin to it
@@ -313,16 +321,20 @@ bool separated_by_slice_planes(const kernel::Offsets<C>& a) noexcept {
   // alike): next to a transversal contact the origin is off the slice planes by about
   // the time to the contact, and n(s) . F(s) is then the coplanarity cubic up to a term
   // quadratic in the piece's length, with normals exact to rounding, where the closest
-  // directions above lose half the digits.
-  return usable(plane[0]) && usable(plane[1]) && separated_by_turning_plane(a, plane[0], plane[1]);
+  // directions above lose half the digits. It settles pieces the others leave beside a
+  // contact, where a bracket is narrowed, and otherwise rarely pays its cost: only a time
+  // of impact asks for it (docs/ccd.md, "Time of impact").
+  return planes == Planes::all && usable(plane[0]) && usable(plane[1]) &&
+         separated_by_turning_plane(a, plane[0], plane[1]);
 }
 
 /// Both tests; `filterable` false (a piece whose rounded corners are not within the
 /// filter's input model) leaves only the exact bounding-box test.
 template <std::size_t C>
-bool certainly_no_root(const kernel::Offsets<C>& a, bool filterable = true) noexcept {
+bool certainly_no_root(const kernel::Offsets<C>& a, bool filterable = true,
+                       Planes planes = Planes::usual) noexcept {
   if (outside_bounding_box(a)) return true;
-  return filterable && separated_by_slice_planes(a);
+  return filterable && separated_by_slice_planes(a, planes);
 }
 
 }  // namespace exactgeo::ccd::internal

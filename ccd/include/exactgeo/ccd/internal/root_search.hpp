@@ -125,7 +125,8 @@ class RootSearch {
       parity = parity_of(*piece);
     }
     if (parity && *parity != RootParity::even) return earliest(*piece, parity, p);
-    if (certainly_no_root(piece->offsets(), piece->filterable())) return std::nullopt;
+    const Planes planes = earliest_asked() ? Planes::all : Planes::usual;
+    if (certainly_no_root(piece->offsets(), piece->filterable(), planes)) return std::nullopt;
     return earliest(*piece, parity, p);
   }
 
