@@ -14,7 +14,7 @@
 #include "exactgeo/mesh/weld.hpp"
 #include "polygon.hpp"
 
-namespace exactgeo::mesh {
+namespace exactgeo::mesh::internal {
 
 using io::InputError;
 using io::quoted;
@@ -207,4 +207,4 @@ LoadedMesh read_with_assimp_from_memory(const std::string& bytes, const std::str
   });
 }
 
-}  // namespace exactgeo::mesh
+}  // namespace exactgeo::mesh::internal

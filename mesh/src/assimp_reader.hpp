@@ -8,7 +8,7 @@
 
 #include "exactgeo/mesh/load.hpp"
 
-namespace exactgeo::mesh {
+namespace exactgeo::mesh::internal {
 
 /// Reads `path` with assimp, which picks the importer from the extension `extension`
 /// (lower case, without the dot). The meshes of every scene node are merged into one
@@ -27,4 +27,4 @@ LoadedMesh read_with_assimp(const std::string& path, const std::string& extensio
 LoadedMesh read_with_assimp_from_memory(const std::string& bytes, const std::string& source,
                                         const std::string& extension, const LoadOptions& options);
 
-}  // namespace exactgeo::mesh
+}  // namespace exactgeo::mesh::internal

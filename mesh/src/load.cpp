@@ -13,6 +13,8 @@
 
 namespace exactgeo::mesh {
 
+using internal::read_with_assimp;
+using internal::read_with_assimp_from_memory;
 using io::InputError;
 using io::read_file;
 using io::read_stream;

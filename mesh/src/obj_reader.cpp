@@ -10,6 +10,9 @@
 
 namespace exactgeo::mesh {
 
+using internal::add_polygon;
+using internal::kMaxVertices;
+using internal::require_faces;
 using io::InputError;
 using io::LineCursor;
 using io::parse_integer;

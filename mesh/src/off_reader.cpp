@@ -13,6 +13,10 @@
 
 namespace exactgeo::mesh {
 
+using internal::add_polygon;
+using internal::kMaxVertices;
+using internal::require_faces;
+using internal::zero_based_index_problem;
 using io::InputError;
 using io::LineCursor;
 using io::parse_integer;

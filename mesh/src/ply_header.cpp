@@ -6,7 +6,7 @@
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/text_scan.hpp"
 
-namespace exactgeo::mesh {
+namespace exactgeo::mesh::internal {
 
 using io::InputError;
 using io::LineCursor;
@@ -227,4 +227,4 @@ std::string ply_format_name(PlyFormat format) {
   return "ply";
 }
 
-}  // namespace exactgeo::mesh
+}  // namespace exactgeo::mesh::internal

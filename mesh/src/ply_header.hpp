@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace exactgeo::mesh {
+namespace exactgeo::mesh::internal {
 
 enum class PlyFormat { ascii, binary_little_endian, binary_big_endian };
 
@@ -52,4 +52,4 @@ PlyHeader parse_ply_header(std::string_view data, const std::string& source);
 /// "ply ascii", "ply binary little endian" or "ply binary big endian".
 std::string ply_format_name(PlyFormat format);
 
-}  // namespace exactgeo::mesh
+}  // namespace exactgeo::mesh::internal

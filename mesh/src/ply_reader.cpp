@@ -20,6 +20,20 @@
 
 namespace exactgeo::mesh {
 
+using internal::add_polygon;
+using internal::kMaxVertices;
+using internal::parse_ply_header;
+using internal::ply_format_name;
+using internal::ply_type_is_integer;
+using internal::ply_type_name;
+using internal::ply_type_size;
+using internal::PlyElement;
+using internal::PlyFormat;
+using internal::PlyHeader;
+using internal::PlyProperty;
+using internal::PlyType;
+using internal::require_faces;
+using internal::zero_based_index_problem;
 using io::InputError;
 using io::LineCursor;
 using io::parse_float32;

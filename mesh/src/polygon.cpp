@@ -2,7 +2,7 @@
 
 #include "exactgeo/io/input_error.hpp"
 
-namespace exactgeo::mesh {
+namespace exactgeo::mesh::internal {
 
 using io::InputError;
 
@@ -58,4 +58,4 @@ void require_faces(const LoadedMesh& loaded, const std::string& source) {
   }
 }
 
-}  // namespace exactgeo::mesh
+}  // namespace exactgeo::mesh::internal

@@ -12,7 +12,7 @@
 #include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 
-namespace exactgeo::mesh {
+namespace exactgeo::mesh::internal {
 
 /// The most vertices a mesh can index: every index is below kNoVertex.
 inline constexpr std::size_t kMaxVertices = kNoVertex;
@@ -32,4 +32,4 @@ std::optional<std::string> zero_based_index_problem(std::int64_t index, std::uin
 /// Throws InputError("<source>: ... no faces") when the mesh has no face.
 void require_faces(const LoadedMesh& loaded, const std::string& source);
 
-}  // namespace exactgeo::mesh
+}  // namespace exactgeo::mesh::internal
