@@ -67,14 +67,19 @@ PatchShape classify_patch(const BilinearPatch& patch) noexcept {
   return PatchShape::concave;
 }
 
-RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
-                          const BilinearPatch& patch, Arithmetic arithmetic) noexcept {
+RayPatchCrossings ray_patch_crossings(const Point3& origin, const Vector3& direction,
+                                      const BilinearPatch& patch, Arithmetic arithmetic) noexcept {
   const auto x = internal::tensor_corners(patch);
   return kernel::with_signs(arithmetic, [&](const auto& signs) {
-    return internal::ray_patch_parity_offsets(signs, internal::patch_span(signs, x),
-                                              internal::offsets_from(origin, x),
-                                              Offset::vector(direction));
+    return internal::ray_patch_crossings_offsets(signs, internal::patch_span(signs, x),
+                                                 internal::offsets_from(origin, x),
+                                                 Offset::vector(direction));
   });
+}
+
+RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
+                          const BilinearPatch& patch, Arithmetic arithmetic) noexcept {
+  return ray_patch_crossings(origin, direction, patch, arithmetic).parity;
 }
 
 Sign patch_side(const BilinearPatch& patch, const Point3& x, Arithmetic arithmetic) noexcept {

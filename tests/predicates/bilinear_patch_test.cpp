@@ -1,7 +1,8 @@
-// Ray vs bilinear patch parity, the patch's implicit function and its shape: hand cases
-// for every flat shape, then the independent rational oracle (which counts preimages
-// directly, by exact algebra in Q(sqrt D)) on generic, dense dyadic, flat, collapsed and
-// scaled inputs.
+// Ray vs bilinear patch parity and signed crossings, the patch's implicit function and its
+// shape: hand cases for every flat shape, then the independent rational oracle (which
+// counts preimages directly, by exact algebra in Q(sqrt D), each with the sign of the
+// patch's normal there) on generic, dense dyadic, flat, near-flat, collapsed, scaled and
+// extreme-magnitude inputs.
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
 
@@ -132,10 +133,15 @@ TEST(PatchSide, ZeroOnThePatchAndSidesInsideTheTetrahedron) {
   EXPECT_EQ(patch_side(kSaddle, {0.5, 0.5, 0.3}), Sign::positive);
 }
 
+/// Parity and signed count, in every arithmetic that claims exactness, are the oracle's.
 void expect_matches_oracle(const Point3& o, const Vector3& d, const BilinearPatch& p) {
-  const RayPatch expected = testing::ray_patch_oracle(o, d, p);
-  ASSERT_EQ(ray_patch_parity(o, d, p), expected) << describe(o, d, p);
-  ASSERT_EQ(ray_patch_parity(o, d, p, Arithmetic::rational), expected) << describe(o, d, p);
+  const RayPatchCrossings expected = testing::ray_patch_signed_crossings_oracle(o, d, p);
+  for (const Arithmetic arithmetic : {Arithmetic::exact, Arithmetic::rational}) {
+    const RayPatchCrossings r = ray_patch_crossings(o, d, p, arithmetic);
+    ASSERT_EQ(r.parity, expected.parity) << describe(o, d, p);
+    ASSERT_EQ(r.signed_count, expected.signed_count) << describe(o, d, p);
+    ASSERT_EQ(ray_patch_parity(o, d, p, arithmetic), expected.parity) << describe(o, d, p);
+  }
 }
 
 BilinearPatch integer_patch(Rng& rng, int range) {
@@ -230,19 +236,78 @@ TEST(RayPatch, FoldRegionsOfTiltedFlatPatchesAgreeWithOracle) {
   EXPECT_GT(folded_on, 200);
 }
 
+/// Flat patches of every shape, tilted, and one corner one ulp off their plane (a skew
+/// patch thinner than any filter can see), rays through them off the plane: the signed
+/// count (and the parity) is the oracle's, so the count through the fold of a concave or
+/// butterfly patch, where the two sheets face opposite ways, is 0.
+TEST(RayPatch, NearFlatPatchesOneUlpOffAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("ray-patch-near-flat");
+  std::map<PatchShape, int> shapes;
+  std::map<Sign, int> counts;
+  for (int i = 0; i < 6000; ++i) {
+    // Corners a + s e1 + t e2 with integer s, t: coplanar, exactly.
+    const Point3 a = testing::integer_point(rng, 2), e1 = testing::integer_point(rng, 2),
+                 e2 = testing::integer_point(rng, 2);
+    auto corner = [&] {
+      return testing::rounded_affine(
+          a, {a[0] + e1[0], a[1] + e1[1], a[2] + e1[2]}, {a[0] + e2[0], a[1] + e2[1], a[2] + e2[2]},
+          testing::uniform_int(rng, -3, 3), testing::uniform_int(rng, -3, 3));
+    };
+    BilinearPatch p{corner(), corner(), corner(), corner()};
+    if (i % 2 == 1) {
+      p.p11 = testing::ulp_step(p.p11, testing::uniform_int(rng, 0, 2),
+                                testing::uniform_int(rng, 0, 1) * 2 - 1);
+    }
+    const Point3 o = testing::random_point(rng, 2.0);
+    const Point3 target = testing::rounded_affine(p.p00, p.p10, p.p01, testing::uniform(rng, 0, 1),
+                                                  testing::uniform(rng, 0, 1));
+    const Vector3 d{target[0] - o[0], target[1] - o[1], target[2] - o[2]};
+    if (d == Vector3{0, 0, 0}) continue;
+    expect_matches_oracle(o, d, p);
+    ++shapes[classify_patch(p)];
+    ++counts[ray_patch_crossings(o, d, p).signed_count];
+  }
+  for (const PatchShape s :
+       {PatchShape::skew, PatchShape::convex, PatchShape::concave, PatchShape::butterfly}) {
+    EXPECT_GT(shapes[s], 100) << to_string(s);
+  }
+  for (const Sign s : {Sign::negative, Sign::zero, Sign::positive}) {
+    EXPECT_GT(counts[s], 500) << to_int(s);
+  }
+}
+
+/// The same kinds of inputs as the dense dyadic test, scaled by 2^k for k up to +-1000 and
+/// compared with the oracle there (not only with the unscaled answer): the filters fail
+/// at these magnitudes and the exact stages answer.
+TEST(RayPatch, ExtremeMagnitudesAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("ray-patch-extreme");
+  for (int i = 0; i < 1500; ++i) {
+    const BilinearPatch p = integer_patch(rng, 2);
+    const Point3 o = testing::scaled(testing::integer_point(rng, 4), -1);
+    const int k = testing::uniform_int(rng, 0, 1) == 0 ? testing::uniform_int(rng, -1000, -900)
+                                                       : testing::uniform_int(rng, 900, 1000);
+    const BilinearPatch ps{testing::scaled(p.p00, k), testing::scaled(p.p10, k),
+                           testing::scaled(p.p11, k), testing::scaled(p.p01, k)};
+    const Vector3 d = testing::scaled(testing::nonzero_integer_direction(rng, 2),
+                                      testing::uniform_int(rng, -1000, 1000));
+    expect_matches_oracle(testing::scaled(o, k), d, ps);
+  }
+}
+
 TEST(RayPatch, ScalingByPowersOfTwoChangesNothing) {
   Rng rng = testing::seeded_engine("ray-patch-scaled");
   for (int i = 0; i < 2000; ++i) {
     const BilinearPatch p = integer_patch(rng, 3);
     const Point3 o = testing::scaled(testing::integer_point(rng, 6), -1);
     const Vector3 d = testing::nonzero_integer_direction(rng, 2);
-    const RayPatch reference = ray_patch_parity(o, d, p);
+    const RayPatchCrossings reference = ray_patch_crossings(o, d, p);
     const int k = testing::uniform_int(rng, -1070, 1015);
     const BilinearPatch ps{testing::scaled(p.p00, k), testing::scaled(p.p10, k),
                            testing::scaled(p.p11, k), testing::scaled(p.p01, k)};
     const Vector3 ds = testing::scaled(d, testing::uniform_int(rng, -1070, 1015));
-    ASSERT_EQ(ray_patch_parity(testing::scaled(o, k), ds, ps), reference)
-        << "k=" << k << " " << describe(o, d, p);
+    const RayPatchCrossings r = ray_patch_crossings(testing::scaled(o, k), ds, ps);
+    ASSERT_EQ(r.parity, reference.parity) << "k=" << k << " " << describe(o, d, p);
+    ASSERT_EQ(r.signed_count, reference.signed_count) << "k=" << k << " " << describe(o, d, p);
   }
 }
 
@@ -253,10 +318,17 @@ TEST(RayPatch, ReparametrizingThePatchChangesNothing) {
     const BilinearPatch p = integer_patch(rng, 2);
     const Point3 o = testing::scaled(testing::integer_point(rng, 4), -1);
     const Vector3 d = testing::nonzero_integer_direction(rng, 2);
-    const RayPatch r = ray_patch_parity(o, d, p);
-    EXPECT_EQ(ray_patch_parity(o, d, {p.p00, p.p01, p.p11, p.p10}), r);  // swap u, v
-    EXPECT_EQ(ray_patch_parity(o, d, {p.p10, p.p00, p.p01, p.p11}), r);  // u -> 1 - u
-    EXPECT_EQ(ray_patch_parity(o, d, {p.p11, p.p01, p.p00, p.p10}), r);  // both reversed
+    const RayPatchCrossings r = ray_patch_crossings(o, d, p);
+    // Swapping u and v, or reversing one of them, reverses the orientation; both reversed
+    // keep it.
+    const RayPatchCrossings swapped = ray_patch_crossings(o, d, {p.p00, p.p01, p.p11, p.p10});
+    const RayPatchCrossings mirrored = ray_patch_crossings(o, d, {p.p10, p.p00, p.p01, p.p11});
+    const RayPatchCrossings turned = ray_patch_crossings(o, d, {p.p11, p.p01, p.p00, p.p10});
+    for (const RayPatchCrossings& other : {swapped, mirrored, turned})
+      EXPECT_EQ(other.parity, r.parity);
+    EXPECT_EQ(swapped.signed_count, -r.signed_count);
+    EXPECT_EQ(mirrored.signed_count, -r.signed_count);
+    EXPECT_EQ(turned.signed_count, r.signed_count);
   }
 }
 
@@ -267,9 +339,11 @@ TEST(RayPatch, TriangleAsDegeneratePatchMatchesRayTriangle) {
                  c = testing::integer_point(rng, 2);
     const Point3 o = testing::integer_point(rng, 2);
     const Vector3 d = testing::nonzero_integer_direction(rng, 2);
-    const RayTriangle t = classify_ray_triangle(o, d, a, b, c).kind;
-    const RayPatch r = ray_patch_parity(o, d, {a, b, c, c});
-    switch (t) {
+    const RayTriangleHit t = classify_ray_triangle(o, d, a, b, c);
+    const RayPatchCrossings crossings = ray_patch_crossings(o, d, {a, b, c, c});
+    const RayPatch r = crossings.parity;
+    EXPECT_EQ(crossings.signed_count, t.kind == RayTriangle::interior ? t.turn : Sign::zero);
+    switch (t.kind) {
       case RayTriangle::miss:
         EXPECT_EQ(r, RayPatch::even);
         break;

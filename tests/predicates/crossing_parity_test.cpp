@@ -8,8 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
+#include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/predicates/kernel/signs.hpp"
@@ -39,43 +43,54 @@ struct FaceSet {
   PreparedFaces prepared() const { return {faces, spans}; }
 };
 
-/// The oracle's answer for one face, reduced to a Crossing.
-Crossing oracle_crossing(const FaceSet& set, const SurfaceFace& f, const Point3& origin,
-                         const Vector3& direction) {
+/// The oracle's answer for one face, counted by orientation.
+SignedCrossing oracle_crossing(const FaceSet& set, const SurfaceFace& f, const Point3& origin,
+                               const Vector3& direction) {
   const auto& p = set.points;
   const auto& c = f.corners;
   if (f.is_triangle()) {
-    return crossing_of(
-        testing::ray_triangle_oracle(origin, direction, p[c[0]], p[c[1]], p[c[2]]).kind);
+    return crossing_of(testing::ray_triangle_oracle(origin, direction, p[c[0]], p[c[1]], p[c[2]]));
   }
   // Tensor order back to boundary order: p00 = x0, p10 = x1, p11 = x3, p01 = x2.
-  return crossing_of(
-      testing::ray_patch_oracle(origin, direction, {p[c[0]], p[c[1]], p[c[3]], p[c[2]]}));
+  return crossing_of(testing::ray_patch_signed_crossings_oracle(
+      origin, direction, {p[c[0]], p[c[1]], p[c[3]], p[c[2]]}));
 }
 
 /// The oracle's count along one ray, with the predicate's documented stopping rule: the
 /// first face that is degenerate or holds the origin decides.
-RayCount oracle_count(const FaceSet& set, const Point3& origin, const Vector3& direction) {
-  bool odd = false;
+SignedRayCount oracle_count(const FaceSet& set, const Point3& origin, const Vector3& direction) {
+  std::int64_t total = 0;
   for (const SurfaceFace& f : set.faces) {
-    switch (oracle_crossing(set, f, origin, direction)) {
+    const SignedCrossing crossing = oracle_crossing(set, f, origin, direction);
+    switch (crossing.kind) {
       case Crossing::none:
         break;
       case Crossing::crossed:
-        odd = !odd;
+        total += to_int(crossing.sign);
         break;
       case Crossing::origin_on:
-        return RayCount::origin_on_face;
+        return {RayCount::origin_on_face, 0};
       case Crossing::degenerate:
-        return RayCount::degenerate;
+        return {RayCount::degenerate, 0};
     }
   }
-  return odd ? RayCount::odd : RayCount::even;
+  return {total % 2 == 0 ? RayCount::even : RayCount::odd, total};
 }
 
-RayCount library_count(const FaceSet& set, const Point3& origin, const Vector3& direction) {
+/// The library's signed count along one ray, checked against its parity count.
+SignedRayCount library_count(const FaceSet& set, const Point3& origin, const Vector3& direction) {
   const auto corner = [&](VertexIndex i) { return Offset::between(origin, set.points[i]); };
-  return count_crossings(kernel::ExactSigns{}, set.prepared(), corner, Offset::vector(direction));
+  const kernel::ExactSigns signs;
+  const SignedRayCount count =
+      count_signed_crossings(signs, set.prepared(), corner, Offset::vector(direction));
+  EXPECT_EQ(count_crossings(signs, set.prepared(), corner, Offset::vector(direction)), count.kind);
+  return count;
+}
+
+void expect_same_count(const SignedRayCount& library, const SignedRayCount& oracle,
+                       const std::string& what) {
+  ASSERT_EQ(library.kind, oracle.kind) << what;
+  ASSERT_EQ(library.total, oracle.total) << what;
 }
 
 std::string describe(const FaceSet& set, const Point3& origin) {
@@ -130,10 +145,10 @@ TEST(CrossingParity, OneRayMatchesTheOracleFaceByFace) {
       for (int i = 0; i < 3; ++i)
         origin[i] = 0.5 * (a[i] + b[i]) - s * direction[i];
     }
-    const RayCount expected = oracle_count(set, origin, direction);
-    ASSERT_EQ(library_count(set, origin, direction), expected)
-        << "trial " << trial << ": " << describe(set, origin);
-    ++seen[static_cast<int>(expected)];
+    const SignedRayCount expected = oracle_count(set, origin, direction);
+    expect_same_count(library_count(set, origin, direction), expected,
+                      "trial " + std::to_string(trial) + ": " + describe(set, origin));
+    ++seen[static_cast<int>(expected.kind)];
   }
   // The inputs reach every answer, so each path was compared.
   for (int kind = 0; kind < 4; ++kind)
@@ -148,14 +163,15 @@ TEST(CrossingParity, ScaledCopiesCountAlike) {
     FaceSet set = random_face_set(rng, false);
     const Point3 origin = testing::random_point(rng, 1.0);
     const Vector3 direction = ray_direction(static_cast<std::size_t>(trial % 3));
-    const RayCount expected = oracle_count(set, origin, direction);
+    const SignedRayCount expected = oracle_count(set, origin, direction);
     for (const int k : {-900, -500, 300, 900}) {
       FaceSet scaled = set;
       for (Point3& p : scaled.points)
         p = testing::scaled(p, k);
       scaled.prepare();
-      ASSERT_EQ(library_count(scaled, testing::scaled(origin, k), direction), expected)
-          << "trial " << trial << ", scale 2^" << k << ": " << describe(set, origin);
+      expect_same_count(library_count(scaled, testing::scaled(origin, k), direction), expected,
+                        "trial " + std::to_string(trial) + ", scale 2^" + std::to_string(k) + ": " +
+                            describe(set, origin));
     }
   }
 }
@@ -220,11 +236,158 @@ TEST(CrossingParity, RayLoopRecastsUntilAClean) {
   const Vector3 d0 = ray_direction(0);
   const double s = 0.25;  // (1, 1, 1) - s d0, exact: d0 is dyadic
   const Point3 origin{1 - s * d0[0], 1 - s * d0[1], 1 - s * d0[2]};
-  ASSERT_EQ(library_count(cube, origin, d0), RayCount::degenerate);
+  ASSERT_EQ(library_count(cube, origin, d0).kind, RayCount::degenerate);
   const auto recast = parity_of(cube, origin);
   ASSERT_TRUE(recast.has_value());
   EXPECT_EQ(recast->parity, CrossingParity::odd);
   EXPECT_EQ(recast->rays, 2u);
+}
+
+/// Hexahedra (six quads over eight corners, kHexahedronFaces) put together in one face
+/// set; `reversed` ones have their faces' corner order reversed (normals inward).
+struct Hexahedra {
+  FaceSet set;
+  void add(const std::array<Point3, 8>& corners, bool reversed) {
+    const auto base = static_cast<VertexIndex>(set.points.size());
+    set.points.insert(set.points.end(), corners.begin(), corners.end());
+    for (const auto& q : testing::kHexahedronFaces) {
+      set.faces.push_back(
+          reversed ? SurfaceFace::patch(base + q[0], base + q[3], base + q[2], base + q[1])
+                   : SurfaceFace::patch(base + q[0], base + q[1], base + q[2], base + q[3]));
+    }
+  }
+};
+
+/// The winding number of `origin`, casting the sequence's rays from index `first` on.
+std::optional<WindingNumberResult> winding_of(const FaceSet& set, const Point3& origin,
+                                              std::size_t first) {
+  const auto corner = [&](VertexIndex i) { return Offset::between(origin, set.points[i]); };
+  return winding_number(64, [&](std::size_t k) {
+    const Vector3 d = ray_direction(first + k);
+    return count_signed_crossings(kernel::ExactSigns{}, set.prepared(), corner, Offset::vector(d));
+  });
+}
+
+/// Axis-aligned boxes with small integer bounds that overlap, nest and touch, each
+/// outward (+1 inside) or reversed (-1 inside): the winding number of a point is the sum
+/// of the signs of the boxes holding it in their interior, the same from every first ray
+/// direction; a point on a face has none. Points on a grid of halves (many lie on faces),
+/// a quarter of them placed so that ray 0 passes through a box corner (cast again).
+TEST(WindingNumber, OverlappingNestedAndReversedBoxes) {
+  Rng rng = testing::seeded_engine("WindingNumber.Boxes");
+  std::map<std::int64_t, int> seen;
+  int recast = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    Hexahedra boxes;
+    std::vector<std::pair<std::array<Point3, 2>, int>> truth;  // bounds, sign
+    const int count = testing::uniform_int(rng, 1, 4);
+    for (int b = 0; b < count; ++b) {
+      Point3 lo, hi;
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = testing::uniform_int(rng, -3, 0);
+        hi[i] = testing::uniform_int(rng, static_cast<int>(lo[i]) + 2, 3);
+      }
+      std::array<Point3, 8> corners;
+      for (int c = 0; c < 8; ++c) {
+        for (int i = 0; i < 3; ++i)
+          corners[static_cast<std::size_t>(c)][i] = (c >> i) & 1 ? hi[i] : lo[i];
+      }
+      const bool reversed = testing::uniform_int(rng, 0, 3) == 0;
+      boxes.add(corners, reversed);
+      truth.push_back({{lo, hi}, reversed ? -1 : 1});
+    }
+    boxes.set.prepare();
+    for (int q = 0; q < 20; ++q) {
+      Point3 origin = testing::scaled(testing::integer_point(rng, 7), -1);
+      if (q % 4 == 0) {
+        // Ray 0 through a box corner: c - d0 / 2, exact (d0 is dyadic).
+        const Vector3 d0 = ray_direction(0);
+        const Point3& c = boxes.set.points[static_cast<std::size_t>(
+            testing::uniform_int(rng, 0, static_cast<int>(boxes.set.points.size()) - 1))];
+        for (int i = 0; i < 3; ++i)
+          origin[i] = c[i] - d0[i] / 2;
+      }
+      bool on_face = false;
+      std::int64_t expected = 0;
+      for (const auto& [bounds, sign] : truth) {
+        bool closed = true, open = true;
+        for (int i = 0; i < 3; ++i) {
+          closed &= bounds[0][i] <= origin[i] && origin[i] <= bounds[1][i];
+          open &= bounds[0][i] < origin[i] && origin[i] < bounds[1][i];
+        }
+        on_face |= closed && !open;
+        expected += open ? sign : 0;
+      }
+      for (const std::size_t first : {0u, 5u, 11u}) {
+        const auto w = winding_of(boxes.set, origin, first);
+        ASSERT_TRUE(w.has_value());
+        const std::string what = "trial " + std::to_string(trial) + " first ray " +
+                                 std::to_string(first) + ": " + describe(boxes.set, origin);
+        if (on_face) {
+          ASSERT_FALSE(w->winding.has_value()) << what;
+        } else {
+          ASSERT_EQ(w->winding, expected) << what;
+          ++seen[expected];
+        }
+        recast += w->rays > 1;
+      }
+    }
+  }
+  for (const std::int64_t w : {-1, 0, 1, 2})
+    EXPECT_GT(seen[w], 50) << "winding " << w;
+  EXPECT_GT(recast, 300);  // first rays through corners were cast again
+}
+
+/// Twisted hexahedra (every corner moved at random, so that the faces are skew, and the
+/// solids fold through themselves and each other) are closed oriented surfaces still:
+/// every first ray direction gives the same winding number, which is the oracle's signed
+/// count along the ray that decided it, at magnitudes from 2^-1000 to 2^1000.
+TEST(WindingNumber, TwistedHexahedraAgreeAcrossRaysAndWithTheOracle) {
+  Rng rng = testing::seeded_engine("WindingNumber.Twisted");
+  std::map<std::int64_t, int> seen;
+  for (int trial = 0; trial < 150; ++trial) {
+    Hexahedra solids;
+    const int count = testing::uniform_int(rng, 1, 3);
+    const int k = trial % 3 == 0 ? 0 : testing::uniform_int(rng, -1000, 1000);
+    for (int h = 0; h < count; ++h) {
+      std::array<Point3, 8> corners = testing::unit_cube_corners();
+      const Point3 shift = testing::random_point(rng, 0.5);
+      for (Point3& c : corners) {
+        const Point3 jitter = testing::random_point(rng, 0.4);
+        for (int i = 0; i < 3; ++i)
+          c[i] = 2 * c[i] - 1 + jitter[i] + shift[i];
+        c = testing::scaled(c, k);
+      }
+      solids.add(corners, testing::uniform_int(rng, 0, 3) == 0);
+    }
+    solids.set.prepare();
+    for (int q = 0; q < 6; ++q) {
+      const Point3 origin = testing::scaled(testing::random_point(rng, 1.5), k);
+      const auto reference = winding_of(solids.set, origin, 0);
+      ASSERT_TRUE(reference.has_value() && reference->winding.has_value());
+      const SignedRayCount oracle =
+          oracle_count(solids.set, origin, ray_direction(reference->rays - 1));
+      const std::string what =
+          "trial " + std::to_string(trial) + ": " + describe(solids.set, origin);
+      ASSERT_EQ(oracle.total, *reference->winding) << what;
+      for (const std::size_t first : {3u, 8u}) {
+        const auto w = winding_of(solids.set, origin, first);
+        ASSERT_TRUE(w.has_value());
+        ASSERT_EQ(w->winding, reference->winding) << what << " first ray " << first;
+      }
+      ++seen[*reference->winding];
+    }
+  }
+  EXPECT_GT(seen[0], 50);
+  EXPECT_GT(seen[1] + seen[-1], 50);
+  EXPECT_GT(seen[2] + seen[-2] + seen[3] + seen[-3], 5);  // overlaps of like solids
+}
+
+TEST(WindingNumber, GivesUpOnlyAfterMaxRays) {
+  const auto none = winding_number(3, [](std::size_t) {
+    return SignedRayCount{RayCount::degenerate, 0};
+  });
+  EXPECT_FALSE(none.has_value());
 }
 
 TEST(CrossingParity, GivesUpOnlyAfterMaxRays) {

@@ -302,6 +302,13 @@ class QuadraticSurd {
   friend QuadraticSurd operator*(const Rational& a, const QuadraticSurd& z) {
     return {a * z.x_, a * z.y_, z.r_};
   }
+  /// Both numbers must be in the same field Q(sqrt r) (or one of them rational).
+  friend QuadraticSurd operator+(const QuadraticSurd& a, const QuadraticSurd& b) {
+    if (a.y_ == 0) return a.x_ + b;
+    if (b.y_ == 0) return b.x_ + a;
+    if (a.r_ != b.r_) throw std::logic_error("QuadraticSurd: sum across two radicands");
+    return {a.x_ + b.x_, a.y_ + b.y_, a.r_};
+  }
 
   /// Exact sign: when x and y sqrt(r) have opposite signs, the larger of x^2 and y^2 r
   /// decides.
@@ -479,17 +486,34 @@ std::optional<RayPatch> decide_without_counting(const ExactPatch& patch, const V
   return std::nullopt;
 }
 
+/// The solutions of step (d), counted two ways.
+struct CrossingCounts {
+  int with_multiplicity = 0;
+  /// Each solution counted as the sign of n . d, n = dp/du x dp/dv there.
+  int signed_count = 0;
+};
+
+/// n(u, v) . d for the patch's normal n = dp/du x dp/dv = (e + v g) x (f + u g):
+/// det[e, f, d] + u det[e, g, d] + v det[g, f, d] (the u v term has det[g, g, d] = 0).
+Sign normal_dot_direction(const ExactPatch& patch, const Vec3& d, const QuadraticSurd& u,
+                          const QuadraticSurd& v) {
+  const Vec3 e = patch.e(), f = patch.f(), g = patch.g();
+  return (det(e, f, d) + (det(e, g, d) * u + det(g, f, d) * v)).sign();
+}
+
 /// Step (d): the solutions of p(u, v) = o + s d with (u, v) in (0, 1)^2 and s > 0, with
-/// multiplicity. Precondition: steps (a) to (c) did not apply.
+/// multiplicity and by orientation. Precondition: steps (a) to (c) did not apply.
 ///
 /// With t = u v, u e + v f + t g - s d = o - p00 is linear in (u, v, t, s). When its
 /// matrix has rank 3 the solutions form a line, and the roots of the surface condition
 /// t = u v along that line are exactly the solutions (u, v, s), the multiplicity of a
-/// root being that of the solution.
-int count_crossings(const ExactPatch& patch, const Vec3& o, const Vec3& d) {
+/// root being that of the solution. A double root is a ray tangent to the patch or
+/// through the fold of a flat patch: n . d = 0 there (checked), and it counts 0 by
+/// orientation.
+CrossingCounts count_crossings(const ExactPatch& patch, const Vec3& o, const Vec3& d) {
   const std::optional<AffineSet> set =
       solve(from_columns({patch.e(), patch.f(), patch.g(), Rational(-1) * d}), o - patch.p00);
-  if (!set) return 0;
+  if (!set) return {};
   if (set->directions.size() != 1) {
     // Rank <= 2: the corners and d span at most a plane, which contains o - p00 as the
     // system is consistent, so the corners and the whole ray lie in one plane. Step (c)
@@ -497,7 +521,7 @@ int count_crossings(const ExactPatch& patch, const Vec3& o, const Vec3& d) {
     if (ray_meets_hull(o, d, patch.corners(), RayStart::open)) {
       throw std::logic_error("ray_patch_oracle: in-plane ray meets the hull uncaught");
     }
-    return 0;
+    return {};
   }
   const AffineSet& line = *set;
   const Quadratic q = surface_condition_on_line(line);
@@ -509,17 +533,27 @@ int count_crossings(const ExactPatch& patch, const Vec3& o, const Vec3& d) {
     if (is_feasible(std::move(domain))) {
       throw std::logic_error("ray_patch_oracle: infinitely many crossings uncaught");
     }
-    return 0;
+    return {};
   }
-  int count = 0;
+  CrossingCounts counts;
   for (const Root& root : real_roots(q)) {
-    if (in_unit_interval(coordinate_at(line, kU, root.value), Square::open) &&
-        in_unit_interval(coordinate_at(line, kV, root.value), Square::open) &&
+    const QuadraticSurd u = coordinate_at(line, kU, root.value);
+    const QuadraticSurd v = coordinate_at(line, kV, root.value);
+    if (in_unit_interval(u, Square::open) && in_unit_interval(v, Square::open) &&
         coordinate_at(line, kS, root.value).sign() == Sign::positive) {
-      count += root.multiplicity;
+      counts.with_multiplicity += root.multiplicity;
+      const Sign orientation = normal_dot_direction(patch, d, u, v);
+      if (root.multiplicity == 1) {
+        if (orientation == Sign::zero) {
+          throw std::logic_error("ray_patch_oracle: a simple crossing where n . d = 0");
+        }
+        counts.signed_count += to_int(orientation);
+      } else if (orientation != Sign::zero) {
+        throw std::logic_error("ray_patch_oracle: a double crossing where n . d != 0");
+      }
     }
   }
-  return count;
+  return counts;
 }
 
 Vec3 exact_direction(const Vector3& direction) {
@@ -590,7 +624,7 @@ RayPatch ray_patch_oracle(const Point3& origin, const Vector3& direction,
   const Vec3 o = exact(origin);
   const Vec3 d = exact_direction(direction);
   if (const std::optional<RayPatch> decided = decide_without_counting(p, o, d)) return *decided;
-  return count_crossings(p, o, d) % 2 == 1 ? RayPatch::odd : RayPatch::even;
+  return count_crossings(p, o, d).with_multiplicity % 2 == 1 ? RayPatch::odd : RayPatch::even;
 }
 
 int ray_patch_crossings_oracle(const Point3& origin, const Vector3& direction,
@@ -601,7 +635,24 @@ int ray_patch_crossings_oracle(const Point3& origin, const Vector3& direction,
   if (decide_without_counting(p, o, d)) {
     throw std::invalid_argument("ray_patch_crossings_oracle: origin on patch or degenerate ray");
   }
-  return count_crossings(p, o, d);
+  return count_crossings(p, o, d).with_multiplicity;
+}
+
+RayPatchCrossings ray_patch_signed_crossings_oracle(const Point3& origin, const Vector3& direction,
+                                                    const BilinearPatch& patch) {
+  const ExactPatch p = exact(patch);
+  const Vec3 o = exact(origin);
+  const Vec3 d = exact_direction(direction);
+  if (const std::optional<RayPatch> decided = decide_without_counting(p, o, d)) {
+    return {*decided, Sign::zero};
+  }
+  const CrossingCounts counts = count_crossings(p, o, d);
+  if (counts.signed_count < -1 || counts.signed_count > 1) {
+    throw std::domain_error("ray_patch_signed_crossings_oracle: signed count " +
+                            std::to_string(counts.signed_count) + ", outside -1..1");
+  }
+  return {counts.with_multiplicity % 2 == 1 ? RayPatch::odd : RayPatch::even,
+          static_cast<Sign>(counts.signed_count)};
 }
 
 bool point_on_patch_oracle(const Point3& x, const BilinearPatch& patch) {

@@ -51,6 +51,15 @@ RayPatch ray_patch_oracle(const Point3& origin, const Vector3& direction,
 int ray_patch_crossings_oracle(const Point3& origin, const Vector3& direction,
                                const BilinearPatch& patch);
 
+/// ray_patch_oracle's answer with the crossings of step 4 also counted by orientation:
+/// each solution (u, v, s) counts the sign of n(u, v) . direction, n = dp/du x dp/dv (a
+/// double solution has n . d = 0 and counts 0). signed_count is that sum for even and
+/// odd, zero otherwise. The definition allows any integer; a sum outside -1..1, which
+/// RayPatchCrossings cannot hold (the library claims it never happens), throws
+/// std::domain_error.
+RayPatchCrossings ray_patch_signed_crossings_oracle(const Point3& origin, const Vector3& direction,
+                                                    const BilinearPatch& patch);
+
 /// Whether x = p(u, v) for some (u, v) in the closed square [0, 1]^2. Exact for every
 /// shape, including flat patches folding over themselves, whose image is not the region
 /// bounded by the boundary polygon.

@@ -26,9 +26,11 @@ using exactgeo::BilinearPatch;
 using exactgeo::PatchShape;
 using exactgeo::Point3;
 using exactgeo::RayPatch;
+using exactgeo::RayPatchCrossings;
 using exactgeo::RayTriangle;
 using exactgeo::RayTriangleHit;
 using exactgeo::Sign;
+using exactgeo::to_int;
 using exactgeo::Vector3;
 using exactgeo::testing::orient3d_oracle;
 using exactgeo::testing::patch_shape_oracle;
@@ -36,6 +38,7 @@ using exactgeo::testing::patch_side_oracle;
 using exactgeo::testing::point_on_patch_oracle;
 using exactgeo::testing::ray_patch_crossings_oracle;
 using exactgeo::testing::ray_patch_oracle;
+using exactgeo::testing::ray_patch_signed_crossings_oracle;
 using exactgeo::testing::ray_triangle_oracle;
 
 // ---------------------------------------------------------------------------------------
@@ -389,6 +392,33 @@ TEST(OracleRayPatch, TangentRayCountsTwice) {
   const double eps = std::ldexp(1.0, -40);
   EXPECT_EQ(ray_patch_crossings_oracle({0, 0, -0.25 - eps}, {1, 1, 1}, kSaddle), 0);
   EXPECT_EQ(ray_patch_crossings_oracle({0, 0, -0.25 + eps}, {1, 1, 1}, kSaddle), 2);
+}
+
+/// The saddle z = x y has normal dp/du x dp/dv = (-v, -u, 1) at (u, v): up is +1.
+TEST(OracleRayPatch, SignedCrossingsFollowTheNormal) {
+  auto signed_count = [](const Point3& o, const Vector3& d, const BilinearPatch& p) {
+    const RayPatchCrossings r = ray_patch_signed_crossings_oracle(o, d, p);
+    EXPECT_EQ(r.parity, ray_patch_oracle(o, d, p));
+    return to_int(r.signed_count);
+  };
+  EXPECT_EQ(signed_count({0.5, 0.5, -1}, kUp, kSaddle), 1);
+  EXPECT_EQ(signed_count({0.5, 0.5, 1}, kDown, kSaddle), -1);
+  EXPECT_EQ(signed_count({0.5, 0.5, 1}, kUp, kSaddle), 0);  // behind the origin
+  // Along (s, s, s - 3/16): n . d = 1 - 2 s at s = 1/4 (+1/2) and s = 3/4 (-1/2).
+  EXPECT_EQ(signed_count({0, 0, -0.1875}, {1, 1, 1}, kSaddle), 0);
+  EXPECT_EQ(signed_count({0.5, 0.5, 0.3125}, {1, 1, 1}, kSaddle), -1);  // only s = 3/4 left
+  EXPECT_EQ(signed_count({0, 0, -0.25}, {1, 1, 1}, kSaddle), 0);        // tangent
+  // Reversing the corner order reverses the normal.
+  const BilinearPatch reversed{kSaddle.p00, kSaddle.p01, kSaddle.p11, kSaddle.p10};
+  EXPECT_EQ(signed_count({0.5, 0.5, -1}, kUp, reversed), -1);
+  // A flat square, counter-clockwise seen from +z.
+  const BilinearPatch square{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  EXPECT_EQ(signed_count({0.25, 0.5, -1}, kUp, square), 1);
+  EXPECT_EQ(signed_count({0.25, 0.5, 1}, kDown, square), -1);
+  // No count where there is none.
+  EXPECT_EQ(ray_patch_signed_crossings_oracle({0.5, 0, -1}, kUp, kSaddle).parity,
+            RayPatch::degenerate);
+  EXPECT_EQ(ray_patch_signed_crossings_oracle({0.5, 0, -1}, kUp, kSaddle).signed_count, Sign::zero);
 }
 
 TEST(OracleRayPatch, RaysThroughTheBoundaryAreDegenerate) {

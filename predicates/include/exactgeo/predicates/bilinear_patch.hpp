@@ -79,6 +79,26 @@ RayPatch ray_patch_parity(const Point3& origin, const Vector3& direction,
                           const BilinearPatch& patch,
                           Arithmetic arithmetic = Arithmetic::exact) noexcept;
 
+/// The crossings of the same ray counted by orientation. The patch is oriented by its
+/// corner order: its normal n(u, v) = dp/du x dp/dv points to the side from which the
+/// boundary p00 -> p10 -> p11 -> p01 turns counter-clockwise (the side a triangle (a, b, c)
+/// faces when given as the patch {a, b, c, c}). A crossing counts +1 where the ray passes
+/// to the side n points to (n . direction > 0), -1 the other way, and a tangential
+/// contact or a crossing through a flat patch's fold counts 0.
+struct RayPatchCrossings {
+  RayPatch parity = RayPatch::even;  ///< as ray_patch_parity answers
+  /// even: zero; odd: the signed count, +1 or -1 (it is always -1, 0 or +1, so "odd" is
+  /// "nonzero"); origin_on_patch, degenerate: zero, there is no count.
+  Sign signed_count = Sign::zero;
+};
+
+/// Exact, with the stages and the degenerate answers of ray_patch_parity, whose answer is
+/// this one's `parity`. The signed count of a ray from a point through a closed, oriented
+/// surface is the point's winding number with respect to it (crossing_parity.hpp).
+RayPatchCrossings ray_patch_crossings(const Point3& origin, const Vector3& direction,
+                                      const BilinearPatch& patch,
+                                      Arithmetic arithmetic = Arithmetic::exact) noexcept;
+
 /// Sign of the patch's implicit function phi at x (phi = g012 g132 - g013 g032 with
 /// g_pqr(x) = orient3d(x_p, x_q, x_r, x), corners in tensor order): zero on the
 /// patch's quadric; for a skew patch and x inside the corners' tetrahedron, negative on the

@@ -21,6 +21,14 @@
 //      end: at most V + 2 (E + F) of its directions are degenerate for a set with V
 //      corners, E edges and F faces.
 //
+// Counted by orientation instead (cross_face_signed, count_signed_crossings,
+// winding_number), the same steps give the winding number: each face is oriented by its
+// corner order, a crossing counts +1 where the ray passes to the side the face's normal
+// points to and -1 the other way, and for a closed oriented surface the sum along any ray
+// that is not degenerate is the winding number of the ray's origin, however the faces
+// intersect or overlap. Its parity is the crossing parity; the parity functions are the
+// signed ones read modulo 2, so both answer from the same signs.
+//
 // Corners are handed to steps 2 and 3 by a callable corner(i) returning the exact vector
 // from the ray's origin to corner i, as a kernel::Offset: Offset::between(origin,
 // points[i]) for a mesh, or the stored corner images for CCD, whose origin is 0. Signs come
@@ -104,54 +112,71 @@ enum class Crossing : std::uint8_t {
   degenerate,  ///< the ray meets an edge or a corner, or lies in a flat face's plane
 };
 
-constexpr Crossing crossing_of(RayTriangle kind) noexcept {
-  switch (kind) {
+/// The same, crossings counted by orientation: a face's signed count is -1, 0 or +1
+/// (bilinear_patch.hpp), so `crossed` is a count of +1 or -1 and `none` a count of 0.
+struct SignedCrossing {
+  Crossing kind = Crossing::none;
+  /// crossed: the sign of n . direction, n the face's normal from its corner order
+  /// ((b - a) x (c - a) for a triangle (a, b, c)); otherwise zero.
+  Sign sign = Sign::zero;
+};
+
+constexpr SignedCrossing crossing_of(const RayTriangleHit& hit) noexcept {
+  switch (hit.kind) {
     case RayTriangle::miss:
-      return Crossing::none;
+      return {Crossing::none, Sign::zero};
     case RayTriangle::interior:
-      return Crossing::crossed;
+      return {Crossing::crossed, hit.turn};
     case RayTriangle::origin_on:
-      return Crossing::origin_on;
+      return {Crossing::origin_on, Sign::zero};
     case RayTriangle::edge:
     case RayTriangle::vertex:
     case RayTriangle::coplanar:
       break;
   }
-  return Crossing::degenerate;
+  return {Crossing::degenerate, Sign::zero};
 }
 
-constexpr Crossing crossing_of(RayPatch parity) noexcept {
-  switch (parity) {
+constexpr SignedCrossing crossing_of(const RayPatchCrossings& crossings) noexcept {
+  switch (crossings.parity) {
     case RayPatch::even:
-      return Crossing::none;
+      return {Crossing::none, Sign::zero};
     case RayPatch::odd:
-      return Crossing::crossed;
+      return {Crossing::crossed, crossings.signed_count};
     case RayPatch::origin_on_patch:
-      return Crossing::origin_on;
+      return {Crossing::origin_on, Sign::zero};
     case RayPatch::degenerate:
       break;
   }
-  return Crossing::degenerate;
+  return {Crossing::degenerate, Sign::zero};
 }
 
-/// How the ray from corner(.)'s origin along `direction` (nonzero) crosses one face.
-/// Exact signs go behind one static det3 bound for the face (kernel::with_static_filter):
-/// every det3 sign of its ray test is on its corners and the direction, so one bound
-/// from their magnitudes serves them all. A policy that has a static bound already (the
-/// CCD's, per ray), and the others, are used as they are.
+/// How the ray from corner(.)'s origin along `direction` (nonzero) crosses one face,
+/// counted by orientation. Exact signs go behind one static det3 bound for the face
+/// (kernel::with_static_filter): every det3 sign of its ray test is on its corners and the
+/// direction, so one bound from their magnitudes serves them all. A policy that has a
+/// static bound already (the CCD's, per ray), and the others, are used as they are.
 template <class Signs, class CornerOffset>
-Crossing cross_face(const Signs& signs, const SurfaceFace& face, const PatchSpan& span,
-                    const CornerOffset& corner, const kernel::Offset& direction) noexcept {
+SignedCrossing cross_face_signed(const Signs& signs, const SurfaceFace& face, const PatchSpan& span,
+                                 const CornerOffset& corner,
+                                 const kernel::Offset& direction) noexcept {
   const auto& c = face.corners;
   if (face.is_triangle()) {
     const kernel::Offsets<3> x{corner(c[0]), corner(c[1]), corner(c[2])};
     const auto face_signs = kernel::with_static_filter(signs, x, direction.rounded());
     return crossing_of(
-        internal::classify_ray_triangle_offsets(face_signs, x[0], x[1], x[2], direction).kind);
+        internal::classify_ray_triangle_offsets(face_signs, x[0], x[1], x[2], direction));
   }
   const kernel::Offsets<4> x{corner(c[0]), corner(c[1]), corner(c[2]), corner(c[3])};
   const auto face_signs = kernel::with_static_filter(signs, x, direction.rounded());
-  return crossing_of(internal::ray_patch_parity_offsets(face_signs, span, x, direction));
+  return crossing_of(internal::ray_patch_crossings_offsets(face_signs, span, x, direction));
+}
+
+/// The same, as a parity.
+template <class Signs, class CornerOffset>
+Crossing cross_face(const Signs& signs, const SurfaceFace& face, const PatchSpan& span,
+                    const CornerOffset& corner, const kernel::Offset& direction) noexcept {
+  return cross_face_signed(signs, face, span, corner, direction).kind;
 }
 
 /// What one ray says about a set of faces.
@@ -162,28 +187,44 @@ enum class RayCount : std::uint8_t {
   degenerate,      ///< some face answered Crossing::degenerate: cast another ray
 };
 
+/// The same, crossings counted by orientation.
+struct SignedRayCount {
+  RayCount kind = RayCount::even;  ///< even or odd as `total` is
+  std::int64_t total = 0;          ///< even, odd: the sum of the faces' signed crossings
+};
+
 /// The crossings of one ray with the faces listed in `candidates` (indices into
-/// faces.faces; a superset of the faces the ray meets). Stops at the first face that
-/// decides the ray: an origin on it, or a degenerate crossing.
+/// faces.faces; a superset of the faces the ray meets), counted by orientation. Stops at
+/// the first face that decides the ray: an origin on it, or a degenerate crossing.
+template <class Signs, class CornerOffset, class FaceIndices>
+SignedRayCount count_signed_crossings(const Signs& signs, const PreparedFaces& faces,
+                                      const FaceIndices& candidates, const CornerOffset& corner,
+                                      const kernel::Offset& direction) noexcept {
+  std::int64_t total = 0;
+  for (const auto f : candidates) {
+    const SignedCrossing crossing =
+        cross_face_signed(signs, faces.faces[f], faces.spans[f], corner, direction);
+    switch (crossing.kind) {
+      case Crossing::none:
+        break;
+      case Crossing::crossed:
+        total += to_int(crossing.sign);
+        break;
+      case Crossing::origin_on:
+        return {RayCount::origin_on_face, 0};
+      case Crossing::degenerate:
+        return {RayCount::degenerate, 0};
+    }
+  }
+  return {total % 2 == 0 ? RayCount::even : RayCount::odd, total};
+}
+
+/// The same, as a parity (a parity is a signed count modulo 2).
 template <class Signs, class CornerOffset, class FaceIndices>
 RayCount count_crossings(const Signs& signs, const PreparedFaces& faces,
                          const FaceIndices& candidates, const CornerOffset& corner,
                          const kernel::Offset& direction) noexcept {
-  bool odd = false;
-  for (const auto f : candidates) {
-    switch (cross_face(signs, faces.faces[f], faces.spans[f], corner, direction)) {
-      case Crossing::none:
-        break;
-      case Crossing::crossed:
-        odd = !odd;
-        break;
-      case Crossing::origin_on:
-        return RayCount::origin_on_face;
-      case Crossing::degenerate:
-        return RayCount::degenerate;
-    }
-  }
-  return odd ? RayCount::odd : RayCount::even;
+  return count_signed_crossings(signs, faces, candidates, corner, direction).kind;
 }
 
 /// The indices 0, 1, ..., n - 1 as a range for a range-based for (std::views::iota does
@@ -208,6 +249,13 @@ template <class Signs, class CornerOffset>
 RayCount count_crossings(const Signs& signs, const PreparedFaces& faces, const CornerOffset& corner,
                          const kernel::Offset& direction) noexcept {
   return count_crossings(signs, faces, FirstIndices{faces.faces.size()}, corner, direction);
+}
+
+template <class Signs, class CornerOffset>
+SignedRayCount count_signed_crossings(const Signs& signs, const PreparedFaces& faces,
+                                      const CornerOffset& corner,
+                                      const kernel::Offset& direction) noexcept {
+  return count_signed_crossings(signs, faces, FirstIndices{faces.faces.size()}, corner, direction);
 }
 
 enum class CrossingParity : std::uint8_t {
@@ -236,6 +284,35 @@ std::optional<CrossingParityResult> crossing_parity(std::size_t max_rays, CastRa
         return CrossingParityResult{CrossingParity::odd, k + 1};
       case RayCount::origin_on_face:
         return CrossingParityResult{CrossingParity::on_surface, k + 1};
+      case RayCount::degenerate:
+        break;
+    }
+  }
+  return std::nullopt;
+}
+
+struct WindingNumberResult {
+  /// The signed crossing count of the decisive ray; nullopt when the origin lies on a
+  /// face, where no winding number is defined.
+  std::optional<std::int64_t> winding;
+  std::size_t rays = 0;  ///< rays cast, the last one decisive
+};
+
+/// The same loop, crossings counted by orientation: cast_ray(k) returns the
+/// SignedRayCount of ray k. When the faces form a closed oriented surface (every oriented
+/// edge used as often one way as the other, whatever the faces' intersections), every
+/// ray that is not degenerate gives the same count, the winding number of its origin with
+/// respect to the surface; for other face sets the count depends on the ray.
+template <class CastRay>
+std::optional<WindingNumberResult> winding_number(std::size_t max_rays, CastRay&& cast_ray) {
+  for (std::size_t k = 0; k < max_rays; ++k) {
+    const SignedRayCount count = cast_ray(k);
+    switch (count.kind) {
+      case RayCount::even:
+      case RayCount::odd:
+        return WindingNumberResult{count.total, k + 1};
+      case RayCount::origin_on_face:
+        return WindingNumberResult{std::nullopt, k + 1};
       case RayCount::degenerate:
         break;
     }

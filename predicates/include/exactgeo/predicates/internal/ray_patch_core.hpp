@@ -30,6 +30,21 @@
 // the ray turns the same way around both consistently oriented triangles (equal `turn`),
 // else it only touches it (count 0 or 2).
 //
+// Signed crossings. Orient the patch by n = dp/du x dp/dv (its boundary x0 -> x1 -> x3 ->
+// x2 counter-clockwise seen from the side n points to) and count each crossing as the sign
+// of n . d. The pair triangles carry the same orientation, so the patch minus the chosen
+// pair is a closed surface, and o lies outside the region it bounds (that is how the pair
+// was chosen). A closed surface's signed crossings by a ray from a point are the point's
+// winding number with respect to it, here 0: the signed count through the patch equals
+// the signed count through the pair, each triangle crossing counting its `turn`, a
+// crossing through the diagonal the common turn (and 0 where the turns differ). The same
+// argument gives the parity above (a parity is a signed count modulo 2). The signed count
+// is -1, 0 or +1: the two triangles of a skew patch's pair are two faces of the convex
+// tetrahedron T, consistently oriented, so a line crossing both enters T through one and
+// leaves through the other, with opposite turns; the fan of a flat patch overlaps itself
+// only where its triangles have opposite orientations. So "odd" is "+1 or -1" and "even"
+// is "0".
+//
 // Planar patch (V = 0, corners not collinear): with o off the plane, the parity is the
 // number of preimages of the ray's crossing point, i.e. (degree theory) the winding
 // parity of the boundary around it, which the same pair count computes (the fan of two
@@ -62,10 +77,20 @@ struct TrianglePair {
 inline constexpr TrianglePair kPairA{{{{0, 1, 2}, {1, 3, 2}}}, {1, 2}};
 inline constexpr TrianglePair kPairB{{{{0, 1, 3}, {0, 3, 2}}}, {2, 0}};
 
+constexpr RayPatchCrossings kPatchDegenerate{RayPatch::degenerate, Sign::zero};
+constexpr RayPatchCrossings kPatchOriginOn{RayPatch::origin_on_patch, Sign::zero};
+constexpr RayPatchCrossings kPatchMissed{RayPatch::even, Sign::zero};
+
+/// A signed count of -1, 0 or +1 as an answer (see the header).
+constexpr RayPatchCrossings counted(int signed_count) noexcept {
+  assert(signed_count >= -1 && signed_count <= 1);
+  return {signed_count == 0 ? RayPatch::even : RayPatch::odd, static_cast<Sign>(signed_count)};
+}
+
 template <class Signs>
-RayPatch count_pair_crossings(const Signs& signs, const TrianglePair& pair, const Offsets<4>& a,
-                              const Offset& d,
-                              const std::array<std::optional<Sign>, 2>& plane_sides) noexcept {
+RayPatchCrossings count_pair_crossings(
+    const Signs& signs, const TrianglePair& pair, const Offsets<4>& a, const Offset& d,
+    const std::array<std::optional<Sign>, 2>& plane_sides) noexcept {
   // Edge signs det[a_p, a_q, d]; the diagonal is shared (with opposite orientation).
   std::array<std::array<Sign, 3>, 2> edges;
   const auto& t0 = pair.triangles[0];
@@ -78,7 +103,7 @@ RayPatch count_pair_crossings(const Signs& signs, const TrianglePair& pair, cons
                       ? -edges[0][pair.diagonal_edge[0]]
                       : signs.det3_by_vector(a[t1[i]], a[t1[(i + 1) % 3]], d);
   }
-  int crossings = 0;
+  int signed_count = 0;
   std::array<Sign, 2> diagonal_turn{Sign::zero, Sign::zero};
   for (int t = 0; t < 2; ++t) {
     const auto& tri = pair.triangles[t];
@@ -88,34 +113,32 @@ RayPatch count_pair_crossings(const Signs& signs, const TrianglePair& pair, cons
       case RayTriangle::miss:
         break;
       case RayTriangle::interior:
-        ++crossings;
+        signed_count += to_int(hit.turn);
         break;
       case RayTriangle::edge:
-        if (hit.feature != pair.diagonal_edge[t]) return RayPatch::degenerate;
+        if (hit.feature != pair.diagonal_edge[t]) return kPatchDegenerate;
         diagonal_turn[t] = hit.turn;
         break;
       case RayTriangle::origin_on:  // impossible for the pair chosen (see header)
         assert(false && "origin on an auxiliary triangle");
-        return RayPatch::degenerate;
+        return kPatchDegenerate;
       case RayTriangle::vertex:
       case RayTriangle::coplanar:
-        return RayPatch::degenerate;
+        return kPatchDegenerate;
     }
   }
   if (diagonal_turn[0] != Sign::zero || diagonal_turn[1] != Sign::zero) {
     // Both triangles contain the crossing point on their common edge.
     assert(diagonal_turn[0] != Sign::zero && diagonal_turn[1] != Sign::zero);
-    if (diagonal_turn[0] == Sign::zero || diagonal_turn[1] == Sign::zero) {
-      return RayPatch::degenerate;
-    }
-    if (diagonal_turn[0] == diagonal_turn[1]) ++crossings;
+    if (diagonal_turn[0] == Sign::zero || diagonal_turn[1] == Sign::zero) return kPatchDegenerate;
+    if (diagonal_turn[0] == diagonal_turn[1]) signed_count += to_int(diagonal_turn[0]);
   }
-  return crossings % 2 == 1 ? RayPatch::odd : RayPatch::even;
+  return counted(signed_count);
 }
 
 template <class Signs>
-RayPatch skew_patch_parity(const Signs& signs, Sign volume, const Offsets<4>& a,
-                           const Offset& d) noexcept {
+RayPatchCrossings skew_patch_crossings(const Signs& signs, Sign volume, const Offsets<4>& a,
+                                       const Offset& d) noexcept {
   // det[a_p, a_q, a_r] = -g_pqr(o): in T, det012 and det132 are -V or 0, det013 and det032
   // are V or 0.
   const Sign det012 = signs.det3_by_axis(a[0], a[1], a[2]);
@@ -130,7 +153,7 @@ RayPatch skew_patch_parity(const Signs& signs, Sign volume, const Offsets<4>& a,
   }
   if (in_tetrahedron) {
     const Sign phi = signs.phi(a);
-    if (phi == Sign::zero) return RayPatch::origin_on_patch;
+    if (phi == Sign::zero) return kPatchOriginOn;
     if (phi == Sign::negative) return count_pair_crossings(signs, kPairB, a, d, {det013, det032});
   }
   return count_pair_crossings(signs, kPairA, a, d, {det012, det132});
@@ -170,37 +193,46 @@ bool origin_on_planar_patch(const Signs& signs, const Offsets<4>& a) noexcept {
 }
 
 template <class Signs>
-RayPatch planar_patch_parity(const Signs& signs, const std::array<std::uint8_t, 3>& triple,
-                             const Offsets<4>& a, const Offset& d) noexcept {
+RayPatchCrossings planar_patch_crossings(const Signs& signs,
+                                         const std::array<std::uint8_t, 3>& triple,
+                                         const Offsets<4>& a, const Offset& d) noexcept {
   if (signs.det3_by_axis(a[triple[0]], a[triple[1]], a[triple[2]]) != Sign::zero) {
     return count_pair_crossings(signs, kPairA, a, d, {std::nullopt, std::nullopt});
   }
-  if (origin_on_planar_patch(signs, a)) return RayPatch::origin_on_patch;
+  if (origin_on_planar_patch(signs, a)) return kPatchOriginOn;
   const std::array<const Offset*, 4> corners{&a[0], &a[1], &a[2], &a[3]};
-  return coplanar_ray_meets_hull(signs, corners, d) ? RayPatch::degenerate : RayPatch::even;
+  return coplanar_ray_meets_hull(signs, corners, d) ? kPatchDegenerate : kPatchMissed;
 }
 
 template <class Signs>
-RayPatch collinear_patch_parity(const Signs& signs, const Offsets<4>& a, const Offset& d) noexcept {
+RayPatchCrossings collinear_patch_crossings(const Signs& signs, const Offsets<4>& a,
+                                            const Offset& d) noexcept {
   const std::array<const Offset*, 4> corners{&a[0], &a[1], &a[2], &a[3]};
-  if (origin_in_hull(signs, corners)) return RayPatch::origin_on_patch;
-  return coplanar_ray_meets_hull(signs, corners, d) ? RayPatch::degenerate : RayPatch::even;
+  if (origin_in_hull(signs, corners)) return kPatchOriginOn;
+  return coplanar_ray_meets_hull(signs, corners, d) ? kPatchDegenerate : kPatchMissed;
 }
 
-/// The ray test proper. `a` are the corners minus the origin (x0..x3 order), `d` the
-/// direction (nonzero), `span` the patch's shape.
+/// The ray test proper, crossings counted by orientation (the parity is their `parity`).
+/// `a` are the corners minus the origin (x0..x3 order), `d` the direction (nonzero),
+/// `span` the patch's shape.
 template <class Signs>
-RayPatch ray_patch_parity_offsets(const Signs& signs, const PatchSpan& span, const Offsets<4>& a,
-                                  const Offset& d) noexcept {
+RayPatchCrossings ray_patch_crossings_offsets(const Signs& signs, const PatchSpan& span,
+                                              const Offsets<4>& a, const Offset& d) noexcept {
   switch (span.kind) {
     case PatchSpan::Kind::skew:
-      return skew_patch_parity(signs, span.volume, a, d);
+      return skew_patch_crossings(signs, span.volume, a, d);
     case PatchSpan::Kind::planar:
-      return planar_patch_parity(signs, span.plane_triple, a, d);
+      return planar_patch_crossings(signs, span.plane_triple, a, d);
     case PatchSpan::Kind::collinear:
       break;
   }
-  return collinear_patch_parity(signs, a, d);
+  return collinear_patch_crossings(signs, a, d);
+}
+
+template <class Signs>
+RayPatch ray_patch_parity_offsets(const Signs& signs, const PatchSpan& span, const Offsets<4>& a,
+                                  const Offset& d) noexcept {
+  return ray_patch_crossings_offsets(signs, span, a, d).parity;
 }
 
 }  // namespace exactgeo::internal
