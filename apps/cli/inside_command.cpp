@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <istream>
 #include <optional>
@@ -20,6 +21,7 @@
 #include "cli/threads_option.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/point_reader.hpp"
+#include "exactgeo/mesh/load.hpp"
 
 namespace exactgeo::cli {
 
@@ -83,9 +85,21 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     err << "exactgeo inside: the mesh and the points cannot both come from standard input\n";
     return ExitCode::input_error;
   }
+  if (options.winding && options.mesh.float_rays) {
+    err << "exactgeo inside: --winding needs the classifier (--method exact or double); the "
+           "embree baseline only counts parity\n";
+    return ExitCode::input_error;
+  }
   ProgressLine progress(err, options.progress, "points");
   const std::optional<InsideMesh> built = build_inside_mesh(options.mesh, err, &progress);
   if (!built) return ExitCode::input_error;
+  if (options.winding && !built->classifier->oriented()) {
+    progress.clear();
+    err << "exactgeo inside: " << mesh::mesh_source_name(options.mesh.path)
+        << ": no winding numbers: the faces are not oriented alike (some edge is used more "
+           "often in one direction than in the other), so only parity labels are defined\n";
+    return ExitCode::input_error;
+  }
   progress.phase("classifying");
   const std::optional<double> points_bytes = file_size(options.points);
 
@@ -96,6 +110,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   const bool keep_labels = options.json && options.labels;  // printed with the counts, at the end
   std::span<const Point3> block;
   std::vector<inside::Location> locations;
+  std::vector<std::optional<std::int64_t>> windings;
   std::vector<inside::Location> kept;
   std::string text;
   const auto read_block = [&] {
@@ -107,13 +122,27 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
-      built->classify(block, locations, options.mesh.arithmetic, options.mesh.threads);
+      if (options.winding) {
+        windings.resize(block.size());
+        built->winding_numbers(block, windings, options.mesh.arithmetic, options.mesh.threads);
+        for (std::size_t i = 0; i < block.size(); ++i)
+          locations[i] = built->classifier->location_of(windings[i]);
+      } else {
+        built->classify(block, locations, options.mesh.arithmetic, options.mesh.threads);
+      }
       tally.seconds += seconds_since(start);
       tally.points += block.size();
       text.clear();
-      for (const inside::Location l : locations) {
+      for (std::size_t i = 0; i < block.size(); ++i) {
+        const inside::Location l = locations[i];
         ++tally.by_location[static_cast<std::size_t>(l)];
-        if (print_labels) text.append(to_string(l)).push_back('\n');
+        if (!print_labels) continue;
+        if (options.winding && windings[i]) {
+          text.append(std::to_string(*windings[i]));
+        } else {
+          text.append(to_string(l));
+        }
+        text.push_back('\n');
       }
       if (keep_labels) kept.insert(kept.end(), locations.begin(), locations.end());
       out << text;
@@ -135,6 +164,8 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
         << method_name(options.mesh) << "\""
+        << ", \"rule\": \"" << (built->classifier ? to_string(built->classifier->rule()) : "parity")
+        << "\""
         << ", \"intersecting_face_pairs\": "
         << (built->self ? std::to_string(built->self->intersecting.size()) : "null")
         << ", \"undecided_face_pairs\": "
@@ -193,10 +224,25 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
                 "with --json: the labels too, as \"labels\": [...] in input order (held in "
                 "memory until the end, one byte per point)")
       ->needs(json);
+  sub->add_option_function<std::string>(
+         "--rule",
+         [&options](const std::string& r) { options.mesh.rule = *inside::parse_fill_rule(r); },
+         "which points the surface holds, by their winding numbers w (faces oriented by their "
+         "corner order, counter-clockwise seen from outside): nonzero (default; w != 0: parts "
+         "that overlap read as their union), parity (w odd: overlaps read outside; the only "
+         "rule for faces not oriented alike) or positive (w > 0: parts turned inside out carve "
+         "cavities). All three agree on a closed mesh that does not intersect itself")
+      ->check(CLI::IsMember({"nonzero", "parity", "positive"}));
+  CLI::Option* winding = sub->add_flag(
+      "--winding", options.winding,
+      "print each point's winding number (an integer, exact) instead of its label; boundary "
+      "for points on the surface");
+  winding->excludes(json);
   add_weld_flag(*sub, options.mesh.load.weld);
   add_split_polygons_flag(*sub, options.mesh.load.split_polygons);
   sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,
-                "accept edges shared by 4, 6, ... faces (parity is still defined)");
+                "with --rule parity: accept edges shared by 4, 6, ... faces (parity is still "
+                "defined; the winding rules accept edges used as often in each direction)");
   sub->add_flag("!--no-self-intersection-check", options.mesh.self_intersection_check,
                 "skip looking for faces that intersect (exact; about as long as building the "
                 "search structure). On a mesh whose faces intersect the labels are those of the "
@@ -207,7 +253,7 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
 
   // A cross-section picture instead of labels (cli/slice_options.hpp).
   CLI::Option* slice = add_slice_options(*sub, options.slice);
-  for (const char* name : {"points", "--labels", "--points-format"}) {
+  for (const char* name : {"points", "--labels", "--points-format", "--winding"}) {
     slice->excludes(sub->get_option(name));
   }
   return *sub;

@@ -27,7 +27,9 @@ struct InsideCommandOptions {
   /// nullopt: npy for a path ending in ".npy", text otherwise (io::default_point_format)
   std::optional<io::PointFormat> points_format;
   bool json = false;
-  bool labels = false;    ///< with json: the labels too, in input order
+  bool labels = false;  ///< with json: the labels too, in input order
+  /// Print each point's winding number instead of its label ("boundary" on the surface).
+  bool winding = false;
   bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
   /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
   /// are read (cli/slice_command.hpp).

@@ -28,16 +28,37 @@ namespace {
 /// it taken before the build.
 std::string refusal_explained(const InsideMeshOptions& options, const std::string& message,
                               const std::optional<LoadedMesh>& kept) {
+  // The rule that was applied: the float ray baseline counts parity, and so does the
+  // default rule on faces not oriented alike.
+  const auto rule_for = [&](const mesh::MeshCheck& check) {
+    if (options.float_rays) return inside::FillRule::parity;
+    return options.rule.value_or(check.unbalanced_edges.count == 0 ? inside::FillRule::nonzero
+                                                                   : inside::FillRule::parity);
+  };
+  const auto problem_of = [&](const mesh::Mesh& m, std::size_t first_index) {
+    const mesh::MeshCheck check = mesh::check_mesh(m);
+    return rule_for(check) == inside::FillRule::parity
+               ? mesh::closed_surface_problem(check, options.allow_non_manifold, first_index)
+               : mesh::oriented_surface_problem(check, first_index);
+  };
   try {
     LoadedMesh loaded = kept ? *kept : load_mesh(options.path, options.load);
-    const auto problem = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded,
-                                                      options.allow_non_manifold);
+    const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
+    const auto problem = problem_of(loaded.mesh, loaded.first_index());
     if (!problem) return message;
-    std::string text = *problem;
+    std::string text = *problem + (loaded.first_index() == 1
+                                       ? " (vertices and faces numbered from 1, as in the file)"
+                                       : " (vertices and faces numbered from 0)");
+    if (rule_for(check) != inside::FillRule::parity && !mesh::closed_surface_problem(check, true)) {
+      // A winding rule was asked for, and parity would take the mesh.
+      text += "; --rule parity, which needs no orientation, accepts it";
+      if (!options.allow_non_manifold && mesh::closed_surface_problem(check, false)) {
+        text += " with --allow-non-manifold";
+      }
+    }
     if (options.load.weld) return text;
     const std::size_t merged = mesh::weld_vertices(loaded.mesh);
-    if (merged > 0 &&
-        !mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), options.allow_non_manifold)) {
+    if (merged > 0 && !problem_of(loaded.mesh, 0)) {
       text += "; with --weld, which merges the " + std::to_string(merged) +
               " vertices that repeat another's coordinates, it is accepted";
     }
@@ -100,6 +121,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       built.float_rays_mesh = std::move(loaded.mesh);
     } else {
       inside::ClassifierOptions classifier_options;
+      classifier_options.rule = options.rule;
       classifier_options.allow_non_manifold = options.allow_non_manifold;
       // The plain double baseline casts a ray for every point (classifier.hpp).
       classifier_options.space_cells =
@@ -107,6 +129,13 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       built.classifier.emplace(std::move(loaded.mesh), classifier_options);
     }
     built.seconds = seconds_since(start);
+    if (built.classifier && !options.rule && !built.classifier->oriented()) {
+      if (progress) progress->clear();
+      err << "exactgeo inside: warning: " << source
+          << ": the faces are not oriented alike (some edge is used more often in one direction "
+             "than in the other), so they have no winding numbers: labelled by crossing parity "
+             "(--rule parity)\n";
+    }
   } catch (const InputError& e) {
     err << "exactgeo inside: " << e.what() << "\n";
     return std::nullopt;
@@ -131,11 +160,17 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     }
     built.self = std::move(check.found);
     built.self_intersection_seconds = check.seconds;
-    if (const auto problem = mesh::self_intersection_problem(*built.self, first_index)) {
+    const bool parity = options.float_rays || built.classifier->rule() == inside::FillRule::parity;
+    const auto problem = mesh::self_intersection_problem(*built.self, first_index);
+    if (problem && parity) {
       if (progress) progress->clear();
       err << "exactgeo inside: warning: " << source << ": " << *problem
           << ": the labels are those of the parity solid (inside where rays cross the surface "
-             "an odd number of times), which is not the solid such faces were meant to bound\n";
+             "an odd number of times), which is not the solid such faces were meant to bound"
+          << (built.classifier && built.classifier->oriented()
+                  ? "; --rule nonzero labels overlapping parts as their union"
+                  : "")
+          << "\n";
     }
   }
   return built;

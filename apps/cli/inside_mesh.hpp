@@ -5,6 +5,7 @@
 // any arithmetic) or the float ray baseline. A refused mesh is explained in the file's own
 // numbering, with a hint when --weld would make it acceptable.
 
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <span>
@@ -27,13 +28,17 @@ namespace exactgeo::cli {
 struct InsideMeshOptions {
   std::string path;        ///< a file, or "-" for standard input (with load.format)
   mesh::LoadOptions load;  ///< --format, --weld, --split-polygons
-  bool allow_non_manifold = false;
+  /// --rule: which points the surface holds, by their winding numbers; nullopt: nonzero,
+  /// or parity (with a warning) for faces not oriented alike. The float ray baseline
+  /// counts parity whatever it says.
+  std::optional<inside::FillRule> rule = std::nullopt;
+  bool allow_non_manifold = false;  ///< parity only (the winding rules need no permission)
   Arithmetic arithmetic = Arithmetic::exact;
   /// The float ray baseline (inside/float_ray_parity.hpp) instead of the classifier.
   bool float_rays = false;
   bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
-  /// Look for faces that intersect (exactly) and warn: the labels are then those of the
-  /// parity solid.
+  /// Look for faces that intersect (exactly); with the parity rule, warn that the labels
+  /// are those of the parity solid.
   bool self_intersection_check = true;
   unsigned threads = 0;  ///< 0: one per hardware thread
 };
@@ -67,12 +72,21 @@ struct InsideMesh {
       inside::classify_batch(*classifier, points, locations, arithmetic, threads);
     }
   }
+
+  /// The winding numbers of `points` (nullopt on the surface). The classifier only, on
+  /// an oriented mesh (inside::winding_number_batch).
+  void winding_numbers(std::span<const Point3> points,
+                       std::span<std::optional<std::int64_t>> windings, Arithmetic arithmetic,
+                       unsigned threads) const {
+    inside::winding_number_batch(*classifier, points, windings, arithmetic, threads);
+  }
 };
 
 /// Loads the mesh, builds its classifier and (unless the options skip it) looks for faces
-/// that intersect: on such a mesh a warning on `err` says that the labels are those of
-/// the parity solid. nullopt once an error is on `err` ("exactgeo inside: ..."). `progress`,
-/// when given, shows each phase.
+/// that intersect: on such a mesh, by the parity rule, a warning on `err` says that the
+/// labels are those of the parity solid (the winding rules label overlapping parts for
+/// what they are, and say nothing). nullopt once an error is on `err` ("exactgeo inside: ...").
+/// `progress`, when given, shows each phase.
 std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, std::ostream& err,
                                             ProgressLine* progress = nullptr);
 

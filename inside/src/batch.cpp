@@ -8,14 +8,14 @@
 namespace exactgeo::inside {
 namespace {
 
-/// locations[i] = classify_point(points[i]) for every i, in blocks of 512 points that
+/// answers[i] = classify_point(points[i]) for every i, in blocks of 512 points that
 /// threads take in turn (points differ in cost: re-casts, candidate counts). Each thread
 /// works with its own copy of `classify_point`, which may therefore keep scratch memory.
-template <class ClassifyPoint>
-void classify_in_blocks(std::span<const Point3> points, std::span<Location> locations,
+template <class Answer, class ClassifyPoint>
+void classify_in_blocks(std::span<const Point3> points, std::span<Answer> locations,
                         unsigned threads, const ClassifyPoint& classify_point) {
   if (locations.size() != points.size()) {
-    throw std::invalid_argument("classify_batch: as many locations as points are needed");
+    throw std::invalid_argument("classify_batch: as many answers as points are needed");
   }
   constexpr std::size_t kBlock = 512;
   const std::size_t blocks = (points.size() + kBlock - 1) / kBlock;
@@ -36,6 +36,19 @@ void classify_batch(const Classifier& classifier, std::span<const Point3> points
       points, locations, threads,
       [&classifier, arithmetic, scratch = ClassifierScratch{}](const Point3& point) mutable {
         return classifier.classify(point, arithmetic, scratch);
+      });
+}
+
+void winding_number_batch(const Classifier& classifier, std::span<const Point3> points,
+                          std::span<std::optional<std::int64_t>> windings, Arithmetic arithmetic,
+                          unsigned threads) {
+  if (!classifier.oriented() && !points.empty()) {
+    (void)classifier.winding_number(points[0], arithmetic);  // throws what it says
+  }
+  classify_in_blocks(
+      points, windings, threads,
+      [&classifier, arithmetic, scratch = ClassifierScratch{}](const Point3& point) mutable {
+        return classifier.winding_number(point, arithmetic, scratch);
       });
 }
 

@@ -48,6 +48,8 @@ std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFac
 
 struct Classifier::State {
   mesh::Mesh mesh;
+  FillRule rule = FillRule::nonzero;
+  bool oriented = false;
   mesh::Box box;
   std::vector<SurfaceFace> faces;
   /// Every face's span, found once with exact signs (for the exact and rational
@@ -63,10 +65,11 @@ struct Classifier::State {
   }
 };
 
-/// The location of `point` by crossing parity along the ray sequence, Embree proposing
-/// the candidate faces. Precondition: point in s.box, the closed box of the faces' corners.
-Location Classifier::cast_rays(const State& s, const Point3& point, Arithmetic arithmetic,
-                               ClassifierScratch& scratch) {
+/// The signed crossing count of `point` along the ray sequence, Embree proposing the
+/// candidate faces. Precondition: point in s.box, the closed box of the faces' corners.
+std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& point,
+                                                  Arithmetic arithmetic,
+                                                  ClassifierScratch& scratch) {
   const PreparedFaces faces = s.prepared(arithmetic);
   const auto corner = [&](VertexIndex i) {
     return kernel::Offset::between(point, s.mesh.vertices[i]);
@@ -74,37 +77,46 @@ Location Classifier::cast_rays(const State& s, const Point3& point, Arithmetic a
   const std::size_t max_rays =
       arithmetic == Arithmetic::plain_double ? kPlainDoubleDirections : kExactDirections;
   const auto found = kernel::with_signs(arithmetic, [&](const auto& signs) {
-    return crossing_parity(max_rays, [&](std::size_t k) {
+    return exactgeo::winding_number(max_rays, [&](std::size_t k) {
       if (s.embree && k < kFloatExactRayDirections) {
         s.embree->find(point, k, scratch.candidates);
       } else {
         internal::all_faces(s.mesh, scratch.candidates);
       }
       const Vector3 direction = ray_direction(k);
-      return count_crossings(signs, faces, scratch.candidates, corner,
-                             kernel::Offset::vector(direction));
+      return count_signed_crossings(signs, faces, scratch.candidates, corner,
+                                    kernel::Offset::vector(direction));
     });
   });
-  if (!found) return Location::outside;  // plain double only (see kPlainDoubleDirections)
-  switch (found->parity) {
-    case CrossingParity::even:
-      return Location::outside;
-    case CrossingParity::odd:
-      return Location::inside;
-    case CrossingParity::on_surface:
-      break;
+  if (!found) return 0;  // plain double only (see kPlainDoubleDirections): outside
+  return found->winding;
+}
+
+/// The same, points outside the box and in labelled space cells answered first.
+std::optional<std::int64_t> Classifier::signed_count(const State& s, const Point3& point,
+                                                     Arithmetic arithmetic,
+                                                     ClassifierScratch& scratch) {
+  // The solid lies in the convex hull of its surface, hence in the box.
+  if (internal::strictly_outside(s.box, point)) return 0;
+  if (s.cells && arithmetic != Arithmetic::plain_double) {
+    if (const auto known = s.cells->lookup(point)) return *known;
   }
-  return Location::boundary;
+  return cast_rays(s, point, arithmetic, scratch);
 }
 
 Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     : state_(std::make_unique<State>()) {
   const mesh::MeshCheck check = mesh::check_mesh(mesh);
-  if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
-    throw std::invalid_argument(*problem);
-  }
+  const bool oriented = check.unbalanced_edges.count == 0;
+  const FillRule rule = options.rule.value_or(oriented ? FillRule::nonzero : FillRule::parity);
+  const auto problem = rule == FillRule::parity
+                           ? mesh::closed_surface_problem(check, options.allow_non_manifold)
+                           : mesh::oriented_surface_problem(check);
+  if (problem) throw std::invalid_argument(*problem);
   State& s = *state_;
   s.mesh = std::move(mesh);
+  s.rule = rule;
+  s.oriented = oriented;
   // The box of the faces' corners, not of every vertex: a vertex no face uses bounds
   // nothing. The candidate search's float frame and the space cells are built on this one
   // box, and both need every point they are asked about to lie in it (classify answers
@@ -135,6 +147,14 @@ std::optional<Classifier::CellSummary> Classifier::space_cells() const noexcept 
   return CellSummary{c.resolution(), c.cells(), c.surface_cells(), c.components()};
 }
 
+FillRule Classifier::rule() const noexcept {
+  return state_->rule;
+}
+
+bool Classifier::oriented() const noexcept {
+  return state_->oriented;
+}
+
 Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const {
   ClassifierScratch scratch;
   return classify(point, arithmetic, scratch);
@@ -142,13 +162,28 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const 
 
 Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
                               ClassifierScratch& scratch) const {
-  // The solid lies in the convex hull of its surface, hence in the box.
-  const State& s = *state_;
-  if (internal::strictly_outside(s.box, point)) return Location::outside;
-  if (s.cells && arithmetic != Arithmetic::plain_double) {
-    if (const auto known = s.cells->lookup(point)) return *known;
+  return location_of(signed_count(*state_, point, arithmetic, scratch));
+}
+
+Location Classifier::location_of(const std::optional<std::int64_t>& winding) const noexcept {
+  if (!winding) return Location::boundary;
+  return holds(state_->rule, *winding) ? Location::inside : Location::outside;
+}
+
+std::optional<std::int64_t> Classifier::winding_number(const Point3& point,
+                                                       Arithmetic arithmetic) const {
+  ClassifierScratch scratch;
+  return winding_number(point, arithmetic, scratch);
+}
+
+std::optional<std::int64_t> Classifier::winding_number(const Point3& point, Arithmetic arithmetic,
+                                                       ClassifierScratch& scratch) const {
+  if (!state_->oriented) {
+    throw std::logic_error(
+        "winding numbers need a closed oriented surface (every edge used as often in each "
+        "direction); this mesh is classified by crossing parity only");
   }
-  return cast_rays(s, point, arithmetic, scratch);
+  return signed_count(*state_, point, arithmetic, scratch);
 }
 
 }  // namespace exactgeo::inside

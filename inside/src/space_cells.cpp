@@ -64,21 +64,21 @@ double SpaceCells::Axis::point_in(std::size_t k) const noexcept {
   return std::clamp(planes_[k] / 2 + planes_[k + 1] / 2, planes_[k], planes_[k + 1]);
 }
 
-SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactLabel& label) {
+SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactWinding& winding) {
   const std::size_t target = std::clamp(kCellsPerFace * mesh.faces.size(), kMinCells, kMaxCells);
   const auto cells = resolution_for(box, target);
   for (int i = 0; i < 3; ++i)
     axes_[i] = Axis(box.lower[i], box.upper[i], cells[i]);
   // Everything margin, then each row's inner cells unknown.
-  labels_.assign(padded(0) * padded(1) * padded(2), Label::margin);
+  codes_.assign(padded(0) * padded(1) * padded(2), kMargin);
   for (std::size_t k = 0; k < cells[2]; ++k) {
     for (std::size_t j = 0; j < cells[1]; ++j) {
-      const auto row = labels_.begin() + static_cast<std::ptrdiff_t>(index(0, j, k));
-      std::fill(row, row + static_cast<std::ptrdiff_t>(cells[0]), Label::unknown);
+      const auto row = codes_.begin() + static_cast<std::ptrdiff_t>(index(0, j, k));
+      std::fill(row, row + static_cast<std::ptrdiff_t>(cells[0]), kUnknown);
     }
   }
   mark_faces(mesh);
-  label_components(label);
+  label_components(winding);
 }
 
 void SpaceCells::mark_faces(const mesh::Mesh& mesh) {
@@ -90,28 +90,36 @@ void SpaceCells::mark_faces(const mesh::Mesh& mesh) {
     for (std::size_t k = z[0]; k <= z[1]; ++k) {
       for (std::size_t j = y[0]; j <= y[1]; ++j) {
         for (std::size_t i = x[0]; i <= x[1]; ++i)
-          labels_[index(i, j, k)] = Label::surface;
+          codes_[index(i, j, k)] = kSurface;
       }
     }
   }
 }
 
-void SpaceCells::label_components(const ExactLabel& label) {
+SpaceCells::Code SpaceCells::code_of(std::int64_t w) {
+  const auto found = std::find(windings_.begin(), windings_.end(), w);
+  if (found != windings_.end())
+    return static_cast<Code>(kFirstWinding + (found - windings_.begin()));
+  if (windings_.size() == kMaxWindings) return kSurface;
+  windings_.push_back(w);
+  return static_cast<Code>(kFirstWinding + windings_.size() - 1);
+}
+
+void SpaceCells::label_components(const ExactWinding& winding) {
   const std::size_t row = padded(0);
   const std::size_t slice = padded(0) * padded(1);
   std::vector<std::uint32_t> stack;
-  for (std::size_t seed = 0; seed < labels_.size(); ++seed) {
-    if (labels_[seed] != Label::unknown) continue;
-    // One exact label for the seed's whole component (a point of the seed cell lies on no
-    // face; a boundary answer would be a broken invariant: the cells then stay "surface",
-    // which only costs rays).
+  for (std::size_t seed = 0; seed < codes_.size(); ++seed) {
+    if (codes_[seed] != kUnknown) continue;
+    // One exact winding number for the seed's whole component (a point of the seed cell
+    // lies on no face; a boundary answer would be a broken invariant: the cells then stay
+    // "surface", which only costs rays).
     const std::size_t i = seed % row - 1;
     const std::size_t j = seed / row % padded(1) - 1;
     const std::size_t k = seed / slice - 1;
-    const Location l = label({axes_[0].point_in(i), axes_[1].point_in(j), axes_[2].point_in(k)});
-    const Label fill = l == Location::inside    ? Label::inside
-                       : l == Location::outside ? Label::outside
-                                                : Label::surface;
+    const std::optional<std::int64_t> w =
+        winding({axes_[0].point_in(i), axes_[1].point_in(j), axes_[2].point_in(k)});
+    const Code fill = w ? code_of(*w) : kSurface;
     ++components_;
     // A scanline fill: a popped cell grows into its whole unknown run along x; the runs
     // beside it (four neighbouring rows) are pushed once per run. The margin is never
@@ -120,20 +128,20 @@ void SpaceCells::label_components(const ExactLabel& label) {
     while (!stack.empty()) {
       const std::size_t start = stack.back();
       stack.pop_back();
-      if (labels_[start] != Label::unknown) continue;
+      if (codes_[start] != kUnknown) continue;
       std::size_t first = start;
       std::size_t last = start;
-      while (labels_[first - 1] == Label::unknown)
+      while (codes_[first - 1] == kUnknown)
         --first;
-      while (labels_[last + 1] == Label::unknown)
+      while (codes_[last + 1] == kUnknown)
         ++last;
-      std::fill(labels_.begin() + static_cast<std::ptrdiff_t>(first),
-                labels_.begin() + static_cast<std::ptrdiff_t>(last) + 1, fill);
+      std::fill(codes_.begin() + static_cast<std::ptrdiff_t>(first),
+                codes_.begin() + static_cast<std::ptrdiff_t>(last) + 1, fill);
       for (const std::size_t offset : {row, slice}) {
         for (const std::size_t beside : {first - offset, first + offset}) {
           bool in_run = false;
           for (std::size_t cell = beside; cell <= beside + (last - first); ++cell) {
-            const bool unknown = labels_[cell] == Label::unknown;
+            const bool unknown = codes_[cell] == kUnknown;
             if (unknown && !in_run) stack.push_back(static_cast<std::uint32_t>(cell));
             in_run = unknown;
           }
@@ -141,22 +149,7 @@ void SpaceCells::label_components(const ExactLabel& label) {
       }
     }
   }
-  surface_cells_ =
-      static_cast<std::size_t>(std::count(labels_.begin(), labels_.end(), Label::surface));
-}
-
-std::optional<Location> SpaceCells::lookup(const Point3& p) const noexcept {
-  switch (labels_[index(axes_[0].cell_of(p[0]), axes_[1].cell_of(p[1]), axes_[2].cell_of(p[2]))]) {
-    case Label::inside:
-      return Location::inside;
-    case Label::outside:
-      return Location::outside;
-    case Label::surface:
-    case Label::unknown:
-    case Label::margin:
-      break;
-  }
-  return std::nullopt;
+  surface_cells_ = static_cast<std::size_t>(std::count(codes_.begin(), codes_.end(), kSurface));
 }
 
 }  // namespace exactgeo::inside::internal

@@ -82,6 +82,11 @@ void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
       ++end;
     const std::size_t count = end - begin;
     const Edge& edge = uses[begin].edge;
+    const auto forward =
+        static_cast<std::size_t>(std::count_if(uses.begin() + static_cast<std::ptrdiff_t>(begin),
+                                               uses.begin() + static_cast<std::ptrdiff_t>(end),
+                                               [](const EdgeUse& use) { return use.forward; }));
+    if (2 * forward != count) check.unbalanced_edges.add(edge);
     if (count == 1) check.boundary_edges.add(edge);
     if (count > 2) check.non_manifold_edges.add(edge);
     for (std::size_t use = begin; use < end; ++use) {
@@ -214,8 +219,17 @@ MeshCheck check_mesh(const Mesh& mesh) {
   return check;
 }
 
-std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool allow_non_manifold,
-                                                  std::size_t first_index) {
+namespace {
+
+/// The rule every edge must follow.
+enum class EdgeRule : std::uint8_t {
+  two_faces,   ///< shared by exactly two faces
+  even_faces,  ///< shared by an even number of faces
+  balanced,    ///< used as often in one direction as in the other
+};
+
+std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule,
+                                           std::size_t first_index) {
   // Vertices and faces as the file numbers them.
   const auto index_text = [first_index](std::size_t i) { return std::to_string(i + first_index); };
   const auto edge_text = [&](const Edge& e) {
@@ -248,10 +262,10 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
     problems.push_back(with_examples(std::move(head), bad, index_text));
   }
 
-  // With allow_non_manifold the rule is "every edge used an even number of times", so the
-  // odd edges are the ones to name when some of them are not boundary edges.
+  // Beyond two faces per edge the rule is "an even number of faces" (or "as many each
+  // way"), so the odd edges are the ones to name when some of them are not boundary edges.
   const bool odd_beyond_boundary = check.odd_edges.count > check.boundary_edges.count;
-  if (allow_non_manifold && odd_beyond_boundary) {
+  if (rule != EdgeRule::two_faces && odd_beyond_boundary) {
     std::string head = "mesh is not closed: ";
     head.append(counted(check.odd_edges.count, "edge", "edges"));
     head.append(" used by an odd number of faces");
@@ -261,7 +275,14 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
     head.append(counted(check.boundary_edges.count, "boundary edge", "boundary edges"));
     problems.push_back(with_examples(std::move(head), check.boundary_edges, edge_text));
   }
-  if (!allow_non_manifold && check.non_manifold_edges.count > 0) {
+  if (rule == EdgeRule::balanced && check.odd_edges.count == 0 &&
+      check.unbalanced_edges.count > 0) {
+    std::string head = "faces not consistently oriented: ";
+    head.append(counted(check.unbalanced_edges.count, "edge is", "edges are"));
+    head.append(" used more often in one direction than in the other");
+    problems.push_back(with_examples(std::move(head), check.unbalanced_edges, edge_text));
+  }
+  if (rule == EdgeRule::two_faces && check.non_manifold_edges.count > 0) {
     problems.push_back(with_examples(
         counted(check.non_manifold_edges.count, "non-manifold edge", "non-manifold edges"),
         check.non_manifold_edges, edge_text, "used by more than two faces; "));
@@ -279,6 +300,19 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
     message.append(p);
   }
   return message;
+}
+
+}  // namespace
+
+std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool allow_non_manifold,
+                                                  std::size_t first_index) {
+  return surface_problem(check, allow_non_manifold ? EdgeRule::even_faces : EdgeRule::two_faces,
+                         first_index);
+}
+
+std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
+                                                    std::size_t first_index) {
+  return surface_problem(check, EdgeRule::balanced, first_index);
 }
 
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,

@@ -20,6 +20,7 @@ import numpy as np
 from ._exactgeo import (
     BOUNDARY,
     INSIDE,
+    ON_SURFACE,
     OUTSIDE,
     Classifier,
     Mesh,
@@ -36,6 +37,7 @@ from ._exactgeo import (
 __all__ = [
     "BOUNDARY",
     "INSIDE",
+    "ON_SURFACE",
     "OUTSIDE",
     "CcdQueries",
     "Classifier",

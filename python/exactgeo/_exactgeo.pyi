@@ -10,6 +10,7 @@ __version__: str
 OUTSIDE: int
 INSIDE: int
 BOUNDARY: int
+ON_SURFACE: int
 
 _Path = Union[str, PathLike[str]]
 _Points = npt.ArrayLike
@@ -36,8 +37,14 @@ def load_mesh(
 
 class Classifier:
     def __init__(
-        self, mesh: Mesh, *, allow_non_manifold: bool = False, space_cells: bool = True
+        self, mesh: Mesh, *, rule: Optional[str] = None, allow_non_manifold: bool = False,
+        space_cells: bool = True
     ) -> None: ...
+    @property
+    def rule(self) -> str: ...
+    def winding_numbers(
+        self, points: _Points, *, method: str = "exact", threads: int = 0
+    ) -> npt.NDArray[np.int32]: ...
     def classify(
         self, points: _Points, *, method: str = "exact", threads: int = 0
     ) -> npt.NDArray[np.int8]: ...

@@ -52,15 +52,16 @@ class _ClassifierCache:
         return self._hashes[key]
 
     def get(self, path: str, weld: bool, split_polygons: bool,
-            allow_non_manifold: bool) -> Classifier:
+            allow_non_manifold: bool, rule: Optional[str]) -> Classifier:
         path = os.path.abspath(path)
         with self._lock:
             self.blocks += 1
-            key = (path, self._content_hash(path), weld, split_polygons, allow_non_manifold)
+            key = (path, self._content_hash(path), weld, split_polygons, allow_non_manifold,
+                   rule)
             classifier = self._classifiers.get(key)
             if classifier is None:
                 mesh = load_mesh(path, weld=weld, split_polygons=split_polygons)
-                classifier = Classifier(mesh, allow_non_manifold=allow_non_manifold)
+                classifier = Classifier(mesh, rule=rule, allow_non_manifold=allow_non_manifold)
                 self._classifiers[key] = classifier
                 self.builds += 1
             return classifier
@@ -77,7 +78,7 @@ def worker_cache() -> dict:
 
 
 def _classify_block(block: np.ndarray, mesh_path: str, method: str, threads: int,
-                    options: Tuple[bool, bool, bool]) -> np.ndarray:
+                    options: Tuple[bool, bool, bool, Optional[str]]) -> np.ndarray:
     classifier = _cache.get(mesh_path, *options)
     return classifier.classify(block, method=method, threads=threads)
 
@@ -86,7 +87,8 @@ _LIST_CHUNK = 1_000_000  # points per task when the points come as a list
 
 
 def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld: bool = False,
-             split_polygons: bool = False, allow_non_manifold: bool = False) -> da.Array:
+             split_polygons: bool = False, allow_non_manifold: bool = False,
+             rule: Optional[str] = None) -> da.Array:
     """The location of every point (OUTSIDE, INSIDE, BOUNDARY) as a lazy (n,) int8 array.
 
     mesh_path: a mesh file every worker can read (OBJ, OFF, PLY exactly; others via assimp).
@@ -96,7 +98,7 @@ def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld
     method: "exact" (default) or "double".
     threads: threads per task; 1 by default, since Dask already runs one task per worker
         thread. Use 0 (all cores) with one worker thread per machine.
-    weld, split_polygons, allow_non_manifold: as for load_mesh and Classifier.
+    weld, split_polygons, rule, allow_non_manifold: as for load_mesh and Classifier.
 
     A mesh that cannot be read or does not bound a solid fails the computation with the
     loader's or the classifier's message.
@@ -111,7 +113,7 @@ def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld
         raise ValueError(f"points must have shape (n, 3), got {points.shape}")
     points = points.rechunk({1: 3})
     return points.map_blocks(_classify_block, os.fspath(mesh_path), method, threads,
-                             (weld, split_polygons, allow_non_manifold), drop_axis=1,
+                             (weld, split_polygons, allow_non_manifold, rule), drop_axis=1,
                              dtype=np.int8, meta=np.empty((0,), np.int8))
 
 

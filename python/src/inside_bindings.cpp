@@ -4,6 +4,9 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <limits>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -11,7 +14,10 @@
 #include "bindings.hpp"
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
+#include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
 #include "mesh_object.hpp"
 
 namespace exactgeo::python {
@@ -53,13 +59,90 @@ py::array_t<bool> contains(const inside::Classifier& classifier, const py::objec
   return inside;
 }
 
-inside::Classifier build(const MeshObject& mesh, bool allow_non_manifold, bool space_cells) {
+/// The winding numbers of `points` as int32, kOnSurface for points on a face.
+constexpr std::int32_t kOnSurface = std::numeric_limits<std::int32_t>::min();
+
+py::array_t<std::int32_t> winding_numbers(const inside::Classifier& classifier,
+                                          const py::object& points_in, const std::string& method,
+                                          int threads) {
+  if (!classifier.oriented()) {
+    throw py::value_error(
+        "no winding numbers: the mesh's faces are not oriented alike (some edge is used more "
+        "often in one direction than in the other); only rule='parity' labels are defined");
+  }
+  const Doubles points = coordinates(points_in, "points", {-1, 3});
+  const Arithmetic arithmetic = arithmetic_named(method);
+  const unsigned workers = thread_count(threads);
+  const std::span<const Point3> rows = points_of(points);
+  std::vector<std::optional<std::int64_t>> windings(rows.size());
+  {
+    py::gil_scoped_release release;
+    inside::winding_number_batch(classifier, rows, windings, arithmetic, workers);
+  }
+  py::array_t<std::int32_t> out(static_cast<py::ssize_t>(windings.size()));
+  std::int32_t* data = out.mutable_data();
+  for (std::size_t i = 0; i < windings.size(); ++i) {
+    const auto& w = windings[i];
+    // |w| is at most the number of faces a ray crosses, far below 2^31 for any mesh
+    // that fits in memory; checked all the same.
+    if (w && (*w <= kOnSurface || *w > std::numeric_limits<std::int32_t>::max())) {
+      throw py::value_error("winding number " + std::to_string(*w) + " does not fit in int32");
+    }
+    data[i] = w ? static_cast<std::int32_t>(*w) : kOnSurface;
+  }
+  return out;
+}
+
+std::optional<inside::FillRule> rule_named(const py::object& name) {
+  if (name.is_none()) return std::nullopt;
+  const std::string text = py::cast<std::string>(py::str(name));
+  if (const auto rule = inside::parse_fill_rule(text)) return *rule;
+  throw py::value_error("rule must be 'nonzero', 'parity', 'positive' or None, not '" + text + "'");
+}
+
+void warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool allow_non_manifold,
+                         bool space_cells) {
   inside::ClassifierOptions options;
+  options.rule = rule_named(rule);
   options.allow_non_manifold = allow_non_manifold;
   options.space_cells = space_cells;
   mesh::Mesh copy = mesh.loaded.mesh;
-  py::gil_scoped_release release;
-  return inside::Classifier(std::move(copy), options);
+  std::optional<inside::Classifier> built;
+  std::optional<mesh::SelfIntersections> self;
+  try {
+    py::gil_scoped_release release;
+    built.emplace(std::move(copy), options);
+    if (built->rule() == inside::FillRule::parity) {
+      self = mesh::find_self_intersections(built->mesh());
+    }
+  } catch (const std::invalid_argument& e) {
+    std::string message = e.what();
+    if (options.rule && options.rule != inside::FillRule::parity &&
+        !mesh::closed_surface_problem(mesh::check_mesh(mesh.loaded.mesh), true)) {
+      message += "; rule='parity', which needs no orientation, accepts it";
+    }
+    throw py::value_error(message);
+  }
+  // What the command line says on stderr, Python says as warnings.
+  if (!options.rule && !built->oriented()) {
+    warn(
+        "the faces are not oriented alike (some edge is used more often in one direction "
+        "than in the other), so they have no winding numbers: labelled by crossing parity "
+        "(rule='parity')");
+  }
+  if (self) {
+    if (const auto problem = mesh::self_intersection_problem(*self, 0)) {
+      warn(*problem +
+           ": the labels are those of the parity solid (inside where rays cross the surface "
+           "an odd number of times), which is not the solid such faces were meant to bound" +
+           (built->oriented() ? "; rule='nonzero' labels overlapping parts as their union" : ""));
+    }
+  }
+  return std::move(*built);
 }
 
 }  // namespace
@@ -68,23 +151,42 @@ void bind_inside(py::module_& module) {
   module.attr("OUTSIDE") = static_cast<int>(Location::outside);
   module.attr("INSIDE") = static_cast<int>(Location::inside);
   module.attr("BOUNDARY") = static_cast<int>(Location::boundary);
+  module.attr("ON_SURFACE") = kOnSurface;
 
   py::class_<inside::Classifier>(module, "Classifier",
                                  R"doc(Exact point-in-volume classification against a closed mesh.
 
-A point is BOUNDARY when it lies exactly on a face, else INSIDE or OUTSIDE by the parity
-of a ray's crossings with the faces; every crossing is decided by exact predicates, so
-the labels are exact for every finite point.)doc")
-      .def(py::init(&build), py::arg("mesh"), py::kw_only(), py::arg("allow_non_manifold") = false,
-           py::arg("space_cells") = true,
+A point is BOUNDARY when it lies exactly on a face, else INSIDE or OUTSIDE by its winding
+number (the signed count of a ray's crossings with the faces) and the rule; every
+crossing is decided by exact predicates, so the labels are exact for every finite point.)doc")
+      .def(py::init(&build), py::arg("mesh"), py::kw_only(), py::arg("rule") = py::none(),
+           py::arg("allow_non_manifold") = false, py::arg("space_cells") = true,
            R"doc(Checks the mesh and builds the search structure once (the GIL is released).
 
-allow_non_manifold: accept edges shared by 4, 6, ... faces (parity stays defined).
+rule: which points the surface holds, by their winding number w (faces oriented by their
+    corner order, counter-clockwise seen from outside): "nonzero" (w != 0, so parts that
+    overlap read as their union), "parity" (w odd: overlaps read outside; the only rule
+    for faces not oriented alike) or "positive" (w > 0). All three agree on a closed mesh
+    that does not intersect itself. None (default): "nonzero", or "parity" with a
+    UserWarning when the faces are not oriented alike (the `rule` attribute says which).
+allow_non_manifold: with rule="parity", accept edges shared by 4, 6, ... faces (the
+    winding rules accept any edge used as often in each direction).
 space_cells: label the cells of a grid that no face reaches once, exactly, so that
     points in them need no ray (method "exact" only; False: a ray for every point).
 
-Raises ValueError when the mesh does not bound a solid: open, non-manifold, degenerate
-faces, with the counts and the first few offending edges or faces.)doc")
+Raises ValueError when the mesh does not bound a solid by the rule: open, faces not
+oriented alike (winding rules), non-manifold (parity), degenerate faces, with the counts
+and the first few offending edges or faces. By parity, warns (UserWarning) when faces
+intersect: the labels are then those of the parity solid.)doc")
+      .def_property_readonly(
+          "rule", [](const inside::Classifier& c) { return std::string(to_string(c.rule())); })
+      .def("winding_numbers", &winding_numbers, py::arg("points"), py::kw_only(),
+           py::arg("method") = "exact", py::arg("threads") = 0,
+           R"doc(The winding number of every point: an int32 array, exact.
+
+ON_SURFACE (the smallest int32) for points on a face, where none is defined. Arguments as
+for classify. Raises ValueError when the faces are not oriented alike (a mesh accepted by
+rule="parity" only).)doc")
       .def("classify", &classify, py::arg("points"), py::kw_only(), py::arg("method") = "exact",
            py::arg("threads") = 0,
            R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY.

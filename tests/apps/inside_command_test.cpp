@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cli/inside_command.hpp"
@@ -298,7 +301,8 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
 }
 
-// Two unit cubes, the second moved by 1/2 along every axis: six pairs of faces cross. The
+// Two unit cubes, the second moved by 1/2 along every axis: six pairs of faces cross. By
+// the default rule (nonzero) the overlap is inside, and nothing is said. By parity the
 // labels are the parity solid's (the overlap is outside), and the command says so on
 // standard error, in the file's numbering, whether the check runs beside the build or
 // after it; without the check it says nothing.
@@ -317,6 +321,11 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   write_file(dir_ / "points.txt", "0.25 0.25 0.25\n0.75 0.75 0.75\n1.25 1.25 1.25\n");
   InsideCommandOptions options;
   options.mesh.path = (dir_ / "two_cubes.obj").string();
+  const Outcome union_of_parts = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(union_of_parts.code, ExitCode::success) << union_of_parts.err;
+  EXPECT_EQ(union_of_parts.out, "inside\ninside\ninside\n");
+  EXPECT_EQ(union_of_parts.err, "");
+  options.mesh.rule = inside::FillRule::parity;
   for (const unsigned threads : {2u, 1u}) {
     options.mesh.threads = threads;
     options.points = (dir_ / "points.txt").string();
@@ -333,6 +342,9 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
                              "the parity solid"),
               std::string::npos)
         << err.str();
+    EXPECT_NE(err.str().find("--rule nonzero labels overlapping parts as their union"),
+              std::string::npos)
+        << err.str();
   }
   options.json = true;
   const Outcome json = run_file(options, dir_ / "points.txt");
@@ -343,6 +355,112 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   const Outcome quiet = run_file(options, dir_ / "points.txt");
   EXPECT_EQ(quiet.err, "");
   EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;
+}
+
+/// A cube of quads in OBJ with corners `lower` + `size` (0 or 1 per axis), its faces
+/// counter-clockwise seen from outside (`reversed`: from inside), vertices numbered from
+/// `first`; `flip_first` turns the first face alone.
+std::string obj_cube(double lower, double size, int first, bool reversed = false,
+                     bool flip_first = false) {
+  std::string obj;
+  for (int c = 0; c < 8; ++c)
+    obj += "v " + std::to_string(lower + size * (c & 1)) + " " +
+           std::to_string(lower + size * ((c >> 1) & 1)) + " " +
+           std::to_string(lower + size * ((c >> 2) & 1)) + "\n";
+  bool flip = flip_first;
+  for (const auto& q : testing::kHexahedronFaces) {
+    const bool turned = reversed != flip;
+    flip = false;
+    const std::array<VertexIndex, 4> c =
+        turned ? std::array<VertexIndex, 4>{q[0], q[3], q[2], q[1]} : q;
+    obj += "f";
+    for (const VertexIndex v : c)
+      obj.append(" ").append(std::to_string(static_cast<int>(v) + first));
+    obj += "\n";
+  }
+  return obj;
+}
+
+// --winding prints the integers; the rules label by them (a shell in a shell alike: w = 2
+// in the middle; a cube inside out: w = -1); the JSON says which rule labelled.
+TEST_F(InsideCommand, WindingNumbersAndRules) {
+  write_file(dir_ / "nested.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9));
+  write_file(dir_ / "cavity.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9, /*reversed=*/true));
+  write_file(dir_ / "inverted.obj", obj_cube(0, 1, 1, /*reversed=*/true));
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n0.1 0.5 0.5\n2 2 2\n0 0.5 0.5\n");
+  InsideCommandOptions options;
+  options.winding = true;
+  for (const auto& [file, windings] : std::vector<std::pair<std::string, std::string>>{
+           {"nested.obj", "2\n1\n0\nboundary\n"},
+           {"cavity.obj", "0\n1\n0\nboundary\n"},
+           {"inverted.obj", "-1\n-1\n0\nboundary\n"}}) {
+    options.mesh.path = (dir_ / file).string();
+    const Outcome r = run_file(options, dir_ / "points.txt");
+    ASSERT_EQ(r.code, ExitCode::success) << r.err;
+    EXPECT_EQ(r.out, windings) << file;
+    EXPECT_EQ(r.err, "") << file;
+  }
+  options.winding = false;
+  options.mesh.self_intersection_check = false;
+  const std::string both_inside = "inside\ninside\noutside\nboundary\n";
+  const std::string middle_out = "outside\ninside\noutside\nboundary\n";
+  const std::string all_out = "outside\noutside\noutside\nboundary\n";
+  for (const auto& [file, rule, labels] :
+       std::vector<std::tuple<std::string, inside::FillRule, std::string>>{
+           {"nested.obj", inside::FillRule::nonzero, both_inside},
+           {"nested.obj", inside::FillRule::parity, middle_out},
+           {"nested.obj", inside::FillRule::positive, both_inside},
+           {"inverted.obj", inside::FillRule::nonzero, both_inside},
+           {"inverted.obj", inside::FillRule::parity, both_inside},
+           {"inverted.obj", inside::FillRule::positive, all_out}}) {
+    options.mesh.path = (dir_ / file).string();
+    options.mesh.rule = rule;
+    const Outcome r = run_file(options, dir_ / "points.txt");
+    EXPECT_EQ(r.out, labels) << file << " " << to_string(rule);
+  }
+  options.json = true;
+  const Outcome r = run_file(options, dir_ / "points.txt");
+  EXPECT_NE(r.out.find("\"rule\": \"positive\""), std::string::npos) << r.out;
+}
+
+// A cube with one face turned: the default rule labels it by parity and says why; a
+// winding rule asked for refuses it and names --rule parity; --winding refuses it; and
+// --winding with the float ray baseline is refused before any work.
+TEST_F(InsideCommand, FacesNotOrientedAlike) {
+  write_file(dir_ / "turned.obj", obj_cube(0, 1, 1, /*reversed=*/false, /*flip_first=*/true));
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 0.5 0.5\n");
+  InsideCommandOptions options;
+  options.mesh.path = (dir_ / "turned.obj").string();
+  Outcome r = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(r.code, ExitCode::success) << r.err;
+  EXPECT_EQ(r.out, "inside\noutside\n");
+  EXPECT_NE(r.err.find("warning: " + options.mesh.path +
+                       ": the faces are not oriented alike (some edge is used more often in one "
+                       "direction than in the other), so they have no winding numbers: labelled "
+                       "by crossing parity (--rule parity)"),
+            std::string::npos)
+      << r.err;
+  options.mesh.rule = inside::FillRule::nonzero;
+  r = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(r.code, ExitCode::input_error);
+  EXPECT_EQ(r.out, "");
+  EXPECT_NE(r.err.find(": faces not consistently oriented: 4 edges are used more often in one "
+                       "direction than in the other (first: 1-2, "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("(vertices and faces numbered from 1, as in the file); --rule parity, "
+                       "which needs no orientation, accepts it"),
+            std::string::npos)
+      << r.err;
+  options.mesh.rule.reset();
+  options.winding = true;
+  r = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(r.code, ExitCode::input_error);
+  EXPECT_NE(r.err.find("no winding numbers"), std::string::npos) << r.err;
+  options.mesh.float_rays = true;
+  r = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(r.code, ExitCode::input_error);
+  EXPECT_NE(r.err.find("--winding needs the classifier"), std::string::npos) << r.err;
 }
 
 }  // namespace

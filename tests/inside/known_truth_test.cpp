@@ -102,9 +102,16 @@ std::string describe(const Mesh& mesh) {
 
 /// Embree candidates with the space cells on; brute force, the reference, without them:
 /// every comparison of the two checks the cells' labels too.
-ClassifierOptions search(CandidateSearch candidates) {
-  return {candidates, /*allow_non_manifold=*/true,
-          /*space_cells=*/candidates == CandidateSearch::embree};
+/// The options for `mesh`: the default nonzero rule when its faces are oriented, parity
+/// (which needs no orientation) otherwise. The solids here are embedded, so both rules
+/// label alike; check_solid checks that they do where both apply.
+ClassifierOptions search(CandidateSearch candidates, const Mesh& mesh) {
+  ClassifierOptions options;
+  options.candidates = candidates;
+  options.allow_non_manifold = true;
+  options.space_cells = candidates == CandidateSearch::embree;
+  if (mesh::check_mesh(mesh).unbalanced_edges.count > 0) options.rule = FillRule::parity;
+  return options;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -137,7 +144,7 @@ SolidReport check_solid(std::string_view name, const Mesh& mesh, const std::vect
                         CheckOptions options = {}) {
   SolidReport r;
   const auto start = std::chrono::steady_clock::now();
-  const Classifier embree(mesh, search(CandidateSearch::embree));
+  const Classifier embree(mesh, search(CandidateSearch::embree, mesh));
   std::vector<Point3> points;
   points.reserve(probes.size());
   for (const Probe& p : probes)
@@ -161,7 +168,7 @@ SolidReport check_solid(std::string_view name, const Mesh& mesh, const std::vect
     }
   }
   if (options.brute_force) {
-    const Classifier brute(mesh, search(CandidateSearch::brute_force));
+    const Classifier brute(mesh, search(CandidateSearch::brute_force, mesh));
     for (std::size_t i = 0; i < points.size(); i += options.brute_force_stride) {
       const Location b = brute.classify(points[i], Arithmetic::exact, scratch);
       if (b != r.exact[i]) bad(i, cat("brute force ", b, ", embree ", r.exact[i]));
@@ -182,6 +189,16 @@ SolidReport check_solid(std::string_view name, const Mesh& mesh, const std::vect
     ++rational_count;
     const Location q = embree.classify(points[i], Arithmetic::rational, scratch);
     if (q != r.exact[i]) bad(i, cat("rational ", q, ", exact ", r.exact[i]));
+  }
+  // Every rule labels an embedded solid alike: parity against the default nonzero.
+  if (embree.rule() != FillRule::parity) {
+    ClassifierOptions parity = search(CandidateSearch::embree, mesh);
+    parity.rule = FillRule::parity;
+    const Classifier by_parity(mesh, parity);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Location l = by_parity.classify(points[i], Arithmetic::exact, scratch);
+      if (l != r.exact[i]) bad(i, cat("parity rule ", l, ", nonzero ", r.exact[i]));
+    }
   }
   // Plain double may be wrong; it must only run (within its 64 rays).
   std::size_t disagreements = 0;
@@ -413,8 +430,8 @@ Voxels minimise(Voxels voxels, const Variant& variant, const Point3& point, cons
                 bool rational, bool ulp) {
   const auto fails = [&](const Voxels& v) {
     const Polycube p = make(v, variant);
-    const Classifier e(p.mesh, search(CandidateSearch::embree));
-    const Classifier b(p.mesh, search(CandidateSearch::brute_force));
+    const Classifier e(p.mesh, search(CandidateSearch::embree, p.mesh));
+    const Classifier b(p.mesh, search(CandidateSearch::brute_force, p.mesh));
     const Location le = e.classify(point), lb = b.classify(point);
     if (le != lb) return true;
     if (const auto truth = evaluate(t, v, p); truth && le != *truth) return true;
@@ -461,8 +478,8 @@ SolidReport check_polycube(std::string_view name, const Voxels& voxels, const Va
                               probes.random_ulp[i]);
     const Polycube mp = make(m, variant);
     const auto truth = evaluate(probes.truths[i], m, mp);
-    const Classifier e(mp.mesh, search(CandidateSearch::embree));
-    const Classifier b(mp.mesh, search(CandidateSearch::brute_force));
+    const Classifier e(mp.mesh, search(CandidateSearch::embree, mp.mesh));
+    const Classifier b(mp.mesh, search(CandidateSearch::brute_force, mp.mesh));
     ADD_FAILURE() << name << ": minimal failing case (" << variant.describe() << ")\n  "
                   << describe(m) << "\n  point " << hex(list[i].point) << ": exact "
                   << str(e.classify(list[i].point)) << ", brute force "
@@ -489,10 +506,16 @@ void expect_polycube_mesh(const Voxels& voxels, const Polycube& p, bool triangle
     EXPECT_EQ(c.consistently_oriented, std::optional<bool>(true));
   }
   EXPECT_FALSE(mesh::closed_surface_problem(c, /*allow_non_manifold=*/true).has_value());
+  // Every voxel face outward, so every edge is balanced, four-face edges included: the
+  // winding rules accept the mesh; parity needs allow_non_manifold for four-face edges.
+  EXPECT_EQ(c.unbalanced_edges.count, 0u);
+  EXPECT_NO_THROW(Classifier(p.mesh, ClassifierOptions{}));
+  ClassifierOptions parity;
+  parity.rule = FillRule::parity;
   if (non_manifold > 0) {
-    EXPECT_THROW(Classifier(p.mesh, ClassifierOptions{}), std::invalid_argument);
+    EXPECT_THROW(Classifier(p.mesh, parity), std::invalid_argument);
   } else {
-    EXPECT_NO_THROW(Classifier(p.mesh, ClassifierOptions{}));
+    EXPECT_NO_THROW(Classifier(p.mesh, parity));
   }
 }
 

@@ -68,7 +68,9 @@ void expect_embree_matches_brute_force(const std::string& path, std::size_t coun
   SCOPED_TRACE(path);
   const Mesh mesh = mesh::load_mesh(path, load).mesh;
   const Classifier embree(mesh);
-  const Classifier brute(mesh, {CandidateSearch::brute_force, false, /*space_cells=*/false});
+  const Classifier brute(mesh, {.candidates = CandidateSearch::brute_force,
+                                .allow_non_manifold = false,
+                                .space_cells = false});
   auto rng =
       testing::seeded_engine("inside.real_meshes." + std::filesystem::path(path).stem().string());
   const std::vector<Point3> points =
@@ -83,6 +85,18 @@ void expect_embree_matches_brute_force(const std::string& path, std::size_t coun
         << "point " << i << ": " << std::hexfloat << points[i][0] << " " << points[i][1] << " "
         << points[i][2];
   }
+  // The bundled meshes are embedded, so every rule labels them alike: parity always, and
+  // positive where the faces are oriented alike (outward: w = +1 inside).
+  std::vector<FillRule> rules{FillRule::parity};
+  if (embree.oriented()) rules.push_back(FillRule::positive);
+  for (const FillRule rule : rules) {
+    ClassifierOptions options;
+    options.rule = rule;
+    const Classifier by_rule(mesh, options);
+    std::vector<Location> labels(points.size());
+    classify_batch(by_rule, points, labels, Arithmetic::exact, 2);
+    EXPECT_EQ(labels, fast) << to_string(rule) << " and " << to_string(embree.rule());
+  }
   // The points exercise all three answers (vertices and midpoints are on the surface).
   EXPECT_GT(by_location[static_cast<int>(Location::inside)], 0u);
   EXPECT_GT(by_location[static_cast<int>(Location::outside)], 0u);
@@ -93,7 +107,9 @@ void expect_embree_matches_brute_force(const std::string& path, std::size_t coun
 /// of the command-line example, with Embree and with every face as candidates.
 TEST(RealMeshes, ReadmeExamples) {
   mesh::LoadedMesh spot = mesh::load_mesh(kMeshes + "spot/spot_quadrangulated.obj");
-  const Classifier brute(spot.mesh, {CandidateSearch::brute_force, false, /*space_cells=*/false});
+  const Classifier brute(spot.mesh, {.candidates = CandidateSearch::brute_force,
+                                     .allow_non_manifold = false,
+                                     .space_cells = false});
   const Classifier classifier(std::move(spot.mesh));
   for (const Classifier* c : {&classifier, &brute}) {
     EXPECT_EQ(c->classify({0, 0.2, 0}), Location::inside);
@@ -137,8 +153,11 @@ TEST(RealMeshes, NegativeMeshesAreRefusedForTheRightReason) {
             std::string::npos);
   EXPECT_NE(refusal(kMeshes + "negative/double-torus-3-holes.off").find("not closed"),
             std::string::npos);
-  // Orientation does not matter for the inside semantics: inconsistent is accepted.
+  // Orientation does not matter to parity, the default rule's choice for such a mesh;
+  // the winding rules refuse it.
   EXPECT_EQ(refusal(kMeshes + "negative/cube4-shuffled.off"), "");
+  EXPECT_EQ(Classifier(mesh::load_mesh(kMeshes + "negative/cube4-shuffled.off").mesh).rule(),
+            FillRule::parity);
   EXPECT_FALSE(mesh::check_mesh(mesh::load_mesh(kMeshes + "negative/cube4-shuffled.off").mesh)
                    .consistently_oriented.value_or(true));
   // Faces with more than four corners are refused by the loader.

@@ -67,9 +67,12 @@ Tally check_cells(const std::string& name, const Mesh& mesh, std::mt19937_64& rn
   // known_truth_test.cpp).
   const CandidateSearch reference =
       mesh.faces.size() < 1000 ? CandidateSearch::brute_force : CandidateSearch::embree;
-  const Classifier rays(mesh, {reference, true, /*space_cells=*/false});
-  const Classifier with_cells(mesh, {CandidateSearch::embree, true, /*space_cells=*/true});
-  const SpaceCells cells(mesh, box, [&](const Point3& p) { return rays.classify(p); });
+  const Classifier rays(
+      mesh, {.candidates = reference, .allow_non_manifold = true, .space_cells = false});
+  const Classifier with_cells(
+      mesh,
+      {.candidates = CandidateSearch::embree, .allow_non_manifold = true, .space_cells = true});
+  const SpaceCells cells(mesh, box, [&](const Point3& p) { return rays.winding_number(p); });
   EXPECT_GE(cells.components(), 2u);  // inside and outside at least
   EXPECT_LT(cells.surface_cells(), cells.cells());
 
@@ -82,7 +85,7 @@ Tally check_cells(const std::string& name, const Mesh& mesh, std::mt19937_64& rn
     if (!known) return;
     ++t.answered;
     t.answered_on_planes += on_plane;
-    ASSERT_EQ(*known, truth) << std::hexfloat << p[0] << " " << p[1] << " " << p[2];
+    ASSERT_EQ(known, rays.winding_number(p)) << std::hexfloat << p[0] << " " << p[1] << " " << p[2];
   };
   const auto plane = [&](int axis) {
     const auto& b = cells.planes(axis);
@@ -163,7 +166,9 @@ TEST(SpaceCells, EnclosedCavityIsItsOwnComponent) {
   EXPECT_EQ(classifier.classify({1.5, 1.5, 1.5}), Location::outside);
   EXPECT_EQ(classifier.classify({0.5, 0.5, 0.5}), Location::inside);
   EXPECT_EQ(classifier.classify({2.9, 2.9, 2.9}), Location::inside);
-  const Classifier without(mesh, {CandidateSearch::embree, false, /*space_cells=*/false});
+  const Classifier without(
+      mesh,
+      {.candidates = CandidateSearch::embree, .allow_non_manifold = false, .space_cells = false});
   EXPECT_FALSE(without.space_cells().has_value());
 }
 

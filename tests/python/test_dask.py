@@ -101,6 +101,20 @@ def test_each_worker_builds_the_classifier_once(client, rng, cube_file):
     assert sum(rebuilt[w]["builds"] - after[w]["builds"] for w in rebuilt) >= 1
 
 
+def test_the_rule_reaches_the_workers(client, tmp_path):
+    # Two unit cubes overlapping in [0.5, 1]^3: inside by nonzero, outside by parity.
+    cube_vertices = np.array([[x, y, z] for z in (0, 1) for y in (0, 1) for x in (0, 1)], float)
+    quads = np.array([[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4],
+                      [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]])
+    path = tmp_path / "two_cubes.obj"
+    write_obj(path, np.vstack([cube_vertices, cube_vertices + 0.5]), np.vstack([quads, quads + 8]))
+    points = da.from_array(np.array([[0.75, 0.75, 0.75], [0.25, 0.25, 0.25]]), chunks=(1, 3))
+    union = exactgeo.dask.classify(path, points).compute()
+    assert list(union) == [exactgeo.INSIDE, exactgeo.INSIDE]
+    parity = exactgeo.dask.classify(path, points, rule="parity").compute()  # warns on a worker
+    assert list(parity) == [exactgeo.OUTSIDE, exactgeo.INSIDE]
+
+
 def test_a_bad_mesh_fails_with_the_loaders_message(client, tmp_path):
     points = da.zeros((100, 3), chunks=(50, 3))
     with pytest.raises(FileNotFoundError, match="no-such-mesh.obj"):

@@ -3,6 +3,8 @@
 // Classifying many points at once, on all cores. The output depends only on the input:
 // locations[i] is the location of points[i], whatever the thread count or schedule.
 
+#include <cstdint>
+#include <optional>
 #include <span>
 
 #include "exactgeo/inside/classifier.hpp"
@@ -16,6 +18,13 @@ namespace exactgeo::inside {
 /// Rethrows the first exception a worker threw (only std::bad_alloc is possible).
 void classify_batch(const Classifier& classifier, std::span<const Point3> points,
                     std::span<Location> locations, Arithmetic arithmetic, unsigned threads = 0);
+
+/// Writes winding_number(points[i]) into windings[i] (nullopt: on the surface) for every
+/// i, the same way. Throws std::logic_error, before any work, when the classifier's mesh
+/// has no winding numbers (Classifier::oriented).
+void winding_number_batch(const Classifier& classifier, std::span<const Point3> points,
+                          std::span<std::optional<std::int64_t>> windings, Arithmetic arithmetic,
+                          unsigned threads = 0);
 
 /// The same with the inexact float ray-casting baseline (float_ray_parity.hpp), for
 /// measuring it against the exact classifier on the same points.

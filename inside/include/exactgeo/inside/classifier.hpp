@@ -3,12 +3,13 @@
 // Exact point-in-volume classification against a closed mesh of bilinear patches and
 // triangles (the inside semantics of docs/architecture.md, "Contracts").
 //
-// A point is `boundary` if it lies exactly on a face, else `inside` or `outside` by the
-// parity of the crossings of a ray from it with the faces. Rays follow the fixed sequence
-// of exactgeo/predicates/ray_directions.hpp; a ray that meets a face's edge or vertex,
-// or lies in the plane of a flat face, is discarded for the next one, which the sequence
+// A point is `boundary` if it lies exactly on a face, else `inside` or `outside` by its
+// winding number and the fill rule (fill_rule.hpp): the signed count of the crossings of
+// a ray from it with the faces. Rays follow the fixed sequence of
+// exactgeo/predicates/ray_directions.hpp; a ray that meets a face's edge or vertex, or
+// lies in the plane of a flat face, is discarded for the next one, which the sequence
 // guarantees ends. Embree proposes candidate faces along each ray; the exact predicates
-// (ray_patch_parity, classify_ray_triangle) decide every one.
+// (cross_face_signed: ray_patch_crossings, classify_ray_triangle) decide every one.
 
 #include <array>
 #include <cstddef>
@@ -17,6 +18,7 @@
 #include <optional>
 #include <vector>
 
+#include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
@@ -32,13 +34,19 @@ enum class CandidateSearch : std::uint8_t {
 
 struct ClassifierOptions {
   CandidateSearch candidates = CandidateSearch::embree;
-  /// Accept edges shared by four, six, ... faces (parity is still well defined when every
-  /// edge has an even number of faces); by default only closed manifold meshes are accepted.
+  /// Parity only: accept edges shared by four, six, ... faces (parity is still well
+  /// defined when every edge has an even number of faces); by default parity accepts
+  /// only closed manifold meshes.
   bool allow_non_manifold = false;
   /// Certified space cells (internal/space_cells.hpp): points in a cell that no face
   /// reaches get that cell's exact label without a ray. Exact and rational arithmetic
   /// only; the plain double baseline always casts rays.
   bool space_cells = true;
+  /// nonzero and positive need a closed oriented surface (every edge used as often in
+  /// each direction, so edges of four or six faces are fine); parity needs a closed one.
+  /// nullopt: nonzero when the faces are oriented alike, else parity, the only rule such
+  /// a mesh has (rule() says which was taken).
+  std::optional<FillRule> rule = std::nullopt;
 };
 
 /// Scratch memory for one thread's queries (the candidate list), reused between calls.
@@ -48,9 +56,10 @@ struct ClassifierScratch {
 
 class Classifier {
  public:
-  /// Checks the mesh (check_mesh, closed_surface_problem) and builds the candidate search.
-  /// Throws std::invalid_argument with the problem's description if the mesh cannot be
-  /// classified against, std::runtime_error if Embree fails.
+  /// Checks the mesh (check_mesh; oriented_surface_problem for nonzero and positive,
+  /// closed_surface_problem for parity) and builds the candidate search. Throws
+  /// std::invalid_argument with the problem's description if the mesh cannot be classified
+  /// against by the rule, std::runtime_error if Embree fails.
   explicit Classifier(mesh::Mesh mesh, ClassifierOptions options = {});
   ~Classifier();
   Classifier(Classifier&&) noexcept;
@@ -64,7 +73,23 @@ class Classifier {
   Location classify(const Point3& point, Arithmetic arithmetic, ClassifierScratch& scratch) const;
   Location classify(const Point3& point, Arithmetic arithmetic = Arithmetic::exact) const;
 
+  /// The winding number of `point` (finite coordinates), or nullopt when it lies on a
+  /// face, in the arithmetic's sense as for classify. Throws std::logic_error when the
+  /// mesh is not a closed oriented surface (accepted by the parity rule only), where the
+  /// signed count depends on the ray and no winding number is defined.
+  std::optional<std::int64_t> winding_number(const Point3& point, Arithmetic arithmetic,
+                                             ClassifierScratch& scratch) const;
+  std::optional<std::int64_t> winding_number(const Point3& point,
+                                             Arithmetic arithmetic = Arithmetic::exact) const;
+
+  /// The location of a point of winding number `winding` by the rule (boundary for
+  /// nullopt, a point on the surface).
+  Location location_of(const std::optional<std::int64_t>& winding) const noexcept;
+
   const mesh::Mesh& mesh() const noexcept;
+  FillRule rule() const noexcept;
+  /// Every edge used as often in each direction: winding numbers are defined.
+  bool oriented() const noexcept;
 
   /// The space cells' size, when they are on: the grid's cells, those some face reaches
   /// (their points cast rays), and the components of the others (one exact ray each).
@@ -78,8 +103,13 @@ class Classifier {
 
  private:
   struct State;
-  static Location cast_rays(const State& s, const Point3& point, Arithmetic arithmetic,
-                            ClassifierScratch& scratch);
+  /// The signed crossing count along the first decisive ray (the winding number of an
+  /// oriented mesh; of the right parity for any closed one); nullopt on a face.
+  static std::optional<std::int64_t> cast_rays(const State& s, const Point3& point,
+                                               Arithmetic arithmetic, ClassifierScratch& scratch);
+  static std::optional<std::int64_t> signed_count(const State& s, const Point3& point,
+                                                  Arithmetic arithmetic,
+                                                  ClassifierScratch& scratch);
   std::unique_ptr<State> state_;
 };
 

@@ -57,6 +57,10 @@ struct MeshCheck {
   Examples<Edge> boundary_edges;      ///< used by exactly one face
   Examples<Edge> non_manifold_edges;  ///< used by more than two faces
   Examples<Edge> odd_edges;           ///< used by an odd number of faces (subset of the two above)
+  /// Used more often in one direction than in the other (a superset of the odd edges).
+  /// None: the faces form a closed oriented surface, whose winding numbers are defined,
+  /// however they intersect (an edge of four faces, two each way, is balanced).
+  Examples<Edge> unbalanced_edges;
   Examples<std::size_t> degenerate_faces;  ///< a repeated corner index, or zero area (exact)
   Examples<std::size_t> non_planar_quads;  ///< corners not coplanar (exact orient3d)
   std::size_t unreferenced_vertices = 0;
@@ -88,6 +92,13 @@ MeshCheck check_mesh(const Mesh& mesh);
 std::optional<std::string> closed_surface_problem(const MeshCheck& check,
                                                   bool allow_non_manifold = false,
                                                   std::size_t first_index = 0);
+
+/// What keeps the mesh from being a closed oriented surface, whose winding numbers
+/// exactgeo::inside's nonzero and positive rules need: closed_surface_problem's conditions
+/// with "every edge used as often in one direction as in the other" for the edge rules
+/// (so edges shared by four or more faces are fine when balanced), nullopt if nothing.
+std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
+                                                    std::size_t first_index = 0);
 
 /// The same message for a mesh read from a file, in the file's own numbering (OBJ counts
 /// vertices and faces from 1; OFF, PLY and exactgeo's Mesh from 0), saying which.

@@ -6,11 +6,14 @@
 //
 // Why a cell's label is certified. Each face lies in the convex hull of its corners,
 // hence in the box of its corners. A closed cell box that meets no face's corner box is
-// disjoint from the surface; it is convex, so connected, and the label (inside or
-// outside, by crossing parity) is constant on every connected set that misses the
-// surface. Two such cells that share a closed facet form a connected set missing the
-// surface too, so a whole face-connected component of them has one label: it is found
-// once, by the exact classifier at one point of one of its cells.
+// disjoint from the surface; it is convex, so connected, and the winding number (of a
+// closed oriented surface; the crossing parity of any closed one) is constant on every
+// connected set that misses the surface. Two such cells that share a closed facet form a
+// connected set missing the surface too, so a whole face-connected component of them has
+// one winding number: it is found once, by the exact classifier at one point of one of its
+// cells. A cell holds a one-byte code: unknown, surface, margin, or an index into the few
+// distinct winding numbers the components have (beyond 253 distinct ones, which no real
+// mesh has, further components stay "surface" and their points cast rays: still exact).
 //
 // No rounding enters. The grid's planes are any doubles b_0 <= b_1 <= ... <= b_n per
 // axis, with b_0 and b_n the box's own bounds; cell k is the closed interval
@@ -37,17 +40,24 @@ namespace exactgeo::inside::internal {
 
 class SpaceCells {
  public:
-  /// The exact location of a point that lies on no face (inside or outside).
-  using ExactLabel = std::function<Location(const Point3&)>;
+  /// The exact winding number of a point that lies on no face (for a closed surface that
+  /// is not oriented, a signed crossing count whose parity is the crossing parity);
+  /// nullopt would say the point is on a face.
+  using ExactWinding = std::function<std::optional<std::int64_t>(const Point3&)>;
 
   /// The grid over `box` (the mesh's bounding box) with about `kCellsPerFace` cells per
-  /// face, between kMinCells and kMaxCells, shaped like the box; `label` is called once
+  /// face, between kMinCells and kMaxCells, shaped like the box; `winding` is called once
   /// per component of cells no face reaches.
-  SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactLabel& label);
+  SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactWinding& winding);
 
-  /// The label of every point of a cell containing `p`, or nullopt when a face may reach
-  /// that cell (cast a ray). Precondition: p in the closed box.
-  std::optional<Location> lookup(const Point3& p) const noexcept;
+  /// The winding number of every point of a cell containing `p`, or nullopt when a face
+  /// may reach that cell (cast a ray). Precondition: p in the closed box.
+  std::optional<std::int64_t> lookup(const Point3& p) const noexcept {
+    const Code code =
+        codes_[index(axes_[0].cell_of(p[0]), axes_[1].cell_of(p[1]), axes_[2].cell_of(p[2]))];
+    if (code < kFirstWinding) return std::nullopt;
+    return windings_[code - kFirstWinding];
+  }
 
   std::array<std::size_t, 3> resolution() const noexcept {
     return {axes_[0].cells(), axes_[1].cells(), axes_[2].cells()};
@@ -99,9 +109,12 @@ class SpaceCells {
     double cells_per_unit_ = 0.0;  // 0: no usable division, search only
   };
 
-  /// `margin`: a layer of cells around the grid, so that the flood fill needs no bounds
-  /// checks (and no divisions to find them); never looked up.
-  enum class Label : std::uint8_t { unknown, surface, inside, outside, margin };
+  /// A cell's code. `kMargin`: a layer of cells around the grid, so that the flood fill
+  /// needs no bounds checks (and no divisions to find them); never looked up.
+  /// kFirstWinding + i: the winding number windings_[i].
+  using Code = std::uint8_t;
+  static constexpr Code kUnknown = 0, kSurface = 1, kMargin = 2, kFirstWinding = 3;
+  static constexpr std::size_t kMaxWindings = 256 - kFirstWinding;
 
   /// Cells per axis with the margin.
   std::size_t padded(int axis) const noexcept { return axes_[axis].cells() + 2; }
@@ -109,10 +122,13 @@ class SpaceCells {
     return ((k + 1) * padded(1) + (j + 1)) * padded(0) + (i + 1);
   }
   void mark_faces(const mesh::Mesh& mesh);
-  void label_components(const ExactLabel& label);
+  void label_components(const ExactWinding& winding);
+  /// The code of a component of winding number w, or kSurface when all codes are taken.
+  Code code_of(std::int64_t w);
 
   std::array<Axis, 3> axes_;
-  std::vector<Label> labels_;
+  std::vector<Code> codes_;
+  std::vector<std::int64_t> windings_;  ///< the components' distinct winding numbers
   std::size_t surface_cells_ = 0;
   std::size_t components_ = 0;
 };

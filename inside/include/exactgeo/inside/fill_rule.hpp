@@ -1,0 +1,51 @@
+#pragma once
+
+// Which points a closed surface holds. Every face is oriented by its corner order, and a
+// point off the surface has a winding number w: the signed number of times the surface
+// wraps around it (+1 inside a simple solid whose faces are counter-clockwise seen from
+// outside, 2 where two such solids overlap, -1 inside one turned inside out). Rays count
+// it exactly (crossing_parity.hpp). A rule turns w into inside or outside.
+//
+// On a closed surface that does not intersect itself and is oriented consistently, w is 0
+// outside and +1 (or -1 throughout, if every face is turned) inside, and the three rules
+// agree. They differ where parts overlap, nest or fold through each other.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace exactgeo::inside {
+
+enum class FillRule : std::uint8_t {
+  /// Inside where w != 0: overlapping parts read as their union, and a surface turned
+  /// inside out as a whole still holds its interior. The default: it is what a mesh made
+  /// of overlapping closed parts (a character's separate limbs and eyes, an assembly,
+  /// merged scans) means.
+  nonzero,
+  /// Inside where w is odd, the crossing parity: an overlap of two parts reads outside.
+  /// The only rule that needs no orientation (any closed surface, every edge shared by an
+  /// even number of faces).
+  parity,
+  /// Inside where w > 0: a part turned inside out carves a cavity out of the parts around
+  /// it.
+  positive,
+};
+
+std::string_view to_string(FillRule rule) noexcept;
+/// "nonzero", "parity" or "positive"; nullopt for anything else.
+std::optional<FillRule> parse_fill_rule(std::string_view text) noexcept;
+
+/// Does the rule put a point of winding number w inside?
+constexpr bool holds(FillRule rule, std::int64_t w) noexcept {
+  switch (rule) {
+    case FillRule::nonzero:
+      return w != 0;
+    case FillRule::parity:
+      return w % 2 != 0;
+    case FillRule::positive:
+      return w > 0;
+  }
+  return false;
+}
+
+}  // namespace exactgeo::inside
