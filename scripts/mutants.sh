@@ -104,7 +104,7 @@ MUTANTS = [
      ["inside_tests"]),
     ("degenerate_ray_counted",
      "predicates/include/exactgeo/predicates/crossing_parity.hpp",
-     "      case Crossing::degenerate:\n        return RayCount::degenerate;",
+     "      case Crossing::degenerate:\n        return {RayCount::degenerate, 0};",
      "      case Crossing::degenerate:\n        break;",
      ["predicates_tests", "ccd_tests", "inside_tests"]),
     ("float_box_padding_below_the_origin_rounding",
@@ -118,6 +118,15 @@ MUTANTS = [
      "  const double v = a.value - b.value;\n"
      "  return {v, (a.error + b.error) * BoundedDouble::kGrow};",
      ["ccd_tests"]),
+    # Parity cannot see these: a crossing's sign is all they get wrong.
+    ("triangle_crossing_counted_positive",
+     "predicates/include/exactgeo/predicates/internal/ray_patch_core.hpp",
+     "        signed_count += to_int(hit.turn);", "        signed_count += 1;",
+     ["predicates_tests", "inside_tests"]),
+    ("diagonal_crossing_counted_positive",
+     "predicates/include/exactgeo/predicates/internal/ray_patch_core.hpp",
+     "signed_count += to_int(diagonal_turn[0]);", "signed_count += 1;",
+     ["predicates_tests", "inside_tests"]),
 ]
 
 

@@ -203,21 +203,26 @@ TEST(RayPatch, FlatPatchesAgreeWithOracle) {
   }
 }
 
+/// A flat patch in a tilted plane: corners a + s e1 + t e2 with small integers a, e1, e2,
+/// s, t, so coplanar exactly (often concave or butterfly; collinear when e1, e2 are).
+BilinearPatch tilted_flat_patch(Rng& rng) {
+  const Point3 a = testing::integer_point(rng, 2), e1 = testing::integer_point(rng, 2),
+               e2 = testing::integer_point(rng, 2);
+  auto corner = [&] {
+    return testing::rounded_affine(
+        a, {a[0] + e1[0], a[1] + e1[1], a[2] + e1[2]}, {a[0] + e2[0], a[1] + e2[1], a[2] + e2[2]},
+        testing::uniform_int(rng, -3, 3), testing::uniform_int(rng, -3, 3));
+  };
+  return {corner(), corner(), corner(), corner()};  // a braced list: drawn in this order
+}
+
 /// Tilted flat patches (the plane is not a coordinate plane) and origins in the fold
 /// region of concave and butterfly patches: p(u, v) at dyadic parameters is on the patch.
 TEST(RayPatch, FoldRegionsOfTiltedFlatPatchesAgreeWithOracle) {
   Rng rng = testing::seeded_engine("ray-patch-fold");
   int folded_on = 0;
   for (int i = 0; i < 5000; ++i) {
-    // Corners a + s e1 + t e2 with integer s, t: coplanar, exactly.
-    const Point3 a = testing::integer_point(rng, 2), e1 = testing::integer_point(rng, 2),
-                 e2 = testing::integer_point(rng, 2);
-    auto corner = [&] {
-      return testing::rounded_affine(
-          a, {a[0] + e1[0], a[1] + e1[1], a[2] + e1[2]}, {a[0] + e2[0], a[1] + e2[1], a[2] + e2[2]},
-          testing::uniform_int(rng, -3, 3), testing::uniform_int(rng, -3, 3));
-    };
-    const BilinearPatch p{corner(), corner(), corner(), corner()};
+    const BilinearPatch p = tilted_flat_patch(rng);
     const double u = testing::uniform_int(rng, 0, 4) / 4.0,
                  v = testing::uniform_int(rng, 0, 4) / 4.0;
     Point3 o;
@@ -245,15 +250,7 @@ TEST(RayPatch, NearFlatPatchesOneUlpOffAgreeWithOracle) {
   std::map<PatchShape, int> shapes;
   std::map<Sign, int> counts;
   for (int i = 0; i < 6000; ++i) {
-    // Corners a + s e1 + t e2 with integer s, t: coplanar, exactly.
-    const Point3 a = testing::integer_point(rng, 2), e1 = testing::integer_point(rng, 2),
-                 e2 = testing::integer_point(rng, 2);
-    auto corner = [&] {
-      return testing::rounded_affine(
-          a, {a[0] + e1[0], a[1] + e1[1], a[2] + e1[2]}, {a[0] + e2[0], a[1] + e2[1], a[2] + e2[2]},
-          testing::uniform_int(rng, -3, 3), testing::uniform_int(rng, -3, 3));
-    };
-    BilinearPatch p{corner(), corner(), corner(), corner()};
+    BilinearPatch p = tilted_flat_patch(rng);
     if (i % 2 == 1) {
       p.p11 = testing::ulp_step(p.p11, testing::uniform_int(rng, 0, 2),
                                 testing::uniform_int(rng, 0, 1) * 2 - 1);
