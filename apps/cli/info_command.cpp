@@ -12,6 +12,7 @@
 #include "cli/mesh_load_options.hpp"
 #include "cli/mesh_marks.hpp"
 #include "cli/output_file.hpp"
+#include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 
@@ -38,7 +39,13 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
     return ExitCode::input_error;
   }
   const MeshCheck check = mesh::check_mesh(loaded.mesh);
-  InfoFindings findings{loaded, check, mesh::closed_surface_problem(check, loaded), {}, {}};
+  // What `inside` says of the mesh by its default rule.
+  InfoFindings findings{
+      loaded,
+      check,
+      inside::rule_problem(check, inside::rule_for(check, std::nullopt), false, loaded),
+      {},
+      {}};
   if (check.geometry_checkable()) findings.self = mesh::find_self_intersections(loaded.mesh);
   if (mark_file) {
     findings.marks = info_marks(loaded.mesh, check, findings.self);

@@ -58,6 +58,7 @@ void write_info_json(std::ostream& out, const std::string& file, const InfoFindi
       << ", \"non_manifold_edges\": " << c.non_manifold_edges.count
       << ", \"consistently_oriented\": "
       << (c.consistently_oriented ? (*c.consistently_oriented ? "true" : "false") : "null")
+      << ", \"unbalanced_edges\": " << c.unbalanced_edges.count
       << ", \"degenerate_faces\": " << c.degenerate_faces.count
       << ", \"non_planar_quads\": " << c.non_planar_quads.count
       << ", \"unreferenced_vertices\": " << c.unreferenced_vertices
@@ -140,6 +141,11 @@ void write_info_table(std::ostream& out, const std::string& file, const InfoFind
   row("orientation", !c.consistently_oriented   ? "n/a (not every edge shared by two faces)"
                      : *c.consistently_oriented ? "consistent"
                                                 : "inconsistent");
+  row("winding numbers",
+      c.unbalanced_edges.count == 0
+          ? std::string("defined (every edge used as often in each direction)")
+          : "not defined: " + plural(c.unbalanced_edges.count, "edge is", "edges are") +
+                " used more often in one direction than in the other");
   row("degenerate faces", std::to_string(c.degenerate_faces.count));
   row("non-planar quads", std::to_string(c.non_planar_quads.count));
   row("unreferenced", std::to_string(c.unreferenced_vertices) + " vertices");

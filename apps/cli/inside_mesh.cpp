@@ -28,27 +28,20 @@ namespace {
 /// it taken before the build.
 std::string refusal_explained(const InsideMeshOptions& options, const std::string& message,
                               const std::optional<LoadedMesh>& kept) {
-  // The rule that was applied: the float ray baseline counts parity, and so does the
-  // default rule on faces not oriented alike.
+  // The rule that was applied (the float ray baseline counts parity).
   const auto rule_for = [&](const mesh::MeshCheck& check) {
-    if (options.float_rays) return inside::FillRule::parity;
-    return options.rule.value_or(check.unbalanced_edges.count == 0 ? inside::FillRule::nonzero
-                                                                   : inside::FillRule::parity);
+    return options.float_rays ? inside::FillRule::parity : inside::rule_for(check, options.rule);
   };
-  const auto problem_of = [&](const mesh::Mesh& m, std::size_t first_index) {
-    const mesh::MeshCheck check = mesh::check_mesh(m);
-    return rule_for(check) == inside::FillRule::parity
-               ? mesh::closed_surface_problem(check, options.allow_non_manifold, first_index)
-               : mesh::oriented_surface_problem(check, first_index);
+  const auto problem_of = [&](const LoadedMesh& loaded) {
+    const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
+    return inside::rule_problem(check, rule_for(check), options.allow_non_manifold, loaded);
   };
   try {
     LoadedMesh loaded = kept ? *kept : load_mesh(options.path, options.load);
     const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
-    const auto problem = problem_of(loaded.mesh, loaded.first_index());
+    const auto problem = problem_of(loaded);
     if (!problem) return message;
-    std::string text = *problem + (loaded.first_index() == 1
-                                       ? " (vertices and faces numbered from 1, as in the file)"
-                                       : " (vertices and faces numbered from 0)");
+    std::string text = *problem;
     if (rule_for(check) != inside::FillRule::parity && !mesh::closed_surface_problem(check, true)) {
       // A winding rule was asked for, and parity would take the mesh.
       text += "; --rule parity, which needs no orientation, accepts it";
@@ -58,7 +51,7 @@ std::string refusal_explained(const InsideMeshOptions& options, const std::strin
     }
     if (options.load.weld) return text;
     const std::size_t merged = mesh::weld_vertices(loaded.mesh);
-    if (merged > 0 && !problem_of(loaded.mesh, 0)) {
+    if (merged > 0 && !problem_of(loaded)) {
       text += "; with --weld, which merges the " + std::to_string(merged) +
               " vertices that repeat another's coordinates, it is accepted";
     }
@@ -114,7 +107,8 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     if (options.float_rays) {
       // The same meshes as the classifier accepts, so that the two are compared on them.
       const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
-      if (auto problem = mesh::closed_surface_problem(check, options.allow_non_manifold)) {
+      if (auto problem =
+              inside::rule_problem(check, inside::FillRule::parity, options.allow_non_manifold)) {
         throw std::invalid_argument(*problem);
       }
       built.float_rays.emplace(loaded.mesh);

@@ -107,16 +107,14 @@ std::optional<std::int64_t> Classifier::signed_count(const State& s, const Point
 Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     : state_(std::make_unique<State>()) {
   const mesh::MeshCheck check = mesh::check_mesh(mesh);
-  const bool oriented = check.unbalanced_edges.count == 0;
-  const FillRule rule = options.rule.value_or(oriented ? FillRule::nonzero : FillRule::parity);
-  const auto problem = rule == FillRule::parity
-                           ? mesh::closed_surface_problem(check, options.allow_non_manifold)
-                           : mesh::oriented_surface_problem(check);
-  if (problem) throw std::invalid_argument(*problem);
+  const FillRule rule = rule_for(check, options.rule);
+  if (auto problem = rule_problem(check, rule, options.allow_non_manifold)) {
+    throw std::invalid_argument(*problem);
+  }
   State& s = *state_;
   s.mesh = std::move(mesh);
   s.rule = rule;
-  s.oriented = oriented;
+  s.oriented = check.unbalanced_edges.count == 0;
   // The box of the faces' corners, not of every vertex: a vertex no face uses bounds
   // nothing. The candidate search's float frame and the space cells are built on this one
   // box, and both need every point they are asked about to lie in it (classify answers

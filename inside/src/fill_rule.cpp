@@ -27,4 +27,20 @@ std::optional<FillRule> parse_fill_rule(std::string_view text) noexcept {
   return std::nullopt;
 }
 
+FillRule rule_for(const mesh::MeshCheck& check, std::optional<FillRule> asked) noexcept {
+  return asked.value_or(check.unbalanced_edges.count == 0 ? FillRule::nonzero : FillRule::parity);
+}
+
+std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
+                                        bool allow_non_manifold) {
+  return rule == FillRule::parity ? mesh::closed_surface_problem(check, allow_non_manifold)
+                                  : mesh::oriented_surface_problem(check);
+}
+
+std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
+                                        bool allow_non_manifold, const mesh::LoadedMesh& loaded) {
+  return rule == FillRule::parity ? mesh::closed_surface_problem(check, loaded, allow_non_manifold)
+                                  : mesh::oriented_surface_problem(check, loaded);
+}
+
 }  // namespace exactgeo::inside

@@ -315,15 +315,30 @@ std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
   return surface_problem(check, EdgeRule::balanced, first_index);
 }
 
-std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
-                                                  bool allow_non_manifold) {
-  auto problem = closed_surface_problem(check, allow_non_manifold, loaded.first_index());
+namespace {
+
+/// A problem found in a file's numbering, saying which.
+std::optional<std::string> with_numbering(std::optional<std::string> problem,
+                                          const LoadedMesh& loaded) {
   if (problem) {
     problem->append(loaded.first_index() == 1
                         ? " (vertices and faces numbered from 1, as in the file)"
                         : " (vertices and faces numbered from 0)");
   }
   return problem;
+}
+
+}  // namespace
+
+std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
+                                                  bool allow_non_manifold) {
+  return with_numbering(closed_surface_problem(check, allow_non_manifold, loaded.first_index()),
+                        loaded);
+}
+
+std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
+                                                    const LoadedMesh& loaded) {
+  return with_numbering(oriented_surface_problem(check, loaded.first_index()), loaded);
 }
 
 std::optional<std::string> self_intersection_problem(const SelfIntersections& found,

@@ -12,6 +12,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
@@ -130,7 +131,7 @@ py::dict info_of(const MeshObject& object) {
   {
     py::gil_scoped_release release;
     c = mesh::check_mesh(object.loaded.mesh);
-    problem = mesh::closed_surface_problem(c, object.loaded);
+    problem = inside::rule_problem(c, inside::rule_for(c, std::nullopt), false, object.loaded);
     if (c.geometry_checkable()) self = mesh::find_self_intersections(object.loaded.mesh);
   }
   const mesh::LoadedMesh& loaded = object.loaded;
@@ -158,6 +159,7 @@ py::dict info_of(const MeshObject& object) {
   info["non_manifold_edges"] = c.non_manifold_edges.count;
   info["consistently_oriented"] =
       c.consistently_oriented ? py::object(py::bool_(*c.consistently_oriented)) : py::none();
+  info["unbalanced_edges"] = c.unbalanced_edges.count;
   info["degenerate_faces"] = c.degenerate_faces.count;
   info["non_planar_quads"] = c.non_planar_quads.count;
   info["unreferenced_vertices"] = c.unreferenced_vertices;

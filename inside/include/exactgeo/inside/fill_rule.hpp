@@ -12,7 +12,11 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+
+#include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/loaded_mesh.hpp"
 
 namespace exactgeo::inside {
 
@@ -34,6 +38,18 @@ enum class FillRule : std::uint8_t {
 std::string_view to_string(FillRule rule) noexcept;
 /// "nonzero", "parity" or "positive"; nullopt for anything else.
 std::optional<FillRule> parse_fill_rule(std::string_view text) noexcept;
+
+/// The rule a classifier takes: `asked`, or by default nonzero when the faces are
+/// oriented alike (no unbalanced edge) and parity otherwise, the only rule such a mesh has.
+FillRule rule_for(const mesh::MeshCheck& check, std::optional<FillRule> asked) noexcept;
+
+/// What keeps the mesh from being classified by `rule`: mesh::closed_surface_problem for
+/// parity (with allow_non_manifold), mesh::oriented_surface_problem for the winding rules;
+/// nullopt if nothing. With `loaded`, in the file's own numbering, saying which.
+std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
+                                        bool allow_non_manifold);
+std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
+                                        bool allow_non_manifold, const mesh::LoadedMesh& loaded);
 
 /// Does the rule put a point of winding number w inside?
 constexpr bool holds(FillRule rule, std::int64_t w) noexcept {

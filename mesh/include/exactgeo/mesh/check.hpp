@@ -104,6 +104,8 @@ std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
 /// vertices and faces from 1; OFF, PLY and exactgeo's Mesh from 0), saying which.
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
                                                   bool allow_non_manifold = false);
+std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
+                                                    const LoadedMesh& loaded);
 
 /// What find_self_intersections found, as one message with faces numbered from
 /// `first_index` (LoadedMesh::first_index: the file's own numbering), e.g. "3 pairs of
