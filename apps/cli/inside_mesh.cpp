@@ -39,10 +39,11 @@ std::string refusal_explained(const InsideMeshOptions& options, const std::strin
   try {
     LoadedMesh loaded = kept ? *kept : load_mesh(options.path, options.load);
     const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
-    const auto problem = problem_of(loaded);
+    const inside::FillRule rule = rule_for(check);
+    const auto problem = inside::rule_problem(check, rule, options.allow_non_manifold, loaded);
     if (!problem) return message;
     std::string text = *problem;
-    if (rule_for(check) != inside::FillRule::parity && !mesh::closed_surface_problem(check, true)) {
+    if (rule != inside::FillRule::parity && !mesh::closed_surface_problem(check, true)) {
       // A winding rule was asked for, and parity would take the mesh.
       text += "; --rule parity, which needs no orientation, accepts it";
       if (!options.allow_non_manifold && mesh::closed_surface_problem(check, false)) {
