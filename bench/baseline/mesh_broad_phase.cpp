@@ -103,7 +103,8 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
 }
 
 bool MeshBroadPhase::standing_unchanged(const std::vector<std::uint8_t>& moving,
-                                        const StepPositions& frames, const boxes::Scale& scale) const {
+                                        const StepPositions& frames,
+                                        const boxes::Scale& scale) const {
   if (!standing_valid_ || moving != moving_ || scale.exponent() != standing_scale_.exponent())
     return false;
   for (std::size_t i = 0; i < 3 * vertex_count_; ++i) {
@@ -118,7 +119,7 @@ void MeshBroadPhase::rebuild_standing(std::vector<std::uint8_t> moving, const St
   standing_scale_ = scale;
   standing_positions_.assign(frames.t0.begin(), frames.t0.end());
   standing_vertices_ = QueryTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_),
-                                        moving_, false, frames, scale));
+                                          moving_, false, frames, scale));
   standing_edges_ = QueryTree(boxes_of(edges_, moving_, false, frames, scale));
   standing_faces_ = QueryTree(boxes_of(faces_, moving_, false, frames, scale));
   standing_valid_ = true;
@@ -139,12 +140,12 @@ MeshCandidates MeshBroadPhase::candidates(const StepPositions& frames, unsigned 
   parallel::for_each_block(3, threads, [&](std::size_t k) {
     if (k == 0)
       trees[0] = QueryTree(boxes_of(std::span<const std::array<VertexIndex, 1>>(vertices_), moving,
-                                  true, frames, scale));
+                                    true, frames, scale));
     if (k == 1) trees[1] = QueryTree(boxes_of(edges_, moving, true, frames, scale));
     if (k == 2) trees[2] = QueryTree(boxes_of(faces_, moving, true, frames, scale));
   });
   const QueryTree &moving_vertex_tree = trees[0], &moving_edge_tree = trees[1],
-                &moving_face_tree = trees[2];
+                  &moving_face_tree = trees[2];
   const auto moving_vertices = moving_vertex_tree.boxes();
   const auto moving_edges = moving_edge_tree.boxes();
 

@@ -58,8 +58,8 @@ class MeshBroadPhase {
   bool standing_valid_ = false;
   std::vector<std::uint8_t> moving_;        // per vertex, when the standing trees were built
   std::vector<double> standing_positions_;  // t0 positions then (standing ones compared)
-  boxes::Scale standing_scale_;                // the scale their boxes were made in
-  QueryTree standing_vertices_;               // a tree only for its spatial order of queries
+  boxes::Scale standing_scale_;             // the scale their boxes were made in
+  QueryTree standing_vertices_;             // a tree only for its spatial order of queries
   QueryTree standing_edges_, standing_faces_;
 };
 

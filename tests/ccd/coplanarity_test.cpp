@@ -16,8 +16,8 @@
 
 #include "ccd/exact_polynomial.hpp"
 #include "ccd/query_transforms.hpp"
-#include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "exactgeo/ccd/files/query_files.hpp"
+#include "exactgeo/ccd/internal/boundary_image.hpp"
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 

@@ -28,8 +28,6 @@ using mesh::make_quad;
 using mesh::make_triangle;
 using mesh::Mesh;
 
-
-
 /// A closed torus of nu x nv quads with dyadic coordinates (at most about 24 significant
 /// bits), every vertex moved by random dyadic noise so most quads are skew; the first
 /// `flat_rings` rings are left planar (flat faces, rays in their planes).

@@ -60,7 +60,7 @@ Meets meets_cube(const Query& q, const ParameterBox& box, double delta) noexcept
 
 template <class Query>
 bool box_baseline(const Query& q, double delta, const SeparationBoxBaselineOptions& options,
-              bool triangle) noexcept {
+                  bool triangle) noexcept {
   std::vector<ParameterBox> stack{{{0, 0, 0}, {1, 1, 1}}};
   std::size_t boxes = 0;
   while (!stack.empty()) {
@@ -91,12 +91,12 @@ bool box_baseline(const Query& q, double delta, const SeparationBoxBaselineOptio
 }  // namespace
 
 bool vertex_face_separation_box_baseline(const VertexFaceQuery& query, double delta,
-                                     const SeparationBoxBaselineOptions& options) noexcept {
+                                         const SeparationBoxBaselineOptions& options) noexcept {
   return box_baseline(query, delta, options, true);
 }
 
 bool edge_edge_separation_box_baseline(const EdgeEdgeQuery& query, double delta,
-                                   const SeparationBoxBaselineOptions& options) noexcept {
+                                       const SeparationBoxBaselineOptions& options) noexcept {
   return box_baseline(query, delta, options, false);
 }
 

@@ -16,8 +16,8 @@
 
 namespace exactgeo::mesh {
 
-using exactgeo::VertexIndex;  // predicates/point.hpp
 using exactgeo::kNoVertex;    // predicates/point.hpp
+using exactgeo::VertexIndex;  // predicates/point.hpp
 
 struct Face {
   std::array<VertexIndex, 4> corners{kNoVertex, kNoVertex, kNoVertex, kNoVertex};

@@ -31,8 +31,8 @@ struct SeparationBoxBaselineOptions {
 
 /// Whether the primitives may come within δ in every coordinate at once during the step.
 bool vertex_face_separation_box_baseline(const VertexFaceQuery& query, double delta,
-                                     const SeparationBoxBaselineOptions& options = {}) noexcept;
+                                         const SeparationBoxBaselineOptions& options = {}) noexcept;
 bool edge_edge_separation_box_baseline(const EdgeEdgeQuery& query, double delta,
-                                   const SeparationBoxBaselineOptions& options = {}) noexcept;
+                                       const SeparationBoxBaselineOptions& options = {}) noexcept;
 
 }  // namespace exactgeo::ccd

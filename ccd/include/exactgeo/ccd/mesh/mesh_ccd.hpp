@@ -36,8 +36,8 @@
 
 namespace exactgeo::ccd {
 
-using exactgeo::VertexIndex;  // predicates/point.hpp
 using exactgeo::FaceIndex;    // predicates/point.hpp
+using exactgeo::VertexIndex;  // predicates/point.hpp
 using Triangle = std::array<VertexIndex, 3>;
 /// An edge with its smaller vertex first.
 using Edge = std::array<VertexIndex, 2>;
