@@ -42,9 +42,6 @@ void classify_batch(const Classifier& classifier, std::span<const Point3> points
 void winding_number_batch(const Classifier& classifier, std::span<const Point3> points,
                           std::span<std::optional<std::int64_t>> windings, Arithmetic arithmetic,
                           unsigned threads) {
-  if (!classifier.oriented() && !points.empty()) {
-    (void)classifier.winding_number(points[0], arithmetic);  // throws what it says
-  }
   classify_in_blocks(
       points, windings, threads,
       [&classifier, arithmetic, scratch = ClassifierScratch{}](const Point3& point) mutable {

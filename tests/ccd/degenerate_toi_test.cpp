@@ -14,6 +14,7 @@
 #include <string>
 
 #include "ccd/query_transforms.hpp"
+#include "ccd/run_query.hpp"
 #include "ccd/separation/min_separation_oracle.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "support/generators.hpp"
@@ -119,13 +120,6 @@ std::string describe(Kind kind, Layout layout, int k, int i) {
   static constexpr const char* kLayouts[] = {"plane", "tilted plane", "space"};
   return std::string(kKinds[int(kind)]) + " in " + kLayouts[int(layout)] + " at 2^" +
          std::to_string(k) + " #" + std::to_string(i);
-}
-
-Result run(const VertexFaceQuery& q, const Options& o) {
-  return vertex_face_ccd(q, o);
-}
-Result run(const EdgeEdgeQuery& q, const Options& o) {
-  return edge_edge_ccd(q, o);
 }
 
 struct Tally {

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/mesh/check.hpp"
@@ -225,6 +226,10 @@ TEST(WindingNumber, UnorientedMeshesAreForParityOnly) {
   EXPECT_EQ(classifier.classify({1.5, 0.25, 0.75}), Location::outside);
   EXPECT_EQ(classifier.classify({1, 0.25, 0.75}), Location::boundary);
   EXPECT_THROW((void)classifier.winding_number({0.5, 0.25, 0.75}), std::logic_error);
+  const std::vector<Point3> points(1500, Point3{0.5, 0.25, 0.75});
+  std::vector<std::optional<std::int64_t>> windings(points.size());
+  EXPECT_THROW(winding_number_batch(classifier, points, windings, Arithmetic::exact, 2),
+               std::logic_error);
 }
 
 /// An open box is refused by every rule, as not closed.

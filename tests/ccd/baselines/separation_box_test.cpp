@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "ccd/query_transforms.hpp"
+#include "ccd/run_query.hpp"
 #include "ccd/separation/sampled_distance.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "support/generators.hpp"
@@ -16,17 +17,6 @@ namespace exactgeo::ccd {
 namespace {
 
 using testing::Rng;
-
-Result separated(const VertexFaceQuery& q, double delta) {
-  Options o;
-  o.min_separation = delta;
-  return vertex_face_ccd(q, o);
-}
-Result separated(const EdgeEdgeQuery& q, double delta) {
-  Options o;
-  o.min_separation = delta;
-  return edge_edge_ccd(q, o);
-}
 
 /// The baseline box test is conservative: every pair within δ is a yes. It also says yes
 /// for a pair up to sqrt(3) δ apart (the cube's corner), which the exact method rejects.

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "ccd/query_transforms.hpp"
+#include "ccd/run_query.hpp"
 #include "ccd/separation/min_separation_oracle.hpp"
 #include "ccd/separation/sampled_distance.hpp"
 #include "exactgeo/ccd/ccd.hpp"
@@ -31,24 +32,6 @@ namespace exactgeo::ccd {
 namespace {
 
 using testing::Rng;
-
-Result run(const VertexFaceQuery& q, const Options& o) {
-  return vertex_face_ccd(q, o);
-}
-Result run(const EdgeEdgeQuery& q, const Options& o) {
-  return edge_edge_ccd(q, o);
-}
-
-Result separated(const VertexFaceQuery& q, double delta) {
-  Options o;
-  o.min_separation = delta;
-  return vertex_face_ccd(q, o);
-}
-Result separated(const EdgeEdgeQuery& q, double delta) {
-  Options o;
-  o.min_separation = delta;
-  return edge_edge_ccd(q, o);
-}
 
 template <class Query>
 void expect_as_oracle(const Query& q, double delta, const std::string& what, int& within,
@@ -246,8 +229,8 @@ TEST(MinSeparation, UnderflowingDeltaSquaredIsNotAProof) {
 /// plane facing where it came from has every end corner on its far side, as in the case
 /// above); δ is 2^k times 1/4 to 4. So δ^2 and many products underflow while the step's
 /// start is at magnitude 1. Every answer is the oracle's, and a separation the cheap
-/// tests prove (separation_apart) is one. (The oracle takes about 0.2 s per query at these
-/// magnitudes, the library well under a millisecond: few queries.)
+/// tests prove (separation_apart) is one. (The oracle is slow at these magnitudes, the
+/// library is not: few queries.)
 template <class Query>
 void tiny_separations_agree(const char* stream, int count) {
   Rng rng = testing::seeded_engine(stream);

@@ -20,7 +20,7 @@ void classify_batch(const Classifier& classifier, std::span<const Point3> points
                     std::span<Location> locations, Arithmetic arithmetic, unsigned threads = 0);
 
 /// Writes winding_number(points[i]) into windings[i] (nullopt: on the surface) for every
-/// i, the same way. Throws std::logic_error, before any work, when the classifier's mesh
+/// i, the same way. Rethrows winding_number's std::logic_error when the classifier's mesh
 /// has no winding numbers (Classifier::oriented).
 void winding_number_batch(const Classifier& classifier, std::span<const Point3> points,
                           std::span<std::optional<std::int64_t>> windings, Arithmetic arithmetic,
