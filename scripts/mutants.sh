@@ -118,6 +118,15 @@ MUTANTS = [
      "  const double v = a.value - b.value;\n"
      "  return {v, (a.error + b.error) * BoundedDouble::kGrow};",
      ["ccd_tests"]),
+    ("plane_normal_not_unit_scaled",
+     "ccd/src/separation/min_separation.cpp",
+     "  const Vector3 n = unit_scaled(closest);", "  const Vector3 n = closest;",
+     ["ccd_tests"]),
+    ("plane_margin_without_its_absolute_term",
+     "ccd/src/separation/min_separation.cpp",
+     "  const double bound = delta * delta * nn * (1.0 + 16 * u) + tiny;",
+     "  const double bound = delta * delta * nn * (1.0 + 16 * u);",
+     ["ccd_tests"]),
     # Parity cannot see these: a crossing's sign is all they get wrong.
     ("triangle_crossing_counted_positive",
      "predicates/include/exactgeo/predicates/internal/ray_patch_core.hpp",
