@@ -60,6 +60,7 @@ void write_info_json(std::ostream& out, const std::string& file, const InfoFindi
       << (c.consistently_oriented ? (*c.consistently_oriented ? "true" : "false") : "null")
       << ", \"unbalanced_edges\": " << c.unbalanced_edges.count
       << ", \"degenerate_faces\": " << c.degenerate_faces.count
+      << ", \"zero_area_faces\": " << c.zero_area_faces.count
       << ", \"non_planar_quads\": " << c.non_planar_quads.count
       << ", \"unreferenced_vertices\": " << c.unreferenced_vertices
       << ", \"components\": " << c.components;
@@ -146,12 +147,18 @@ void write_info_table(std::ostream& out, const std::string& file, const InfoFind
           ? std::string("defined (every edge used as often in each direction)")
           : "not defined: " + plural(c.unbalanced_edges.count, "edge is", "edges are") +
                 " used more often in one direction than in the other");
-  row("degenerate faces", std::to_string(c.degenerate_faces.count));
+  row("degenerate faces", std::to_string(c.degenerate_faces.count) + " (" +
+                              std::to_string(c.zero_area_faces.count) + " of zero area)");
   row("non-planar quads", std::to_string(c.non_planar_quads.count));
   row("unreferenced", std::to_string(c.unreferenced_vertices) + " vertices");
   row("components", std::to_string(c.components));
   row("self-intersection", self_intersection_text(f));
-  out << "usable for `exactgeo inside`: " << (f.problem ? "no: " + *f.problem : "yes") << "\n";
+  const auto zero_area = mesh::zero_area_note(c.zero_area_faces, f.loaded.first_index());
+  out << "usable for `exactgeo inside`: "
+      << (f.problem   ? "no: " + *f.problem
+          : zero_area ? "yes; " + *zero_area
+                      : "yes")
+      << "\n";
   if (f.marks) out << legend_text(*f.marks, mark_path);
 }
 

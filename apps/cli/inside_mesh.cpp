@@ -124,6 +124,13 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       built.classifier.emplace(std::move(loaded.mesh), classifier_options);
     }
     built.seconds = seconds_since(start);
+    if (built.classifier) {
+      if (const auto note =
+              mesh::zero_area_note(built.classifier->zero_area_faces(), first_index)) {
+        if (progress) progress->clear();
+        err << "exactgeo inside: note: " << source << ": " << *note << "\n";
+      }
+    }
     if (built.classifier && !options.rule && !built.classifier->oriented()) {
       if (progress) progress->clear();
       err << "exactgeo inside: warning: " << source

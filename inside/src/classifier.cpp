@@ -35,6 +35,19 @@ std::vector<SurfaceFace> surface_faces(const mesh::Mesh& mesh) {
   return faces;
 }
 
+/// The mesh without its faces of zero area: they bound nothing and add no crossing, and
+/// a ray that met one would only be cast again. The edge counts are taken before, with
+/// them (a sliver closing a T-junction keeps the edges around it balanced).
+mesh::Mesh without_zero_area_faces(mesh::Mesh mesh, const mesh::MeshCheck& check) {
+  if (check.zero_area_faces.count == 0) return mesh;
+  std::size_t kept = 0;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!check.face_findings[f].zero_area) mesh.faces[kept++] = mesh.faces[f];
+  }
+  mesh.faces.resize(kept);
+  return mesh;
+}
+
 template <class Signs>
 std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
                                 std::span<const Point3> points) {
@@ -48,6 +61,7 @@ std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFac
 
 struct Classifier::State {
   mesh::Mesh mesh;
+  mesh::Examples<std::size_t> zero_area_faces;
   FillRule rule = FillRule::nonzero;
   bool oriented = false;
   mesh::Box box;
@@ -112,13 +126,14 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     throw std::invalid_argument(*problem);
   }
   State& s = *state_;
-  s.mesh = std::move(mesh);
+  s.mesh = without_zero_area_faces(std::move(mesh), check);
+  s.zero_area_faces = check.zero_area_faces;
   s.rule = rule;
   s.oriented = check.unbalanced_edges.count == 0;
   // The box of the faces' corners, not of every vertex: a vertex no face uses bounds
   // nothing. The candidate search's float frame and the space cells are built on this one
   // box, and both need every point they are asked about to lie in it (classify answers
-  // the points outside it first). A closed mesh has faces, so the box exists.
+  // the points outside it first). The checks leave a face of nonzero area, so it exists.
   s.box = *internal::corner_box(s.mesh);
   s.faces = surface_faces(s.mesh);
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
@@ -143,6 +158,10 @@ std::optional<Classifier::CellSummary> Classifier::space_cells() const noexcept 
   if (!state_->cells) return std::nullopt;
   const internal::SpaceCells& c = *state_->cells;
   return CellSummary{c.resolution(), c.cells(), c.surface_cells(), c.components()};
+}
+
+const mesh::Examples<std::size_t>& Classifier::zero_area_faces() const noexcept {
+  return state_->zero_area_faces;
 }
 
 FillRule Classifier::rule() const noexcept {

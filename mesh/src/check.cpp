@@ -184,21 +184,19 @@ MeshCheck check_mesh(const Mesh& mesh) {
       if (a != b) uses.push_back({{std::min(a, b), std::max(a, b)}, a < b, f});
     }
 
-    if (repeated_corner(face)) {
-      check.degenerate_faces.add(f);
-      check.face_findings[f].degenerate = true;
-      continue;
-    }
-    if (!all_finite) continue;  // the exact predicates need finite coordinates
+    FaceFindings& findings = check.face_findings[f];
+    findings.degenerate = repeated_corner(face);
+    // The exact predicates need finite coordinates.
+    findings.zero_area = all_finite && zero_area(patch_of(mesh, face));
+    findings.degenerate = findings.degenerate || findings.zero_area;
+    if (findings.zero_area) check.zero_area_faces.add(f);
+    if (findings.degenerate) check.degenerate_faces.add(f);
+    if (findings.degenerate && !findings.zero_area) check.repeated_corner_faces.add(f);
+    if (findings.degenerate || !all_finite) continue;
     const BilinearPatch patch = patch_of(mesh, face);
     if (!face.is_triangle() && orient3d(patch.p00, patch.p10, patch.p11, patch.p01) != Sign::zero) {
       check.non_planar_quads.add(f);  // skew: never zero area
-      check.face_findings[f].non_planar = true;
-      continue;
-    }
-    if (zero_area(patch)) {
-      check.degenerate_faces.add(f);
-      check.face_findings[f].degenerate = true;
+      findings.non_planar = true;
     }
   }
 
@@ -236,7 +234,11 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
     return index_text(e.first).append("-").append(index_text(e.second));
   };
   std::vector<std::string> problems;
-  if (check.faces == 0) problems.emplace_back("mesh has no faces");
+  if (check.faces == 0) {
+    problems.emplace_back("mesh has no faces");
+  } else if (check.zero_area_faces.count == check.faces) {
+    problems.emplace_back("every face has zero area");
+  }
 
   if (const auto& bad = check.out_of_range_faces; bad.count > 0) {
     std::string s;
@@ -288,9 +290,9 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
         check.non_manifold_edges, edge_text, "used by more than two faces; "));
   }
 
-  if (const auto& bad = check.degenerate_faces; bad.count > 0) {
-    problems.push_back(
-        with_examples(counted(bad.count, "degenerate face", "degenerate faces"), bad, index_text));
+  if (const auto& bad = check.repeated_corner_faces; bad.count > 0) {
+    problems.push_back(with_examples(
+        counted(bad.count, "face repeats a corner", "faces repeat a corner"), bad, index_text));
   }
 
   if (problems.empty()) return std::nullopt;
@@ -339,6 +341,16 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, const 
 std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
                                                     const LoadedMesh& loaded) {
   return with_numbering(oriented_surface_problem(check, loaded.first_index()), loaded);
+}
+
+std::optional<std::string> zero_area_note(const Examples<std::size_t>& faces,
+                                          std::size_t first_index) {
+  if (faces.count == 0) return std::nullopt;
+  return with_examples(counted(faces.count, "face", "faces") + " of zero area", faces,
+                       [first_index](std::size_t f) { return std::to_string(f + first_index); }) +
+         (faces.count == 1 ? " bounds" : " bound") + " nothing: dropped" +
+         (first_index == 1 ? " (faces numbered from 1, as in the file)"
+                           : " (faces numbered from 0)");
 }
 
 std::optional<std::string> self_intersection_problem(const SelfIntersections& found,

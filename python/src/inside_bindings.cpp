@@ -128,6 +128,9 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
     throw py::value_error(message);
   }
   // What the command line says on stderr, Python says as warnings.
+  if (const auto note = mesh::zero_area_note(built->zero_area_faces(), 0)) {
+    warn(*note);
+  }
   if (!options.rule && !built->oriented()) {
     warn(
         "the faces are not oriented alike (some edge is used more often in one direction "

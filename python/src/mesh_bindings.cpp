@@ -161,6 +161,7 @@ py::dict info_of(const MeshObject& object) {
       c.consistently_oriented ? py::object(py::bool_(*c.consistently_oriented)) : py::none();
   info["unbalanced_edges"] = c.unbalanced_edges.count;
   info["degenerate_faces"] = c.degenerate_faces.count;
+  info["zero_area_faces"] = c.zero_area_faces.count;
   info["non_planar_quads"] = c.non_planar_quads.count;
   info["unreferenced_vertices"] = c.unreferenced_vertices;
   info["components"] = c.components;

@@ -433,11 +433,18 @@ message=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/oneface1.obj" 2>&1 >/
 case "$message" in
   *--weld*) echo "FAIL: a mesh that welding cannot close got the --weld hint: $message"; failures=$((failures + 1)) ;;
 esac
+# A tetrahedron with a flat sliver closing a T-junction on edge 1-2 (vertex 5 is its
+# midpoint): the sliver has zero area, is dropped, and the note says which face it was.
+printf 'v 0 0 0\nv 2 0 0\nv 0 2 0\nv 0 0 2\nv 1 0 0\nf 1 3 2\nf 1 5 4\nf 5 2 4\nf 2 3 4\nf 3 1 4\nf 1 2 5\n' >"$scratch/sliver.obj"
+out=$(printf '0.2 0.2 0.2\n3 3 3\n1 0 0\n' | "$exe" inside "$scratch/sliver.obj" 2>"$scratch/sliver.err")
+[ "$out" = "$(printf 'inside\noutside\nboundary')" ] || { echo "FAIL: inside with a zero-area face: $out"; failures=$((failures + 1)); }
+expect_in "inside zero-area note" "$(cat "$scratch/sliver.err")" \
+  "sliver.obj: 1 face of zero area (first: 6) bounds nothing: dropped (faces numbered from 1, as in the file)"
 # info numbers an OBJ's vertices and faces as the file does, and says so.
-printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n' >"$scratch/degenerate.obj"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 3\n' >"$scratch/degenerate.obj"
 message=$("$exe" info "$scratch/degenerate.obj")
-expect_in "info OBJ numbering" "$message" "1 degenerate face (first: 1) (vertices and faces numbered from 1, as in the file)"
-printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 1\n' >"$scratch/degenerate.off"
+expect_in "info OBJ numbering" "$message" "1 face repeats a corner (first: 1) (vertices and faces numbered from 1, as in the file)"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 2\n' >"$scratch/degenerate.off"
 message=$("$exe" info "$scratch/degenerate.off")
 expect_in "info OFF numbering" "$message" "(first: 0) (vertices and faces numbered from 0)"
 

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -19,7 +18,7 @@
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
-#include "support/hexahedron.hpp"
+#include "inside/scaled_cube.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::inside {
@@ -27,38 +26,9 @@ namespace {
 
 using mesh::Mesh;
 
-std::string hex(const Point3& p) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p[0], p[1], p[2]);
-  return buf;
-}
-
-/// The cube [0, 2^k]^3, as six quads or as twelve triangles.
-Mesh scaled_cube(int k, bool triangles) {
-  Mesh mesh;
-  for (const Point3& c : testing::unit_cube_corners())
-    mesh.vertices.push_back({std::ldexp(c[0], k), std::ldexp(c[1], k), std::ldexp(c[2], k)});
-  for (const auto& f : testing::kHexahedronFaces) {
-    if (triangles) {
-      mesh.faces.push_back(mesh::make_triangle(f[0], f[1], f[2]));
-      mesh.faces.push_back(mesh::make_triangle(f[0], f[2], f[3]));
-    } else {
-      mesh.faces.push_back(mesh::make_quad(f[0], f[1], f[2], f[3]));
-    }
-  }
-  return mesh;
-}
-
-/// The exact label of p against the cube [0, 2^k]^3.
-Location cube_truth(const Point3& p, int k) {
-  const double side = std::ldexp(1.0, k);
-  bool on_surface = false;
-  for (const double x : p) {
-    if (x < 0 || x > side) return Location::outside;
-    on_surface = on_surface || x == 0 || x == side;
-  }
-  return on_surface ? Location::boundary : Location::inside;
-}
+using testing::cube_truth;
+using testing::hex;
+using testing::scaled_cube;
 
 TEST(UnusedVertices, AFarUnusedVertexIsOutsideTheCube) {
   // The reported case: a unit cube of twelve triangles and one vertex no face uses.

@@ -231,14 +231,28 @@ TEST(MeshCheck, DegenerateFaces) {
   const MeshCheck c = check_mesh(mesh);
   EXPECT_EQ(c.degenerate_faces.count, 5u);
   EXPECT_EQ(c.degenerate_faces.first, (std::vector<std::size_t>{1, 2, 3, 7, 8}));
+  // Face 1 is a triangle written as a quad: it repeats a corner but spans an area.
+  EXPECT_EQ(c.zero_area_faces.first, (std::vector<std::size_t>{2, 3, 7, 8}));
+  EXPECT_EQ(c.repeated_corner_faces.first, (std::vector<std::size_t>{1}));
   EXPECT_EQ(c.non_planar_quads.count, 0u);
+  // Classification drops the faces of zero area and refuses the other.
   const std::string message = closed_surface_problem(c).value_or("");
-  EXPECT_NE(message.find("5 degenerate faces (first: 1, 2, 3, 7, 8)"), std::string::npos)
-      << message;
+  EXPECT_NE(message.find("1 face repeats a corner (first: 1)"), std::string::npos) << message;
+  EXPECT_EQ(message.find("zero area"), std::string::npos) << message;
   // Numbered as an OBJ file numbers them, from 1.
   const std::string from_one = closed_surface_problem(c, false, 1).value_or("");
-  EXPECT_NE(from_one.find("5 degenerate faces (first: 2, 3, 4, 8, 9)"), std::string::npos)
-      << from_one;
+  EXPECT_NE(from_one.find("1 face repeats a corner (first: 2)"), std::string::npos) << from_one;
+  EXPECT_EQ(zero_area_note(c.zero_area_faces, 1),
+            "4 faces of zero area (first: 3, 4, 8, 9) bound nothing: dropped (faces numbered from "
+            "1, as in the file)");
+}
+
+TEST(MeshCheck, OnlyZeroAreaFaces) {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 1, 1}, {3, 3, 3}};
+  mesh.faces = {make_triangle(0, 1, 2), make_triangle(0, 2, 1)};
+  EXPECT_EQ(closed_surface_problem(check_mesh(mesh)), "every face has zero area");
+  EXPECT_EQ(oriented_surface_problem(check_mesh(mesh)), "every face has zero area");
 }
 
 /// The faces whose findings have `flag` set.
@@ -318,7 +332,10 @@ TEST(MeshCheck, DegenerateFacesInAClosedMesh) {
   EXPECT_EQ(c.quads, 6u);
   EXPECT_EQ(c.components, 2u);
   EXPECT_EQ(c.degenerate_faces.first, (std::vector<std::size_t>{6, 7}));
-  EXPECT_EQ(problem(mesh), "2 degenerate faces (first: 6, 7)");
+  EXPECT_EQ(c.zero_area_faces.first, (std::vector<std::size_t>{6, 7}));
+  EXPECT_EQ(problem(mesh), "");  // dropped by classification, not refused
+  EXPECT_EQ(zero_area_note(c.zero_area_faces, 0),
+            "2 faces of zero area (first: 6, 7) bound nothing: dropped (faces numbered from 0)");
 }
 
 TEST(MeshCheck, OutOfRangeIndex) {

@@ -115,3 +115,22 @@ def test_rules_match_the_command_line(cli, tmp_path, rng, rule):
                    "--no-self-intersection-check", stdin=points_text(points))
     assert done.returncode == 0, done.stderr
     assert [int(w) for w in done.stdout.split()] == list(truth(points, placements))
+
+
+def test_zero_area_faces_are_dropped_with_a_warning(rng):
+    # The cube as triangles, and a flat triangle on three collinear points with its reverse:
+    # they bound nothing, so the labels are the cube's.
+    triangles = [[q[0], q[1], q[2]] for q in CUBE_QUADS] + [[q[0], q[2], q[3]] for q in CUBE_QUADS]
+    line = np.array([[0.5, 0.5, -1.0], [0.5, 0.5, 0.5], [0.5, 0.5, 2.0]])
+    vertices = np.vstack([CUBE_VERTICES, line])
+    triangles += [[8, 9, 10], [8, 10, 9]]
+    mesh = exactgeo.Mesh(vertices, np.array(triangles, np.int64))
+    assert mesh.info()["zero_area_faces"] == 2
+    with pytest.warns(UserWarning, match=r"2 faces of zero area \(first: 12, 13\) bound "
+                                         r"nothing: dropped \(faces numbered from 0\)"):
+        classifier = exactgeo.Classifier(mesh)
+    points = np.vstack([rng.uniform(-0.5, 1.5, (500, 3)), line])
+    expected = np.where(np.all((points > 0) & (points < 1), axis=1), exactgeo.INSIDE,
+                        exactgeo.OUTSIDE)
+    expected[-2] = exactgeo.INSIDE  # the line's middle point: inside the cube, off the faces
+    assert np.array_equal(classifier.classify(points), expected)

@@ -3,7 +3,8 @@
 // Exact point-in-volume classification against a closed mesh of bilinear patches and
 // triangles (the inside semantics of docs/architecture.md, "Contracts").
 //
-// A point is `boundary` if it lies exactly on a face, else `inside` or `outside` by its
+// A point is `boundary` if it lies exactly on a face (faces of zero area bound nothing
+// and are dropped), else `inside` or `outside` by its
 // winding number and the fill rule (fill_rule.hpp): the signed count of the crossings of
 // a ray from it with the faces. Rays follow the fixed sequence of
 // exactgeo/predicates/ray_directions.hpp; a ray that meets a face's edge or vertex, or
@@ -20,6 +21,7 @@
 
 #include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
+#include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/point.hpp"
@@ -86,7 +88,10 @@ class Classifier {
   /// nullopt, a point on the surface).
   Location location_of(const std::optional<std::int64_t>& winding) const noexcept;
 
+  /// The mesh classified against: the one given, without its faces of zero area.
   const mesh::Mesh& mesh() const noexcept;
+  /// The faces of zero area that were dropped (indices into the mesh given).
+  const mesh::Examples<std::size_t>& zero_area_faces() const noexcept;
   FillRule rule() const noexcept;
   /// Every edge used as often in each direction: winding numbers are defined.
   bool oriented() const noexcept;

@@ -41,6 +41,7 @@ struct FaceFindings {
   bool boundary_edge = false;      ///< one of its edges is used by no other face
   bool non_manifold_edge = false;  ///< one of its edges is used by more than two faces
   bool degenerate = false;         ///< as in MeshCheck::degenerate_faces
+  bool zero_area = false;          ///< as in MeshCheck::zero_area_faces
   bool non_planar = false;         ///< a quad whose corners are not coplanar (exact)
 };
 
@@ -62,6 +63,12 @@ struct MeshCheck {
   /// however they intersect (an edge of four faces, two each way, is balanced).
   Examples<Edge> unbalanced_edges;
   Examples<std::size_t> degenerate_faces;  ///< a repeated corner index, or zero area (exact)
+  /// Of zero area (exact): a segment or a point. They bound nothing, so classification
+  /// drops them (after the edge counts, which they keep balanced).
+  Examples<std::size_t> zero_area_faces;
+  /// A repeated corner index in a face that still spans an area (a quad a, b, c, c is a
+  /// triangle written as a quad), which classification does not take.
+  Examples<std::size_t> repeated_corner_faces;
   Examples<std::size_t> non_planar_quads;  ///< corners not coplanar (exact orient3d)
   std::size_t unreferenced_vertices = 0;
   std::size_t components = 0;  ///< connected through shared vertices
@@ -85,7 +92,8 @@ MeshCheck check_mesh(const Mesh& mesh);
 /// What keeps the mesh from bounding a solid that crossing parity can classify points
 /// against (exactgeo::inside), as one message with counts and the first few indices, or
 /// nullopt if nothing does: no out-of-range index,
-/// finite coordinates, at least one face, no degenerate face, every edge shared by an
+/// finite coordinates, at least one face of nonzero area, no repeated corner in a face
+/// with an area (faces of zero area are dropped, not refused), every edge shared by an
 /// even number of faces, and (unless allow_non_manifold) by exactly two. Vertices and
 /// faces are numbered from `first_index` in the message (0 as in the Mesh; 1 as in an OBJ
 /// file).
@@ -106,6 +114,12 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, const 
                                                   bool allow_non_manifold = false);
 std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
                                                     const LoadedMesh& loaded);
+
+/// What classification does with the faces of zero area, if there are any: "3 faces of
+/// zero area (first: 4, 9, 11) bound nothing: dropped", numbered from `first_index`
+/// (saying which).
+std::optional<std::string> zero_area_note(const Examples<std::size_t>& zero_area_faces,
+                                          std::size_t first_index);
 
 /// What find_self_intersections found, as one message with faces numbered from
 /// `first_index` (LoadedMesh::first_index: the file's own numbering), e.g. "3 pairs of
