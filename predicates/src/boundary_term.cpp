@@ -1,0 +1,259 @@
+#include "exactgeo/predicates/boundary_term.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "double_interval.hpp"
+#include "exactgeo/predicates/kernel/signs.hpp"
+#include "mpfr_interval.hpp"
+
+// The derivation, the branch cut and why corners bound the angle: boundary_term.hpp.
+
+namespace exactgeo {
+namespace {
+
+using internal::DoubleInterval;
+using internal::MpfrInterval;
+using kernel::Offset;
+
+/// The C library's atan2 is trusted to this many radians (boundary_term.hpp).
+constexpr double kAtan2Error = 0x1p-45;
+
+// ---- What each interval type does its own way ------------------------------------------
+
+/// How one stage builds and reads its numbers.
+struct DoubleStage {
+  using Number = DoubleInterval;
+  Number exact(double x) const noexcept { return Number::exact(x); }
+  Number difference(double a, double b) const noexcept { return Number::difference(a, b); }
+  Number two_pi() const noexcept {
+    // M_PI is pi rounded down (pi = 0x1.921fb54442d18469...p+1); doubling is exact.
+    constexpr double pi_below = 0x1.921fb54442d18p+1;
+    return {2 * pi_below, 2 * DoubleInterval::up(pi_below)};
+  }
+  /// Each vector scaled by a power of two so that its largest bound is in [1, 2): solid
+  /// angles depend only on the vectors' directions, and the products below then neither
+  /// overflow nor lose their relative accuracy to underflow. A scaling that rounds (a
+  /// component pushed below 2^-1022) widens its bounds.
+  void normalize(std::array<Number, 3>& v) const noexcept {
+    double largest = 0.0;
+    for (const Number& x : v)
+      largest = std::max({largest, std::abs(x.lo), std::abs(x.hi)});
+    if (largest == 0.0 || !std::isfinite(largest)) return;
+    const int shift = -std::ilogb(largest);
+    for (Number& x : v) {
+      for (double* bound : {&x.lo, &x.hi}) {
+        const double scaled = std::ldexp(*bound, shift);
+        if (std::ldexp(scaled, -shift) == *bound) {
+          *bound = scaled;
+        } else {
+          *bound = bound == &x.lo ? DoubleInterval::down(scaled) : DoubleInterval::up(scaled);
+        }
+      }
+    }
+  }
+  bool usable(const Number& x) const noexcept { return x.finite(); }
+  int lower_sign(const Number& x) const noexcept { return (x.lo > 0) - (x.lo < 0); }
+  int upper_sign(const Number& x) const noexcept { return (x.hi > 0) - (x.hi < 0); }
+  /// The lower (upper) bound replaced by a zero of sign `zero_sign`.
+  Number with_lower_zero(Number x, int zero_sign) const noexcept {
+    x.lo = std::copysign(0.0, zero_sign);
+    return x;
+  }
+  Number with_upper_zero(Number x, int zero_sign) const noexcept {
+    x.hi = std::copysign(0.0, zero_sign);
+    return x;
+  }
+  /// The angles of the box y x x, from its corners.
+  Number corner_angles(const Number& y, const Number& x) const noexcept {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const double yy : {y.lo, y.hi}) {
+      for (const double xx : {x.lo, x.hi}) {
+        const double angle = std::atan2(yy, xx);
+        lo = std::min(lo, angle);
+        hi = std::max(hi, angle);
+      }
+    }
+    return {DoubleInterval::down(lo - kAtan2Error), DoubleInterval::up(hi + kAtan2Error)};
+  }
+  Enclosure enclosure(const Number& x) const noexcept { return {x.lo, x.hi}; }
+  Versus versus(const Number& x, double level) const noexcept {
+    return x.hi < level ? Versus::below : x.lo > level ? Versus::above : Versus::unsure;
+  }
+};
+
+struct MpfrStage {
+  using Number = MpfrInterval;
+  mpfr_prec_t precision;
+
+  Number exact(double x) const { return Number::exact(x, precision); }
+  Number difference(double a, double b) const { return Number::difference(a, b, precision); }
+  Number two_pi() const { return Number::two_pi(precision); }
+  void normalize(std::array<Number, 3>&) const noexcept {}  // no overflow to fear
+  bool usable(const Number&) const noexcept { return true; }
+  int lower_sign(const Number& x) const noexcept { return mpfr_sgn(x.lo()); }
+  int upper_sign(const Number& x) const noexcept { return mpfr_sgn(x.hi()); }
+  Number with_lower_zero(Number x, int zero_sign) const {
+    mpfr_set_zero(x.lo(), zero_sign);
+    return x;
+  }
+  Number with_upper_zero(Number x, int zero_sign) const {
+    mpfr_set_zero(x.hi(), zero_sign);
+    return x;
+  }
+  Number corner_angles(const Number& y, const Number& x) const {
+    Number angles(precision);
+    mpfr_t t;
+    mpfr_init2(t, precision);
+    bool first = true;
+    for (const auto* yy : {y.lo(), y.hi()}) {
+      for (const auto* xx : {x.lo(), x.hi()}) {
+        mpfr_atan2(t, yy, xx, MPFR_RNDD);
+        if (first || mpfr_less_p(t, angles.lo())) mpfr_set(angles.lo(), t, MPFR_RNDD);
+        mpfr_atan2(t, yy, xx, MPFR_RNDU);
+        if (first || mpfr_greater_p(t, angles.hi())) mpfr_set(angles.hi(), t, MPFR_RNDU);
+        first = false;
+      }
+    }
+    mpfr_clear(t);
+    return angles;
+  }
+  Enclosure enclosure(const Number& x) const {
+    return {mpfr_get_d(x.lo(), MPFR_RNDD), mpfr_get_d(x.hi(), MPFR_RNDU)};
+  }
+  Versus versus(const Number& x, double level) const {
+    return mpfr_cmp_d(x.hi(), level) < 0   ? Versus::below
+           : mpfr_cmp_d(x.lo(), level) > 0 ? Versus::above
+                                           : Versus::unsure;
+  }
+};
+
+// ---- The algorithm, once for every stage ------------------------------------------------
+
+template <class N>
+N dot(const std::array<N, 3>& a, const std::array<N, 3>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+template <class N>
+N det3(const std::array<N, 3>& a, const std::array<N, 3>& b, const std::array<N, 3>& c) {
+  const std::array<N, 3> b_cross_c{b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2],
+                                   b[0] * c[1] - b[1] * c[0]};
+  return dot(a, b_cross_c);
+}
+
+/// Is the point on the closed segment [a, b]? Exact: A = a - p and B = b - p parallel
+/// (A x B = 0) and not pointing the same way (A.B <= 0).
+bool on_segment(const Point3& p, const Point3& a, const Point3& b) noexcept {
+  const kernel::ExactSigns signs;
+  const Offset pa = Offset::between(p, a), pb = Offset::between(p, b);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (signs.cross2(axis, pa, pb) != Sign::zero) return false;
+  }
+  return signs.dot3(pa, pb) != Sign::positive;
+}
+
+/// The half angle atan2(num, den) over the box num x den, or why there is none.
+template <class Stage>
+std::optional<typename Stage::Number> half_angle(const Stage& stage,
+                                                 const typename Stage::Number& num,
+                                                 const typename Stage::Number& den, const Point3& p,
+                                                 const Point3& a, const Point3& b,
+                                                 const Vector3& apex, BoundaryTermKind& why) {
+  const bool num_positive = stage.lower_sign(num) > 0, num_negative = stage.upper_sign(num) < 0;
+  // In an open half plane (upper, lower, right) the angles run continuously.
+  if (num_positive || num_negative || stage.lower_sign(den) > 0) {
+    return stage.corner_angles(num, den);
+  }
+  if (stage.upper_sign(den) < 0) {
+    // The box straddles the branch cut: the exact sign of num = det[a - p, b - p, apex]
+    // says on which side of it the point is.
+    const Sign side = kernel::ExactSigns{}.det3_by_vector(
+        Offset::between(p, a), Offset::between(p, b), Offset::vector(apex));
+    if (side == Sign::zero) {
+      why = BoundaryTermKind::ray_on_edge;
+      return std::nullopt;
+    }
+    return side == Sign::positive ? stage.corner_angles(stage.with_lower_zero(num, +1), den)
+                                  : stage.corner_angles(stage.with_upper_zero(num, -1), den);
+  }
+  // The box holds the origin.
+  why = on_segment(p, a, b) ? BoundaryTermKind::point_on_edge : BoundaryTermKind::undecided;
+  return std::nullopt;
+}
+
+template <class Stage>
+BoundaryTerm term_at(const Stage& stage, const Point3& p, const Vector3& apex,
+                     std::span<const Point3> vertices, std::span<const BoundaryEdge> edges,
+                     std::array<double, 2> levels) {
+  using Number = typename Stage::Number;
+  const auto vector = [&](const Point3& head) {
+    std::array<Number, 3> v{stage.difference(head[0], p[0]), stage.difference(head[1], p[1]),
+                            stage.difference(head[2], p[2])};
+    stage.normalize(v);
+    return v;
+  };
+  std::array<Number, 3> d{stage.exact(apex[0]), stage.exact(apex[1]), stage.exact(apex[2])};
+  stage.normalize(d);
+  const Number length_d = sqrt(dot(d, d));
+  Number total = stage.exact(0.0);
+  for (const BoundaryEdge& edge : edges) {
+    const Point3& a = vertices[edge.from];
+    const Point3& b = vertices[edge.to];
+    const std::array<Number, 3> va = vector(a), vb = vector(b);
+    const Number num = det3(va, vb, d);
+    const Number length_a = sqrt(dot(va, va)), length_b = sqrt(dot(vb, vb));
+    const Number den = length_a * length_b * length_d + dot(va, vb) * length_d +
+                       dot(va, d) * length_b + dot(vb, d) * length_a;
+    if (!stage.usable(num) || !stage.usable(den)) return {BoundaryTermKind::undecided, {}};
+    BoundaryTermKind why = BoundaryTermKind::undecided;
+    const std::optional<Number> theta = half_angle(stage, num, den, p, a, b, apex, why);
+    if (!theta) return {why, {}};
+    total = total + *theta * stage.exact(edge.multiplicity);
+  }
+  // Omega / 4 pi = 2 theta / 4 pi = theta / 2 pi.
+  const Number turns = total / stage.two_pi();
+  if (!stage.usable(turns)) return {BoundaryTermKind::undecided, {}};
+  return {BoundaryTermKind::enclosed,
+          stage.enclosure(turns),
+          {stage.versus(turns, levels[0]), stage.versus(turns, levels[1])}};
+}
+
+}  // namespace
+
+BoundaryTerm boundary_term(const Point3& point, const Vector3& ray,
+                           std::span<const Point3> vertices, std::span<const BoundaryEdge> edges,
+                           unsigned precision_bits, std::array<double, 2> levels) {
+  const Vector3 apex{-ray[0], -ray[1], -ray[2]};  // the cone's vertex at infinity
+  if (precision_bits <= 53) return term_at(DoubleStage{}, point, apex, vertices, edges, levels);
+  return term_at(MpfrStage{static_cast<mpfr_prec_t>(precision_bits)}, point, apex, vertices, edges,
+                 levels);
+}
+
+double boundary_term_double(const Point3& point, const Vector3& ray,
+                            std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
+  const auto minus = [](const Point3& x, const Point3& y) {
+    return Vector3{x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+  };
+  const auto dot3 = [](const Vector3& x, const Vector3& y) {
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+  };
+  const Vector3 d{-ray[0], -ray[1], -ray[2]};
+  const double ld = std::sqrt(dot3(d, d));
+  double total = 0.0;
+  for (const BoundaryEdge& edge : edges) {
+    const Vector3 a = minus(vertices[edge.from], point), b = minus(vertices[edge.to], point);
+    const Vector3 bxd{b[1] * d[2] - b[2] * d[1], b[2] * d[0] - b[0] * d[2],
+                      b[0] * d[1] - b[1] * d[0]};
+    const double la = std::sqrt(dot3(a, a)), lb = std::sqrt(dot3(b, b));
+    const double den = la * lb * ld + dot3(a, b) * ld + dot3(a, d) * lb + dot3(b, d) * la;
+    total += edge.multiplicity * std::atan2(dot3(a, bxd), den);
+  }
+  return total / (2 * std::numbers::pi);
+}
+
+}  // namespace exactgeo
