@@ -46,6 +46,9 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
       inside::rule_problem(check, inside::rule_for(check, std::nullopt), false, loaded),
       {},
       {}};
+  if (!findings.problem) {
+    findings.problem = inside::face_soup_problem(loaded, std::nullopt, "--weld");
+  }
   if (check.geometry_checkable()) findings.self = mesh::find_self_intersections(loaded.mesh);
   if (mark_file) {
     findings.marks = info_marks(loaded.mesh, check, findings.self);

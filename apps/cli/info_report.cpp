@@ -153,12 +153,17 @@ void write_info_table(std::ostream& out, const std::string& file, const InfoFind
   row("unreferenced", std::to_string(c.unreferenced_vertices) + " vertices");
   row("components", std::to_string(c.components));
   row("self-intersection", self_intersection_text(f));
-  const auto zero_area = mesh::zero_area_note(c.zero_area_faces, f.loaded.first_index());
-  out << "usable for `exactgeo inside`: "
-      << (f.problem   ? "no: " + *f.problem
-          : zero_area ? "yes; " + *zero_area
-                      : "yes")
-      << "\n";
+  std::string usable = f.problem ? "no: " + *f.problem : "yes";
+  if (!f.problem && !c.closed() && c.unbalanced_edges.count > 0) {
+    usable += ", as an open surface (" + plural(c.unbalanced_edges.count, "edge", "edges") +
+              " run more often one way than the other): labelled by its generalized winding "
+              "number";
+  }
+  if (const auto zero_area = mesh::zero_area_note(c.zero_area_faces, f.loaded.first_index());
+      zero_area && !f.problem) {
+    usable += "; " + *zero_area;
+  }
+  out << "usable for `exactgeo inside`: " << usable << "\n";
   if (f.marks) out << legend_text(*f.marks, mark_path);
 }
 

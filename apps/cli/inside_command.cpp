@@ -36,7 +36,7 @@ constexpr std::size_t kBlockPoints = std::size_t{1} << 16;
 
 struct Tally {
   std::size_t points = 0;
-  std::array<std::size_t, 3> by_location{};  // indexed by inside::Location
+  inside::LocationCounts by_location;
   double seconds = 0.0;
   double read_seconds = 0.0;
 };
@@ -96,8 +96,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   if (options.winding && !built->classifier->oriented()) {
     progress.clear();
     err << "exactgeo inside: " << mesh::mesh_source_name(options.mesh.path)
-        << ": no winding numbers: the faces are not oriented alike (some edge is used more "
-           "often in one direction than in the other), so only parity labels are defined\n";
+        << (built->classifier->open()
+                ? ": no integer winding numbers: the surface is open, and its generalized "
+                  "winding numbers are real numbers (the labels, without --winding, are "
+                  "certified from them)\n"
+                : ": no winding numbers: the faces are not oriented alike (some edge is used "
+                  "more often in one direction than in the other), so only parity labels are "
+                  "defined\n");
     return ExitCode::input_error;
   }
   progress.phase("classifying");
@@ -135,7 +140,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       text.clear();
       for (std::size_t i = 0; i < block.size(); ++i) {
         const inside::Location l = locations[i];
-        ++tally.by_location[static_cast<std::size_t>(l)];
+        tally.by_location.add(l);
         if (!print_labels) continue;
         if (options.winding && windings[i]) {
           text.append(std::to_string(*windings[i]));
@@ -157,12 +162,11 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   progress.clear();
 
   if (options.json) {
-    const auto count = [&](inside::Location l) {
-      return tally.by_location[static_cast<std::size_t>(l)];
-    };
+    const auto count = [&](inside::Location l) { return tally.by_location[l]; };
     out << "{\"points\": " << tally.points << ", \"inside\": " << count(inside::Location::inside)
         << ", \"outside\": " << count(inside::Location::outside)
-        << ", \"boundary\": " << count(inside::Location::boundary) << ", \"method\": \""
+        << ", \"boundary\": " << count(inside::Location::boundary)
+        << ", \"undecided\": " << count(inside::Location::undecided) << ", \"method\": \""
         << method_name(options.mesh) << "\""
         << ", \"rule\": \"" << (built->classifier ? to_string(built->classifier->rule()) : "parity")
         << "\""

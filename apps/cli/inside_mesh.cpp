@@ -115,6 +115,9 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       built.float_rays.emplace(loaded.mesh);
       built.float_rays_mesh = std::move(loaded.mesh);
     } else {
+      if (auto problem = inside::face_soup_problem(loaded, options.rule, "--weld")) {
+        throw std::invalid_argument(*problem);
+      }
       inside::ClassifierOptions classifier_options;
       classifier_options.rule = options.rule;
       classifier_options.allow_non_manifold = options.allow_non_manifold;
@@ -131,7 +134,10 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
         err << "exactgeo inside: note: " << source << ": " << *note << "\n";
       }
     }
-    if (built.classifier && !options.rule && !built.classifier->oriented()) {
+    if (const auto note = built.classifier ? built.classifier->open_note() : std::nullopt) {
+      if (progress) progress->clear();
+      err << "exactgeo inside: note: " << source << ": " << *note << "\n";
+    } else if (built.classifier && !options.rule && !built.classifier->oriented()) {
       if (progress) progress->clear();
       err << "exactgeo inside: warning: " << source
           << ": the faces are not oriented alike (some edge is used more often in one direction "

@@ -65,10 +65,10 @@ ExitCode run_slice(const InsideMeshOptions& mesh_options, const SliceOptions& sl
   }
   const double png_seconds = seconds_since(start);
 
-  std::array<std::size_t, 3> by_location{};  // indexed by inside::Location
+  inside::LocationCounts by_location;
   for (const inside::Location l : labels)
-    ++by_location[static_cast<std::size_t>(l)];
-  const auto count = [&](inside::Location l) { return by_location[static_cast<std::size_t>(l)]; };
+    by_location.add(l);
+  const auto count = [&](inside::Location l) { return by_location[l]; };
   const std::size_t outline_count =
       static_cast<std::size_t>(std::count(outline.begin(), outline.end(), std::uint8_t{1}));
   const ImageAxes axes = image_axes(plane.axis);
@@ -89,6 +89,7 @@ ExitCode run_slice(const InsideMeshOptions& mesh_options, const SliceOptions& sl
         << ", \"inside\": " << count(inside::Location::inside)
         << ", \"outside\": " << count(inside::Location::outside)
         << ", \"boundary\": " << count(inside::Location::boundary)
+        << ", \"undecided\": " << count(inside::Location::undecided)
         << ", \"outline\": " << outline_count << ", \"method\": \"" << method << "\""
         << ", \"build_seconds\": " << built->seconds << ", \"seconds\": " << classify_seconds
         << ", \"outline_seconds\": " << outline_seconds << ", \"png_seconds\": " << png_seconds
@@ -102,8 +103,10 @@ ExitCode run_slice(const InsideMeshOptions& mesh_options, const SliceOptions& sl
     row("plane") << to_char(plane.axis) << " = " << shortest(plane.value);
     if (!meets_box) {
       report << " (outside the mesh's " << to_char(plane.axis) << " range ["
-             << shortest(grid.axis_lower) << ", " << shortest(grid.axis_upper)
-             << "]: every pixel is outside)";
+             << shortest(grid.axis_lower) << ", " << shortest(grid.axis_upper) << "]"
+             << (built->classifier && built->classifier->open()
+                     ? ": an open surface can still hold points there)"
+                     : ": every pixel is outside)");
     }
     report << "\n";
     row("right") << horizontal << " from " << shortest(grid.left) << " to " << shortest(right)
@@ -112,6 +115,9 @@ ExitCode run_slice(const InsideMeshOptions& mesh_options, const SliceOptions& sl
     row("inside") << count(inside::Location::inside) << " pixels (sky blue)\n";
     row("outside") << count(inside::Location::outside) << " pixels (white)\n";
     row("boundary") << count(inside::Location::boundary) << " pixels (vermillion)\n";
+    if (const std::size_t undecided = count(inside::Location::undecided); undecided > 0) {
+      row("undecided") << undecided << " pixels (reddish purple)\n";
+    }
     row("outline") << outline_count << " pixels (black, over inside and outside)\n";
     row("method") << method << "\n";
     row("seconds") << "build " << built->seconds << ", classify " << classify_seconds

@@ -245,6 +245,8 @@ PixelKind pixel_kind(inside::Location label, bool on_outline) noexcept {
   switch (label) {
     case inside::Location::boundary:
       return PixelKind::boundary;
+    case inside::Location::undecided:
+      return PixelKind::undecided;
     case inside::Location::inside:
       return on_outline ? PixelKind::outline : PixelKind::inside;
     case inside::Location::outside:
@@ -259,6 +261,8 @@ Rgb colour_of(PixelKind kind) noexcept {
       return {86, 180, 233};
     case PixelKind::boundary:
       return {213, 94, 0};
+    case PixelKind::undecided:
+      return {204, 121, 167};
     case PixelKind::outline:
       return {0, 0, 0};
     case PixelKind::outside:

@@ -71,11 +71,12 @@ std::vector<std::uint8_t> outline_pixels(const SliceGrid& grid, const mesh::Mesh
 
 /// What a pixel shows: its centre's label, except that the outline covers inside and
 /// outside pixels (never boundary ones, which are exact and rare).
-enum class PixelKind : std::uint8_t { outside, inside, boundary, outline };
+enum class PixelKind : std::uint8_t { outside, inside, boundary, undecided, outline };
 PixelKind pixel_kind(inside::Location label, bool on_outline) noexcept;
 
 /// The palette (Okabe and Ito's colour-blind-safe colours): outside white, inside sky blue
-/// (86, 180, 233), boundary vermillion (213, 94, 0), outline black.
+/// (86, 180, 233), boundary vermillion (213, 94, 0), undecided reddish purple (204, 121,
+/// 167), outline black.
 Rgb colour_of(PixelKind kind) noexcept;
 
 /// The picture. Precondition: labels and outline have grid.pixels() entries.

@@ -5,7 +5,9 @@
 
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
+#include "exactgeo/inside/internal/open_label.hpp"
 #include "exactgeo/inside/internal/space_cells.hpp"
+#include "exactgeo/mesh/boundary_chain.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/crossing_parity.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
@@ -22,6 +24,10 @@ constexpr std::size_t kExactDirections = std::size_t{1} << 25;
 /// Plain double signs can call every ray degenerate; after this many the point is called
 /// outside (a wrong answer is what that baseline may give).
 constexpr std::size_t kPlainDoubleDirections = 64;
+
+std::size_t max_rays(Arithmetic arithmetic) noexcept {
+  return arithmetic == Arithmetic::plain_double ? kPlainDoubleDirections : kExactDirections;
+}
 
 /// The mesh's faces as a face set over its vertices: quads as patches, in tensor order.
 std::vector<SurfaceFace> surface_faces(const mesh::Mesh& mesh) {
@@ -73,37 +79,68 @@ struct Classifier::State {
   std::vector<PatchSpan> double_spans;
   std::optional<internal::EmbreeCandidates> embree;
   std::optional<internal::SpaceCells> cells;
+  /// The boundary of an open surface (empty for a closed one), taken before the faces of
+  /// zero area were dropped, so that slivers closing T-junctions leave none.
+  std::vector<BoundaryEdge> boundary;
 
   PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
     return {faces, arithmetic == Arithmetic::plain_double ? double_spans : exact_spans};
   }
 };
 
+template <class Signs>
+SignedRayCount Classifier::count_ray(const State& s, const Signs& signs, Arithmetic arithmetic,
+                                     const Point3& point, std::size_t k,
+                                     ClassifierScratch& scratch) {
+  if (s.embree && k < kFloatExactRayDirections) {
+    s.embree->find(point, k, scratch.candidates);
+  } else {
+    internal::all_faces(s.mesh, scratch.candidates);
+  }
+  const auto corner = [&](VertexIndex i) {
+    return kernel::Offset::between(point, s.mesh.vertices[i]);
+  };
+  const Vector3 direction = ray_direction(k);
+  return count_signed_crossings(signs, s.prepared(arithmetic), scratch.candidates, corner,
+                                kernel::Offset::vector(direction));
+}
+
 /// The signed crossing count of `point` along the ray sequence, Embree proposing the
 /// candidate faces. Precondition: point in s.box, the closed box of the faces' corners.
 std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& point,
                                                   Arithmetic arithmetic,
                                                   ClassifierScratch& scratch) {
-  const PreparedFaces faces = s.prepared(arithmetic);
-  const auto corner = [&](VertexIndex i) {
-    return kernel::Offset::between(point, s.mesh.vertices[i]);
-  };
-  const std::size_t max_rays =
-      arithmetic == Arithmetic::plain_double ? kPlainDoubleDirections : kExactDirections;
   const auto found = kernel::with_signs(arithmetic, [&](const auto& signs) {
-    return exactgeo::winding_number(max_rays, [&](std::size_t k) {
-      if (s.embree && k < kFloatExactRayDirections) {
-        s.embree->find(point, k, scratch.candidates);
-      } else {
-        internal::all_faces(s.mesh, scratch.candidates);
-      }
-      const Vector3 direction = ray_direction(k);
-      return count_signed_crossings(signs, faces, scratch.candidates, corner,
-                                    kernel::Offset::vector(direction));
+    return exactgeo::winding_number(max_rays(arithmetic), [&](std::size_t k) {
+      return count_ray(s, signs, arithmetic, point, k, scratch);
     });
   });
   if (!found) return 0;  // plain double only (see kPlainDoubleDirections): outside
   return found->winding;
+}
+
+/// The generalized winding number's label. Outside the box, a ray away from it crosses
+/// nothing (S = 0) and only the boundary term counts: an open surface can hold points
+/// beyond its corners' box (a rolled sheet does).
+Location Classifier::classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
+                                   ClassifierScratch& scratch) {
+  if (internal::strictly_outside(s.box, point)) {
+    const auto label = internal::open_label(s.rule, 0, point, internal::ray_away_from(s.box, point),
+                                            s.mesh.vertices, s.boundary, arithmetic);
+    return label.value_or(Location::undecided);  // a ray that meets no edge: never nullopt
+  }
+  return kernel::with_signs(arithmetic, [&](const auto& signs) {
+    for (std::size_t k = 0; k < max_rays(arithmetic); ++k) {
+      const SignedRayCount count = count_ray(s, signs, arithmetic, point, k, scratch);
+      if (count.kind == RayCount::origin_on_face) return Location::boundary;
+      if (count.kind == RayCount::degenerate) continue;
+      if (const auto label = internal::open_label(s.rule, count.total, point, ray_direction(k),
+                                                  s.mesh.vertices, s.boundary, arithmetic)) {
+        return *label;
+      }
+    }
+    return Location::outside;  // plain double only (see kPlainDoubleDirections)
+  });
 }
 
 /// The same, points outside the box and in labelled space cells answered first.
@@ -126,6 +163,8 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     throw std::invalid_argument(*problem);
   }
   State& s = *state_;
+  // Parity counts crossings modulo 2 on a closed surface, whatever the orientations.
+  if (rule != FillRule::parity) s.boundary = mesh::boundary_chain(mesh);
   s.mesh = without_zero_area_faces(std::move(mesh), check);
   s.zero_area_faces = check.zero_area_faces;
   s.rule = rule;
@@ -139,7 +178,8 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
   if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
-  if (options.space_cells) {
+  // A cell's points share one integer winding number; an open surface's vary.
+  if (options.space_cells && s.boundary.empty()) {
     ClassifierScratch scratch;
     s.cells.emplace(s.mesh, s.box,
                     [&](const Point3& p) { return cast_rays(s, p, Arithmetic::exact, scratch); });
@@ -172,6 +212,25 @@ bool Classifier::oriented() const noexcept {
   return state_->oriented;
 }
 
+bool Classifier::open() const noexcept {
+  return !state_->boundary.empty();
+}
+
+std::span<const BoundaryEdge> Classifier::boundary() const noexcept {
+  return state_->boundary;
+}
+
+std::optional<std::string> Classifier::open_note() const {
+  if (!open()) return std::nullopt;
+  const std::size_t edges = state_->boundary.size();
+  return "the surface is open (" + std::to_string(edges) + (edges == 1 ? " edge" : " edges") +
+         " run more often one way than the other): inside where its generalized winding number w "
+         "is " +
+         (state_->rule == FillRule::positive ? "at least 1/2" : "at least 1/2 in magnitude") +
+         ", certified; undecided where no precision settles it (w = 1/2 exactly, or too "
+         "close to it for 2048-bit arithmetic)";
+}
+
 Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const {
   ClassifierScratch scratch;
   return classify(point, arithmetic, scratch);
@@ -179,6 +238,7 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic) const 
 
 Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
                               ClassifierScratch& scratch) const {
+  if (open()) return classify_open(*state_, point, arithmetic, scratch);
   return location_of(signed_count(*state_, point, arithmetic, scratch));
 }
 
@@ -195,6 +255,11 @@ std::optional<std::int64_t> Classifier::winding_number(const Point3& point,
 
 std::optional<std::int64_t> Classifier::winding_number(const Point3& point, Arithmetic arithmetic,
                                                        ClassifierScratch& scratch) const {
+  if (open()) {
+    throw std::logic_error(
+        "this surface is open: its generalized winding numbers are not integers (classify "
+        "labels points by them)");
+  }
   if (!state_->oriented) {
     throw std::logic_error(
         "winding numbers need a closed oriented surface (every edge used as often in each "

@@ -10,6 +10,8 @@ std::string_view to_string(Location location) noexcept {
       return "inside";
     case Location::boundary:
       return "boundary";
+    case Location::undecided:
+      return "undecided";
   }
   return "?";
 }

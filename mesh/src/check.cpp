@@ -87,6 +87,7 @@ void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
                                                uses.begin() + static_cast<std::ptrdiff_t>(end),
                                                [](const EdgeUse& use) { return use.forward; }));
     if (2 * forward != count) check.unbalanced_edges.add(edge);
+    if (2 * forward >= count + 2 || 2 * forward + 2 <= count) check.misoriented_edges.add(edge);
     if (count == 1) check.boundary_edges.add(edge);
     if (count > 2) check.non_manifold_edges.add(edge);
     for (std::size_t use = begin; use < end; ++use) {
@@ -223,7 +224,7 @@ namespace {
 enum class EdgeRule : std::uint8_t {
   two_faces,   ///< shared by exactly two faces
   even_faces,  ///< shared by an even number of faces
-  balanced,    ///< used as often in one direction as in the other
+  orientable,  ///< any number of faces, but never two more one way than the other
 };
 
 std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule,
@@ -264,10 +265,19 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
     problems.push_back(with_examples(std::move(head), bad, index_text));
   }
 
-  // Beyond two faces per edge the rule is "an even number of faces" (or "as many each
-  // way"), so the odd edges are the ones to name when some of them are not boundary edges.
+  // Beyond two faces per edge the rule is "an even number of faces", so the odd edges are the ones
+  // to name when some of them are not boundary edges.
   const bool odd_beyond_boundary = check.odd_edges.count > check.boundary_edges.count;
-  if (rule != EdgeRule::two_faces && odd_beyond_boundary) {
+  if (rule == EdgeRule::orientable) {
+    // On an open surface a net count of two or more may be a boundary the surface runs
+    // twice (two copies of a bowl): only a closed surface says the faces disagree.
+    if (check.closed() && check.misoriented_edges.count > 0) {
+      std::string head = "faces not oriented alike: ";
+      head.append(counted(check.misoriented_edges.count, "edge is", "edges are"));
+      head.append(" run the same way by two more faces than the other way");
+      problems.push_back(with_examples(std::move(head), check.misoriented_edges, edge_text));
+    }
+  } else if (rule != EdgeRule::two_faces && odd_beyond_boundary) {
     std::string head = "mesh is not closed: ";
     head.append(counted(check.odd_edges.count, "edge", "edges"));
     head.append(" used by an odd number of faces");
@@ -276,13 +286,6 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
     std::string head = "mesh is not closed: ";
     head.append(counted(check.boundary_edges.count, "boundary edge", "boundary edges"));
     problems.push_back(with_examples(std::move(head), check.boundary_edges, edge_text));
-  }
-  if (rule == EdgeRule::balanced && check.odd_edges.count == 0 &&
-      check.unbalanced_edges.count > 0) {
-    std::string head = "faces not consistently oriented: ";
-    head.append(counted(check.unbalanced_edges.count, "edge is", "edges are"));
-    head.append(" used more often in one direction than in the other");
-    problems.push_back(with_examples(std::move(head), check.unbalanced_edges, edge_text));
   }
   if (rule == EdgeRule::two_faces && check.non_manifold_edges.count > 0) {
     problems.push_back(with_examples(
@@ -312,9 +315,9 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool a
                          first_index);
 }
 
-std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
-                                                    std::size_t first_index) {
-  return surface_problem(check, EdgeRule::balanced, first_index);
+std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
+                                                      std::size_t first_index) {
+  return surface_problem(check, EdgeRule::orientable, first_index);
 }
 
 namespace {
@@ -338,11 +341,6 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check, const 
                         loaded);
 }
 
-std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
-                                                    const LoadedMesh& loaded) {
-  return with_numbering(oriented_surface_problem(check, loaded.first_index()), loaded);
-}
-
 std::optional<std::string> zero_area_note(const Examples<std::size_t>& faces,
                                           std::size_t first_index) {
   if (faces.count == 0) return std::nullopt;
@@ -351,6 +349,11 @@ std::optional<std::string> zero_area_note(const Examples<std::size_t>& faces,
          (faces.count == 1 ? " bounds" : " bound") + " nothing: dropped" +
          (first_index == 1 ? " (faces numbered from 1, as in the file)"
                            : " (faces numbered from 0)");
+}
+
+std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
+                                                      const LoadedMesh& loaded) {
+  return with_numbering(orientable_surface_problem(check, loaded.first_index()), loaded);
 }
 
 std::optional<std::string> self_intersection_problem(const SelfIntersections& found,

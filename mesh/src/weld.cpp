@@ -1,9 +1,11 @@
 #include "exactgeo/mesh/weld.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace exactgeo::mesh {
@@ -57,6 +59,39 @@ std::size_t weld_vertices(Mesh& mesh) {
   }
   mesh.vertices = std::move(welded);
   return removed;
+}
+
+namespace {
+
+/// Every edge used by an even number of faces (repeated corners join nothing).
+bool every_edge_even(const Mesh& mesh) {
+  std::vector<std::pair<VertexIndex, VertexIndex>> edges;
+  edges.reserve(4 * mesh.faces.size());
+  for (const Face& face : mesh.faces) {
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const VertexIndex a = face.corner(i), b = face.corner(i + 1);
+      if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t begin = 0; begin < edges.size();) {
+    std::size_t end = begin + 1;
+    while (end < edges.size() && edges[end] == edges[begin])
+      ++end;
+    if ((end - begin) % 2 != 0) return false;
+    begin = end;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<std::size_t> vertices_welding_closes(const Mesh& mesh) {
+  if (every_edge_even(mesh)) return std::nullopt;
+  Mesh welded = mesh;
+  const std::size_t merged = weld_vertices(welded);
+  if (merged == 0 || !every_edge_even(welded)) return std::nullopt;
+  return merged;
 }
 
 }  // namespace exactgeo::mesh

@@ -105,21 +105,36 @@ struct MpfrStage {
     mpfr_set_zero(x.hi(), zero_sign);
     return x;
   }
+  /// The same with two atan2 evaluations (the costly operation here) instead of eight:
+  /// the corners of least and greatest angle are found first by exact comparisons (the
+  /// box lies within a half plane, where angle(c) < angle(m) exactly when the cross
+  /// product c x m is positive; products of two numbers are exact at twice the precision).
   Number corner_angles(const Number& y, const Number& x) const {
-    Number angles(precision);
-    mpfr_t t;
-    mpfr_init2(t, precision);
-    bool first = true;
-    for (const auto* yy : {y.lo(), y.hi()}) {
-      for (const auto* xx : {x.lo(), x.hi()}) {
-        mpfr_atan2(t, yy, xx, MPFR_RNDD);
-        if (first || mpfr_less_p(t, angles.lo())) mpfr_set(angles.lo(), t, MPFR_RNDD);
-        mpfr_atan2(t, yy, xx, MPFR_RNDU);
-        if (first || mpfr_greater_p(t, angles.hi())) mpfr_set(angles.hi(), t, MPFR_RNDU);
-        first = false;
-      }
+    struct Corner {
+      const __mpfr_struct* y;
+      const __mpfr_struct* x;
+    };
+    const Corner corners[4] = {
+        {y.lo(), x.lo()}, {y.lo(), x.hi()}, {y.hi(), x.lo()}, {y.hi(), x.hi()}};
+    mpfr_t left, right;
+    mpfr_init2(left, 2 * precision);
+    mpfr_init2(right, 2 * precision);
+    // angle(c) < angle(m): c.x m.y - c.y m.x > 0.
+    const auto before = [&](const Corner& c, const Corner& m) {
+      mpfr_mul(left, c.x, m.y, MPFR_RNDN);   // exact
+      mpfr_mul(right, c.y, m.x, MPFR_RNDN);  // exact
+      return mpfr_greater_p(left, right) != 0;
+    };
+    Corner least = corners[0], greatest = corners[0];
+    for (const Corner& c : corners) {
+      if (before(c, least)) least = c;
+      if (before(greatest, c)) greatest = c;
     }
-    mpfr_clear(t);
+    mpfr_clear(left);
+    mpfr_clear(right);
+    Number angles(precision);
+    mpfr_atan2(angles.lo(), least.y, least.x, MPFR_RNDD);
+    mpfr_atan2(angles.hi(), greatest.y, greatest.x, MPFR_RNDU);
     return angles;
   }
   Enclosure enclosure(const Number& x) const {

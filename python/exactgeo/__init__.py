@@ -8,7 +8,7 @@ every finite input; the other methods are there to measure what exactness costs.
     >>> import exactgeo, numpy as np
     >>> mesh = exactgeo.load_mesh("spot.obj")
     >>> classifier = exactgeo.Classifier(mesh)
-    >>> labels = classifier.classify(np.random.rand(1000, 3))   # OUTSIDE, INSIDE, BOUNDARY
+    >>> labels = classifier.classify(np.random.rand(1000, 3))   # OUTSIDE, INSIDE, BOUNDARY (UNDECIDED: open surfaces)
 
 exactgeo.dask runs the same classification over Dask arrays on a cluster.
 """
@@ -22,6 +22,7 @@ from ._exactgeo import (
     INSIDE,
     ON_SURFACE,
     OUTSIDE,
+    UNDECIDED,
     Classifier,
     Mesh,
     MeshCcd,
@@ -39,6 +40,7 @@ __all__ = [
     "INSIDE",
     "ON_SURFACE",
     "OUTSIDE",
+    "UNDECIDED",
     "CcdQueries",
     "Classifier",
     "Mesh",

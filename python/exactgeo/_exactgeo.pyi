@@ -10,6 +10,7 @@ __version__: str
 OUTSIDE: int
 INSIDE: int
 BOUNDARY: int
+UNDECIDED: int
 ON_SURFACE: int
 
 _Path = Union[str, PathLike[str]]

@@ -65,6 +65,11 @@ constexpr std::int32_t kOnSurface = std::numeric_limits<std::int32_t>::min();
 py::array_t<std::int32_t> winding_numbers(const inside::Classifier& classifier,
                                           const py::object& points_in, const std::string& method,
                                           int threads) {
+  if (classifier.open()) {
+    throw py::value_error(
+        "no integer winding numbers: the surface is open, and its generalized winding "
+        "numbers are real numbers (classify() labels points by them, certified)");
+  }
   if (!classifier.oriented()) {
     throw py::value_error(
         "no winding numbers: the mesh's faces are not oriented alike (some edge is used more "
@@ -110,6 +115,9 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
   options.rule = rule_named(rule);
   options.allow_non_manifold = allow_non_manifold;
   options.space_cells = space_cells;
+  if (auto problem = inside::face_soup_problem(mesh.loaded, options.rule, "weld=True")) {
+    throw py::value_error(*problem);
+  }
   mesh::Mesh copy = mesh.loaded.mesh;
   std::optional<inside::Classifier> built;
   std::optional<mesh::SelfIntersections> self;
@@ -131,7 +139,9 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
   if (const auto note = mesh::zero_area_note(built->zero_area_faces(), 0)) {
     warn(*note);
   }
-  if (!options.rule && !built->oriented()) {
+  if (const auto note = built->open_note()) {
+    warn(*note);
+  } else if (!options.rule && !built->oriented()) {
     warn(
         "the faces are not oriented alike (some edge is used more often in one direction "
         "than in the other), so they have no winding numbers: labelled by crossing parity "
@@ -154,14 +164,18 @@ void bind_inside(py::module_& module) {
   module.attr("OUTSIDE") = static_cast<int>(Location::outside);
   module.attr("INSIDE") = static_cast<int>(Location::inside);
   module.attr("BOUNDARY") = static_cast<int>(Location::boundary);
+  module.attr("UNDECIDED") = static_cast<int>(Location::undecided);
   module.attr("ON_SURFACE") = kOnSurface;
 
   py::class_<inside::Classifier>(module, "Classifier",
-                                 R"doc(Exact point-in-volume classification against a closed mesh.
+                                 R"doc(Exact point-in-volume classification against a mesh.
 
 A point is BOUNDARY when it lies exactly on a face, else INSIDE or OUTSIDE by its winding
 number (the signed count of a ray's crossings with the faces) and the rule; every
-crossing is decided by exact predicates, so the labels are exact for every finite point.)doc")
+crossing is decided by exact predicates, so the labels are exact for every finite point.
+Against an open surface (holes, boundary edges) the label comes from the generalized
+winding number w, the crossings plus a certified term over the boundary: INSIDE where
+|w| >= 1/2 (rule "positive": w >= 1/2), UNDECIDED where no precision allowed settles it.)doc")
       .def(py::init(&build), py::arg("mesh"), py::kw_only(), py::arg("rule") = py::none(),
            py::arg("allow_non_manifold") = false, py::arg("space_cells") = true,
            R"doc(Checks the mesh and builds the search structure once (the GIL is released).
@@ -170,17 +184,20 @@ rule: which points the surface holds, by their winding number w (faces oriented 
     corner order, counter-clockwise seen from outside): "nonzero" (w != 0, so parts that
     overlap read as their union), "parity" (w odd: overlaps read outside; the only rule
     for faces not oriented alike) or "positive" (w > 0). All three agree on a closed mesh
-    that does not intersect itself. None (default): "nonzero", or "parity" with a
-    UserWarning when the faces are not oriented alike (the `rule` attribute says which).
+    that does not intersect itself; on an open one, nonzero and positive compare the
+    generalized winding number with 1/2. None (default): "nonzero", or "parity" with a
+    UserWarning for a closed mesh whose faces are not oriented alike (the `rule`
+    attribute says which).
 allow_non_manifold: with rule="parity", accept edges shared by 4, 6, ... faces (the
-    winding rules accept any edge used as often in each direction).
+    winding rules accept any edge whose faces are oriented alike).
 space_cells: label the cells of a grid that no face reaches once, exactly, so that
     points in them need no ray (method "exact" only; False: a ray for every point).
 
-Raises ValueError when the mesh does not bound a solid by the rule: open, faces not
-oriented alike (winding rules), non-manifold (parity), degenerate faces, with the counts
-and the first few offending edges or faces. By parity, warns (UserWarning) when faces
-intersect: the labels are then those of the parity solid.)doc")
+Raises ValueError when the rule cannot classify against the mesh: faces not oriented
+alike (winding rules), open or non-manifold (parity), a face that repeats a corner, with
+the counts and the first few offending edges or faces. Warns (UserWarning) when the
+surface is open (what its labels mean), when faces of zero area were dropped, and, by
+parity, when faces intersect (the labels are then those of the parity solid).)doc")
       .def_property_readonly(
           "rule", [](const inside::Classifier& c) { return std::string(to_string(c.rule())); })
       .def("winding_numbers", &winding_numbers, py::arg("points"), py::kw_only(),
@@ -189,10 +206,12 @@ intersect: the labels are then those of the parity solid.)doc")
 
 ON_SURFACE (the smallest int32) for points on a face, where none is defined. Arguments as
 for classify. Raises ValueError when the faces are not oriented alike (a mesh accepted by
-rule="parity" only).)doc")
+rule="parity" only) or the surface is open (its generalized winding numbers are not
+integers).)doc")
       .def("classify", &classify, py::arg("points"), py::kw_only(), py::arg("method") = "exact",
            py::arg("threads") = 0,
-           R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY.
+           R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY (and
+UNDECIDED against an open surface, where no precision allowed settles the label).
 
 points: (n, 3) coordinates (float64, or converted exactly), finite.
 method: "exact" (default) or "double" (the same traversal in plain doubles: faster,

@@ -444,8 +444,8 @@ TEST_F(InsideCommand, FacesNotOrientedAlike) {
   r = run_file(options, dir_ / "points.txt");
   EXPECT_EQ(r.code, ExitCode::input_error);
   EXPECT_EQ(r.out, "");
-  EXPECT_NE(r.err.find(": faces not consistently oriented: 4 edges are used more often in one "
-                       "direction than in the other (first: 1-2, "),
+  EXPECT_NE(r.err.find(": faces not oriented alike: 4 edges are run the same way by two more faces "
+                       "than the other way (first: 1-2, "),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("(vertices and faces numbered from 1, as in the file); --rule parity, "

@@ -252,7 +252,7 @@ TEST(MeshCheck, OnlyZeroAreaFaces) {
   mesh.vertices = {{0, 0, 0}, {1, 1, 1}, {3, 3, 3}};
   mesh.faces = {make_triangle(0, 1, 2), make_triangle(0, 2, 1)};
   EXPECT_EQ(closed_surface_problem(check_mesh(mesh)), "every face has zero area");
-  EXPECT_EQ(oriented_surface_problem(check_mesh(mesh)), "every face has zero area");
+  EXPECT_EQ(orientable_surface_problem(check_mesh(mesh)), "every face has zero area");
 }
 
 /// The faces whose findings have `flag` set.

@@ -128,10 +128,27 @@ def test_bad_options():
         classifier.classify(np.array([["a", "b", "c"]], dtype=object))
 
 
-def test_a_mesh_that_bounds_no_solid_is_refused():
+def test_an_open_mesh_is_refused_by_parity_and_labelled_by_the_winding_rules():
     open_box = exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS[:5])
     with pytest.raises(ValueError, match="boundary edge"):
-        exactgeo.Classifier(open_box)
+        exactgeo.Classifier(open_box, rule="parity")
+    with pytest.warns(UserWarning, match=r"the surface is open \(4 edges run more often one way"):
+        classifier = exactgeo.Classifier(open_box)
+    # CUBE_QUADS[5] is the missing face; its centre has w = 1/2 exactly.
+    missing = CUBE_VERTICES[CUBE_QUADS[5]].mean(axis=0)
+    deep = CUBE_VERTICES.mean(axis=0) + 0.4 * (CUBE_VERTICES.mean(axis=0) - missing)
+    far = missing + 2 * (missing - CUBE_VERTICES.mean(axis=0))
+    labels = classifier.classify(np.array([deep, missing, far]))
+    assert list(labels) == [exactgeo.INSIDE, exactgeo.UNDECIDED, exactgeo.OUTSIDE]
+    with pytest.raises(ValueError, match="the surface is open"):
+        classifier.winding_numbers(np.array([deep]))
+
+
+def test_a_face_soup_is_refused_with_the_way_out():
+    soup_vertices = CUBE_VERTICES[CUBE_QUADS].reshape(-1, 3)
+    soup = exactgeo.Mesh(soup_vertices, np.arange(24).reshape(6, 4))
+    with pytest.raises(ValueError, match=r"with weld=True, which merges the 16 vertices"):
+        exactgeo.Classifier(soup)
 
 
 def test_the_gil_is_released_while_classifying():

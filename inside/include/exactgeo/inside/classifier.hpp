@@ -1,22 +1,29 @@
 #pragma once
 
-// Exact point-in-volume classification against a closed mesh of bilinear patches and
-// triangles (the inside semantics of docs/architecture.md, "Contracts").
+// Exact point-in-volume classification against a mesh of bilinear patches and triangles
+// (the inside semantics of docs/architecture.md, "Contracts").
 //
 // A point is `boundary` if it lies exactly on a face (faces of zero area bound nothing
-// and are dropped), else `inside` or `outside` by its
-// winding number and the fill rule (fill_rule.hpp): the signed count of the crossings of
-// a ray from it with the faces. Rays follow the fixed sequence of
-// exactgeo/predicates/ray_directions.hpp; a ray that meets a face's edge or vertex, or
-// lies in the plane of a flat face, is discarded for the next one, which the sequence
-// guarantees ends. Embree proposes candidate faces along each ray; the exact predicates
-// (cross_face_signed: ray_patch_crossings, classify_ray_triangle) decide every one.
+// and are dropped), else `inside` or `outside` by its winding number and the fill rule
+// (fill_rule.hpp): the signed count of the crossings of a ray from it with the faces.
+// Rays follow the fixed sequence of exactgeo/predicates/ray_directions.hpp; a ray that
+// meets a face's edge or vertex, or lies in the plane of a flat face, is discarded for
+// the next one, which the sequence guarantees ends. Embree proposes candidate faces along
+// each ray; the exact predicates (cross_face_signed: ray_patch_crossings,
+// classify_ray_triangle) decide every one.
+//
+// An open surface (boundary edges, each run net once more one way than the other) is
+// labelled by its generalized winding number: the ray's signed count plus a certified
+// term over the boundary edges (exactgeo/predicates/boundary_term.hpp,
+// internal/open_label.hpp), `undecided` where no precision allowed settles it.
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "exactgeo/inside/fill_rule.hpp"
@@ -24,6 +31,8 @@
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
+#include "exactgeo/predicates/boundary_term.hpp"
+#include "exactgeo/predicates/crossing_parity.hpp"
 #include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::inside {
@@ -44,10 +53,10 @@ struct ClassifierOptions {
   /// reaches get that cell's exact label without a ray. Exact and rational arithmetic
   /// only; the plain double baseline always casts rays.
   bool space_cells = true;
-  /// nonzero and positive need a closed oriented surface (every edge used as often in
-  /// each direction, so edges of four or six faces are fine); parity needs a closed one.
-  /// nullopt: nonzero when the faces are oriented alike, else parity, the only rule such
-  /// a mesh has (rule() says which was taken).
+  /// nonzero and positive need faces oriented alike (no edge run the same way by two more
+  /// faces than the other way), closed or open; parity needs a closed surface.
+  /// nullopt: parity for a closed surface whose faces are not oriented alike (the only
+  /// rule it has), nonzero otherwise (rule() says which was taken).
   std::optional<FillRule> rule = std::nullopt;
 };
 
@@ -58,7 +67,7 @@ struct ClassifierScratch {
 
 class Classifier {
  public:
-  /// Checks the mesh (check_mesh; oriented_surface_problem for nonzero and positive,
+  /// Checks the mesh (check_mesh; orientable_surface_problem for nonzero and positive,
   /// closed_surface_problem for parity) and builds the candidate search. Throws
   /// std::invalid_argument with the problem's description if the mesh cannot be classified
   /// against by the rule, std::runtime_error if Embree fails.
@@ -68,17 +77,19 @@ class Classifier {
   Classifier& operator=(Classifier&&) noexcept;
 
   /// The location of `point` (finite coordinates). With Arithmetic::exact the answer is
-  /// exact; plain_double runs the same traversal with plain double signs and per-face
-  /// spans found in plain doubles (fast, can be wrong; after 64 degenerate rays it calls
-  /// the point outside); rational is a slow reference.
+  /// exact (against an open surface: certified, or undecided); plain_double runs the same
+  /// traversal with plain double signs and per-face spans found in plain doubles (fast,
+  /// can be wrong; after 64 degenerate rays it calls the point outside); rational is a
+  /// slow reference.
   /// Thread-safe: concurrent calls need their own scratch.
   Location classify(const Point3& point, Arithmetic arithmetic, ClassifierScratch& scratch) const;
   Location classify(const Point3& point, Arithmetic arithmetic = Arithmetic::exact) const;
 
   /// The winding number of `point` (finite coordinates), or nullopt when it lies on a
   /// face, in the arithmetic's sense as for classify. Throws std::logic_error when the
-  /// mesh is not a closed oriented surface (accepted by the parity rule only), where the
-  /// signed count depends on the ray and no winding number is defined.
+  /// mesh is not a closed oriented surface: accepted by the parity rule only, where the
+  /// signed count depends on the ray and no winding number is defined, or open, where it
+  /// is not an integer.
   std::optional<std::int64_t> winding_number(const Point3& point, Arithmetic arithmetic,
                                              ClassifierScratch& scratch) const;
   std::optional<std::int64_t> winding_number(const Point3& point,
@@ -95,6 +106,15 @@ class Classifier {
   FillRule rule() const noexcept;
   /// Every edge used as often in each direction: winding numbers are defined.
   bool oriented() const noexcept;
+  /// Some edge is used net once more in one direction (a boundary): labels come from
+  /// the generalized winding number.
+  bool open() const noexcept;
+  /// The boundary of an open surface (empty for a closed one).
+  std::span<const BoundaryEdge> boundary() const noexcept;
+  /// What the label of a point against this open surface means, for a user: "the
+  /// surface is open (12 boundary edges): inside where its generalized winding number
+  /// ..."; nullopt for a closed surface.
+  std::optional<std::string> open_note() const;
 
   /// The space cells' size, when they are on: the grid's cells, those some face reaches
   /// (their points cast rays), and the components of the others (one exact ray each).
@@ -115,6 +135,13 @@ class Classifier {
   static std::optional<std::int64_t> signed_count(const State& s, const Point3& point,
                                                   Arithmetic arithmetic,
                                                   ClassifierScratch& scratch);
+  /// The signed crossings of ray k of the sequence from `point` (in the box).
+  template <class Signs>
+  static SignedRayCount count_ray(const State& s, const Signs& signs, Arithmetic arithmetic,
+                                  const Point3& point, std::size_t k, ClassifierScratch& scratch);
+  /// classify for an open surface.
+  static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
+                                ClassifierScratch& scratch);
   std::unique_ptr<State> state_;
 };
 

@@ -9,6 +9,10 @@
 // On a closed surface that does not intersect itself and is oriented consistently, w is 0
 // outside and +1 (or -1 throughout, if every face is turned) inside, and the three rules
 // agree. They differ where parts overlap, nest or fold through each other.
+//
+// An open surface (holes, boundary edges) has a generalized winding number instead, a
+// real number (exactgeo/predicates/boundary_term.hpp): nonzero puts a point inside where
+// |w| >= 1/2, positive where w >= 1/2; parity needs a closed surface.
 
 #include <cstdint>
 #include <optional>
@@ -39,17 +43,27 @@ std::string_view to_string(FillRule rule) noexcept;
 /// "nonzero", "parity" or "positive"; nullopt for anything else.
 std::optional<FillRule> parse_fill_rule(std::string_view text) noexcept;
 
-/// The rule a classifier takes: `asked`, or by default nonzero when the faces are
-/// oriented alike (no unbalanced edge) and parity otherwise, the only rule such a mesh has.
+/// The rule a classifier takes: `asked`, or by default parity for a closed surface whose
+/// faces are not oriented alike (a misoriented edge: the only rule such a mesh has), and
+/// nonzero otherwise (closed oriented surfaces, and open ones).
 FillRule rule_for(const mesh::MeshCheck& check, std::optional<FillRule> asked) noexcept;
 
 /// What keeps the mesh from being classified by `rule`: mesh::closed_surface_problem for
-/// parity (with allow_non_manifold), mesh::oriented_surface_problem for the winding rules;
+/// parity (with allow_non_manifold), mesh::orientable_surface_problem for the winding
+/// rules (closed or open);
 /// nullopt if nothing. With `loaded`, in the file's own numbering, saying which.
 std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
                                         bool allow_non_manifold);
 std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
                                         bool allow_non_manifold, const mesh::LoadedMesh& loaded);
+
+/// A face soup's problem: the mesh has boundary edges only because its faces do not share
+/// vertices (mesh::vertices_welding_closes), and a winding rule would classify it as an
+/// open surface, face by face: the same labels, far more slowly. The message names the
+/// way out, `weld` ("--weld", "weld=True"); nullopt for anything else, and when parity
+/// was asked for (which refuses it as not closed).
+std::optional<std::string> face_soup_problem(const mesh::LoadedMesh& loaded,
+                                             std::optional<FillRule> asked, std::string_view weld);
 
 /// Does the rule put a point of winding number w inside?
 constexpr bool holds(FillRule rule, std::int64_t w) noexcept {

@@ -62,6 +62,10 @@ struct MeshCheck {
   /// None: the faces form a closed oriented surface, whose winding numbers are defined,
   /// however they intersect (an edge of four faces, two each way, is balanced).
   Examples<Edge> unbalanced_edges;
+  /// Run the same way by at least two more faces than the other way (a subset of the
+  /// unbalanced edges): on a closed surface, faces on either side of it face opposite
+  /// ways; on an open one, that or a boundary the surface runs twice.
+  Examples<Edge> misoriented_edges;
   Examples<std::size_t> degenerate_faces;  ///< a repeated corner index, or zero area (exact)
   /// Of zero area (exact): a segment or a point. They bound nothing, so classification
   /// drops them (after the edge counts, which they keep balanced).
@@ -101,19 +105,20 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check,
                                                   bool allow_non_manifold = false,
                                                   std::size_t first_index = 0);
 
-/// What keeps the mesh from being a closed oriented surface, whose winding numbers
-/// exactgeo::inside's nonzero and positive rules need: closed_surface_problem's conditions
-/// with "every edge used as often in one direction as in the other" for the edge rules
-/// (so edges shared by four or more faces are fine when balanced), nullopt if nothing.
-std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
-                                                    std::size_t first_index = 0);
+/// What keeps the mesh from having a winding number (closed) or a generalized one (open)
+/// that means what its faces say: closed_surface_problem's conditions on indices,
+/// coordinates and faces, and, for a closed surface, no misoriented edge (on an open one,
+/// a boundary run twice looks the same, so it is taken as given). Boundary and
+/// non-manifold edges are fine. nullopt if nothing.
+std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
+                                                      std::size_t first_index = 0);
 
 /// The same message for a mesh read from a file, in the file's own numbering (OBJ counts
 /// vertices and faces from 1; OFF, PLY and exactgeo's Mesh from 0), saying which.
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
                                                   bool allow_non_manifold = false);
-std::optional<std::string> oriented_surface_problem(const MeshCheck& check,
-                                                    const LoadedMesh& loaded);
+std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
+                                                      const LoadedMesh& loaded);
 
 /// What classification does with the faces of zero area, if there are any: "3 faces of
 /// zero area (first: 4, 9, 11) bound nothing: dropped", numbered from `first_index`

@@ -3,6 +3,7 @@
 // Welding: vertices at exactly the same position become one vertex.
 
 #include <cstddef>
+#include <optional>
 
 #include "exactgeo/mesh/mesh.hpp"
 
@@ -15,5 +16,12 @@ namespace exactgeo::mesh {
 /// (two corners at one position); they are kept for the mesh checks to report.
 /// Precondition: every corner index is in range or kNoVertex.
 std::size_t weld_vertices(Mesh& mesh);
+
+/// A face soup's test: when the mesh has boundary edges only because its faces do not
+/// share vertices, the number of vertices welding would merge to close it (every edge then
+/// used by an even number of faces); nullopt when it is closed already, or stays open.
+/// Classifying a soup as an open surface gives the same labels, far more slowly (every
+/// face's edges are boundary), so callers name --weld instead.
+std::optional<std::size_t> vertices_welding_closes(const Mesh& mesh);
 
 }  // namespace exactgeo::mesh
