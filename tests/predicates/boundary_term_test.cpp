@@ -75,7 +75,8 @@ struct Tally {
 void expect_certified(const Point3& p, const Triangle& t, Tally& tally) {
   const auto ray = first_clean_ray(p, t);
   if (!ray) return;
-  const double truth = testing::generalized_winding_oracle(p, std::span(&t, 1), ray->crossings);
+  const double truth =
+      testing::generalized_winding_oracle(p, std::span(&t, 1), static_cast<double>(ray->crossings));
   ++tally.cases;
   bool enclosed_before = false;
   for (const unsigned bits : kBoundaryTermPrecisions) {

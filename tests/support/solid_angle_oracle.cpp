@@ -40,12 +40,9 @@ void length(Real& out, const Vector& a) {
   mpfr_sqrt(out.x, out.x, MPFR_RNDN);
 }
 
-/// Adds the half solid angle of the triangle seen from p to `sum`.
-void add_half_angle(Real& sum, const Point3& p, const Triangle& t) {
-  Vector a, b, c;
-  set_difference(a, t[0], p);
-  set_difference(b, t[1], p);
-  set_difference(c, t[2], p);
+/// Adds the half solid angle of the triangle of directions a, b, c (seen from the origin)
+/// to `sum`.
+void add_half_angle(Real& sum, const Vector& a, const Vector& b, const Vector& c) {
   // det[a, b, c] = a . (b x c)
   Vector bxc;
   Real u, v;
@@ -74,19 +71,50 @@ void add_half_angle(Real& sum, const Point3& p, const Triangle& t) {
   mpfr_add(sum.x, sum.x, term.x, MPFR_RNDN);
 }
 
-}  // namespace
+/// Adds the half solid angle of the triangle seen from p to `sum`.
+void add_half_angle(Real& sum, const Point3& p, const Triangle& t) {
+  Vector a, b, c;
+  set_difference(a, t[0], p);
+  set_difference(b, t[1], p);
+  set_difference(c, t[2], p);
+  add_half_angle(sum, a, b, c);
+}
 
-double generalized_winding_oracle(const Point3& p, std::span<const Triangle> triangles,
-                                  std::int64_t offset) {
-  Real sum(0.0), two_pi;
-  for (const Triangle& t : triangles)
-    add_half_angle(sum, p, t);
-  // w = sum of Omega / 4 pi = sum of half angles / 2 pi.
+/// sum / 2 pi + crossings - level, rounded.
+double turns_minus(Real& sum, std::int64_t crossings, double level) {
+  Real two_pi;
   mpfr_const_pi(two_pi.x, MPFR_RNDN);
   mpfr_mul_2ui(two_pi.x, two_pi.x, 1, MPFR_RNDN);
   mpfr_div(sum.x, sum.x, two_pi.x, MPFR_RNDN);
-  mpfr_sub_si(sum.x, sum.x, static_cast<long>(offset), MPFR_RNDN);
+  mpfr_add_si(sum.x, sum.x, static_cast<long>(crossings), MPFR_RNDN);
+  mpfr_sub_d(sum.x, sum.x, level, MPFR_RNDN);
   return mpfr_get_d(sum.x, MPFR_RNDN);
+}
+
+}  // namespace
+
+double generalized_winding_oracle(const Point3& p, std::span<const Triangle> triangles,
+                                  double level) {
+  Real sum(0.0);
+  for (const Triangle& t : triangles)
+    add_half_angle(sum, p, t);
+  // w = sum of Omega / 4 pi = sum of half angles / 2 pi.
+  return turns_minus(sum, 0, level);
+}
+
+double decomposed_winding_oracle(const Point3& p, const Vector3& ray, std::int64_t crossings,
+                                 std::span<const Segment> boundary, double level) {
+  Vector c;
+  for (int i = 0; i < 3; ++i)
+    mpfr_set_d(c[i].x, -ray[i], MPFR_RNDN);
+  Real sum(0.0);
+  for (const Segment& s : boundary) {
+    Vector a, b;
+    set_difference(a, s[0], p);
+    set_difference(b, s[1], p);
+    add_half_angle(sum, a, b, c);
+  }
+  return turns_minus(sum, crossings, level);
 }
 
 }  // namespace exactgeo::testing

@@ -16,10 +16,19 @@ namespace exactgeo::testing {
 
 using Triangle = std::array<Point3, 3>;
 
-/// w(p) - offset, rounded to the nearest double (offset an integer, subtracted before
-/// rounding, so that a small fractional part survives a large w). Precondition: p on no
-/// triangle (there w is not defined), finite coordinates.
+/// w(p) - level, rounded to the nearest double (the level subtracted before rounding, so
+/// that a small difference survives). Precondition: p on no triangle (there w is not
+/// defined), finite coordinates.
 double generalized_winding_oracle(const Point3& p, std::span<const Triangle> triangles,
-                                  std::int64_t offset = 0);
+                                  double level = 0.0);
+
+/// The antipodal decomposition written out independently, for surfaces the definition
+/// above cannot integrate (bilinear patches): crossings + (1/2 pi) sum of the half angles
+/// atan2(det[A, B, C], ...) with A = a - p, B = b - p, C = -ray, over the boundary
+/// segments a -> b, minus `level`, rounded to the nearest double. `crossings` is the
+/// signed crossing count along the ray, from the rational ray oracles.
+using Segment = std::array<Point3, 2>;
+double decomposed_winding_oracle(const Point3& p, const Vector3& ray, std::int64_t crossings,
+                                 std::span<const Segment> boundary, double level = 0.0);
 
 }  // namespace exactgeo::testing
