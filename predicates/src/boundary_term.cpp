@@ -7,6 +7,7 @@
 #include <numbers>
 #include <optional>
 
+#include "boundary_term_filter.hpp"
 #include "double_interval.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 #include "mpfr_interval.hpp"
@@ -244,7 +245,12 @@ BoundaryTerm boundary_term(const Point3& point, const Vector3& ray,
                            std::span<const Point3> vertices, std::span<const BoundaryEdge> edges,
                            unsigned precision_bits, std::array<double, 2> levels) {
   const Vector3 apex{-ray[0], -ray[1], -ray[2]};  // the cone's vertex at infinity
-  if (precision_bits <= 53) return term_at(DoubleStage{}, point, apex, vertices, edges, levels);
+  if (precision_bits <= 53) {
+    if (auto filtered = internal::filtered_boundary_term(point, apex, vertices, edges, levels)) {
+      return *filtered;
+    }
+    return term_at(DoubleStage{}, point, apex, vertices, edges, levels);
+  }
   return term_at(MpfrStage{static_cast<mpfr_prec_t>(precision_bits)}, point, apex, vertices, edges,
                  levels);
 }

@@ -33,7 +33,9 @@
 // cut, N = 0 with D < 0, is where p lies on the strip of K over the edge: where the ray
 // meets the edge.
 //
-// Certified. Each stage encloses every operation's exact result: doubles rounded outward
+// Certified. A filter first (plain doubles and an a priori error bound,
+// src/boundary_term_filter.cpp). Then each stage encloses every operation's exact
+// result: doubles rounded outward
 // (one ulp past the correctly rounded result, which IEEE 754 arithmetic and sqrt
 // guarantee holds the exact one), then MPFR intervals of more and more bits (every
 // operation, atan2 and pi included, correctly rounded down and up). The half angle's range
@@ -89,7 +91,8 @@ struct BoundaryTerm {
   std::array<Versus, 2> versus{Versus::unsure, Versus::unsure};
 };
 
-/// The precisions the certified term is tried at, in bits: doubles (53), then MPFR.
+/// The precisions the certified term is tried at, in bits: doubles (53: the filter, then
+/// outward-rounded intervals), then MPFR.
 inline constexpr unsigned kBoundaryTermPrecisions[] = {53, 128, 512, 2048};
 
 /// The boundary term of the generalized winding number of `point` along the ray in

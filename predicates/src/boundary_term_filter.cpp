@@ -1,0 +1,129 @@
+#include "boundary_term_filter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+
+#include "exactgeo/predicates/kernel/signs.hpp"
+
+// The error bound, with u = 2^-53 and every vector first scaled by a power of two so that
+// its largest component is in [1, 2) (solid angles depend only on directions):
+//
+//  - A = fl(a - p) is within u|A| of a - p per component (a difference that underflows is
+//    exact); the scaling is exact unless a component falls below 2^-1022, where it loses
+//    at most 2^-1075. The direction -r is exact. So each input is within u|A| + 2^-1074.
+//  - N = fl(A . fl(B x D)): the cross product and the dot add up to gamma_5 P, with P the
+//    permanent sum |A_i| (|B_j||D_k| + |B_k||D_j|); the inputs' own errors, through
+//    trilinearity, add (2u + u^2) P. So |N - N*| <= 8u P (P itself computed, within 3u).
+//  - |A| = fl(sqrt(fl(A . A))): within (1.5 gamma_3 + u) of the computed vector's length,
+//    and that within u + 2^-1074 of the exact one's: 7u in all, relative.
+//  - D = |A||B||D| + (A.B)|D| + (A.D)|B| + (B.D)|A|, with L = |A||B||D|: every term is at
+//    most L (Cauchy-Schwarz); the first is off by at most (3 x 7 + 2)u L, each of the
+//    others by (gamma_3 + 2.01u + 7u + u) L <= 13u L (dot, inputs, a length, a product),
+//    and the three additions by u times partial sums below 4L each: 23 + 39 + 12 = 74u L,
+//    taken as 96u L.
+//  - Underflowing products of these O(1) numbers lose at most 2^-1075 each, far below the
+//    absolute 2^-1000 added to both bounds.
+//  - The exact point (N*, D*) is within E = |dN| + |dD| of the computed one. Where
+//    E <= r / 4, r = |(N, D)|, the segment between them stays 3r/4 from the origin, so the
+//    half angles differ by at most (4/3) E / r, provided the segment does not cross the
+//    branch cut (N = 0, D < 0): it does not where |N| > |dN| (same half plane, upper or
+//    lower) or D > |dD| (right half plane); where D < -|dD| the exact sign of N* (an exact
+//    predicate) is given to the computed N, which moves it no further from N*. Otherwise
+//    the filter gives up. atan2 adds its own error, bounded as in boundary_term.hpp.
+//  - The sum of the B weighted half angles rounds within (B + 1) u times the sum of their
+//    magnitudes (gamma_B, and the products by the multiplicities); 2 pi times a level
+//    rounds within 1.5u of its magnitude (pi's double is within 0.4u of pi).
+
+namespace exactgeo::internal {
+namespace {
+
+constexpr double kU = 0x1p-53;
+constexpr double kTiny = 0x1p-1000;
+constexpr double kAtan2Error = 0x1p-40;  // the C library's atan2, as in boundary_term.cpp
+
+/// The vector scaled by a power of two so that its largest component is in [1, 2);
+/// nullopt when it is zero or not finite.
+std::optional<Vector3> normalized(const Vector3& v) {
+  const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
+  const int shift = -std::ilogb(largest);
+  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
+}
+
+double dot(const Vector3& a, const Vector3& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+}  // namespace
+
+std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector3& apex,
+                                                   std::span<const Point3> vertices,
+                                                   std::span<const BoundaryEdge> edges,
+                                                   std::array<double, 2> levels) {
+  const auto d = normalized(apex);
+  if (!d) return std::nullopt;
+  const double ld = std::sqrt(dot(*d, *d));
+  double sum = 0.0, magnitudes = 0.0, errors = 0.0;
+  for (const BoundaryEdge& edge : edges) {
+    const Point3& pa = vertices[edge.from];
+    const Point3& pb = vertices[edge.to];
+    const auto a = normalized({pa[0] - p[0], pa[1] - p[1], pa[2] - p[2]});
+    const auto b = normalized({pb[0] - p[0], pb[1] - p[1], pb[2] - p[2]});
+    if (!a || !b) return std::nullopt;  // the point on a corner, or an overflow
+    const Vector3& A = *a;
+    const Vector3& B = *b;
+    const Vector3& D = *d;
+    const Vector3 bxd{B[1] * D[2] - B[2] * D[1], B[2] * D[0] - B[0] * D[2],
+                      B[0] * D[1] - B[1] * D[0]};
+    double num = dot(A, bxd);
+    double permanent = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      permanent += std::abs(A[i]) * (std::abs(B[j] * D[k]) + std::abs(B[k] * D[j]));
+    }
+    const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B));
+    const double length = la * lb * ld;
+    const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
+    const double num_error = 8 * kU * permanent + kTiny;
+    const double den_error = 96 * kU * length + kTiny;
+    const double radius = std::hypot(num, den) * (1 - 4 * kU);
+    const double e = num_error + den_error;
+    if (!(e <= radius / 4)) return std::nullopt;
+    if (!(std::abs(num) > num_error) && !(den > den_error)) {
+      if (!(den < -den_error)) return std::nullopt;
+      // Near the branch cut: the exact side.
+      const Sign side = kernel::ExactSigns{}.det3_by_vector(kernel::Offset::between(p, pa),
+                                                            kernel::Offset::between(p, pb),
+                                                            kernel::Offset::vector(apex));
+      if (side == Sign::zero) return BoundaryTerm{BoundaryTermKind::ray_on_edge, {}, {}};
+      num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
+    }
+    const double theta = std::atan2(num, den);
+    const double m = edge.multiplicity;
+    sum += m * theta;
+    magnitudes += std::abs(m * theta);
+    errors += std::abs(m) * ((4.0 / 3.0) * e / radius + kAtan2Error);
+  }
+  const double rounding = (static_cast<double>(edges.size()) + 2) * kU * magnitudes;
+  const double bound = (errors + rounding) * (1 + 8 * kU) + kTiny;
+  const double lower = sum - bound, upper = sum + bound;  // each within an ulp of exact
+  constexpr double two_pi = 2 * std::numbers::pi;
+  BoundaryTerm term{BoundaryTermKind::enclosed, {}, {}};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double threshold = two_pi * levels[i];
+    const double slack =
+        2 * kU * std::abs(threshold) + 4 * kU * (std::abs(lower) + std::abs(upper));
+    term.versus[i] = upper + slack < threshold   ? Versus::below
+                     : lower - slack > threshold ? Versus::above
+                                                 : Versus::unsure;
+    if (term.versus[i] == Versus::unsure) return std::nullopt;
+  }
+  // For reports: the turns, widened by the division's rounding and pi's.
+  const double low = lower / two_pi, high = upper / two_pi;
+  term.turns = {low - 4 * kU * std::abs(low) - kTiny, high + 4 * kU * std::abs(high) + kTiny};
+  return term;
+}
+
+}  // namespace exactgeo::internal
