@@ -57,8 +57,9 @@ std::optional<std::string> face_soup_problem(const mesh::LoadedMesh& loaded,
                             .value_or("mesh is not closed");
   message.append("; with ").append(weld);
   message.append(", which merges the " + std::to_string(*merged) +
-                 " vertices that repeat another's coordinates, it is closed (as it is, it would "
-                 "be classified as an open surface, face by face, far more slowly)");
+                 " vertices that repeat another's coordinates, it is closed (as it is, each of "
+                 "those edges would be a boundary edge of an open surface: the same labels, "
+                 "more slowly)");
   return message;
 }
 

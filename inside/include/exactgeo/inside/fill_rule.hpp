@@ -59,7 +59,7 @@ std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule r
 
 /// A face soup's problem: the mesh has boundary edges only because its faces do not share
 /// vertices (mesh::vertices_welding_closes), and a winding rule would classify it as an
-/// open surface, face by face: the same labels, far more slowly. The message names the
+/// open surface with all those edges as its boundary: the same labels, more slowly. The message names the
 /// way out, `weld` ("--weld", "weld=True"); nullopt for anything else, and when parity
 /// was asked for (which refuses it as not closed).
 std::optional<std::string> face_soup_problem(const mesh::LoadedMesh& loaded,
