@@ -89,7 +89,8 @@ _LIST_CHUNK = 1_000_000  # points per task when the points come as a list
 def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld: bool = False,
              split_polygons: bool = False, allow_non_manifold: bool = False,
              rule: Optional[str] = None) -> da.Array:
-    """The location of every point (OUTSIDE, INSIDE, BOUNDARY) as a lazy (n,) int8 array.
+    """The location of every point (OUTSIDE, INSIDE, BOUNDARY; UNDECIDED against an open
+    surface) as a lazy (n,) int8 array.
 
     mesh_path: a mesh file every worker can read (OBJ, OFF, PLY exactly; others via assimp).
     points: a dask array (or anything dask.array.asarray takes) of shape (n, 3); its chunks

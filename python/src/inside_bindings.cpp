@@ -222,7 +222,10 @@ Raises ValueError for a wrong shape, or for a coordinate that is not finite or n
 a double, such as the int64 2**53 + 1 (naming its row).)doc")
       .def("contains", &contains, py::arg("points"), py::kw_only(), py::arg("boundary") = true,
            py::arg("method") = "exact", py::arg("threads") = 0,
-           R"doc(A bool array: inside the solid, or on its boundary when `boundary` is true.)doc");
+           R"doc(A bool array: inside the solid, or on its boundary when `boundary` is true.
+
+An UNDECIDED point (an open surface's w exactly 1/2, or too close to it) is not
+contained; classify() tells those apart.)doc");
 }
 
 }  // namespace exactgeo::python

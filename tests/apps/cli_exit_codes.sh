@@ -440,6 +440,17 @@ out=$(printf '0.2 0.2 0.2\n3 3 3\n1 0 0\n' | "$exe" inside "$scratch/sliver.obj"
 [ "$out" = "$(printf 'inside\noutside\nboundary')" ] || { echo "FAIL: inside with a zero-area face: $out"; failures=$((failures + 1)); }
 expect_in "inside zero-area note" "$(cat "$scratch/sliver.err")" \
   "sliver.obj: 1 face of zero area (first: 6) bounds nothing: dropped (faces numbered from 1, as in the file)"
+# An open box (its top face z = 1 missing): the centre of the missing face has w = 1/2
+# exactly, undecided; deep inside is inside, above the hole outside; --winding is refused.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' >"$scratch/openbox.obj"
+out=$(printf '0.5 0.5 0.1\n0.5 0.5 1\n0.5 0.5 1.5\n' | "$exe" inside "$scratch/openbox.obj" 2>/dev/null | tr '\n' ' ')
+[ "$out" = "inside undecided outside " ] || { echo "FAIL: inside on an open box: '$out'"; failures=$((failures + 1)); }
+json=$(printf '0.5 0.5 0.1\n0.5 0.5 1\n' | "$exe" inside --json "$scratch/openbox.obj" 2>/dev/null)
+expect_in "inside --json open box" "$json" '"inside": 1' '"undecided": 1' '"rule": "nonzero"'
+expect 2 "inside --winding open box" "0.5 0.5 0.1\n" inside --winding "$scratch/openbox.obj"
+message=$(printf '0.5 0.5 0.1\n' | "$exe" inside --winding "$scratch/openbox.obj" 2>&1 >/dev/null)
+expect_in "inside --winding open box message" "$message" "no integer winding numbers: the surface is open"
+expect 2 "inside --rule parity open box" "0.5 0.5 0.1\n" inside --rule parity "$scratch/openbox.obj"
 # info numbers an OBJ's vertices and faces as the file does, and says so.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 3\n' >"$scratch/degenerate.obj"
 message=$("$exe" info "$scratch/degenerate.obj")
