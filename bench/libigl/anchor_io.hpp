@@ -33,9 +33,11 @@ inline void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::Matrix
   V.resize(counts[0], 3);
   F.resize(counts[1], 3);
   for (Eigen::Index i = 0; i < V.rows(); ++i)
-    for (int k = 0; k < 3; ++k) V(i, k) = vertices[static_cast<std::size_t>(3 * i + k)];
+    for (int k = 0; k < 3; ++k)
+      V(i, k) = vertices[static_cast<std::size_t>(3 * i + k)];
   for (Eigen::Index i = 0; i < F.rows(); ++i)
-    for (int k = 0; k < 3; ++k) F(i, k) = triangles[static_cast<std::size_t>(3 * i + k)];
+    for (int k = 0; k < 3; ++k)
+      F(i, k) = triangles[static_cast<std::size_t>(3 * i + k)];
 }
 
 inline Eigen::MatrixXd read_points(const std::string& path) {
@@ -44,7 +46,8 @@ inline Eigen::MatrixXd read_points(const std::string& path) {
   const auto coordinates = read_values<double>(in, 3 * count);
   Eigen::MatrixXd Q(count, 3);
   for (Eigen::Index i = 0; i < Q.rows(); ++i)
-    for (int k = 0; k < 3; ++k) Q(i, k) = coordinates[static_cast<std::size_t>(3 * i + k)];
+    for (int k = 0; k < 3; ++k)
+      Q(i, k) = coordinates[static_cast<std::size_t>(3 * i + k)];
   return Q;
 }
 

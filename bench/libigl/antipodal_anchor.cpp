@@ -28,11 +28,13 @@ class Embree3SignedHits {
     auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), V.rows()));
     for (Eigen::Index i = 0; i < V.rows(); ++i)
-      for (int k = 0; k < 3; ++k) vertices[3 * i + k] = static_cast<float>(V(i, k));
+      for (int k = 0; k < 3; ++k)
+        vertices[3 * i + k] = static_cast<float>(V(i, k));
     auto* triangles = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), F.rows()));
     for (Eigen::Index i = 0; i < F.rows(); ++i)
-      for (int k = 0; k < 3; ++k) triangles[3 * i + k] = static_cast<unsigned>(F(i, k));
+      for (int k = 0; k < 3; ++k)
+        triangles[3 * i + k] = static_cast<unsigned>(F(i, k));
     // Every hit adds the sign of its normal along the ray, and traversal goes on.
     rtcSetGeometryOccludedFilterFunction(geometry, [](const RTCFilterFunctionNArguments* a) {
       const auto& ray = *reinterpret_cast<const RTCRay*>(a->ray);

@@ -114,7 +114,7 @@ class OpenTriangles : public ::testing::TestWithParam<int> {};
 TEST_P(OpenTriangles, LabelsAreThoseOfTheDefinition) {
   const int k = GetParam();
   auto rng = testing::seeded_engine("inside.open.triangles." + std::to_string(k));
-  std::uniform_real_distribution<double> anywhere(-1.6, 1.6), unit(0.0, 1.0);
+  std::uniform_real_distribution<double> anywhere(-1.3, 1.3), unit(0.0, 1.0);
   // Extreme magnitudes take the exact stages for many signs: fewer points there.
   const int meshes = 6, points = k == 0 ? 120 : 40;
   Tally tally;

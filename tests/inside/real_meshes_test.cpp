@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -18,6 +21,7 @@
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
+#include "support/hexahedron.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::inside {
@@ -146,6 +150,70 @@ std::string refusal(const std::string& path) {
   split.split_polygons = true;
   const mesh::MeshCheck check = mesh::check_mesh(mesh::load_mesh(path, split).mesh);
   return mesh::closed_surface_problem(check).value_or("");
+}
+
+/// Spot with closed shells pushed into it, as characters carry eyes and teeth: boxes
+/// straddling its surface and one inside it, each a separate closed part. The truth is
+/// Spot's own exact winding number plus one for each box holding the point; nonzero labels
+/// the union, parity reads the overlaps outside.
+TEST(RealMeshes, SpotWithClosedShellsPushedIn) {
+  const Mesh spot = mesh::load_mesh(kMeshes + "spot/spot_quadrangulated.obj").mesh;
+  const Classifier spot_alone(spot);
+  Point3 lower = spot.vertices[0], upper = spot.vertices[0];
+  for (const Point3& v : spot.vertices) {
+    for (int i = 0; i < 3; ++i) {
+      lower[i] = std::min(lower[i], v[i]);
+      upper[i] = std::max(upper[i], v[i]);
+    }
+  }
+  // Boxes at fractions of Spot's box (rounded to multiples of 2^-10, so their faces are
+  // exact): two across the surface, one well inside.
+  const auto at = [&](double fx, double fy, double fz) {
+    Point3 p;
+    const double f[3] = {fx, fy, fz};
+    for (int i = 0; i < 3; ++i)
+      p[i] = std::ldexp(std::round(std::ldexp(lower[i] + f[i] * (upper[i] - lower[i]), 10)), -10);
+    return p;
+  };
+  const std::vector<std::array<Point3, 2>> boxes{{at(0.3, 0.3, 0.7), at(0.45, 0.5, 1.05)},
+                                                 {at(0.6, 0.05, 0.3), at(0.7, 0.2, 0.45)},
+                                                 {at(0.45, 0.45, 0.45), at(0.55, 0.55, 0.55)}};
+  Mesh mesh = spot;
+  for (const auto& [lo, hi] : boxes) {
+    const auto base = static_cast<VertexIndex>(mesh.vertices.size());
+    for (int c = 0; c < 8; ++c)
+      mesh.vertices.push_back(
+          {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]});
+    for (const auto& q : testing::kHexahedronFaces)
+      mesh.faces.push_back(mesh::make_quad(base + q[0], base + q[1], base + q[2], base + q[3]));
+  }
+  const Classifier nonzero(mesh);
+  ClassifierOptions parity_options;
+  parity_options.rule = FillRule::parity;
+  parity_options.allow_non_manifold = true;
+  const Classifier parity(mesh, parity_options);
+  auto rng = testing::seeded_engine("inside.real.spot_shells");
+  std::uniform_real_distribution<double> unit(-0.05, 1.05);
+  std::size_t overlaps = 0;
+  for (int p = 0; p < 4000; ++p) {
+    Point3 q;
+    for (int i = 0; i < 3; ++i)
+      q[i] = lower[i] + unit(rng) * (upper[i] - lower[i]);
+    const auto w_spot = spot_alone.winding_number(q);
+    ASSERT_TRUE(w_spot.has_value());
+    std::int64_t w = *w_spot;
+    for (const auto& [lo, hi] : boxes) {
+      bool in = true;
+      for (int i = 0; i < 3; ++i)
+        in = in && lo[i] < q[i] && q[i] < hi[i];
+      w += in;
+    }
+    ASSERT_EQ(nonzero.winding_number(q), w) << "point " << p;
+    ASSERT_EQ(nonzero.classify(q), w != 0 ? Location::inside : Location::outside);
+    ASSERT_EQ(parity.classify(q), w % 2 != 0 ? Location::inside : Location::outside);
+    overlaps += w == 2;
+  }
+  EXPECT_GT(overlaps, 0u) << "no point fell where a box overlaps Spot";
 }
 
 TEST(RealMeshes, NegativeMeshesAreRefusedForTheRightReason) {
