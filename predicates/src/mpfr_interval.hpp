@@ -78,17 +78,19 @@ inline MpfrInterval operator-(const MpfrInterval& a, const MpfrInterval& b) {
   return r;
 }
 
-/// The four products of the bounds, each rounded both ways: their least and greatest.
-inline MpfrInterval operator*(const MpfrInterval& a, const MpfrInterval& b) {
+/// op (mpfr_mul or mpfr_div) of the four pairs of bounds, each rounded both ways: their
+/// least and greatest.
+template <class Op>
+MpfrInterval of_bound_pairs(const MpfrInterval& a, const MpfrInterval& b, Op op) {
   MpfrInterval r(a.precision());
   mpfr_t t;
   mpfr_init2(t, a.precision());
   bool first = true;
   for (const auto* x : {a.lo(), a.hi()}) {
     for (const auto* y : {b.lo(), b.hi()}) {
-      mpfr_mul(t, x, y, MPFR_RNDD);
+      op(t, x, y, MPFR_RNDD);
       if (first || mpfr_less_p(t, r.lo())) mpfr_set(r.lo(), t, MPFR_RNDD);
-      mpfr_mul(t, x, y, MPFR_RNDU);
+      op(t, x, y, MPFR_RNDU);
       if (first || mpfr_greater_p(t, r.hi())) mpfr_set(r.hi(), t, MPFR_RNDU);
       first = false;
     }
@@ -97,23 +99,13 @@ inline MpfrInterval operator*(const MpfrInterval& a, const MpfrInterval& b) {
   return r;
 }
 
+inline MpfrInterval operator*(const MpfrInterval& a, const MpfrInterval& b) {
+  return of_bound_pairs(a, b, mpfr_mul);
+}
+
 /// Precondition: b does not hold 0.
 inline MpfrInterval operator/(const MpfrInterval& a, const MpfrInterval& b) {
-  MpfrInterval r(a.precision());
-  mpfr_t t;
-  mpfr_init2(t, a.precision());
-  bool first = true;
-  for (const auto* x : {a.lo(), a.hi()}) {
-    for (const auto* y : {b.lo(), b.hi()}) {
-      mpfr_div(t, x, y, MPFR_RNDD);
-      if (first || mpfr_less_p(t, r.lo())) mpfr_set(r.lo(), t, MPFR_RNDD);
-      mpfr_div(t, x, y, MPFR_RNDU);
-      if (first || mpfr_greater_p(t, r.hi())) mpfr_set(r.hi(), t, MPFR_RNDU);
-      first = false;
-    }
-  }
-  mpfr_clear(t);
-  return r;
+  return of_bound_pairs(a, b, mpfr_div);
 }
 
 /// Of the interval's non-negative part.

@@ -99,6 +99,13 @@ Triangle scaled(const Triangle& t, int k) {
   return {testing::scaled(t[0], k), testing::scaled(t[1], k), testing::scaled(t[2], k)};
 }
 
+/// Corners of small integer coordinates, scaled by 2^k: exactly degenerate cases come easily.
+Triangle integer_triangle(testing::Rng& rng, int k) {
+  return scaled({testing::integer_point(rng, 8), testing::integer_point(rng, 8),
+                 testing::integer_point(rng, 8)},
+                k);
+}
+
 class BoundaryTermScales : public ::testing::TestWithParam<int> {};
 
 TEST_P(BoundaryTermScales, RandomPointsAndTriangles) {
@@ -120,9 +127,7 @@ TEST_P(BoundaryTermScales, PointsNearTheEdgesAndOneUlpOff) {
   auto rng = testing::seeded_engine("predicates.boundary_term.edges." + std::to_string(k));
   Tally tally;
   for (int i = 0; i < 200; ++i) {
-    const Triangle t = scaled({testing::integer_point(rng, 8), testing::integer_point(rng, 8),
-                               testing::integer_point(rng, 8)},
-                              k);
+    const Triangle t = integer_triangle(rng, k);
     const int e = testing::uniform_int(rng, 0, 2);
     const Point3& a = t[e];
     const Point3& b = t[(e + 1) % 3];
@@ -183,9 +188,7 @@ TEST_P(BoundaryTermScales, RaysNearABoundaryEdge) {
   auto rng = testing::seeded_engine("predicates.boundary_term.cut." + std::to_string(k));
   Tally tally;
   for (int i = 0; i < 200; ++i) {
-    const Triangle t = scaled({testing::integer_point(rng, 8), testing::integer_point(rng, 8),
-                               testing::integer_point(rng, 8)},
-                              k);
+    const Triangle t = integer_triangle(rng, k);
     const int e = testing::uniform_int(rng, 0, 2);
     const Point3 m = testing::rounded_affine(t[e], t[(e + 1) % 3], t[e], 0.5, 0.0);
     const Vector3 r = ray_direction(0);
