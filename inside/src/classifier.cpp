@@ -1,5 +1,6 @@
 #include "exactgeo/inside/classifier.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 
@@ -174,6 +175,16 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   // box, and both need every point they are asked about to lie in it (classify answers
   // the points outside it first). The checks leave a face of nonzero area, so it exists.
   s.box = *internal::corner_box(s.mesh);
+  // With the boundary's corners too: a zero-area face dropped from the surface may still
+  // carry a boundary edge, and the ray that answers a point outside the box must miss it.
+  for (const BoundaryEdge& e : s.boundary) {
+    for (const VertexIndex v : {e.from, e.to}) {
+      for (int i = 0; i < 3; ++i) {
+        s.box.lower[i] = std::min(s.box.lower[i], s.mesh.vertices[v][i]);
+        s.box.upper[i] = std::max(s.box.upper[i], s.mesh.vertices[v][i]);
+      }
+    }
+  }
   s.faces = surface_faces(s.mesh);
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);

@@ -274,6 +274,22 @@ TEST(OpenSurface, PointsOnTheBoundaryAreBoundary) {
   EXPECT_EQ(classifier.classify({0.25, 0.5, 0.0}), Location::boundary);
 }
 
+TEST(OpenSurface, AZeroAreaFaceOnItsOwnBoundsNothingButIsNotOverlooked) {
+  // A flat triangle on three collinear points, far from an open box: dropped, its edges
+  // still a boundary loop (of zero solid angle). A point beyond the box whose ray away
+  // from it would run along the segment is answered, and a point on the segment is on it.
+  Mesh mesh = open_box();
+  const auto base = static_cast<VertexIndex>(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), {{5, 0.5, 0.5}, {7, 0.5, 0.5}, {6, 0.5, 0.5}});
+  mesh.faces.push_back(mesh::make_triangle(base, base + 1, base + 2));
+  const Classifier classifier(mesh);
+  EXPECT_EQ(classifier.zero_area_faces().count, 1u);
+  EXPECT_EQ(classifier.classify({4, 0.5, 0.5}), Location::outside);
+  EXPECT_EQ(classifier.classify({8, 0.5, 0.5}), Location::outside);
+  EXPECT_EQ(classifier.classify({5.5, 0.5, 0.5}), Location::boundary);
+  EXPECT_EQ(classifier.classify({0.5, 0.5, 0.5}), Location::inside);
+}
+
 TEST(OpenSurface, StackedBowlsHoldPointsBeyondTheirBox) {
   // Nine copies of the open box (as triangles, for the oracle): just below its bottom, w is
   // about -9 times the missing face's solid angle over 4 pi, below -1/2. The point is
