@@ -18,11 +18,9 @@ namespace exactgeo {
 namespace {
 
 using internal::DoubleInterval;
+using internal::kAtan2Error;
 using internal::MpfrInterval;
 using kernel::Offset;
-
-/// The C library's atan2 is trusted to this many radians (boundary_term.hpp).
-constexpr double kAtan2Error = 0x1p-40;
 
 // ---- What each interval type does its own way ------------------------------------------
 

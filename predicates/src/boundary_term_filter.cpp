@@ -41,7 +41,6 @@ namespace {
 
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
-constexpr double kAtan2Error = 0x1p-40;  // the C library's atan2, as in boundary_term.cpp
 
 /// The vector scaled by a power of two so that its largest component is in [1, 2);
 /// nullopt when it is zero or not finite.

@@ -12,6 +12,10 @@
 
 namespace exactgeo::internal {
 
+/// How far the C library's atan2 is trusted, in radians, by both double stages: 2^11 ulps
+/// of pi (whose ulp is 2^-51), where every libm in use is within a few.
+inline constexpr double kAtan2Error = 0x1p-40;
+
 /// The term of boundary_term.hpp with both levels settled (kind enclosed), or kind
 /// ray_on_edge; nullopt when the bound cannot settle them. `apex` is -ray.
 std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector3& apex,
