@@ -30,6 +30,8 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
     err << "exactgeo info: " << e.what() << "\n";
     return ExitCode::input_error;
   }
+  for (const std::string& note : loaded.notes)
+    err << "exactgeo info: warning: " << note << "\n";
   // The marked file is reserved before the work, so an unwritable path fails at once.
   std::optional<OutputFile> mark_file;
   try {

@@ -94,6 +94,10 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     if (progress) progress->phase("reading " + source);
     LoadedMesh loaded = load_mesh(options.path, options.load);
     first_index = loaded.first_index();
+    for (const std::string& note : loaded.notes) {
+      if (progress) progress->clear();
+      err << "exactgeo inside: warning: " << note << "\n";
+    }
     if (options.path == "-") kept = loaded;  // to explain a refusal: it cannot be read again
     if (options.self_intersection_check && options.threads != 1) {
       beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {

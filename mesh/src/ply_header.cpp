@@ -67,9 +67,13 @@ class HeaderParser {
       } else if (keyword == "property") {
         read_property();
       } else {
-        std::string what = "unknown header keyword ";
-        what.append(quoted(keyword));
-        fail(what);
+        // Not a PLY keyword: nothing the data's layout depends on (that is the format,
+        // element and property lines), so it is skipped, and said.
+        std::string note = source_;
+        note.append(":").append(std::to_string(lines_.line_number()));
+        note.append(": skipped header line ").append(quoted(*line));
+        note.append(": not a PLY keyword, and nothing the data's layout depends on");
+        header_.skipped.push_back(std::move(note));
       }
     }
     fail("the header has no end_header line");

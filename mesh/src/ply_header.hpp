@@ -41,12 +41,16 @@ struct PlyHeader {
   std::vector<PlyElement> elements;
   std::size_t data_offset = 0;  ///< the first byte after "end_header" and its line end
   std::size_t data_line = 0;    ///< the line number of the first data line (ASCII)
+  /// Header lines that were skipped, as messages naming the source and line.
+  std::vector<std::string> skipped;
 };
 
-/// Parses the header at the start of `data`. Throws InputError("<source>:<line>: ...") for
-/// a missing "ply" magic line, an unknown format or version, a malformed element or
-/// property line, a list whose count type is not an integer type, duplicate names, or a
-/// missing end_header.
+/// Parses the header at the start of `data`. A line whose first word is no PLY keyword
+/// (exporters write "Created by ..." lines) is skipped and listed: the data's layout
+/// comes from the format, element and property lines only. Throws
+/// InputError("<source>:<line>: ...") for a missing "ply" magic line, an unknown format or version,
+/// a malformed element or property line, a list whose count type is not an integer type, duplicate
+/// names, or a missing end_header.
 PlyHeader parse_ply_header(std::string_view data, const std::string& source);
 
 /// "ply ascii", "ply binary little endian" or "ply binary big endian".

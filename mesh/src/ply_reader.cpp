@@ -148,6 +148,7 @@ class PlyReader {
   LoadedMesh read() {
     header_ = parse_ply_header(data_, source_);
     out_.format = ply_format_name(header_.format);
+    out_.notes = header_.skipped;
     plan();
     if (header_.format == PlyFormat::ascii) {
       read_ascii();

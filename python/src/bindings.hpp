@@ -5,7 +5,16 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace exactgeo::python {
+
+/// A UserWarning with `message`: what the command line says on stderr, Python says so.
+inline void warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) {
+    throw pybind11::error_already_set();
+  }
+}
 
 void bind_predicates(pybind11::module_& module);  // orient3d
 void bind_mesh(pybind11::module_& module);        // Mesh, load_mesh

@@ -105,10 +105,6 @@ std::optional<inside::FillRule> rule_named(const py::object& name) {
   throw py::value_error("rule must be 'nonzero', 'parity', 'positive' or None, not '" + text + "'");
 }
 
-void warn(const std::string& message) {
-  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
-}
-
 inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool allow_non_manifold,
                          bool space_cells) {
   inside::ClassifierOptions options;

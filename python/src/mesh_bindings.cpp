@@ -85,10 +85,14 @@ MeshObject load(const std::filesystem::path& path, bool weld, bool split_polygon
   require_openable(path);
   MeshObject object;
   object.file = path.string();
-  py::gil_scoped_release release;
-  object.loaded = mesh::load_mesh(
-      path.string(),
-      {.weld = weld, .split_polygons = split_polygons, .format = format.value_or("")});
+  {
+    py::gil_scoped_release release;
+    object.loaded = mesh::load_mesh(
+        path.string(),
+        {.weld = weld, .split_polygons = split_polygons, .format = format.value_or("")});
+  }
+  for (const std::string& note : object.loaded.notes)
+    warn(note);
   return object;
 }
 

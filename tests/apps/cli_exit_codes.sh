@@ -451,6 +451,12 @@ expect 2 "inside --winding open box" "0.5 0.5 0.1\n" inside --winding "$scratch/
 message=$(printf '0.5 0.5 0.1\n' | "$exe" inside --winding "$scratch/openbox.obj" 2>&1 >/dev/null)
 expect_in "inside --winding open box message" "$message" "no integer winding numbers: the surface is open"
 expect 2 "inside --rule parity open box" "0.5 0.5 0.1\n" inside --rule parity "$scratch/openbox.obj"
+# A PLY header line of no keyword (exporters write "Created by ..."): skipped, and said.
+printf 'ply\nformat ascii 1.0\nCreated by an exporter\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$scratch/created.ply"
+out=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/created.ply" 2>"$scratch/created.err")
+[ "$out" = "inside" ] || { echo "FAIL: inside with a skipped PLY header line: '$out'"; failures=$((failures + 1)); }
+expect_in "inside skipped PLY header line" "$(cat "$scratch/created.err")" \
+  "warning: " "created.ply:3: skipped header line 'Created by an exporter'"
 # info numbers an OBJ's vertices and faces as the file does, and says so.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 3\n' >"$scratch/degenerate.obj"
 message=$("$exe" info "$scratch/degenerate.obj")

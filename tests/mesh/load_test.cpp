@@ -695,6 +695,35 @@ TEST_F(mesh_io, PlyByteOrderFromLiteralBytes) {
   }
 }
 
+TEST_F(mesh_io, PlyHeaderLinesOfNoKeywordAreSkippedAndSaid) {
+  // Exporters write lines such as "Created by ..." into the header (assimp-testmodels'
+  // Wuson.ply): nothing the data's layout depends on, so they are skipped, and listed.
+  std::string text = ply_header("ascii", 3, 1);
+  text.insert(text.find("element vertex"), "Created by an exporter 2.1\n");
+  text.insert(text.find("end_header"), "  \nunits millimetre\n");
+  text += "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const LoadedMesh m = load("wuson.ply", text);
+  EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+  ASSERT_EQ(m.notes.size(), 2u);
+  EXPECT_MESSAGE_HAS(m.notes[0],
+                     "wuson.ply:3: skipped header line 'Created by an exporter 2.1': not a PLY "
+                     "keyword, and nothing the data's layout depends on");
+  EXPECT_MESSAGE_HAS(m.notes[1], "wuson.ply:11: skipped header line 'units millimetre'");
+  // The same in binary: the data still starts right after end_header.
+  std::string bin = ply_header("binary_little_endian", 3, 1);
+  bin.insert(bin.find("element vertex"), "Created by an exporter\n");
+  for (const float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+    put(bin, x, false);
+  put(bin, std::uint8_t{3}, false);
+  for (const std::int32_t i : {0, 1, 2})
+    put(bin, i, false);
+  const LoadedMesh b = load("wuson_bin.ply", bin);
+  EXPECT_EQ(b.mesh.vertices[1], (Point3{1, 0, 0}));
+  EXPECT_EQ(b.notes.size(), 1u);
+  EXPECT_TRUE(load("plain.ply", ply_header("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+                  .notes.empty());
+}
+
 TEST_F(mesh_io, PlyHeaderErrors) {
   EXPECT_MESSAGE_HAS(load_error("magic.ply", "PLY\n"), "magic.ply:1:", "'ply'");
   EXPECT_MESSAGE_HAS(load_error("ver.ply", "ply\nformat ascii 2.0\n"), "ver.ply:2:", "'2.0'");
@@ -711,8 +740,9 @@ TEST_F(mesh_io, PlyHeaderErrors) {
                      "prop.ply:3:", "before any element");
   EXPECT_MESSAGE_HAS(load_error("cnt.ply", "ply\nformat ascii 1.0\nelement vertex -1\n"),
                      "cnt.ply:3:", "negative");
+  // An unknown line is skipped (below); the header must still end.
   EXPECT_MESSAGE_HAS(load_error("key.ply", "ply\nformat ascii 1.0\nfoo bar\n"),
-                     "key.ply:3:", "'foo'");
+                     "key.ply:3:", "end_header");
   EXPECT_MESSAGE_HAS(load_error("noz.ply",
                                 "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                                 "property float y\nelement face 0\n"

@@ -159,3 +159,14 @@ def test_polygons_are_split_only_when_asked(tmp_path):
     mesh = exactgeo.load_mesh(path, split_polygons=True)
     assert mesh.faces.shape == (3, 3)
     assert mesh.info()["split_polygons"] == 1
+
+
+def test_a_skipped_ply_header_line_is_a_warning(tmp_path):
+    path = tmp_path / "created.ply"
+    path.write_text("ply\nformat ascii 1.0\nCreated by an exporter\nelement vertex 3\n"
+                    "property double x\nproperty double y\nproperty double z\n"
+                    "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                    "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+    with pytest.warns(UserWarning, match=r"created.ply:3: skipped header line 'Created by"):
+        mesh = exactgeo.load_mesh(path)
+    assert mesh.faces.shape == (1, 3)

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "exactgeo/mesh/mesh.hpp"
 
@@ -30,6 +31,10 @@ struct LoadedMesh {
   bool coordinates_via_float = false;  ///< coordinates were rounded to 32-bit floats (assimp)
   std::size_t welded_vertices = 0;     ///< vertices removed by welding (LoadOptions::weld, assimp)
   std::size_t split_polygons = 0;      ///< faces with more than four corners that were split
+  /// What the reader skipped, one message each, naming the file and line
+  /// ("wuson.ply:3: skipped header line 'Created by ...': not a PLY keyword, and nothing
+  /// the data's layout depends on"). Callers show them as warnings.
+  std::vector<std::string> notes{};
 
   /// How the file numbers its vertices and faces: from 1 in OBJ, from 0 in OFF and PLY
   /// (and in exactgeo's Mesh).
