@@ -70,7 +70,7 @@ def mesh_step(path, sigma, exponents):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--mesh", default=default_spot())
     parser.add_argument("--motion", type=float, default=2e-3,
                         help="standard deviation of each coordinate's displacement")

@@ -62,7 +62,7 @@ def timed_compute(mesh_path, files):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("mesh", nargs="?", default=default_spot())
     parser.add_argument("--points", type=int, default=20_000_000)
     parser.add_argument("--chunk", type=int, default=1_000_000)

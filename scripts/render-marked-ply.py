@@ -168,7 +168,7 @@ def legend_strip(legend, width):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("ply")
     parser.add_argument("png")
     parser.add_argument("--view", nargs=2, type=float, default=(-60.0, 25.0),
