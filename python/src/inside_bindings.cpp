@@ -124,9 +124,13 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
       self = mesh::find_self_intersections(built->mesh());
     }
   } catch (const std::invalid_argument& e) {
-    std::string message = e.what();
+    // The checks' message in the file's own numbering, saying which, as on the command line.
+    const mesh::MeshCheck check = mesh::check_mesh(mesh.loaded.mesh);
+    std::string message = inside::rule_problem(check, inside::rule_for(check, options.rule),
+                                               allow_non_manifold, mesh.loaded)
+                              .value_or(e.what());
     if (options.rule && options.rule != inside::FillRule::parity &&
-        !mesh::closed_surface_problem(mesh::check_mesh(mesh.loaded.mesh), true)) {
+        !mesh::closed_surface_problem(check, true)) {
       message += "; rule='parity', which needs no orientation, accepts it";
     }
     throw py::value_error(message);

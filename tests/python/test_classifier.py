@@ -130,7 +130,7 @@ def test_bad_options():
 
 def test_an_open_mesh_is_refused_by_parity_and_labelled_by_the_winding_rules():
     open_box = exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS[:5])
-    with pytest.raises(ValueError, match="boundary edge"):
+    with pytest.raises(ValueError, match=r"boundary edge.*\(vertices and faces numbered from 0\)"):
         exactgeo.Classifier(open_box, rule="parity")
     with pytest.warns(UserWarning, match=r"the surface is open \(4 edges run more often one way"):
         classifier = exactgeo.Classifier(open_box)
@@ -142,6 +142,15 @@ def test_an_open_mesh_is_refused_by_parity_and_labelled_by_the_winding_rules():
     assert list(labels) == [exactgeo.INSIDE, exactgeo.UNDECIDED, exactgeo.OUTSIDE]
     with pytest.raises(ValueError, match="the surface is open"):
         classifier.winding_numbers(np.array([deep]))
+
+
+def test_refusals_number_as_the_file_does(tmp_path):
+    # An OBJ counts from 1: the message says so, as `exactgeo inside` does.
+    path = tmp_path / "open.obj"
+    path.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in CUBE_VERTICES) +
+                    "".join("f " + " ".join(str(i + 1) for i in q) + "\n" for q in CUBE_QUADS[:5]))
+    with pytest.raises(ValueError, match=r"\(vertices and faces numbered from 1, as in the file\)"):
+        exactgeo.Classifier(exactgeo.load_mesh(path), rule="parity")
 
 
 def test_a_face_soup_is_refused_with_the_way_out():
