@@ -58,6 +58,10 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
                                    .split_quads = options.split_quads},
                                   problem);
   if (!frames) return fail(problem);
+  for (const mesh::LoadedMesh& frame : *frames) {
+    for (const std::string& note : frame.notes)
+      err << "exactgeo ccd-mesh: warning: " << note << "\n";
+  }
   const mesh::Mesh& mesh0 = (*frames)[0].mesh;
   const mesh::Mesh& mesh1 = (*frames)[1].mesh;
 

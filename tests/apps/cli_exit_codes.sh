@@ -457,6 +457,11 @@ out=$(printf '0.1 0.1 0.1\n' | "$exe" inside "$scratch/created.ply" 2>"$scratch/
 [ "$out" = "inside" ] || { echo "FAIL: inside with a skipped PLY header line: '$out'"; failures=$((failures + 1)); }
 expect_in "inside skipped PLY header line" "$(cat "$scratch/created.err")" \
   "warning: " "created.ply:3: skipped header line 'Created by an exporter'"
+message=$("$exe" ccd-mesh "$scratch/created.ply" "$scratch/created.ply" 2>&1 >/dev/null)
+expect_in "ccd-mesh skipped PLY header line" "$message" \
+  "exactgeo ccd-mesh: warning: " "created.ply:3: skipped header line 'Created by an exporter'"
+message=$("$exe" info "$scratch/created.ply" 2>&1 >/dev/null)
+expect_in "info skipped PLY header line" "$message" "exactgeo info: warning: " "created.ply:3:"
 # info numbers an OBJ's vertices and faces as the file does, and says so.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 3\n' >"$scratch/degenerate.obj"
 message=$("$exe" info "$scratch/degenerate.obj")
