@@ -136,6 +136,27 @@ MUTANTS = [
      "predicates/include/exactgeo/predicates/internal/ray_patch_core.hpp",
      "signed_count += to_int(diagonal_turn[0]);", "signed_count += 1;",
      ["predicates_tests", "inside_tests"]),
+    # The boundary term of an open surface (predicates/src/boundary_term_filter.cpp).
+    ("boundary_filter_numerator_bound_dropped",
+     "predicates/src/boundary_term_filter.cpp",
+     "const double num_error = 8 * kU * permanent + kTiny;",
+     "const double num_error = kTiny;", ["predicates_tests", "inside_tests"]),
+    ("boundary_filter_denominator_bound_dropped",
+     "predicates/src/boundary_term_filter.cpp",
+     "const double den_error = 96 * kU * length + kTiny;",
+     "const double den_error = kTiny;", ["predicates_tests", "inside_tests"]),
+    ("boundary_filter_angle_bound_dropped",
+     "predicates/src/boundary_term_filter.cpp",
+     "errors += std::abs(m) * ((4.0 / 3.0) * e / radius + kAtan2Error);",
+     "errors += std::abs(m) * kAtan2Error;", ["predicates_tests", "inside_tests"]),
+    ("boundary_filter_branch_side_ignored",
+     "predicates/src/boundary_term_filter.cpp",
+     "num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);",
+     "(void)num;", ["predicates_tests", "inside_tests"]),
+    ("boundary_intervals_not_widened",
+     "predicates/src/double_interval.hpp",
+     "return std::nextafter(x, -std::numeric_limits<double>::infinity());",
+     "return x;", ["predicates_tests", "inside_tests"]),
 ]
 
 

@@ -1,8 +1,9 @@
 #pragma once
 
 // The boundary term's first stage: plain double arithmetic and an a priori bound on its
-// error, derived in boundary_term_filter.cpp. Twenty times cheaper than outward-rounded
-// intervals; where its bound cannot settle both levels, the caller goes on to them.
+// error, derived in boundary_term_filter.cpp: far cheaper than outward-rounded intervals
+// (docs/inside.md, "Open surfaces", measures it); where its bound cannot settle both
+// levels, the caller goes on to them.
 
 #include <array>
 #include <optional>
