@@ -159,7 +159,8 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
                 "(its diagonal c0-c2), in place, so face indices in the output count triangles "
                 "in file order");
   add_split_polygons_flag(*sub, options.split_polygons,
-                          " (the same split in both frames) instead of refusing the files");
+                          " instead of refusing the files (every polygon is split as in the "
+                          "first frame)");
   sub->add_flag("--json", options.json,
                 "print one JSON object (pairs, candidate counts, time of impact, seconds) "
                 "instead of the report");

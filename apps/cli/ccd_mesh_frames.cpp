@@ -70,6 +70,20 @@ std::optional<std::string> connectivity_problem(const FrameFiles& files, const m
   return std::nullopt;
 }
 
+/// The faces of more than four corners split in the second frame as in the first: the
+/// reader splits each frame by its own geometry, and a step needs one set of triangles.
+/// (Both frames number their faces alike when their polygons are the same; otherwise
+/// connectivity_problem names the first difference.)
+void split_as_the_first_frame(const LoadedMesh& first, LoadedMesh& second) {
+  const std::vector<std::size_t>& file_faces = first.numbering.file_faces;
+  if (file_faces.empty() || file_faces != second.numbering.file_faces) return;
+  for (std::size_t f = 0; f < file_faces.size(); ++f) {
+    const bool polygon = (f > 0 && file_faces[f - 1] == file_faces[f]) ||
+                         (f + 1 < file_faces.size() && file_faces[f + 1] == file_faces[f]);
+    if (polygon) second.mesh.faces[f] = first.mesh.faces[f];
+  }
+}
+
 }  // namespace
 
 std::optional<std::array<LoadedMesh, 2>> load_frames(const FrameFiles& files,
@@ -94,6 +108,7 @@ std::optional<std::array<LoadedMesh, 2>> load_frames(const FrameFiles& files,
       return std::nullopt;
     }
   }
+  split_as_the_first_frame(frames[0], frames[1]);
   if (auto why = connectivity_problem(files, frames[0].mesh, frames[1].mesh)) {
     problem = std::move(*why);
     return std::nullopt;

@@ -32,7 +32,7 @@ std::string yes_no(bool b) {
 
 std::string self_intersection_text(const InfoFindings& f) {
   if (!f.self) return "not checked (a corner index out of range or a non-finite coordinate)";
-  return mesh::self_intersection_problem(*f.self, f.loaded.first_index()).value_or("none");
+  return mesh::self_intersection_problem(*f.self, f.loaded.numbering).value_or("none");
 }
 
 }  // namespace
@@ -159,7 +159,7 @@ void write_info_table(std::ostream& out, const std::string& file, const InfoFind
               " run more often one way than the other): labelled by its generalized winding "
               "number";
   }
-  if (const auto zero_area = mesh::zero_area_note(c.zero_area_faces, f.loaded.first_index());
+  if (const auto zero_area = mesh::zero_area_note(c.zero_area_faces, f.loaded.numbering);
       zero_area && !f.problem) {
     usable += "; " + *zero_area;
   }

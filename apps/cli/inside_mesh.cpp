@@ -83,7 +83,7 @@ std::string_view method_name(const InsideMeshOptions& options) noexcept {
 std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, std::ostream& err,
                                             ProgressLine* progress) {
   InsideMesh built;
-  std::size_t first_index = 0;
+  mesh::FileNumbering numbering;
   // The self-intersection check runs beside the build, which keeps one core busy, on a
   // copy of the mesh (the build takes the original), on the threads asked for; with one
   // thread asked for, after the build.
@@ -93,7 +93,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
   try {
     if (progress) progress->phase("reading " + source);
     LoadedMesh loaded = load_mesh(options.path, options.load);
-    first_index = loaded.first_index();
+    numbering = loaded.numbering;
     for (const std::string& note : loaded.notes) {
       if (progress) progress->clear();
       err << "exactgeo inside: warning: " << note << "\n";
@@ -132,8 +132,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     }
     built.seconds = seconds_since(start);
     if (built.classifier) {
-      if (const auto note =
-              mesh::zero_area_note(built.classifier->zero_area_faces(), first_index)) {
+      if (const auto note = mesh::zero_area_note(built.classifier->zero_area_faces(), numbering)) {
         if (progress) progress->clear();
         err << "exactgeo inside: note: " << source << ": " << *note << "\n";
       }
@@ -173,7 +172,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     built.self = std::move(check.found);
     built.self_intersection_seconds = check.seconds;
     const bool parity = options.float_rays || built.classifier->rule() == inside::FillRule::parity;
-    const auto problem = mesh::self_intersection_problem(*built.self, first_index);
+    const auto problem = mesh::self_intersection_problem(*built.self, numbering);
     if (problem && parity) {
       if (progress) progress->clear();
       err << "exactgeo inside: warning: " << source << ": " << *problem

@@ -18,7 +18,9 @@ void add_weld_flag(CLI::App& sub, bool& weld, std::string_view more) {
 
 void add_split_polygons_flag(CLI::App& sub, bool& split_polygons, std::string_view more) {
   sub.add_flag("--split-polygons", split_polygons,
-               "split faces with more than four corners into triangle fans" + std::string(more));
+               "make a face of more than four corners whose edges cross the fan of triangles "
+               "from its first corner (other polygons are always split, exactly)" +
+                   std::string(more));
 }
 
 }  // namespace exactgeo::cli

@@ -23,9 +23,9 @@ void add_mesh_format_option(CLI::App& sub, std::string& format);
 /// equal coordinates, then `more`; `weld` must outlive the parse.
 void add_weld_flag(CLI::App& sub, bool& weld, std::string_view more = {});
 
-/// Registers `--split-polygons` (mesh::LoadOptions::split_polygons), described as splitting
-/// faces with more than four corners into triangle fans, then `more`; `split_polygons` must
-/// outlive the parse.
+/// Registers `--split-polygons` (mesh::LoadOptions::split_polygons), described as making
+/// the faces of more than four corners whose edges cross triangle fans, then `more`;
+/// `split_polygons` must outlive the parse.
 void add_split_polygons_flag(CLI::App& sub, bool& split_polygons, std::string_view more = {});
 
 }  // namespace exactgeo::cli

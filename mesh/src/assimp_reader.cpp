@@ -57,7 +57,14 @@ class SceneMerger {
               LoadedMesh& out)
       : scene_(scene), path_(path), options_(options), out_(out) {}
 
+  /// Every mesh of the scene, placed by its nodes' transforms, then its polygons split.
   void merge() {
+    add_meshes();
+    faces_.finish(out_, path_, options_);
+  }
+
+ private:
+  void add_meshes() {
     if (scene_.mRootNode == nullptr) {
       for (unsigned m = 0; m < scene_.mNumMeshes; ++m)
         add_mesh(m, kIdentity);
@@ -80,7 +87,6 @@ class SceneMerger {
     }
   }
 
- private:
   void add_mesh(unsigned m, const Matrix& transform) {
     if (m >= scene_.mNumMeshes || scene_.mMeshes[m] == nullptr) return;
     const aiMesh& mesh = *scene_.mMeshes[m];
@@ -132,7 +138,7 @@ class SceneMerger {
         }
         corners_.push_back(static_cast<VertexIndex>(base + index));
       }
-      if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail_face(*why);
+      if (auto why = faces_.add(corners_, 0, out_)) fail_face(*why);
     }
   }
 
@@ -141,6 +147,7 @@ class SceneMerger {
   const LoadOptions& options_;
   LoadedMesh& out_;
   std::vector<VertexIndex> corners_;
+  FileFaces faces_;
 };
 
 void require_supported(const Assimp::Importer& importer, const std::string& source,
@@ -182,7 +189,6 @@ LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
   out.format.append(extension);
   out.coordinates_via_float = true;
   SceneMerger(*scene, source, options, out).merge();
-  require_faces(out, source);
   out.welded_vertices = weld_vertices(out.mesh);
   return out;
 }

@@ -228,11 +228,12 @@ enum class EdgeRule : std::uint8_t {
 };
 
 std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule,
-                                           std::size_t first_index) {
+                                           const FileNumbering& numbering) {
   // Vertices and faces as the file numbers them.
-  const auto index_text = [first_index](std::size_t i) { return std::to_string(i + first_index); };
+  const auto vertex_text = [&](std::size_t v) { return numbering.vertex(v); };
+  const auto face_text = [&](std::size_t f) { return numbering.face(f); };
   const auto edge_text = [&](const Edge& e) {
-    return index_text(e.first).append("-").append(index_text(e.second));
+    return vertex_text(e.first).append("-").append(vertex_text(e.second));
   };
   std::vector<std::string> problems;
   if (check.faces == 0) {
@@ -246,13 +247,13 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
     if (bad.count > 1) {
       s = counted(bad.count, "face has", "faces have");
       s.append(" corner indices out of range (");
-      s.append(first_list(bad, index_text));
+      s.append(first_list(bad, face_text));
       s.append("): ");
     }
     s.append("face ");
-    s.append(index_text(bad.first.front()));
+    s.append(face_text(bad.first.front()));
     s.append(" has corner index ");
-    s.append(index_text(check.first_out_of_range_corner));
+    s.append(vertex_text(check.first_out_of_range_corner));
     s.append(", but there ");
     s.append(check.vertices == 1 ? "is " : "are ");
     s.append(counted(check.vertices, "vertex", "vertices"));
@@ -262,7 +263,7 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
   if (const auto& bad = check.non_finite_vertices; bad.count > 0) {
     std::string head = counted(bad.count, "vertex has", "vertices have");
     head.append(" non-finite coordinates");
-    problems.push_back(with_examples(std::move(head), bad, index_text));
+    problems.push_back(with_examples(std::move(head), bad, vertex_text));
   }
 
   // Beyond two faces per edge the rule is "an even number of faces", so the odd edges are the ones
@@ -295,7 +296,7 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
 
   if (const auto& bad = check.repeated_corner_faces; bad.count > 0) {
     problems.push_back(with_examples(
-        counted(bad.count, "face repeats a corner", "faces repeat a corner"), bad, index_text));
+        counted(bad.count, "face repeats a corner", "faces repeat a corner"), bad, face_text));
   }
 
   if (problems.empty()) return std::nullopt;
@@ -310,14 +311,14 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
 }  // namespace
 
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, bool allow_non_manifold,
-                                                  std::size_t first_index) {
+                                                  const FileNumbering& numbering) {
   return surface_problem(check, allow_non_manifold ? EdgeRule::even_faces : EdgeRule::two_faces,
-                         first_index);
+                         numbering);
 }
 
 std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
-                                                      std::size_t first_index) {
-  return surface_problem(check, EdgeRule::orientable, first_index);
+                                                      const FileNumbering& numbering) {
+  return surface_problem(check, EdgeRule::orientable, numbering);
 }
 
 namespace {
@@ -325,11 +326,7 @@ namespace {
 /// A problem found in a file's numbering, saying which.
 std::optional<std::string> with_numbering(std::optional<std::string> problem,
                                           const LoadedMesh& loaded) {
-  if (problem) {
-    problem->append(loaded.first_index() == 1
-                        ? " (vertices and faces numbered from 1, as in the file)"
-                        : " (vertices and faces numbered from 0)");
-  }
+  if (problem) problem->append(loaded.numbering.vertices_and_faces_said());
   return problem;
 }
 
@@ -337,34 +334,32 @@ std::optional<std::string> with_numbering(std::optional<std::string> problem,
 
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
                                                   bool allow_non_manifold) {
-  return with_numbering(closed_surface_problem(check, allow_non_manifold, loaded.first_index()),
+  return with_numbering(closed_surface_problem(check, allow_non_manifold, loaded.numbering),
                         loaded);
 }
 
 std::optional<std::string> zero_area_note(const Examples<std::size_t>& faces,
-                                          std::size_t first_index) {
+                                          const FileNumbering& numbering) {
   if (faces.count == 0) return std::nullopt;
   return with_examples(counted(faces.count, "face", "faces") + " of zero area", faces,
-                       [first_index](std::size_t f) { return std::to_string(f + first_index); }) +
-         (faces.count == 1 ? " bounds" : " bound") + " nothing: dropped" +
-         (first_index == 1 ? " (faces numbered from 1, as in the file)"
-                           : " (faces numbered from 0)");
+                       [&](std::size_t f) { return numbering.face(f); }) +
+         (faces.count == 1 ? " bounds" : " bound") + " nothing: dropped" + numbering.faces_said();
 }
 
 std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
                                                       const LoadedMesh& loaded) {
-  return with_numbering(orientable_surface_problem(check, loaded.first_index()), loaded);
+  return with_numbering(orientable_surface_problem(check, loaded.numbering), loaded);
 }
 
 std::optional<std::string> self_intersection_problem(const SelfIntersections& found,
-                                                     std::size_t first_index) {
+                                                     const FileNumbering& numbering) {
   if (found.intersecting.empty() && found.undecided.empty()) return std::nullopt;
-  const auto pairs = [first_index](const std::vector<FacePair>& list) {
+  const auto pairs = [&](const std::vector<FacePair>& list) {
     Examples<FacePair> examples;
     for (const FacePair& pair : list)
       examples.add(pair);
-    return first_list(examples, [first_index](const FacePair& p) {
-      return std::to_string(p.first + first_index) + "-" + std::to_string(p.second + first_index);
+    return first_list(examples, [&](const FacePair& p) {
+      return numbering.face(p.first) + "-" + numbering.face(p.second);
     });
   };
   std::vector<std::string> parts;
@@ -379,8 +374,7 @@ std::optional<std::string> self_intersection_problem(const SelfIntersections& fo
   }
   std::string message = parts[0];
   if (parts.size() > 1) message.append("; ").append(parts[1]);
-  message.append(first_index == 1 ? " (faces numbered from 1, as in the file)"
-                                  : " (faces numbered from 0)");
+  message.append(numbering.faces_said());
   return message;
 }
 

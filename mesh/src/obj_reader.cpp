@@ -10,9 +10,8 @@
 
 namespace exactgeo::mesh {
 
-using internal::add_polygon;
+using internal::FileFaces;
 using internal::kMaxVertices;
-using internal::require_faces;
 using io::InputError;
 using io::LineCursor;
 using io::parse_integer;
@@ -93,6 +92,7 @@ class ObjParser {
   ObjParser(std::string_view text, const std::string& source, const LoadOptions& options)
       : lines_(skip_utf8_bom(text)), source_(source), options_(options) {
     out_.format = "obj";
+    out_.numbering.first = 1;
   }
 
   LoadedMesh parse() {
@@ -111,7 +111,7 @@ class ObjParser {
     if (forward_line_ != 0 && static_cast<std::uint64_t>(forward_index_) > n) {
       throw InputError(source_, forward_line_, out_of_range(forward_index_, n));
     }
-    require_faces(out_, source_);
+    faces_.finish(out_, source_, options_);
     return std::move(out_);
   }
 
@@ -192,7 +192,7 @@ class ObjParser {
     for (std::size_t i = 1; i < tokens_.size(); ++i) {
       corners_.push_back(corner_index(tokens_[i]));
     }
-    if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);
+    if (auto why = faces_.add(corners_, lines_.line_number(), out_)) fail(*why);
   }
 
   LineCursor lines_;
@@ -201,6 +201,7 @@ class ObjParser {
   LoadedMesh out_;
   std::vector<std::string_view> tokens_;
   std::vector<VertexIndex> corners_;
+  FileFaces faces_;
   std::int64_t forward_index_ = 0;  // the largest index beyond the vertices defined so far
   std::size_t forward_line_ = 0;    // and its line
 };

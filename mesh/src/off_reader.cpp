@@ -13,9 +13,8 @@
 
 namespace exactgeo::mesh {
 
-using internal::add_polygon;
+using internal::FileFaces;
 using internal::kMaxVertices;
-using internal::require_faces;
 using internal::zero_based_index_problem;
 using io::InputError;
 using io::LineCursor;
@@ -67,7 +66,7 @@ class OffParser {
     read_vertices();
     read_faces();
     // Whatever follows the faces (some writers add edges or notes) is not read.
-    require_faces(out_, source_);
+    faces_.finish(out_, source_, options_);
     return std::move(out_);
   }
 
@@ -254,7 +253,7 @@ class OffParser {
         corners_.push_back(static_cast<VertexIndex>(*index));
       }
       // Values after the corners are the face's colour: not read.
-      if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail_face(f, *why);
+      if (auto why = faces_.add(corners_, lines_.line_number(), out_)) fail_face(f, *why);
     }
   }
 
@@ -264,6 +263,7 @@ class OffParser {
   LoadedMesh out_;
   std::vector<std::string_view> tokens_;
   std::vector<VertexIndex> corners_;
+  FileFaces faces_;
   VertexColumns columns_;
   std::string_view keyword_;  ///< as written; empty when the file has none
   std::uint64_t vertex_count_ = 0;

@@ -20,7 +20,7 @@
 
 namespace exactgeo::mesh {
 
-using internal::add_polygon;
+using internal::FileFaces;
 using internal::kMaxVertices;
 using internal::parse_ply_header;
 using internal::ply_format_name;
@@ -32,7 +32,6 @@ using internal::PlyFormat;
 using internal::PlyHeader;
 using internal::PlyProperty;
 using internal::PlyType;
-using internal::require_faces;
 using internal::zero_based_index_problem;
 using io::InputError;
 using io::LineCursor;
@@ -155,7 +154,7 @@ class PlyReader {
     } else {
       read_binary();
     }
-    require_faces(out_, source_);
+    faces_.finish(out_, source_, options_);
     return std::move(out_);
   }
 
@@ -277,6 +276,7 @@ class PlyReader {
           what.append(")");
           fail(what);
         }
+        line_ = lines.line_number();
         read_ascii_instance(p, fail);
       }
     }
@@ -340,7 +340,7 @@ class PlyReader {
         corners_.push_back(static_cast<VertexIndex>(index));
       }
       if (role == Role::corners) {
-        if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);
+        if (auto why = faces_.add(corners_, line_, out_)) fail(*why);
       }
       t += static_cast<std::size_t>(n);
     }
@@ -449,7 +449,7 @@ class PlyReader {
           if (auto why = zero_based_index_problem(index, vertex_count_)) fail(*why);
           corners_.push_back(static_cast<VertexIndex>(index));
         }
-        if (auto why = add_polygon(corners_, options_.split_polygons, out_)) fail(*why);
+        if (auto why = faces_.add(corners_, 0, out_)) fail(*why);
       } else {
         pos += static_cast<std::size_t>(n) * size;
       }
@@ -467,6 +467,8 @@ class PlyReader {
   LoadedMesh out_;
   std::vector<std::string_view> tokens_;
   std::vector<VertexIndex> corners_;
+  FileFaces faces_;
+  std::size_t line_ = 0;  ///< the line of the element instance being read (ASCII)
 };
 
 }  // namespace

@@ -1,6 +1,10 @@
 #include "polygon.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "exactgeo/io/input_error.hpp"
+#include "polygon_triangulation.hpp"
 
 namespace exactgeo::mesh::internal {
 
@@ -21,8 +25,8 @@ std::optional<std::string> zero_based_index_problem(std::int64_t index,
   return what;
 }
 
-std::optional<std::string> add_polygon(std::span<const VertexIndex> corners, bool split_polygons,
-                                       LoadedMesh& out) {
+std::optional<std::string> FileFaces::add(std::span<const VertexIndex> corners, std::size_t line,
+                                          LoadedMesh& out) {
   const std::size_t n = corners.size();
   auto& faces = out.mesh.faces;
   if (n < 3) {
@@ -34,20 +38,107 @@ std::optional<std::string> add_polygon(std::span<const VertexIndex> corners, boo
     faces.push_back(make_triangle(corners[0], corners[1], corners[2]));
   } else if (n == 4) {
     faces.push_back(make_quad(corners[0], corners[1], corners[2], corners[3]));
-  } else if (split_polygons) {
-    for (std::size_t i = 1; i + 1 < n; ++i) {
-      faces.push_back(make_triangle(corners[0], corners[i], corners[i + 1]));
-    }
-    ++out.split_polygons;
   } else {
-    std::string why = "a face with ";
-    why.append(std::to_string(n));
-    why.append(
-        " corners: only triangles and quads are supported (--split-polygons splits larger "
-        "polygons into triangle fans)");
-    return why;
+    polygons_.push_back({faces.size(), line, corners_.size(), corners_.size() + n});
+    corners_.insert(corners_.end(), corners.begin(), corners.end());
+    faces.emplace_back();  // its place, filled by finish()
   }
   return std::nullopt;
+}
+
+namespace {
+
+bool finite_corners(std::span<const VertexIndex> corners, const std::vector<Point3>& vertices) {
+  return std::all_of(corners.begin(), corners.end(), [&](VertexIndex c) {
+    const Point3& p = vertices[c];
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+  });
+}
+
+std::string why_refused(std::size_t corners) {
+  std::string why = "a face of ";
+  why.append(std::to_string(corners));
+  why.append(
+      " corners whose edges cross or touch, in every projection onto a coordinate plane, has "
+      "no surface to take: --split-polygons (split_polygons=True in Python) makes it the fan "
+      "of triangles from its first corner");
+  return why;
+}
+
+/// "3 faces (first: 5, 9, 12)": the faces a note is about.
+std::string faces_named(const std::vector<std::size_t>& faces, const FileNumbering& numbering) {
+  std::string s = std::to_string(faces.size());
+  s.append(faces.size() == 1 ? " face (" : " faces (first: ");
+  for (std::size_t k = 0; k < std::min<std::size_t>(faces.size(), 5); ++k) {
+    if (k > 0) s.append(", ");
+    s.append(numbering.face(faces[k]));
+  }
+  if (faces.size() > 5) s.append(", ...");
+  s.append(")");
+  return s;
+}
+
+}  // namespace
+
+void FileFaces::finish(LoadedMesh& out, const std::string& source, const LoadOptions& options) {
+  if (!polygons_.empty()) {
+    std::vector<Face>& faces = out.mesh.faces;
+    std::vector<Face> split;
+    std::vector<std::size_t> file_faces;
+    split.reserve(faces.size() + corners_.size());
+    file_faces.reserve(split.capacity());
+    std::vector<std::size_t> non_planar;  // file faces
+    std::vector<std::size_t> fans;
+    auto polygon = polygons_.begin();
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (polygon == polygons_.end() || polygon->face != f) {
+        split.push_back(faces[f]);
+        file_faces.push_back(f);
+        continue;
+      }
+      const std::span<const VertexIndex> corners(corners_.data() + polygon->begin,
+                                                 polygon->end - polygon->begin);
+      // Non-finite coordinates, which the mesh checks refuse, have no projection: the fan
+      // keeps the face for the checks to name.
+      const PolygonForm form = finite_corners(corners, out.mesh.vertices)
+                                   ? triangulate_polygon(corners, out.mesh.vertices, split)
+                                   : PolygonForm::self_crossing;
+      if (form == PolygonForm::non_planar) non_planar.push_back(f);
+      if (form == PolygonForm::self_crossing) {
+        if (!options.split_polygons) {
+          const std::string what =
+              "face " + out.numbering.face(f) + ": " + why_refused(corners.size());
+          if (polygon->line == 0) throw InputError(source + ": " + what);
+          throw InputError(source, polygon->line, what);
+        }
+        append_fan(corners, split);
+        fans.push_back(f);
+      }
+      file_faces.resize(split.size(), f);
+      ++polygon;
+    }
+    out.split_polygons += polygons_.size();
+    faces = std::move(split);
+    // The notes name the file's faces, before file_faces maps the mesh's to them.
+    if (!non_planar.empty()) {
+      out.notes.push_back(
+          source + ": " + faces_named(non_planar, out.numbering) +
+          " of more than four corners not in one plane: split into triangles over the "
+          "polygon's projection onto a coordinate plane, a surface with the polygon's edges "
+          "that does not fold over itself" +
+          out.numbering.faces_said());
+    }
+    if (!fans.empty()) {
+      out.notes.push_back(source + ": " + faces_named(fans, out.numbering) +
+                          " of more than four corners whose edges cross: made fans of "
+                          "triangles from the first corner (--split-polygons)" +
+                          out.numbering.faces_said());
+    }
+    out.numbering.file_faces = std::move(file_faces);
+    corners_.clear();
+    polygons_.clear();
+  }
+  require_faces(out, source);
 }
 
 void require_faces(const LoadedMesh& loaded, const std::string& source) {

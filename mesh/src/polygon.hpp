@@ -1,13 +1,15 @@
 #pragma once
 
-// Turning a file's polygons into exactgeo faces: triangles and quads are kept as they are,
-// larger polygons are refused or (on request) split into a triangle fan.
+// A file's faces as its reader meets them: triangles and quads are kept as they are;
+// faces of more than four corners wait until every vertex is read, then become triangles
+// (polygon_triangulation.hpp), and messages keep the file's face numbers.
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
@@ -17,13 +19,32 @@ namespace exactgeo::mesh::internal {
 /// The most vertices a mesh can index: every index is below kNoVertex.
 inline constexpr std::size_t kMaxVertices = kNoVertex;
 
-/// Appends the polygon with these corners (indices already checked to be in range) to
-/// out.mesh: one face for 3 or 4 corners; for more, a fan of triangles from the first
-/// corner when `split_polygons` (counted in out.split_polygons). Returns nullopt, or the
-/// reason the polygon was refused (fewer than 3 corners, or more than 4 without
-/// `split_polygons`) for the caller to report with its place.
-std::optional<std::string> add_polygon(std::span<const VertexIndex> corners, bool split_polygons,
-                                       LoadedMesh& out);
+class FileFaces {
+ public:
+  /// Adds the file's next face, whose corners are indices already checked to be in range
+  /// (or, in OBJ, checked before finish); `line` is its line in a text file, 0 in a
+  /// binary one. Returns nullopt, or the reason the face is refused (fewer than three
+  /// corners) for the caller to report with its place.
+  std::optional<std::string> add(std::span<const VertexIndex> corners, std::size_t line,
+                                 LoadedMesh& out);
+
+  /// Once every vertex is read: splits each polygon of more than four corners into
+  /// triangles in place, exactly when it is flat, else into a fan when
+  /// options.split_polygons asks (with a note in out.notes), and keeps the file's face
+  /// numbers in out.numbering. Throws io::InputError naming `source`, the face and its
+  /// line for a polygon refused, or when the file has no face.
+  void finish(LoadedMesh& out, const std::string& source, const LoadOptions& options);
+
+ private:
+  struct Polygon {
+    std::size_t face;   ///< its place among the file's faces, from 0
+    std::size_t line;   ///< 0 in a binary file
+    std::size_t begin;  ///< its corners: corners_[begin, end)
+    std::size_t end;
+  };
+  std::vector<VertexIndex> corners_;
+  std::vector<Polygon> polygons_;
+};
 
 /// nullopt when a 0-based vertex index (OFF, PLY) names one of `vertex_count` vertices,
 /// else the reason it does not, for the caller to report with its place.

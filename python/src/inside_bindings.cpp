@@ -148,7 +148,7 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
         "(rule='parity')");
   }
   if (self) {
-    if (const auto problem = mesh::self_intersection_problem(*self, 0)) {
+    if (const auto problem = mesh::self_intersection_problem(*self, mesh.loaded.numbering)) {
       warn(*problem +
            ": the labels are those of the parity solid (inside where rays cross the surface "
            "an odd number of times), which is not the solid such faces were meant to bound" +

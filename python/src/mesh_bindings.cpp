@@ -232,8 +232,11 @@ decimal numbers correctly rounded, binary values bit for bit. Other formats (STL
 ...) go through assimp, whose coordinates are 32-bit floats (info()["coordinates_via_float"]).
 
 weld: merge vertices with exactly equal coordinates (face soups, STL).
-split_polygons: split faces with more than four corners into triangle fans instead of
-    refusing the file.
+split_polygons: make a face of more than four corners whose edges cross (which has no
+    surface to split into) the fan of triangles from its first corner, instead of
+    refusing the file. Other polygons are always split into triangles, exactly: a planar
+    one into triangles covering exactly it, a non-planar one over its projection (with
+    a warning).
 format: "obj", "off", "ply" or a format assimp reads ("stl", ...), for a file whose name
     has no extension or a misleading one; None: the extension decides.
 

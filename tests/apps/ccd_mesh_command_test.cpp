@@ -19,6 +19,7 @@
 #include "apps/marked_ply_text.hpp"
 #include "cli/ccd_mesh_command.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/mesh/load.hpp"
 #include "support/generators.hpp"
 #include "support/scratch_dir.hpp"
 #include "support/seed.hpp"
@@ -259,6 +260,26 @@ TEST(CcdMeshCommand, SplitQuadsGivesTheTrianglesOfTheStatedDiagonal) {
   EXPECT_FALSE(vertex_face.empty() && edge_edge.empty()) << "the sheet should collide";
   EXPECT_EQ(pairs_in(out.str(), "vertex_face"), vertex_face) << out.str();
   EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << out.str();
+}
+
+TEST(CcdMeshCommand, APolygonIsSplitAsInTheFirstFrame) {
+  // A pentagon, convex in the first frame; in the second its corner 0 has moved inwards
+  // (reflex), so its own ear clipping would cut other triangles.
+  const testing::ScratchDir dir("exactgeo_ccd_mesh_polygon");
+  const fs::path first = dir.path / "first.obj";
+  const fs::path second = dir.path / "second.obj";
+  std::ofstream(first) << "v 0 0 0\nv 4 0 0\nv 4 4 0\nv 2 5 0\nv 0 4 0\nf 1 2 3 4 5\n";
+  std::ofstream(second) << "v 2 3 1\nv 4 0 1\nv 4 4 1\nv 2 5 1\nv 0 4 1\nf 1 2 3 4 5\n";
+  const mesh::LoadedMesh own = mesh::load_mesh(second.string());
+  const mesh::LoadedMesh as_first = mesh::load_mesh(first.string());
+  ASSERT_NE(own.mesh.faces, as_first.mesh.faces);  // the case this test is about
+  CcdMeshOptions options;
+  options.frame0 = first.string();
+  options.frame1 = second.string();
+  options.json = true;
+  std::ostringstream out, err;
+  EXPECT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
+  EXPECT_NE(out.str().find("\"candidates\": "), std::string::npos) << out.str();
 }
 
 }  // namespace

@@ -160,8 +160,10 @@ expect 2 "info malformed file" "" info "$scratch/short-vertex.off"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$scratch/bad-index.off"
 expect 2 "info index out of range" "" info --json "$scratch/bad-index.off"
 printf 'OFF\n5 1 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n5 0 1 2 3 4\n' >"$scratch/pentagon.off"
-expect 2 "info pentagon" "" info "$scratch/pentagon.off"
-expect 0 "info pentagon split" "" info --split-polygons "$scratch/pentagon.off"
+expect 0 "info pentagon" "" info "$scratch/pentagon.off"
+printf 'OFF\n5 1 0\n0 10 0\n6 -8 0\n-10 3 0\n10 3 0\n-6 -8 0\n5 0 1 2 3 4\n' >"$scratch/pentagram.off"
+expect 2 "info pentagram" "" info "$scratch/pentagram.off"
+expect 0 "info pentagram as a fan" "" info --split-polygons "$scratch/pentagram.off"
 
 expect_in() {  # expect_in <description> <text> <substrings...>
   local what="$1" text="$2"
@@ -195,7 +197,7 @@ expect_in "info table (closed)" "$table" 'closed              yes' 'usable for `
 table=$("$exe" info "$meshes/negative/corner_with_hole.off")
 expect_in "info table (open)" "$table" 'closed              no: ' \
   'usable for `exactgeo inside`: yes, as an open surface (4 edges run more often one way than the other): labelled by its generalized winding number'
-json=$("$exe" info --json --split-polygons "$scratch/pentagon.off")
+json=$("$exe" info --json "$scratch/pentagon.off")
 expect_in "info --json (split pentagon)" "$json" '"faces": 3' '"triangles": 3' '"closed": false' \
   '"boundary_edges": 5' '"bounding_box": {"lower": [0, 0, 0], "upper": [2, 2, 0]}'
 
@@ -228,7 +230,8 @@ expect 2 "inside two coordinates" "1 2\n" inside "$cube"
 expect 2 "inside NaN" "0 0 nan\n" inside "$cube"
 expect 2 "inside unknown method" "0 0 0\n" inside --method rational "$cube"
 expect 2 "inside zero threads" "0 0 0\n" inside --threads 0 "$cube"
-expect 2 "inside pentagon" "0 0 0\n" inside "$scratch/pentagon.off"
+expect 2 "inside pentagram" "0 0 0\n" inside "$scratch/pentagram.off"
+expect 0 "inside pentagon" "0 0 0\n" inside "$scratch/pentagon.off"
 message=$(printf '1 2\n' | "$exe" inside "$cube" 2>&1 >/dev/null)
 expect_in "inside error names the line" "$message" '<stdin>:1: expected 3 coordinates, found 2'
 message=$(printf '0 0 0\n' | "$exe" inside "$meshes/negative/corner_with_hole.off" 2>&1 >/dev/null)

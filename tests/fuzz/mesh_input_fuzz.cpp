@@ -72,7 +72,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   check_mesh(loaded.mesh);
-  check(options.split_polygons || loaded.split_polygons == 0);
+  // A split polygon's triangles keep its number: file faces in order, one or more each.
+  const auto& file_faces = loaded.numbering.file_faces;
+  check(file_faces.empty() || file_faces.size() == loaded.mesh.faces.size());
+  for (std::size_t f = 1; f < file_faces.size(); ++f)
+    check(file_faces[f] == file_faces[f - 1] || file_faces[f] == file_faces[f - 1] + 1);
   if (options.weld) {
     const std::size_t before = loaded.mesh.vertices.size();
     const std::size_t removed = exactgeo::mesh::weld_vertices(loaded.mesh);

@@ -175,12 +175,10 @@ Mesh split_as_embree(const Mesh& mesh) {
 }
 
 TEST(FloatRayParity, MixedQuadsAndTrianglesOfARealMesh) {
-  // Spot's control mesh with its pentagons split into fans: quads and triangles. Its
+  // Spot's control mesh with its pentagons split into triangles: quads and triangles. Its
   // quads are far from planar, so the bilinear solid and Embree's triangulation differ
   // visibly; against the exact labels of that triangulation only float rounding is left.
-  mesh::LoadOptions split;
-  split.split_polygons = true;
-  const Mesh mesh = mesh::load_mesh(kMeshes + "spot/spot_control_mesh.obj", split).mesh;
+  const Mesh mesh = mesh::load_mesh(kMeshes + "spot/spot_control_mesh.obj").mesh;
   const mesh::MeshCheck check = mesh::check_mesh(mesh);
   ASSERT_GT(check.quads, 0u);
   ASSERT_GT(check.triangles, 0u);

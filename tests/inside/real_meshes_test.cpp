@@ -18,7 +18,6 @@
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/location.hpp"
-#include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "support/hexahedron.hpp"
@@ -67,10 +66,9 @@ std::vector<Point3> test_points(const Mesh& mesh, const mesh::Box& box, std::mt1
   return points;
 }
 
-void expect_embree_matches_brute_force(const std::string& path, std::size_t count,
-                                       const mesh::LoadOptions& load = {}) {
+void expect_embree_matches_brute_force(const std::string& path, std::size_t count) {
   SCOPED_TRACE(path);
-  const Mesh mesh = mesh::load_mesh(path, load).mesh;
+  const Mesh mesh = mesh::load_mesh(path).mesh;
   const Classifier embree(mesh);
   const Classifier brute(mesh, {.candidates = CandidateSearch::brute_force,
                                 .allow_non_manifold = false,
@@ -129,11 +127,9 @@ TEST(RealMeshes, EmbreeAgreesWithBruteForceOnBundledMeshes) {
   }
   expect_embree_matches_brute_force(kMeshes + "spot/spot_quadrangulated.obj", 1500);
   expect_embree_matches_brute_force(kMeshes + "spot/spot_quad_cc1.ply", 300);
-  // Pentagons split into fans: a closed mesh of quads and triangles.
-  mesh::LoadOptions split;
-  split.split_polygons = true;
-  expect_embree_matches_brute_force(kMeshes + "spot/spot_control_mesh.obj", 600, split);
-  expect_embree_matches_brute_force(kMeshes + "cgal/double-torus-example.off", 600, split);
+  // Pentagons split into triangles on loading: a closed mesh of quads and triangles.
+  expect_embree_matches_brute_force(kMeshes + "spot/spot_control_mesh.obj", 600);
+  expect_embree_matches_brute_force(kMeshes + "cgal/double-torus-example.off", 600);
 }
 
 TEST(RealMeshes, EmbreeAgreesWithBruteForceOnSharedMeshes) {
@@ -146,9 +142,7 @@ TEST(RealMeshes, EmbreeAgreesWithBruteForceOnSharedMeshes) {
 
 /// The reason `exactgeo inside` gives for refusing a mesh.
 std::string refusal(const std::string& path) {
-  mesh::LoadOptions split;
-  split.split_polygons = true;
-  const mesh::MeshCheck check = mesh::check_mesh(mesh::load_mesh(path, split).mesh);
+  const mesh::MeshCheck check = mesh::check_mesh(mesh::load_mesh(path).mesh);
   return mesh::closed_surface_problem(check).value_or("");
 }
 
@@ -228,8 +222,6 @@ TEST(RealMeshes, NegativeMeshesAreRefusedForTheRightReason) {
             FillRule::parity);
   EXPECT_FALSE(mesh::check_mesh(mesh::load_mesh(kMeshes + "negative/cube4-shuffled.off").mesh)
                    .consistently_oriented.value_or(true));
-  // Faces with more than four corners are refused by the loader.
-  EXPECT_THROW(mesh::load_mesh(kMeshes + "spot/spot_control_mesh.obj"), io::InputError);
 }
 
 TEST(RealMeshes, SharedNegativeMeshesAreRefusedForTheRightReason) {

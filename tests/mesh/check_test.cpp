@@ -240,9 +240,9 @@ TEST(MeshCheck, DegenerateFaces) {
   EXPECT_NE(message.find("1 face repeats a corner (first: 1)"), std::string::npos) << message;
   EXPECT_EQ(message.find("zero area"), std::string::npos) << message;
   // Numbered as an OBJ file numbers them, from 1.
-  const std::string from_one = closed_surface_problem(c, false, 1).value_or("");
+  const std::string from_one = closed_surface_problem(c, false, {.first = 1}).value_or("");
   EXPECT_NE(from_one.find("1 face repeats a corner (first: 2)"), std::string::npos) << from_one;
-  EXPECT_EQ(zero_area_note(c.zero_area_faces, 1),
+  EXPECT_EQ(zero_area_note(c.zero_area_faces, {.first = 1}),
             "4 faces of zero area (first: 3, 4, 8, 9) bound nothing: dropped (faces numbered from "
             "1, as in the file)");
 }
@@ -334,7 +334,7 @@ TEST(MeshCheck, DegenerateFacesInAClosedMesh) {
   EXPECT_EQ(c.degenerate_faces.first, (std::vector<std::size_t>{6, 7}));
   EXPECT_EQ(c.zero_area_faces.first, (std::vector<std::size_t>{6, 7}));
   EXPECT_EQ(problem(mesh), "");  // dropped by classification, not refused
-  EXPECT_EQ(zero_area_note(c.zero_area_faces, 0),
+  EXPECT_EQ(zero_area_note(c.zero_area_faces, {}),
             "2 faces of zero area (first: 6, 7) bound nothing: dropped (faces numbered from 0)");
 }
 

@@ -503,36 +503,46 @@ TEST_F(mesh_io, ObjErrorsNameFileAndLine) {
 // ---------------------------------------------------------------------------------------
 // Polygons with more than four corners
 
-TEST_F(mesh_io, PentagonsAreRefusedOrSplitIntoFans) {
+TEST_F(mesh_io, PolygonsAreSplitInEveryReader) {
+  // A convex pentagon and a concave hexagon, flat: triangles, no option needed. (Their
+  // tiling is checked against exact oracles in polygon_test.cpp.)
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\n";
-  EXPECT_MESSAGE_HAS(load_error("p.obj", obj), "p.obj:6:", "5 corners", "--split-polygons");
-  const LoadedMesh split = load("p.obj", obj, {.split_polygons = true});
-  EXPECT_EQ(split.split_polygons, 1u);
-  EXPECT_TRUE(split.mesh.faces == (std::vector<Face>{make_triangle(0, 1, 2), make_triangle(0, 2, 3),
-                                                     make_triangle(0, 3, 4)}));
+  const LoadedMesh pentagon = load("p.obj", obj);
+  EXPECT_EQ(pentagon.split_polygons, 1u);
+  EXPECT_EQ(pentagon.mesh.faces.size(), 3u);
 
   const std::string off = "OFF\n5 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n3 0 1 2\n5 0 1 2 3 4\n";
-  EXPECT_MESSAGE_HAS(load_error("p.off", off), "p.off:9:", "face 1", "5 corners",
-                     "--split-polygons");
-  EXPECT_EQ(load("p.off", off, {.split_polygons = true}).mesh.faces.size(), 4u);
+  const LoadedMesh two = load("p.off", off);
+  EXPECT_EQ(two.mesh.faces.size(), 4u);
+  EXPECT_EQ(two.numbering.file_faces, (std::vector<std::size_t>{0, 1, 1, 1}));
+  // The pentagram's edges cross: refused at its line, with the way out.
+  const std::string star = "OFF\n5 1 0\n0 10 0\n6 -8 0\n-10 3 0\n10 3 0\n-6 -8 0\n5 0 1 2 3 4\n";
+  EXPECT_MESSAGE_HAS(load_error("s.off", star), "s.off:8: face 0:", "cross", "--split-polygons");
 
   Mesh mesh;
-  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {1, 2, 0}, {0, 1, 0}, {0, 0, 1}};
+  // An L: corner 1 is its inner corner; seen from corner 0, the end of an arm, the
+  // other arm is hidden behind it.
+  mesh.vertices = {{4, 1, 0}, {1, 1, 0}, {1, 4, 0}, {0, 4, 0}, {0, 0, 0}, {4, 0, 0}};
   mesh.faces = {make_triangle(0, 1, 5)};
   std::string ply = to_ply(mesh, {"binary_little_endian"});
-  // Turn the triangle into a hexagon 0 1 2 3 4 5: count byte 6, then three more indices.
+  // Turn the triangle into the hexagon 0 1 2 3 4 5: count byte 6, then three more indices.
   const std::size_t face_at = ply.size() - (1 + 3 * 4 + 2);
   ply[face_at] = 6;
   std::string extra;
   for (const std::int32_t i : {2, 3, 4})
     put(extra, i, false);
   ply.insert(face_at + 1 + 2 * 4, extra);  // after corners 0 1: 0 1 2 3 4 5
-  EXPECT_MESSAGE_HAS(load_error("h.ply", ply), "h.ply: face 0:", "6 corners", "--split-polygons");
-  const LoadedMesh hex = load("h.ply", ply, {.split_polygons = true});
+  const LoadedMesh hex = load("h.ply", ply);
   EXPECT_EQ(hex.split_polygons, 1u);
-  EXPECT_TRUE(hex.mesh.faces ==
-              (std::vector<Face>{make_triangle(0, 1, 2), make_triangle(0, 2, 3),
-                                 make_triangle(0, 3, 4), make_triangle(0, 4, 5)}));
+  EXPECT_EQ(hex.mesh.faces.size(), 4u);
+  // Not the fan from corner 0, whose first two triangles lie outside the L.
+  for (const Face& f : hex.mesh.faces) {
+    EXPECT_FALSE(f == make_triangle(0, 1, 2) || f == make_triangle(0, 2, 3));
+  }
+  // A binary file has no lines: the face is named alone.
+  std::string crossed = ply;
+  std::swap(crossed[face_at + 1 + 2 * 4], crossed[face_at + 1 + 4 * 4]);  // 0 1 4 3 2 5
+  EXPECT_MESSAGE_HAS(load_error("x.ply", crossed), "x.ply: face 0:", "cross", "--split-polygons");
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1068,8 +1078,8 @@ struct DataFile {
   std::size_t vertices;
   std::size_t triangles;
   std::size_t quads;
-  std::size_t larger;         // faces with more than four corners
-  std::size_t fan_triangles;  // the triangles they split into
+  std::size_t larger;             // faces with more than four corners
+  std::size_t polygon_triangles;  // the triangles they split into (n - 2 each)
 };
 
 // Counts as listed in the shared data's README (and counted in the files).
@@ -1091,7 +1101,7 @@ const DataFile kBundled[] = {
     {"spot/spot_quad_cc1.ply", 11714, 0, 11712, 0, 0},  // binary float64 PLY
 };
 
-void expect_counts(const LoadedMesh& m, const DataFile& d, bool split) {
+void expect_counts(const LoadedMesh& m, const DataFile& d) {
   EXPECT_EQ(m.mesh.vertices.size(), d.vertices);
   std::size_t triangles = 0;
   std::size_t quads = 0;
@@ -1101,20 +1111,23 @@ void expect_counts(const LoadedMesh& m, const DataFile& d, bool split) {
       ASSERT_LT(f.corners[c], m.mesh.vertices.size());
   }
   EXPECT_EQ(quads, d.quads);
-  EXPECT_EQ(triangles, d.triangles + (split ? d.fan_triangles : 0));
-  EXPECT_EQ(m.split_polygons, split ? d.larger : 0);
+  EXPECT_EQ(triangles, d.triangles + d.polygon_triangles);
+  EXPECT_EQ(m.split_polygons, d.larger);
+  // Split polygons keep the file's face numbers: each file face gives one face or more.
+  if (d.larger == 0) {
+    EXPECT_TRUE(m.numbering.file_faces.empty());
+  } else {
+    ASSERT_EQ(m.numbering.file_faces.size(), m.mesh.faces.size());
+    EXPECT_EQ(m.numbering.file_faces.back() + 1, d.triangles + d.quads + d.larger);
+  }
 }
 
 TEST(mesh_io_data, BundledMeshesLoadWithTheirFaceCounts) {
   for (const DataFile& d : kBundled) {
     SCOPED_TRACE(d.path);
     const std::string path = cat(EXACTGEO_TEST_DATA_DIR, "/meshes/", d.path);
-    if (d.larger == 0) {
-      expect_counts(load_mesh(path), d, false);
-    } else {
-      EXPECT_MESSAGE_HAS(error_of([&] { (void)load_mesh(path); }), path, "--split-polygons");
-    }
-    expect_counts(load_mesh(path, {.split_polygons = true}), d, true);
+    // Polygons need no option: these are flat, or split over a projection (with a note).
+    expect_counts(load_mesh(path), d);
   }
 }
 
@@ -1131,7 +1144,7 @@ TEST(mesh_io_data, SharedSpotPlyFilesLoadAsQuads) {
     SCOPED_TRACE(d.path);
     const LoadedMesh m = load_mesh((dir / d.path).string());
     EXPECT_EQ(m.format, "ply binary little endian");
-    expect_counts(m, d, false);
+    expect_counts(m, d);
   }
 }
 

@@ -151,14 +151,19 @@ def test_malformed_file_names_file_and_line(tmp_path):
         exactgeo.load_mesh(path)
 
 
-def test_polygons_are_split_only_when_asked(tmp_path):
+def test_polygons_are_split_and_crossing_ones_only_when_asked(tmp_path):
     path = tmp_path / "pentagon.obj"
     path.write_text("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0.5 2 0\nv 0 1 0\nf 1 2 3 4 5\n")
-    with pytest.raises(ValueError, match="pentagon.obj"):
-        exactgeo.load_mesh(path)
-    mesh = exactgeo.load_mesh(path, split_polygons=True)
+    mesh = exactgeo.load_mesh(path)
     assert mesh.faces.shape == (3, 3)
     assert mesh.info()["split_polygons"] == 1
+    star = tmp_path / "star.obj"
+    star.write_text("v 0 10 0\nv 6 -8 0\nv -10 3 0\nv 10 3 0\nv -6 -8 0\nf 1 2 3 4 5\n")
+    with pytest.raises(ValueError, match=r"star.obj:6: face 1: .*split_polygons=True"):
+        exactgeo.load_mesh(star)
+    with pytest.warns(UserWarning, match="made fans of triangles from the first corner"):
+        fan = exactgeo.load_mesh(star, split_polygons=True)
+    assert fan.faces.tolist() == [[0, 1, 2], [0, 2, 3], [0, 3, 4]]
 
 
 def test_a_skipped_ply_header_line_is_a_warning(tmp_path):

@@ -99,11 +99,10 @@ MeshCheck check_mesh(const Mesh& mesh);
 /// finite coordinates, at least one face of nonzero area, no repeated corner in a face
 /// with an area (faces of zero area are dropped, not refused), every edge shared by an
 /// even number of faces, and (unless allow_non_manifold) by exactly two. Vertices and
-/// faces are numbered from `first_index` in the message (0 as in the Mesh; 1 as in an OBJ
-/// file).
+/// faces are named by `numbering` in the message (from 0, as in the Mesh, by default).
 std::optional<std::string> closed_surface_problem(const MeshCheck& check,
                                                   bool allow_non_manifold = false,
-                                                  std::size_t first_index = 0);
+                                                  const FileNumbering& numbering = {});
 
 /// What keeps the mesh from having a winding number (closed) or a generalized one (open)
 /// that means what its faces say: closed_surface_problem's conditions on indices,
@@ -111,26 +110,26 @@ std::optional<std::string> closed_surface_problem(const MeshCheck& check,
 /// a boundary run twice looks the same, so it is taken as given). Boundary and
 /// non-manifold edges are fine. nullopt if nothing.
 std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
-                                                      std::size_t first_index = 0);
+                                                      const FileNumbering& numbering = {});
 
-/// The same message for a mesh read from a file, in the file's own numbering (OBJ counts
-/// vertices and faces from 1; OFF, PLY and exactgeo's Mesh from 0), saying which.
+/// The same message for a mesh read from a file, in the file's own numbering
+/// (LoadedMesh::numbering: OBJ counts vertices and faces from 1; OFF, PLY and exactgeo's
+/// Mesh from 0; a split polygon's triangles bear its number), saying which.
 std::optional<std::string> closed_surface_problem(const MeshCheck& check, const LoadedMesh& loaded,
                                                   bool allow_non_manifold = false);
 std::optional<std::string> orientable_surface_problem(const MeshCheck& check,
                                                       const LoadedMesh& loaded);
 
 /// What classification does with the faces of zero area, if there are any: "3 faces of
-/// zero area (first: 4, 9, 11) bound nothing: dropped", numbered from `first_index`
-/// (saying which).
+/// zero area (first: 4, 9, 11) bound nothing: dropped", named by `numbering` (saying how).
 std::optional<std::string> zero_area_note(const Examples<std::size_t>& zero_area_faces,
-                                          std::size_t first_index);
+                                          const FileNumbering& numbering);
 
-/// What find_self_intersections found, as one message with faces numbered from
-/// `first_index` (LoadedMesh::first_index: the file's own numbering), e.g. "3 pairs of
-/// faces intersect (first: 1-2, 1-5, 4-9); 1 pair undecided (first: 2-3) (faces numbered
-/// from 1, as in the file)"; nullopt when no pair intersects or is undecided.
+/// What find_self_intersections found, as one message with faces named by `numbering`
+/// (LoadedMesh::numbering: the file's own), e.g. "3 pairs of faces intersect (first: 1-2,
+/// 1-5, 4-9); 1 pair undecided (first: 2-3) (faces numbered from 1, as in the file)";
+/// nullopt when no pair intersects or is undecided.
 std::optional<std::string> self_intersection_problem(const SelfIntersections& found,
-                                                     std::size_t first_index);
+                                                     const FileNumbering& numbering);
 
 }  // namespace exactgeo::mesh

@@ -9,8 +9,11 @@
 // LoadedMesh::coordinates_via_float says so.
 //
 // Faces keep their corners: triangles stay triangles, quads stay quads (the bilinear
-// patch through the four corners). A face with more than four corners is an error unless
-// LoadOptions::split_polygons asks for a fan split from its first corner.
+// patch through the four corners). A face with more than four corners is split into
+// triangles, exactly: a planar one into triangles that cover exactly it, a non-planar one
+// over its projection onto a coordinate plane (with a note); one whose edges cross is an
+// error unless LoadOptions::split_polygons makes it a fan from its first corner.
+// LoadedMesh::numbering keeps the file's face numbers for messages.
 
 #include <string>
 
@@ -24,8 +27,8 @@ namespace exactgeo::mesh {
 /// an extension need options.format. Throws
 /// io::InputError naming the file, and the line (text formats) or the face/vertex index
 /// (binary formats), for anything malformed: unreadable file, bad or non-finite number,
-/// index out of range, face with fewer than three or (without split_polygons) more
-/// than four corners, truncated data, an empty mesh, an unknown format.
+/// index out of range, face with fewer than three corners or (without split_polygons)
+/// more than four whose edges cross, truncated data, an empty mesh, an unknown format.
 LoadedMesh load_mesh(const std::string& path, const LoadOptions& options = {});
 
 /// The name a path stands for in messages: "standard input" for "-", else the path.

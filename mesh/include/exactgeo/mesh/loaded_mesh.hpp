@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "exactgeo/mesh/file_numbering.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 
 namespace exactgeo::mesh {
@@ -15,8 +16,9 @@ struct LoadOptions {
   /// Merge vertices with exactly equal coordinates (+0 and -0 count as equal) and
   /// re-index faces. Meshes stored as face soups (STL, per-corner data) need it.
   bool weld = false;
-  /// Split faces with more than four corners into a triangle fan from their first
-  /// corner, instead of refusing them.
+  /// Make a face of more than four corners that has no flat face to keep (its corners
+  /// not in one plane, or its edges crossing or touching) the fan of triangles from its
+  /// first corner, instead of refusing the file. (Flat polygons are always split, exactly.)
   bool split_polygons = false;
   /// The format, named like an extension in lower case ("obj", "off", "ply", or one that
   /// assimp reads: "stl", "glb", ...). Empty: the file's extension decides.
@@ -30,15 +32,15 @@ struct LoadedMesh {
   std::string format;
   bool coordinates_via_float = false;  ///< coordinates were rounded to 32-bit floats (assimp)
   std::size_t welded_vertices = 0;     ///< vertices removed by welding (LoadOptions::weld, assimp)
-  std::size_t split_polygons = 0;      ///< faces with more than four corners that were split
+  /// Faces with more than four corners, split into triangles (flat ones exactly; others
+  /// into fans, when LoadOptions::split_polygons asked for it, with a note).
+  std::size_t split_polygons = 0;
   /// What the reader skipped, one message each, naming the file and line
   /// ("wuson.ply:3: skipped header line 'Created by ...': not a PLY keyword, and nothing
   /// the data's layout depends on"). Callers show them as warnings.
   std::vector<std::string> notes{};
-
-  /// How the file numbers its vertices and faces: from 1 in OBJ, from 0 in OFF and PLY
-  /// (and in exactgeo's Mesh).
-  std::size_t first_index() const noexcept { return format == "obj" ? 1 : 0; }
+  /// How the file numbers the mesh's vertices and faces, for messages.
+  FileNumbering numbering{};
 };
 
 }  // namespace exactgeo::mesh
