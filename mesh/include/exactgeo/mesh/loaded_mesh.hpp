@@ -13,23 +13,24 @@ namespace exactgeo::mesh {
 
 struct LoadOptions {
   /// Merge vertices with exactly equal coordinates (+0 and -0 count as equal) and
-  /// re-index faces. Meshes stored as face soups (STL, per-corner data) need it.
+  /// re-index faces. Meshes stored as face soups (per-corner data) need it; STL files and
+  /// the formats assimp reads are welded always.
   bool weld = false;
   /// Split faces with more than four corners into a triangle fan from their first
   /// corner, instead of refusing them.
   bool split_polygons = false;
-  /// The format, named like an extension in lower case ("obj", "off", "ply", or one that
-  /// assimp reads: "stl", "glb", ...). Empty: the file's extension decides.
+  /// The format, named like an extension in lower case ("obj", "off", "ply", "stl", or one
+  /// that assimp reads: "glb", "3ds", ...). Empty: the file's extension decides.
   std::string format{};
 };
 
 struct LoadedMesh {
   Mesh mesh;
   /// "obj", "off", "ply ascii", "ply binary little endian", "ply binary big endian",
-  /// or "assimp " and the extension ("assimp stl").
+  /// "stl ascii", "stl binary", or "assimp " and the extension ("assimp glb").
   std::string format;
   bool coordinates_via_float = false;  ///< coordinates were rounded to 32-bit floats (assimp)
-  std::size_t welded_vertices = 0;     ///< vertices removed by welding (LoadOptions::weld, assimp)
+  std::size_t welded_vertices = 0;     ///< vertices removed by welding (weld, STL, assimp)
   std::size_t split_polygons = 0;      ///< faces with more than four corners that were split
   /// What the reader skipped, one message each, naming the file and line
   /// ("wuson.ply:3: skipped header line 'Created by ...': not a PLY keyword, and nothing
