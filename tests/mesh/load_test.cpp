@@ -23,6 +23,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "exactgeo/io/input_error.hpp"
@@ -1038,19 +1039,30 @@ TEST_F(mesh_io, StlAsciiIsReadExactlyAndWelded) {
   EXPECT_EQ(load("box", to_ascii_stl(soup), {.format = "stl"}).mesh.faces, m.mesh.faces);
 }
 
-TEST_F(mesh_io, StlAsciiRandomDoublesRoundTrip) {
-  auto engine = exactgeo::testing::seeded_engine("mesh_io.stl_random_doubles");
-  std::uniform_int_distribution<std::uint64_t> any_bits;
-  std::vector<Triangle> soup(100);
+// `n` triangles of random finite values of type T (double or float; random bits, so
+// subnormals and zeros of either sign among them), as doubles.
+template <class T>
+std::vector<Triangle> random_soup(std::string_view stream, std::size_t n) {
+  using Bits = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+  auto engine = exactgeo::testing::seeded_engine(stream);
+  std::uniform_int_distribution<Bits> any_bits;
+  std::vector<Triangle> soup(n);
   for (Triangle& t : soup) {
     for (Point3& p : t) {
       for (double& x : p) {
+        T value{};
         do {
-          x = std::bit_cast<double>(any_bits(engine));
-        } while (!std::isfinite(x));
+          value = std::bit_cast<T>(any_bits(engine));
+        } while (!std::isfinite(value));
+        x = value;
       }
     }
   }
+  return soup;
+}
+
+TEST_F(mesh_io, StlAsciiRandomDoublesRoundTrip) {
+  const std::vector<Triangle> soup = random_soup<double>("mesh_io.stl_random_doubles", 100);
   const LoadedMesh m = load("random.stl", to_ascii_stl(soup));
   EXPECT_EQ(m.mesh.vertices.size(), 300u);
   expect_soup(m, soup);
@@ -1089,21 +1101,7 @@ TEST_F(mesh_io, StlAsciiVariantsReadAlike) {
 }
 
 TEST_F(mesh_io, StlBinaryIsBitExact) {
-  // Random finite floats, subnormals and zeros of either sign among them.
-  auto engine = exactgeo::testing::seeded_engine("mesh_io.stl_binary");
-  std::uniform_int_distribution<std::uint32_t> any_bits;
-  std::vector<Triangle> soup(200);
-  for (Triangle& t : soup) {
-    for (Point3& p : t) {
-      for (double& x : p) {
-        float f = 0;
-        do {
-          f = std::bit_cast<float>(any_bits(engine));
-        } while (!std::isfinite(f));
-        x = f;
-      }
-    }
-  }
+  std::vector<Triangle> soup = random_soup<float>("mesh_io.stl_binary", 200);
   soup[0][0] = {std::numeric_limits<float>::denorm_min(), -0.0, std::numeric_limits<float>::max()};
   // Many binary headers begin with "solid" although the file is not text.
   for (const std::string_view header : {"binary STL", "solid written by a CAD program"}) {
@@ -1157,26 +1155,32 @@ TEST_F(mesh_io, StlAsciiErrorsNameTheFileAndLine) {
     s.replace(s.find(from, 8 + facet.size()), from.size(), to);  // the second facet: lines 9-15
     return s;
   };
-  EXPECT_MESSAGE_HAS(load_error("bad.stl", with("1 0 0", "1 0.5x 0")),
-                     "bad.stl:12: facet 1: the second vertex: '0.5x' is not a number");
-  EXPECT_MESSAGE_HAS(load_error("nan.stl", with("0 1 0", "0 nan 0")),
-                     "nan.stl:13: facet 1: the third vertex: 'nan' is not a number");
-  EXPECT_MESSAGE_HAS(load_error("big.stl", with("1 0 0", "1e999 0 0")),
-                     "big.stl:12: facet 1: the second vertex: '1e999' is outside the range");
-  EXPECT_MESSAGE_HAS(load_error("two.stl", with("  vertex 0 1 0\n", "")),
-                     "two.stl:13: facet 1: expected 'vertex' (a facet has three vertices), "
-                     "found 'endloop'");
-  EXPECT_MESSAGE_HAS(load_error("four.stl", with(" endloop", "vertex 1 1 1\nendloop")),
-                     "four.stl:14: facet 1: expected 'endloop' (a facet has three vertices), "
-                     "found 'vertex'");
-  EXPECT_MESSAGE_HAS(load_error("short.stl", with(" 0 1 0\n", " 0 1\n")),
-                     "short.stl:14: facet 1: the third vertex: 'endloop' is not a number");
-  EXPECT_MESSAGE_HAS(load_error("normal.stl", with("normal 0 0 1", "normal a b c")),
-                     "normal.stl:9: facet 1: the normal: 'a' is not a number");
-  EXPECT_MESSAGE_HAS(load_error("loop.stl", with("outer loop", "outer")),
-                     "loop.stl:11: facet 1: expected 'loop', found 'vertex'");
-  EXPECT_MESSAGE_HAS(load_error("word.stl", with("endfacet", "endfacet x")),
-                     "word.stl:15: expected 'facet' or 'endsolid', found 'x'");
+  struct Case {
+    const char* file;
+    std::string_view from, to;  // in the second facet
+    const char* message;
+  };
+  const Case cases[] = {
+      {"bad.stl", "1 0 0", "1 0.5x 0",
+       "bad.stl:12: facet 1: the second vertex: '0.5x' is not a number"},
+      {"nan.stl", "0 1 0", "0 nan 0",
+       "nan.stl:13: facet 1: the third vertex: 'nan' is not a number"},
+      {"big.stl", "1 0 0", "1e999 0 0",
+       "big.stl:12: facet 1: the second vertex: '1e999' is outside the range"},
+      {"two.stl", "  vertex 0 1 0\n", "",
+       "two.stl:13: facet 1: expected 'vertex' (a facet has three vertices), found 'endloop'"},
+      {"four.stl", " endloop", "vertex 1 1 1\nendloop",
+       "four.stl:14: facet 1: expected 'endloop' (a facet has three vertices), found 'vertex'"},
+      {"short.stl", " 0 1 0\n", " 0 1\n",
+       "short.stl:14: facet 1: the third vertex: 'endloop' is not a number"},
+      {"normal.stl", "normal 0 0 1", "normal a b c",
+       "normal.stl:9: facet 1: the normal: 'a' is not a number"},
+      {"loop.stl", "outer loop", "outer", "loop.stl:11: facet 1: expected 'loop', found 'vertex'"},
+      {"word.stl", "endfacet", "endfacet x",
+       "word.stl:15: expected 'facet' or 'endsolid', found 'x'"},
+  };
+  for (const Case& c : cases)
+    EXPECT_MESSAGE_HAS(load_error(c.file, with(c.from, c.to)), c.message);
   EXPECT_MESSAGE_HAS(load_error("cut.stl", cat("solid s\n", facet.substr(0, 40))),
                      "cut.stl:4: facet 0: the file ends where a coordinate should be");
   EXPECT_MESSAGE_HAS(load_error("open.stl", cat("solid s\r\n", facet)),
