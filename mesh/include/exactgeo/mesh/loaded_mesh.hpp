@@ -37,8 +37,9 @@ struct LoadedMesh {
   /// the data's layout depends on"). Callers show them as warnings.
   std::vector<std::string> notes{};
 
-  /// How the file numbers its vertices and faces: from 1 in OBJ, from 0 in OFF and PLY
-  /// (and in exactgeo's Mesh).
+  /// How the file numbers its vertices and faces: from 1 in OBJ, from 0 in OFF, PLY and
+  /// STL (facets in file order, welded vertices in order of first appearance), and in
+  /// exactgeo's Mesh.
   std::size_t first_index() const noexcept { return format == "obj" ? 1 : 0; }
 };
 
