@@ -30,8 +30,8 @@ std::optional<std::string> frame_problem(const std::string& path, const LoadedMe
                                          bool split_quads) {
   if (loaded.coordinates_via_float) {
     return path +
-           ": ccd-mesh reads OBJ, OFF and PLY files only (other formats come through assimp, "
-           "which rounds coordinates to float and welds vertices)";
+           ": ccd-mesh reads OBJ, OFF, PLY and STL files only (other formats come through "
+           "assimp, which rounds coordinates to float and welds vertices)";
   }
   const std::vector<mesh::Face>& faces = loaded.mesh.faces;
   const auto first_quad = std::find_if(faces.begin(), faces.end(),

@@ -82,11 +82,11 @@ CLI::App& add_info_command(CLI::App& app, InfoOptions& options) {
       "coplanar faces facing opposite ways, as where two solids meet face to face), and "
       "whether `exactgeo inside` can use it. Exit code 0 whenever the file loads.");
   sub->add_option("mesh", options.mesh,
-                  "mesh file (OBJ, OFF, PLY exactly; others via assimp), or - for standard "
-                  "input (with --format)")
+                  "mesh file (OBJ, OFF, PLY, STL exactly; others via assimp), or - for "
+                  "standard input (with --format)")
       ->required();
   add_mesh_format_option(*sub, options.load.format);
-  add_weld_flag(*sub, options.load.weld, " first (for face soups, STL)");
+  add_weld_flag(*sub, options.load.weld, " first (for face soups; STL is always welded)");
   add_split_polygons_flag(*sub, options.load.split_polygons, " instead of refusing the file");
   sub->add_flag("--json", options.json, "print one JSON object instead of the table");
   sub->add_option("--mark", options.mark,

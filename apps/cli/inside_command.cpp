@@ -198,8 +198,8 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       "decimal or hexfloat, separated by spaces and/or commas; '#' comments), raw "
       "little-endian float64 triples (f64), or a NumPy .npy array of shape (n, 3), float64.");
   sub->add_option("mesh", options.mesh.path,
-                  "OBJ, OFF or PLY (exact), or any format assimp reads; - for standard input "
-                  "(with --format and a POINTS file)")
+                  "OBJ, OFF, PLY or STL (exact), or any format assimp reads; - for standard "
+                  "input (with --format and a POINTS file)")
       ->required();
   add_mesh_format_option(*sub, options.mesh.load.format);
   sub->add_option("points", options.points, "points file, or - for standard input (default)");

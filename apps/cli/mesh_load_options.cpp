@@ -7,8 +7,8 @@ namespace exactgeo::cli {
 void add_mesh_format_option(CLI::App& sub, std::string& format) {
   sub.add_option("--format", format,
                  "the mesh format when the name does not tell it (standard input, no "
-                 "extension): obj, off, ply (read exactly) or a format assimp reads (stl, "
-                 "glb, ...); overrides the extension")
+                 "extension): obj, off, ply, stl (read exactly) or a format assimp reads "
+                 "(glb, 3ds, ...); overrides the extension")
       ->type_name("NAME");
 }
 

@@ -158,7 +158,7 @@ void require_supported(const Assimp::Importer& importer, const std::string& sour
     std::string what = "unsupported mesh format ";
     what.append(extension.empty() ? "(no file extension; name it with --format)"
                                   : quoted(extension));
-    what.append(": expected obj, off, ply or a format assimp reads (stl, gltf, glb, ...)");
+    what.append(": expected obj, off, ply, stl or a format assimp reads (gltf, glb, 3ds, ...)");
     fail(source, what);
   }
 }

@@ -9,6 +9,7 @@
 #include "exactgeo/mesh/obj_reader.hpp"
 #include "exactgeo/mesh/off_reader.hpp"
 #include "exactgeo/mesh/ply_reader.hpp"
+#include "exactgeo/mesh/stl_reader.hpp"
 #include "exactgeo/mesh/weld.hpp"
 
 namespace exactgeo::mesh {
@@ -41,6 +42,7 @@ Reader exact_reader(const std::string& format) {
   if (format == "obj") return read_obj;
   if (format == "off") return read_off;
   if (format == "ply") return read_ply;
+  if (format == "stl") return read_stl;
   return nullptr;
 }
 
@@ -58,7 +60,7 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   if (from_stdin && format.empty()) {
     throw InputError(source +
                      ": the mesh's format cannot be told from a name: give --format "
-                     "(obj, off, ply, or a format assimp reads)");
+                     "(obj, off, ply, stl, or a format assimp reads)");
   }
   const Reader reader = exact_reader(format);
   if (reader == nullptr) {  // assimp always welds
@@ -67,7 +69,8 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
   }
   const std::string bytes = from_stdin ? read_stream(std::cin, source) : read_file(path);
   LoadedMesh loaded = reader(bytes, source, options);
-  if (options.weld) loaded.welded_vertices = weld_vertices(loaded.mesh);
+  // The STL reader always welds (a triangle soup); a second weld would find nothing.
+  if (options.weld && reader != read_stl) loaded.welded_vertices = weld_vertices(loaded.mesh);
   return loaded;
 }
 

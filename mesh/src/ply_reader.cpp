@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <optional>
 #include <string>
 #include <type_traits>
 #include <vector>
 
+#include "binary_value.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/numbers.hpp"
 #include "exactgeo/io/text_scan.hpp"
@@ -22,6 +21,7 @@ namespace exactgeo::mesh {
 
 using internal::FileFaces;
 using internal::kMaxVertices;
+using internal::load_value;
 using internal::parse_ply_header;
 using internal::ply_format_name;
 using internal::ply_type_is_integer;
@@ -32,6 +32,7 @@ using internal::PlyFormat;
 using internal::PlyHeader;
 using internal::PlyProperty;
 using internal::PlyType;
+using internal::swap_needed;
 using internal::zero_based_index_problem;
 using io::InputError;
 using io::LineCursor;
@@ -56,15 +57,6 @@ struct ElementPlan {
 
 std::size_t axis_of(Role role) {
   return static_cast<std::size_t>(role) - 1;
-}
-
-// A value stored in the file's byte order, as the host's T.
-template <class T>
-T load(const char* bytes, bool swap) {
-  std::array<unsigned char, sizeof(T)> raw;
-  std::memcpy(raw.data(), bytes, sizeof(T));
-  if (swap) std::reverse(raw.begin(), raw.end());
-  return std::bit_cast<T>(raw);
 }
 
 // Calls f(T{}) with T the C++ type of a PLY scalar type.
@@ -94,7 +86,7 @@ auto with_scalar_type(PlyType type, F f) {
 // Every PLY scalar converts to double exactly (float32 widens, integers have <= 32 bits).
 double load_double(PlyType type, const char* bytes, bool swap) {
   return with_scalar_type(
-      type, [&](auto tag) { return static_cast<double>(load<decltype(tag)>(bytes, swap)); });
+      type, [&](auto tag) { return static_cast<double>(load_value<decltype(tag)>(bytes, swap)); });
 }
 
 // Precondition: ply_type_is_integer(type).
@@ -102,7 +94,7 @@ std::int64_t load_integer(PlyType type, const char* bytes, bool swap) {
   return with_scalar_type(type, [&](auto tag) -> std::int64_t {
     using T = decltype(tag);
     if constexpr (std::is_integral_v<T>) {
-      return load<T>(bytes, swap);
+      return load_value<T>(bytes, swap);
     } else {
       return 0;
     }
@@ -357,7 +349,7 @@ class PlyReader {
 
   void read_binary() {
     const bool file_is_big = header_.format == PlyFormat::binary_big_endian;
-    const bool swap = file_is_big != (std::endian::native == std::endian::big);
+    const bool swap = swap_needed(file_is_big);
     std::size_t pos = header_.data_offset;
     for (const ElementPlan& p : plans_) {
       const PlyElement& element = *p.element;

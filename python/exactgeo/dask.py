@@ -92,7 +92,8 @@ def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld
     """The location of every point (OUTSIDE, INSIDE, BOUNDARY; UNDECIDED against an open
     surface) as a lazy (n,) int8 array.
 
-    mesh_path: a mesh file every worker can read (OBJ, OFF, PLY exactly; others via assimp).
+    mesh_path: a mesh file every worker can read (OBJ, OFF, PLY, STL exactly; others via
+        assimp).
     points: a dask array (or anything dask.array.asarray takes) of shape (n, 3); its chunks
         along n become the tasks (a few hundred thousand to a few million points each).
         Coordinates are converted exactly or refused, as by Classifier.classify.

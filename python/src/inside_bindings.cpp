@@ -136,7 +136,7 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
     throw py::value_error(message);
   }
   // What the command line says on stderr, Python says as warnings.
-  if (const auto note = mesh::zero_area_note(built->zero_area_faces(), 0)) {
+  if (const auto note = mesh::zero_area_note(built->zero_area_faces(), mesh.loaded.numbering)) {
     warn(*note);
   }
   if (const auto note = built->open_note()) {

@@ -227,18 +227,19 @@ exactgeo.Classifier would refuse the mesh, or None.)doc")
              py::arg("split_polygons") = false, py::arg("format") = py::none(),
              R"doc(Reads a mesh file, keeping coordinates exact.
 
-OBJ, OFF and PLY (ASCII and binary, float and double) are read by exactgeo's own readers:
-decimal numbers correctly rounded, binary values bit for bit. Other formats (STL, glTF,
-...) go through assimp, whose coordinates are 32-bit floats (info()["coordinates_via_float"]).
+OBJ, OFF, PLY (ASCII and binary, float and double) and STL (ASCII and binary) are read by
+exactgeo's own readers: decimal numbers correctly rounded, binary values bit for bit. STL,
+a triangle soup, is always welded. Other formats (glTF, 3DS, ...) go through assimp, whose
+coordinates are 32-bit floats (info()["coordinates_via_float"]).
 
-weld: merge vertices with exactly equal coordinates (face soups, STL).
+weld: merge vertices with exactly equal coordinates (face soups).
 split_polygons: make a face of more than four corners whose edges cross (which has no
     surface to split into) the fan of triangles from its first corner, instead of
     refusing the file. Other polygons are always split into triangles, exactly: a planar
     one into triangles covering exactly it, a non-planar one over its projection (with
     a warning).
-format: "obj", "off", "ply" or a format assimp reads ("stl", ...), for a file whose name
-    has no extension or a misleading one; None: the extension decides.
+format: "obj", "off", "ply", "stl" or a format assimp reads ("glb", ...), for a file whose
+    name has no extension or a misleading one; None: the extension decides.
 
 Raises OSError when the file cannot be opened, ValueError with the file and line (or
 face) for malformed content.)doc");

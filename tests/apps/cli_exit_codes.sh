@@ -220,6 +220,27 @@ fi
 json=$(printf '%b' "$points" | "$exe" inside --json "$cube")
 expect_in "inside --json" "$json" '"points": 3' '"inside": 1' '"outside": 1' '"boundary": 1' \
   '"build_seconds": ' '"seconds": '
+# STL is read exactly: a vertex copied from the file lies on the surface (through 32-bit
+# floats, 0.7 would move below the double 0.7 and the point would be outside).
+stl_facet() {  # stl_facet <x y z> <x y z> <x y z>
+  printf 'facet normal 0 0 0\n outer loop\n  vertex %s\n  vertex %s\n  vertex %s\n endloop\nendfacet\n' "$@"
+}
+a='0.1 0.1 0.1' b='0.7 0.1 0.1' c='0.1 0.7 0.1' d='0.1 0.1 0.7'
+{ echo 'solid tetrahedron'; stl_facet "$a" "$c" "$b"; stl_facet "$a" "$b" "$d"
+  stl_facet "$a" "$d" "$c"; stl_facet "$b" "$c" "$d"; echo 'endsolid tetrahedron'; } >"$scratch/tet.stl"
+labels=$(printf '%s\n' "$b" '0.2 0.2 0.2' '0.7 0.7 0.7' | "$exe" inside "$scratch/tet.stl" | tr '\n' ' ')
+if [ "$labels" != "boundary inside outside " ]; then
+  echo "FAIL: inside labels on an ASCII STL tetrahedron: '$labels'"
+  failures=$((failures + 1))
+fi
+expect_in "info --json (STL)" "$("$exe" info --json "$scratch/tet.stl")" '"format": "stl ascii"' \
+  '"coordinates_via_float": false' '"vertices": 4' '"welded_vertices": 8' '"closed": true'
+expect 0 "ccd-mesh STL frames" "" ccd-mesh "$scratch/tet.stl" "$scratch/tet.stl"
+# A frame in which two corners meet welds to fewer vertices: not the same mesh.
+sed "s/$d/$c/" "$scratch/tet.stl" >"$scratch/tet_flat.stl"
+message=$("$exe" ccd-mesh "$scratch/tet.stl" "$scratch/tet_flat.stl" 2>&1 >/dev/null)
+expect_in "ccd-mesh STL frames that weld differently" "$message" \
+  "$scratch/tet.stl has 4 vertices, $scratch/tet_flat.stl has 3"
 expect 0 "inside help" "" inside --help
 expect 0 "inside no points" "" inside "$cube"
 expect 2 "inside no mesh" "" inside
@@ -349,8 +370,7 @@ printf "${tri}v 0.25 0.25 nan\nv 0.3 0.25 3\nv 0.25 0.3 3\nf 1 2 3\nf 4 5 6\n" \
   >"$scratch/nan1.obj"
 printf "${tri}v 0.25 0.25 1\nv 0.3 0.25 5\nv 0.25 0.3 5\nf 1 2 3\nf 4 4 6\n" \
   >"$scratch/repeat0.obj"
-printf 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n%b\n' \
-  'endloop\nendfacet\nendsolid t' >"$scratch/tri.stl"
+printf '0 0 0 1 0 0 0 1 0\n' >"$scratch/tri.raw"  # RAW: a triangle a line, read by assimp
 expect 2 "ccd-mesh no frames" "" ccd-mesh
 expect 2 "ccd-mesh one frame" "" ccd-mesh "$vf0"
 expect 2 "ccd-mesh quads" "" ccd-mesh "$scratch/quad.obj" "$scratch/quad.obj"
@@ -363,7 +383,7 @@ expect 2 "ccd-mesh repeated corner" "" ccd-mesh --json "$scratch/repeat0.obj" \
   "$scratch/repeat0.obj"
 expect 2 "ccd-mesh missing frame0" "" ccd-mesh --json /nonexistent/frame0.obj "$vf1"
 expect 2 "ccd-mesh missing frame1" "" ccd-mesh --json "$vf0" /nonexistent/frame1.obj
-expect 2 "ccd-mesh assimp format" "" ccd-mesh --json "$scratch/tri.stl" "$scratch/tri.stl"
+expect 2 "ccd-mesh assimp format" "" ccd-mesh --json "$scratch/tri.raw" "$scratch/tri.raw"
 expect 2 "ccd-mesh method double" "" ccd-mesh --method double "$vf0" "$vf1"
 expect 2 "ccd-mesh unknown method" "" ccd-mesh --method bogus "$vf0" "$vf1"
 expect 2 "ccd-mesh --toi with parity" "" ccd-mesh --toi --method parity "$vf0" "$vf1"
@@ -402,9 +422,9 @@ message=$("$exe" ccd-mesh "$scratch/repeat0.obj" "$scratch/repeat0.obj" 2>&1 >/d
 expect_in "ccd-mesh repeated corner message" "$message" "$scratch/repeat0.obj: " 'face 1: '
 message=$("$exe" ccd-mesh "$vf0" /nonexistent/frame1.obj 2>&1 >/dev/null)
 expect_in "ccd-mesh missing file message" "$message" '/nonexistent/frame1.obj: cannot open file'
-message=$("$exe" ccd-mesh "$scratch/tri.stl" "$scratch/tri.stl" 2>&1 >/dev/null)
+message=$("$exe" ccd-mesh "$scratch/tri.raw" "$scratch/tri.raw" 2>&1 >/dev/null)
 expect_in "ccd-mesh assimp format message" "$message" \
-  "$scratch/tri.stl: ccd-mesh reads OBJ, OFF and PLY files only"
+  "$scratch/tri.raw: ccd-mesh reads OBJ, OFF, PLY and STL files only"
 message=$("$exe" ccd-mesh "$vf0" "$scratch/oneface1.obj" 2>&1 >/dev/null)
 expect_in "ccd-mesh face count message" "$message" "$vf0 has 2 faces, $scratch/oneface1.obj has 1"
 

@@ -1,11 +1,13 @@
 // libFuzzer target for the exact mesh readers behind `exactgeo inside` and `exactgeo info`:
-// OBJ, OFF and PLY (ASCII and binary), from memory. The first byte picks the reader
-// (byte % 3: OBJ, OFF, PLY) and the options (bit 2: split polygons, bit 3: weld); the rest
-// is the file. Invariants on every input:
+// OBJ, OFF, PLY and STL (ASCII and binary), from memory. The first byte picks the reader
+// (byte % 4: OBJ, OFF, PLY, STL) and the options (bit 2: split polygons, bit 3: weld); the
+// rest is the file. Invariants on every input:
 //   - no crash, no sanitizer report, no huge allocation from a declared count;
 //   - either an InputError whose message names "<fuzz>", or a mesh with at least one face,
 //     every face a triangle or a quad whose corners index existing vertices, and every
-//     coordinate finite (and the same after welding).
+//     coordinate finite (and the same after welding);
+//   - STL: every face a triangle, and the vertices welded: three per face before welding,
+//     none left to weld after.
 //
 // Build with clang (EXACTGEO_BUILD_FUZZERS) and run e.g.
 //   build-fuzz/bin/mesh_input_fuzz -max_total_time=300 <copy of tests/fuzz/corpus/mesh>
@@ -21,6 +23,7 @@
 #include "exactgeo/mesh/obj_reader.hpp"
 #include "exactgeo/mesh/off_reader.hpp"
 #include "exactgeo/mesh/ply_reader.hpp"
+#include "exactgeo/mesh/stl_reader.hpp"
 #include "exactgeo/mesh/weld.hpp"
 
 namespace {
@@ -56,15 +59,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string source = "<fuzz>";
   exactgeo::mesh::LoadedMesh loaded;
   try {
-    switch (data[0] % 3) {
+    switch (data[0] % 4) {
       case 0:
         loaded = exactgeo::mesh::read_obj(bytes, source, options);
         break;
       case 1:
         loaded = exactgeo::mesh::read_off(bytes, source, options);
         break;
-      default:
+      case 2:
         loaded = exactgeo::mesh::read_ply(bytes, source, options);
+        break;
+      default:
+        loaded = exactgeo::mesh::read_stl(bytes, source, options);
         break;
     }
   } catch (const exactgeo::io::InputError& e) {
@@ -77,6 +83,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(file_faces.empty() || file_faces.size() == loaded.mesh.faces.size());
   for (std::size_t f = 1; f < file_faces.size(); ++f)
     check(file_faces[f] == file_faces[f - 1] || file_faces[f] == file_faces[f - 1] + 1);
+  if (loaded.format.starts_with("stl")) {
+    check(loaded.mesh.vertices.size() + loaded.welded_vertices == 3 * loaded.mesh.faces.size());
+    for (const auto& face : loaded.mesh.faces)
+      check(face.is_triangle());
+    Mesh again = loaded.mesh;
+    check(exactgeo::mesh::weld_vertices(again) == 0);
+  }
   if (options.weld) {
     const std::size_t before = loaded.mesh.vertices.size();
     const std::size_t removed = exactgeo::mesh::weld_vertices(loaded.mesh);

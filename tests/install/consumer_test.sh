@@ -49,42 +49,16 @@ build_consumer "$work_dir/build" -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON \
 "$work_dir/build/consumer"
 
 # Again with assimp allowed: exactgeo::mesh_files is imported and loads files, by the
-# exact readers and through assimp (an ASCII STL tetrahedron, welded).
+# exact readers and through assimp (a RAW tetrahedron, a triangle a line, welded).
 build_consumer "$work_dir/build-files" -DCONSUMER_MESH_FILES=ON
-cat >"$work_dir/tetrahedron.stl" <<'STL'
-solid tetrahedron
-facet normal 0 0 -1
-outer loop
-vertex 0 0 0
-vertex 0 1 0
-vertex 1 0 0
-endloop
-endfacet
-facet normal 0 -1 0
-outer loop
-vertex 0 0 0
-vertex 1 0 0
-vertex 0 0 1
-endloop
-endfacet
-facet normal -1 0 0
-outer loop
-vertex 0 0 0
-vertex 0 0 1
-vertex 0 1 0
-endloop
-endfacet
-facet normal 1 1 1
-outer loop
-vertex 1 0 0
-vertex 0 1 0
-vertex 0 0 1
-endloop
-endfacet
-endsolid tetrahedron
-STL
+cat >"$work_dir/tetrahedron.raw" <<'RAW'
+0 0 0 0 1 0 1 0 0
+0 0 0 1 0 0 0 0 1
+0 0 0 0 0 1 0 1 0
+1 0 0 0 1 0 0 0 1
+RAW
 "$work_dir/build-files/load_mesh_file" "$source_dir/../../data/meshes/cgal/cube_quad.off" \
-  "$work_dir/tetrahedron.stl"
+  "$work_dir/tetrahedron.raw"
 
 # The Python package, when built: installed under the prefix, importable from there, and
 # its default place (relative to the prefix) is one Debian's python3 searches for the

@@ -9,7 +9,7 @@ import pytest
 
 import exactgeo
 from conftest import MESHES, points_text
-from test_mesh import CUBE_QUADS, CUBE_VERTICES
+from test_mesh import CUBE_QUADS, CUBE_VERTICES, ascii_stl, box_triangles
 
 LABELS = {"outside": exactgeo.OUTSIDE, "inside": exactgeo.INSIDE, "boundary": exactgeo.BOUNDARY}
 SOLIDS = [MESHES / "spot" / "spot_quad_cc1.ply", MESHES / "spot" / "spot_quadrangulated.obj",
@@ -69,6 +69,22 @@ def test_known_solid_exactly(rng):
     assert np.all(classifier.classify(corners) == exactgeo.BOUNDARY)
     assert np.all(classifier.classify(tiny_outside) == exactgeo.OUTSIDE)
     assert np.all(classifier.classify(tiny_inside) == exactgeo.INSIDE)
+
+
+def test_a_vertex_copied_from_an_stl_file_is_boundary(tmp_path):
+    # The file's decimals are read as the doubles they name, so a point written with the
+    # same digits lies on the surface. Rounded to float32 (as assimp read STL), 0.1 moves up
+    # and 0.7 down: every corner would move inside the box.
+    text = ascii_stl(box_triangles(0.1, 0.7))
+    stl = tmp_path / "box.stl"
+    stl.write_text(text)
+    classifier = exactgeo.Classifier(exactgeo.load_mesh(stl))
+    copied = np.array([[float(x) for x in line.split()[1:]]
+                       for line in text.splitlines() if line.startswith("vertex")])
+    assert len(copied) == 36
+    assert np.all(classifier.classify(copied) == exactgeo.BOUNDARY)
+    rounded = copied.astype(np.float32).astype(np.float64)
+    assert np.all(classifier.classify(rounded) == exactgeo.INSIDE)
 
 
 def test_contains():

@@ -23,6 +23,21 @@ def ascii_stl(triangles: np.ndarray) -> str:
     return "\n".join(lines + ["endsolid cube", ""])
 
 
+def binary_stl(triangles: np.ndarray, header: bytes = b"solid binary") -> bytes:
+    """Binary STL of float32 coordinates; the header begins with "solid", as many do."""
+    records = np.zeros(len(triangles), dtype=[("normal", "<f4", 3), ("corners", "<f4", (3, 3)),
+                                              ("attribute", "<u2")])
+    records["corners"] = triangles
+    return header.ljust(80) + np.uint32(len(triangles)).tobytes() + records.tobytes()
+
+
+def box_triangles(lower: float, upper: float) -> np.ndarray:
+    """The box [lower, upper]^3 as 12 outward triangles, shape (12, 3, 3)."""
+    vertices = lower + (upper - lower) * CUBE_VERTICES
+    return vertices[np.array([[q[0], q[1], q[2]] for q in CUBE_QUADS] +
+                             [[q[0], q[2], q[3]] for q in CUBE_QUADS])]
+
+
 @pytest.mark.parametrize("path", BUNDLED, ids=lambda p: p.name)
 def test_info_matches_the_command_line(cli, path):
     mesh = exactgeo.load_mesh(str(path), split_polygons=True)
@@ -32,17 +47,28 @@ def test_info_matches_the_command_line(cli, path):
 def test_each_format_loads(tmp_path, cli):
     formats = {exactgeo.load_mesh(p, split_polygons=True).format.split()[0] for p in BUNDLED}
     assert {"obj", "off", "ply"} <= formats
-    # STL goes through assimp, which joins the soup's 36 corners into 8 vertices.
-    triangles = CUBE_VERTICES[np.array([[q[0], q[1], q[2]] for q in CUBE_QUADS] +
-                                       [[q[0], q[2], q[3]] for q in CUBE_QUADS])]
+    # STL is read exactly and always welded: the soup's 36 corners become 8 vertices, at
+    # the doubles the file's decimals name (0.1, not the float nearest it).
+    triangles = box_triangles(0.1, 0.7)
     stl = tmp_path / "cube.stl"
     stl.write_text(ascii_stl(triangles))
-    welded = exactgeo.load_mesh(stl, weld=True)
-    info = welded.info()
-    assert welded.vertex_count == 8 and info["closed"] and info["welded_vertices"] == 28
-    assert info["coordinates_via_float"] is True
-    assert info == cli.json("info", stl, "--weld")
-    assert exactgeo.load_mesh(stl).info() == cli.json("info", stl)
+    mesh = exactgeo.load_mesh(stl)
+    info = mesh.info()
+    assert mesh.format == "stl ascii" and info["coordinates_via_float"] is False
+    assert mesh.vertex_count == 8 and info["closed"] and info["welded_vertices"] == 28
+    assert np.array_equal(np.unique(mesh.vertices, axis=0),
+                          np.unique(triangles.reshape(-1, 3), axis=0))
+    assert info == cli.json("info", stl)
+    assert exactgeo.load_mesh(stl, weld=True).info() == cli.json("info", stl, "--weld") == info
+    # Binary STL: float32 coordinates, widened bit for bit.
+    floats = box_triangles(0.1, 0.7).astype(np.float32)
+    binary = tmp_path / "binary.stl"
+    binary.write_bytes(binary_stl(floats))
+    mesh = exactgeo.load_mesh(binary)
+    assert mesh.format == "stl binary" and mesh.info()["welded_vertices"] == 28
+    assert np.array_equal(np.unique(mesh.vertices, axis=0),
+                          np.unique(floats.reshape(-1, 3).astype(np.float64), axis=0))
+    assert mesh.info() == cli.json("info", binary)
 
 
 def test_format_names_what_the_file_name_does_not(tmp_path, cli):

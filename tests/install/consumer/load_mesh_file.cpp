@@ -10,7 +10,7 @@
 
 int main(int argc, char** argv) {
   if (argc != 3) {
-    std::printf("usage: load_mesh_file MESH.off MESH.stl\n");
+    std::printf("usage: load_mesh_file MESH.off MESH.raw\n");
     return 2;
   }
   try {

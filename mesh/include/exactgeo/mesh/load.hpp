@@ -2,10 +2,11 @@
 
 // Loading a mesh file into an exactgeo::Mesh, keeping coordinates exact.
 //
-// OBJ, OFF and PLY (ASCII, binary little- and big-endian, float and double) are read by
-// exactgeo's own readers: decimal numbers are converted with correct rounding
-// (std::from_chars), binary values bit for bit, so a double-precision file keeps every
-// bit. Every other format goes through assimp, whose coordinates are 32-bit floats:
+// OBJ, OFF, PLY (ASCII, binary little- and big-endian, float and double) and STL (ASCII
+// and binary) are read by exactgeo's own readers: decimal numbers are converted with
+// correct rounding (std::from_chars), binary values bit for bit, so a double-precision
+// file keeps every bit. STL, a triangle soup, is always welded (LoadedMesh::welded_vertices).
+// Every other format goes through assimp, whose coordinates are 32-bit floats:
 // LoadedMesh::coordinates_via_float says so.
 //
 // Faces keep their corners: triangles stay triangles, quads stay quads (the bilinear
