@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/inside/internal/open_label.hpp"
 #include "exactgeo/inside/internal/space_cells.hpp"
+#include "exactgeo/inside/internal/unit_frame.hpp"
 #include "exactgeo/mesh/boundary_chain.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/predicates/crossing_parity.hpp"
@@ -80,6 +82,8 @@ struct Classifier::State {
   std::vector<PatchSpan> double_spans;
   std::optional<internal::EmbreeCandidates> embree;
   std::optional<internal::SpaceCells> cells;
+  /// The vertices the exact rays see: the mesh's, or the mesh's brought to magnitude 1.
+  internal::UnitFrame frame;
   /// The boundary of an open surface (empty for a closed one), taken before the faces of
   /// zero area were dropped, so that slivers closing T-junctions leave none.
   std::vector<BoundaryEdge> boundary;
@@ -89,17 +93,35 @@ struct Classifier::State {
   }
 };
 
+/// A query point as given (for the candidate search, which takes any magnitude) and as
+/// the exact rays see it, with the vertices they see it against: both in the unit frame
+/// when that maps the point exactly, else both as given.
+struct Classifier::RayOrigin {
+  RayOrigin(const State& s, const Point3& point) noexcept : given(point) {
+    if (const std::optional<Point3> mapped = s.frame.map(point)) {
+      exact = *mapped;
+      vertices = s.frame.vertices();
+    } else {
+      exact = point;
+      vertices = s.mesh.vertices;
+    }
+  }
+  const Point3& given;
+  Point3 exact;
+  std::span<const Point3> vertices;
+};
+
 template <class Signs>
 SignedRayCount Classifier::count_ray(const State& s, const Signs& signs, Arithmetic arithmetic,
-                                     const Point3& point, std::size_t k,
+                                     const RayOrigin& origin, std::size_t k,
                                      ClassifierScratch& scratch) {
   if (s.embree && k < kFloatExactRayDirections) {
-    s.embree->find(point, k, scratch.candidates);
+    s.embree->find(origin.given, k, scratch.candidates);
   } else {
     internal::all_faces(s.mesh, scratch.candidates);
   }
   const auto corner = [&](VertexIndex i) {
-    return kernel::Offset::between(point, s.mesh.vertices[i]);
+    return kernel::Offset::between(origin.exact, origin.vertices[i]);
   };
   const Vector3 direction = ray_direction(k);
   return count_signed_crossings(signs, s.prepared(arithmetic), scratch.candidates, corner,
@@ -111,9 +133,10 @@ SignedRayCount Classifier::count_ray(const State& s, const Signs& signs, Arithme
 std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& point,
                                                   Arithmetic arithmetic,
                                                   ClassifierScratch& scratch) {
+  const RayOrigin origin(s, point);
   const auto found = kernel::with_signs(arithmetic, [&](const auto& signs) {
     return exactgeo::winding_number(max_rays(arithmetic), [&](std::size_t k) {
-      return count_ray(s, signs, arithmetic, point, k, scratch);
+      return count_ray(s, signs, arithmetic, origin, k, scratch);
     });
   });
   if (!found) return 0;  // plain double only (see kPlainDoubleDirections): outside
@@ -130,9 +153,10 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
                                             s.mesh.vertices, s.boundary, arithmetic);
     return label.value_or(Location::undecided);  // a ray that meets no edge: never nullopt
   }
+  const RayOrigin origin(s, point);
   return kernel::with_signs(arithmetic, [&](const auto& signs) {
     for (std::size_t k = 0; k < max_rays(arithmetic); ++k) {
-      const SignedRayCount count = count_ray(s, signs, arithmetic, point, k, scratch);
+      const SignedRayCount count = count_ray(s, signs, arithmetic, origin, k, scratch);
       if (count.kind == RayCount::origin_on_face) return Location::boundary;
       if (count.kind == RayCount::degenerate) continue;
       if (const auto label = internal::open_label(s.rule, count.total, point, ray_direction(k),
@@ -186,8 +210,13 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     }
   }
   s.faces = surface_faces(s.mesh);
-  s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, s.mesh.vertices);
-  s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, s.mesh.vertices);
+  s.frame = internal::UnitFrame(s.mesh, s.box);
+  // Spans in the frame the rays use: the same for the exact signs (a power of two changes
+  // no sign), and the plain double baseline then runs entirely in one frame.
+  const std::span<const Point3> ray_vertices =
+      s.frame.on() ? s.frame.vertices() : std::span<const Point3>(s.mesh.vertices);
+  s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, ray_vertices);
+  s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
   if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
   // A cell's points share one integer winding number; an open surface's vary.
   if (options.space_cells && s.boundary.empty()) {

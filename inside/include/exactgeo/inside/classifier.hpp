@@ -128,6 +128,8 @@ class Classifier {
 
  private:
   struct State;
+  /// A query point as the exact rays see it (internal/unit_frame.hpp).
+  struct RayOrigin;
   /// The signed crossing count along the first decisive ray (the winding number of an
   /// oriented mesh; of the right parity for any closed one); nullopt on a face.
   static std::optional<std::int64_t> cast_rays(const State& s, const Point3& point,
@@ -135,10 +137,11 @@ class Classifier {
   static std::optional<std::int64_t> signed_count(const State& s, const Point3& point,
                                                   Arithmetic arithmetic,
                                                   ClassifierScratch& scratch);
-  /// The signed crossings of ray k of the sequence from `point` (in the box).
+  /// The signed crossings of ray k of the sequence from `origin` (a point in the box).
   template <class Signs>
   static SignedRayCount count_ray(const State& s, const Signs& signs, Arithmetic arithmetic,
-                                  const Point3& point, std::size_t k, ClassifierScratch& scratch);
+                                  const RayOrigin& origin, std::size_t k,
+                                  ClassifierScratch& scratch);
   /// classify for an open surface.
   static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                 ClassifierScratch& scratch);

@@ -41,15 +41,10 @@ inline bool scale_to_unit_magnitude(std::span<double> values, double largest) no
   if (near_unit_magnitude(largest)) return false;
   int e = 0;
   std::frexp(largest, &e);  // largest in [2^(e-1), 2^e)
-  const PowerOfTwo down(-e), up(e);
+  const kernel::ExactPowerOfTwo down(-e);
   bool exact = true;
-  for (double& v : values) {
-    const double scaled = down(v);
-    // Scaling back lands on v exactly unless the way down lost bits (the way back up, when
-    // e > 0, cannot; when e < 0 the way down is an exact enlargement).
-    exact &= up(scaled) == v;
-    v = scaled;
-  }
+  for (double& v : values)
+    v = down(v, exact);
   return exact;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 
 // Scaling by a power of two, the one change of magnitude that keeps every sign and, in
-// the normal range, every bit: the CCD's unit-magnitude scaling and the float boxes of
-// the box trees both use it.
+// the normal range, every bit: the CCD's unit-magnitude scaling, the classifier's exact
+// frame and the float boxes of the box trees all use it.
 
 #include <cmath>
 
@@ -17,6 +17,25 @@ struct PowerOfTwo {
   double operator()(double x) const noexcept { return x * first * second; }
   double first;
   double second;
+};
+
+/// Multiplication by 2^k that tells whether it was exact: scaling the result back by
+/// 2^-k lands on x exactly iff no bit was lost on the way (an overflow gives infinity,
+/// which does not scale back; a result that became subnormal and lost bits scales back,
+/// exactly, to a number other than x).
+class ExactPowerOfTwo {
+ public:
+  explicit ExactPowerOfTwo(int k) noexcept : there_(k), back_(-k) {}
+  /// x 2^k; `exact` becomes false when that is not x 2^k exactly (it is never set true).
+  double operator()(double x, bool& exact) const noexcept {
+    const double y = there_(x);
+    exact &= back_(y) == x;
+    return y;
+  }
+
+ private:
+  PowerOfTwo there_;
+  PowerOfTwo back_;
 };
 
 }  // namespace exactgeo::kernel
