@@ -49,7 +49,7 @@ ExitCode run_info(const InfoOptions& options, std::ostream& out, std::ostream& e
       {},
       {}};
   if (!findings.problem) {
-    findings.problem = inside::face_soup_problem(loaded, std::nullopt, "--weld");
+    findings.problem = inside::face_soup_problem(loaded, std::nullopt, inside::kCommandLineNames);
   }
   if (check.geometry_checkable()) findings.self = mesh::find_self_intersections(loaded.mesh);
   if (mark_file) {

@@ -28,35 +28,14 @@ namespace {
 /// it taken before the build.
 std::string refusal_explained(const InsideMeshOptions& options, const std::string& message,
                               const std::optional<LoadedMesh>& kept) {
-  // The rule that was applied (the float ray baseline counts parity).
-  const auto rule_for = [&](const mesh::MeshCheck& check) {
-    return options.float_rays ? inside::FillRule::parity : inside::rule_for(check, options.rule);
-  };
-  const auto problem_of = [&](const LoadedMesh& loaded) {
-    const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
-    return inside::rule_problem(check, rule_for(check), options.allow_non_manifold, loaded);
-  };
   try {
-    LoadedMesh loaded = kept ? *kept : load_mesh(options.path, options.load);
-    const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
-    const inside::FillRule rule = rule_for(check);
-    const auto problem = inside::rule_problem(check, rule, options.allow_non_manifold, loaded);
-    if (!problem) return message;
-    std::string text = *problem;
-    if (rule != inside::FillRule::parity && !mesh::closed_surface_problem(check, true)) {
-      // A winding rule was asked for, and parity would take the mesh.
-      text += "; --rule parity, which needs no orientation, accepts it";
-      if (!options.allow_non_manifold && mesh::closed_surface_problem(check, false)) {
-        text += " with --allow-non-manifold";
-      }
-    }
-    if (options.load.weld) return text;
-    const std::size_t merged = mesh::weld_vertices(loaded.mesh);
-    if (merged > 0 && !problem_of(loaded)) {
-      text += "; with --weld, which merges the " + std::to_string(merged) +
-              " vertices that repeat another's coordinates, it is accepted";
-    }
-    return text;
+    const LoadedMesh loaded = kept ? *kept : load_mesh(options.path, options.load);
+    // The rule that was applied (the float ray baseline counts parity).
+    const inside::FillRule rule =
+        options.float_rays ? inside::FillRule::parity
+                           : inside::rule_for(mesh::check_mesh(loaded.mesh), options.rule);
+    return inside::refusal(loaded, rule, options.allow_non_manifold, inside::kCommandLineNames)
+        .value_or(message);
   } catch (const std::exception&) {
     return message;
   }
@@ -119,7 +98,8 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       built.float_rays.emplace(loaded.mesh);
       built.float_rays_mesh = std::move(loaded.mesh);
     } else {
-      if (auto problem = inside::face_soup_problem(loaded, options.rule, "--weld")) {
+      if (auto problem =
+              inside::face_soup_problem(loaded, options.rule, inside::kCommandLineNames)) {
         throw std::invalid_argument(*problem);
       }
       inside::ClassifierOptions classifier_options;

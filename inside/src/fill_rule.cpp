@@ -48,19 +48,54 @@ std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule r
 }
 
 std::optional<std::string> face_soup_problem(const mesh::LoadedMesh& loaded,
-                                             std::optional<FillRule> asked, std::string_view weld) {
+                                             std::optional<FillRule> asked,
+                                             const OptionNames& names) {
   if (asked == FillRule::parity) return std::nullopt;
   // Welding closes no surface whose default rule is parity (closed already).
   const auto merged = mesh::vertices_welding_closes(loaded.mesh);
   if (!merged) return std::nullopt;
   std::string message = mesh::closed_surface_problem(mesh::check_mesh(loaded.mesh), loaded)
                             .value_or("mesh is not closed");
-  message.append("; with ").append(weld);
+  message.append("; with ").append(names.weld);
   message.append(", which merges the " + std::to_string(*merged) +
                  " vertices that repeat another's coordinates, it is closed (as it is, each of "
                  "those edges would be a boundary edge of an open surface: the same labels, "
                  "more slowly)");
   return message;
+}
+
+std::optional<std::string> refusal(const mesh::LoadedMesh& loaded, FillRule rule,
+                                   bool allow_non_manifold, const OptionNames& names) {
+  const mesh::MeshCheck check = mesh::check_mesh(loaded.mesh);
+  std::optional<std::string> problem = rule_problem(check, rule, allow_non_manifold, loaded);
+  if (!problem) return std::nullopt;
+  std::string& text = *problem;
+  // Every option that would take the mesh as it is.
+  if (rule != FillRule::parity && !mesh::closed_surface_problem(check, true)) {
+    text.append("; ").append(names.parity).append(", which needs no orientation, accepts it");
+    if (!allow_non_manifold && mesh::closed_surface_problem(check, false)) {
+      text.append(" with ").append(names.allow_non_manifold);
+    }
+  }
+  if (rule == FillRule::parity && !allow_non_manifold &&
+      !mesh::closed_surface_problem(check, true)) {
+    text.append("; ").append(names.allow_non_manifold).append(" accepts it");
+  }
+  if (rule == FillRule::parity && !mesh::orientable_surface_problem(check)) {
+    text.append("; ").append(names.nonzero).append(" accepts it");
+    if (!check.closed()) text.append(" as an open surface, by its generalized winding number");
+  }
+  mesh::LoadedMesh welded = loaded;
+  const std::size_t merged = mesh::weld_vertices(welded.mesh);
+  if (merged > 0 && !rule_problem(mesh::check_mesh(welded.mesh), rule, allow_non_manifold)) {
+    text.append("; with ").append(names.weld);
+    text.append(", which merges the " + std::to_string(merged) +
+                " vertices that repeat another's coordinates, it is accepted");
+  }
+  text.append(
+      "; `exactgeo info --mark OUT.ply` writes the mesh with its defective faces "
+      "coloured");
+  return problem;
 }
 
 }  // namespace exactgeo::inside

@@ -278,7 +278,7 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
       head.append(" run the same way by two more faces than the other way");
       problems.push_back(with_examples(std::move(head), check.misoriented_edges, edge_text));
     }
-  } else if (rule != EdgeRule::two_faces && odd_beyond_boundary) {
+  } else if (odd_beyond_boundary) {  // with two_faces too: named at once with non-manifold
     std::string head = "mesh is not closed: ";
     head.append(counted(check.odd_edges.count, "edge", "edges"));
     head.append(" used by an odd number of faces");

@@ -111,7 +111,7 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
   options.rule = rule_named(rule);
   options.allow_non_manifold = allow_non_manifold;
   options.space_cells = space_cells;
-  if (auto problem = inside::face_soup_problem(mesh.loaded, options.rule, "weld=True")) {
+  if (auto problem = inside::face_soup_problem(mesh.loaded, options.rule, inside::kPythonNames)) {
     throw py::value_error(*problem);
   }
   mesh::Mesh copy = mesh.loaded.mesh;
@@ -124,16 +124,12 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
       self = mesh::find_self_intersections(built->mesh());
     }
   } catch (const std::invalid_argument& e) {
-    // The checks' message in the file's own numbering, saying which, as on the command line.
-    const mesh::MeshCheck check = mesh::check_mesh(mesh.loaded.mesh);
-    std::string message = inside::rule_problem(check, inside::rule_for(check, options.rule),
-                                               allow_non_manifold, mesh.loaded)
-                              .value_or(e.what());
-    if (options.rule && options.rule != inside::FillRule::parity &&
-        !mesh::closed_surface_problem(check, true)) {
-      message += "; rule='parity', which needs no orientation, accepts it";
-    }
-    throw py::value_error(message);
+    // The command line's message, in the file's own numbering, saying which.
+    const inside::FillRule taken =
+        inside::rule_for(mesh::check_mesh(mesh.loaded.mesh), options.rule);
+    throw py::value_error(
+        inside::refusal(mesh.loaded, taken, allow_non_manifold, inside::kPythonNames)
+            .value_or(e.what()));
   }
   // What the command line says on stderr, Python says as warnings.
   if (const auto note = mesh::zero_area_note(built->zero_area_faces(), mesh.loaded.numbering)) {

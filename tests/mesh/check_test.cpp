@@ -148,9 +148,11 @@ TEST(MeshCheck, EdgeUsedThreeTimesIsRejectedEvenWhenNonManifoldIsAllowed) {
   EXPECT_EQ(c.non_manifold_edges.first, (std::vector<Edge>{{3, 7}}));
   EXPECT_EQ(c.boundary_edges.first, (std::vector<Edge>{{0, 3}, {0, 7}}));
   EXPECT_EQ(c.odd_edges.first, (std::vector<Edge>{{0, 3}, {0, 7}, {3, 7}}));
+  // Everything at once: the odd edges that --allow-non-manifold would still refuse are
+  // named with the non-manifold one, not after it.
   EXPECT_EQ(problem(mesh),
-            "mesh is not closed: 2 boundary edges (first: 0-3, 0-7); 1 non-manifold edge "
-            "(used by more than two faces; first: 3-7)");
+            "mesh is not closed: 3 edges used by an odd number of faces (first: 0-3, 0-7, 3-7); "
+            "1 non-manifold edge (used by more than two faces; first: 3-7)");
   EXPECT_EQ(problem(mesh, true),
             "mesh is not closed: 3 edges used by an odd number of faces (first: 0-3, 0-7, 3-7)");
 }

@@ -169,6 +169,23 @@ def test_refusals_number_as_the_file_does(tmp_path):
         exactgeo.Classifier(exactgeo.load_mesh(path), rule="parity")
 
 
+def test_a_refusal_says_what_the_command_line_says(cli, tmp_path):
+    # A fin on the cube's edge 1-2: not closed and non-manifold at once, nonzero takes it.
+    path = tmp_path / "fin.obj"
+    path.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in CUBE_VERTICES) + "v 2 2 2\n" +
+                    "".join("f " + " ".join(str(i + 1) for i in q) + "\n" for q in CUBE_QUADS) +
+                    "f 1 2 9\n")
+    done = cli.run("inside", "--rule", "parity", path, stdin="0 0 0\n")
+    assert done.returncode == 2 and done.stdout == ""
+    prefix = f"exactgeo inside: {path}: "
+    assert done.stderr.startswith(prefix)
+    said = done.stderr[len(prefix):].rstrip("\n")
+    assert "non-manifold" in said and "odd number of faces" in said and "--rule nonzero" in said
+    with pytest.raises(ValueError) as refused:
+        exactgeo.Classifier(exactgeo.load_mesh(path), rule="parity")
+    assert str(refused.value) == said.replace("--rule nonzero", "rule='nonzero'")
+
+
 def test_a_face_soup_is_refused_with_the_way_out():
     soup_vertices = CUBE_VERTICES[CUBE_QUADS].reshape(-1, 3)
     soup = exactgeo.Mesh(soup_vertices, np.arange(24).reshape(6, 4))

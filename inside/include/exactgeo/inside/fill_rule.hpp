@@ -57,13 +57,34 @@ std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule r
 std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule rule,
                                         bool allow_non_manifold, const mesh::LoadedMesh& loaded);
 
+/// How a caller spells the options a refusal points to: the command line's flags or
+/// Python's keywords.
+struct OptionNames {
+  std::string_view parity;              ///< "--rule parity"
+  std::string_view nonzero;             ///< "--rule nonzero"
+  std::string_view allow_non_manifold;  ///< "--allow-non-manifold"
+  std::string_view weld;                ///< "--weld"
+};
+inline constexpr OptionNames kCommandLineNames{"--rule parity", "--rule nonzero",
+                                               "--allow-non-manifold", "--weld"};
+inline constexpr OptionNames kPythonNames{"rule='parity'", "rule='nonzero'",
+                                          "allow_non_manifold=True", "weld=True"};
+
 /// A face soup's problem: the mesh has boundary edges only because its faces do not share
 /// vertices (mesh::vertices_welding_closes), and a winding rule would classify it as an
-/// open surface with all those edges as its boundary: the same labels, more slowly. The message names the
-/// way out, `weld` ("--weld", "weld=True"); nullopt for anything else, and when parity
-/// was asked for (which refuses it as not closed).
+/// open surface with all those edges as its boundary: the same labels, more slowly. The
+/// message names the way out (names.weld); nullopt for anything else, and when parity was
+/// asked for (which refuses it as not closed).
 std::optional<std::string> face_soup_problem(const mesh::LoadedMesh& loaded,
-                                             std::optional<FillRule> asked, std::string_view weld);
+                                             std::optional<FillRule> asked,
+                                             const OptionNames& names);
+
+/// Why `rule` refuses the mesh, all at once (rule_problem in the file's numbering), and
+/// every way out that would take it, tried: the other rules, allow_non_manifold, welding,
+/// and `exactgeo info --mark` to see the faces named; nullopt when the rule takes it. The
+/// command line and Python say the same, each with its own option names.
+std::optional<std::string> refusal(const mesh::LoadedMesh& loaded, FillRule rule,
+                                   bool allow_non_manifold, const OptionNames& names);
 
 /// Does the rule put a point of winding number w inside?
 constexpr bool holds(FillRule rule, std::int64_t w) noexcept {
