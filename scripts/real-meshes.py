@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Every mesh in the given folders, as a new user would try it: loaded with
+"""Every mesh in the given folders and their subfolders (OFF, OBJ, PLY and STL, the formats
+read exactly), as a new user would try it: loaded with
 exactgeo.load_mesh, classified against (exactgeo.Classifier with its default rule) at
 uniform points of its box, or refused, and why. One row per mesh, then the counts by
 outcome: closed, open (labelled by the generalized winding number), refused (the
@@ -63,12 +64,12 @@ def main():
     args = parser.parse_args()
     counts = collections.Counter()
     for folder in args.folders:
-        for name in sorted(os.listdir(folder)):
-            if not name.lower().endswith(SUFFIXES):
-                continue
-            kind, detail = outcome(os.path.join(folder, name), args.points, args.seed)
+        paths = sorted(os.path.join(root, name) for root, _, names in os.walk(folder)
+                       for name in names if name.lower().endswith(SUFFIXES))
+        for path in paths:
+            kind, detail = outcome(path, args.points, args.seed)
             counts[kind] += 1
-            print(f"{name}: {kind}: {detail[:160]}")
+            print(f"{os.path.relpath(path, folder)}: {kind}: {detail[:160]}")
     print(", ".join(f"{kind} {n}" for kind, n in counts.most_common()))
 
 

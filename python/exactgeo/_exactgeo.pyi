@@ -39,18 +39,21 @@ def load_mesh(
 class Classifier:
     def __init__(
         self, mesh: Mesh, *, rule: Optional[str] = None, allow_non_manifold: bool = False,
-        space_cells: bool = True
+        space_cells: bool = True, threads: int = 0
     ) -> None: ...
     @property
     def rule(self) -> str: ...
+    @property
+    def threads(self) -> int: ...
     def winding_numbers(
-        self, points: _Points, *, method: str = "exact", threads: int = 0
+        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None
     ) -> npt.NDArray[np.int32]: ...
     def classify(
-        self, points: _Points, *, method: str = "exact", threads: int = 0
+        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None
     ) -> npt.NDArray[np.int8]: ...
     def contains(
-        self, points: _Points, *, boundary: bool = True, method: str = "exact", threads: int = 0
+        self, points: _Points, *, boundary: bool = True, method: str = "exact",
+        threads: Optional[int] = None
     ) -> npt.NDArray[np.bool_]: ...
 
 @overload

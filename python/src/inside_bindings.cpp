@@ -2,6 +2,7 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <cstdint>
 #include <limits>
@@ -26,22 +27,32 @@ namespace {
 
 using inside::Location;
 
+/// exactgeo.Classifier: the classifier, and the threads its calls use by default.
+struct ClassifierObject {
+  inside::Classifier classifier;
+  unsigned threads = 0;  ///< Classifier(threads=): 0 for every hardware thread
+};
+
+/// A call's `threads`, or when None the classifier's.
+unsigned threads_for(const ClassifierObject& object, const std::optional<int>& threads) {
+  return threads ? thread_count(*threads) : object.threads;
+}
+
 /// The labels of `points` (validated), computed without the GIL.
-std::vector<Location> locations_of(const inside::Classifier& classifier,
-                                   const py::object& points_in, const std::string& method,
-                                   int threads) {
+std::vector<Location> locations_of(const ClassifierObject& object, const py::object& points_in,
+                                   const std::string& method, const std::optional<int>& threads) {
   const Doubles points = coordinates(points_in, "points", {-1, 3});
   const Arithmetic arithmetic = arithmetic_named(method);
-  const unsigned workers = thread_count(threads);
+  const unsigned workers = threads_for(object, threads);
   const std::span<const Point3> rows = points_of(points);
   std::vector<Location> locations(rows.size());
   py::gil_scoped_release release;
-  inside::classify_batch(classifier, rows, locations, arithmetic, workers);
+  inside::classify_batch(object.classifier, rows, locations, arithmetic, workers);
   return locations;
 }
 
-py::array_t<std::int8_t> classify(const inside::Classifier& classifier, const py::object& points,
-                                  const std::string& method, int threads) {
+py::array_t<std::int8_t> classify(const ClassifierObject& classifier, const py::object& points,
+                                  const std::string& method, const std::optional<int>& threads) {
   const std::vector<Location> locations = locations_of(classifier, points, method, threads);
   py::array_t<std::int8_t> labels(static_cast<py::ssize_t>(locations.size()));
   std::transform(locations.begin(), locations.end(), labels.mutable_data(),
@@ -49,8 +60,9 @@ py::array_t<std::int8_t> classify(const inside::Classifier& classifier, const py
   return labels;
 }
 
-py::array_t<bool> contains(const inside::Classifier& classifier, const py::object& points,
-                           bool boundary, const std::string& method, int threads) {
+py::array_t<bool> contains(const ClassifierObject& classifier, const py::object& points,
+                           bool boundary, const std::string& method,
+                           const std::optional<int>& threads) {
   const std::vector<Location> locations = locations_of(classifier, points, method, threads);
   py::array_t<bool> inside(static_cast<py::ssize_t>(locations.size()));
   std::transform(locations.begin(), locations.end(), inside.mutable_data(), [&](Location l) {
@@ -62,9 +74,10 @@ py::array_t<bool> contains(const inside::Classifier& classifier, const py::objec
 /// The winding numbers of `points` as int32, kOnSurface for points on a face.
 constexpr std::int32_t kOnSurface = std::numeric_limits<std::int32_t>::min();
 
-py::array_t<std::int32_t> winding_numbers(const inside::Classifier& classifier,
+py::array_t<std::int32_t> winding_numbers(const ClassifierObject& object,
                                           const py::object& points_in, const std::string& method,
-                                          int threads) {
+                                          const std::optional<int>& threads) {
+  const inside::Classifier& classifier = object.classifier;
   if (classifier.open()) {
     throw py::value_error(
         "no integer winding numbers: the surface is open, and its generalized winding "
@@ -77,7 +90,7 @@ py::array_t<std::int32_t> winding_numbers(const inside::Classifier& classifier,
   }
   const Doubles points = coordinates(points_in, "points", {-1, 3});
   const Arithmetic arithmetic = arithmetic_named(method);
-  const unsigned workers = thread_count(threads);
+  const unsigned workers = threads_for(object, threads);
   const std::span<const Point3> rows = points_of(points);
   std::vector<std::optional<std::int64_t>> windings(rows.size());
   {
@@ -105,8 +118,9 @@ std::optional<inside::FillRule> rule_named(const py::object& name) {
   throw py::value_error("rule must be 'nonzero', 'parity', 'positive' or None, not '" + text + "'");
 }
 
-inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool allow_non_manifold,
-                         bool space_cells) {
+ClassifierObject build(const MeshObject& mesh, const py::object& rule, bool allow_non_manifold,
+                       bool space_cells, int threads) {
+  const unsigned workers = thread_count(threads);
   inside::ClassifierOptions options;
   options.rule = rule_named(rule);
   options.allow_non_manifold = allow_non_manifold;
@@ -121,7 +135,7 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
     py::gil_scoped_release release;
     built.emplace(std::move(copy), options);
     if (built->rule() == inside::FillRule::parity) {
-      self = mesh::find_self_intersections(built->mesh());
+      self = mesh::find_self_intersections(built->mesh(), workers);
     }
   } catch (const std::invalid_argument& e) {
     // The command line's message, in the file's own numbering, saying which.
@@ -151,7 +165,7 @@ inside::Classifier build(const MeshObject& mesh, const py::object& rule, bool al
            (built->oriented() ? "; rule='nonzero' labels overlapping parts as their union" : ""));
     }
   }
-  return std::move(*built);
+  return {std::move(*built), workers};
 }
 
 }  // namespace
@@ -163,8 +177,8 @@ void bind_inside(py::module_& module) {
   module.attr("UNDECIDED") = static_cast<int>(Location::undecided);
   module.attr("ON_SURFACE") = kOnSurface;
 
-  py::class_<inside::Classifier>(module, "Classifier",
-                                 R"doc(Exact point-in-volume classification against a mesh.
+  py::class_<ClassifierObject>(module, "Classifier",
+                               R"doc(Exact point-in-volume classification against a mesh.
 
 A point is BOUNDARY when it lies exactly on a face, else INSIDE or OUTSIDE by its winding
 number (the signed count of a ray's crossings with the faces) and the rule; every
@@ -174,6 +188,7 @@ winding number w, the crossings plus a certified term over the boundary: INSIDE 
 |w| >= 1/2 (rule "positive": w >= 1/2), UNDECIDED where no precision allowed settles it.)doc")
       .def(py::init(&build), py::arg("mesh"), py::kw_only(), py::arg("rule") = py::none(),
            py::arg("allow_non_manifold") = false, py::arg("space_cells") = true,
+           py::arg("threads") = 0,
            R"doc(Checks the mesh and builds the search structure once (the GIL is released).
 
 rule: which points the surface holds, by their winding number w (faces oriented by their
@@ -188,6 +203,8 @@ allow_non_manifold: with rule="parity", accept edges shared by 4, 6, ... faces (
     winding rules accept any edge whose faces are oriented alike).
 space_cells: label the cells of a grid that no face reaches once, exactly, so that
     points in them need no ray (method "exact" only; False: a ray for every point).
+threads: worker threads for the checks here and, by default, for every call (a call's
+    own threads= overrides it); 0 for all hardware threads.
 
 Raises ValueError when the rule cannot classify against the mesh: faces not oriented
 alike (winding rules), open or non-manifold (parity), a face that repeats a corner, with
@@ -195,9 +212,13 @@ the counts and the first few offending edges or faces. Warns (UserWarning) when 
 surface is open (what its labels mean), when faces of zero area were dropped, and, by
 parity, when faces intersect (the labels are then those of the parity solid).)doc")
       .def_property_readonly(
-          "rule", [](const inside::Classifier& c) { return std::string(to_string(c.rule())); })
+          "rule",
+          [](const ClassifierObject& c) { return std::string(to_string(c.classifier.rule())); })
+      .def_property_readonly(
+          "threads", [](const ClassifierObject& c) { return c.threads; },
+          "The threads calls use when they name none (0: all hardware threads).")
       .def("winding_numbers", &winding_numbers, py::arg("points"), py::kw_only(),
-           py::arg("method") = "exact", py::arg("threads") = 0,
+           py::arg("method") = "exact", py::arg("threads") = py::none(),
            R"doc(The winding number of every point: an int32 array, exact.
 
 ON_SURFACE (the smallest int32) for points on a face, where none is defined. Arguments as
@@ -205,19 +226,20 @@ for classify. Raises ValueError when the faces are not oriented alike (a mesh ac
 rule="parity" only) or the surface is open (its generalized winding numbers are not
 integers).)doc")
       .def("classify", &classify, py::arg("points"), py::kw_only(), py::arg("method") = "exact",
-           py::arg("threads") = 0,
+           py::arg("threads") = py::none(),
            R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY (and
 UNDECIDED against an open surface, where no precision allowed settles the label).
 
 points: (n, 3) coordinates (float64, or converted exactly), finite.
 method: "exact" (default) or "double" (the same traversal in plain doubles: faster,
     wrong near the surface, for comparison).
-threads: worker threads, 0 for all hardware threads. The GIL is released.
+threads: worker threads, 0 for all hardware threads; None (default): the classifier's
+    (Classifier(threads=)). The GIL is released.
 
 Raises ValueError for a wrong shape, or for a coordinate that is not finite or not exactly
 a double, such as the int64 2**53 + 1 (naming its row).)doc")
       .def("contains", &contains, py::arg("points"), py::kw_only(), py::arg("boundary") = true,
-           py::arg("method") = "exact", py::arg("threads") = 0,
+           py::arg("method") = "exact", py::arg("threads") = py::none(),
            R"doc(A bool array: inside the solid, or on its boundary when `boundary` is true.
 
 An UNDECIDED point (an open surface's w exactly 1/2, or too close to it) is not

@@ -193,6 +193,21 @@ def test_a_face_soup_is_refused_with_the_way_out():
         exactgeo.Classifier(soup)
 
 
+def test_threads_can_be_set_once_for_every_call(rng):
+    mesh = exactgeo.load_mesh(MESHES / "spot" / "spot_quad_cc1.ply")
+    points = box_points(mesh, rng, 20_000)
+    one = exactgeo.Classifier(mesh, threads=1)
+    assert one.threads == 1 and exactgeo.Classifier(mesh).threads == 0
+    labels = one.classify(points)
+    assert np.array_equal(labels, one.classify(points, threads=2))
+    assert np.array_equal(labels, exactgeo.Classifier(mesh).classify(points))
+    assert np.array_equal(one.contains(points), labels != exactgeo.OUTSIDE)
+    with pytest.raises(ValueError, match="threads must be"):
+        exactgeo.Classifier(mesh, threads=-1)
+    with pytest.raises(ValueError, match="threads must be"):
+        one.classify(points, threads=-2)
+
+
 def test_the_gil_is_released_while_classifying():
     """A second Python thread keeps running while one classifies: with the GIL held, it
     would stall for the whole call."""
