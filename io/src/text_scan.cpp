@@ -21,6 +21,30 @@ std::string_view skip_utf8_bom(std::string_view text) noexcept {
   return text;
 }
 
+std::optional<std::string> utf16_as_utf8(std::string_view text) {
+  if (text.size() < 2) return std::nullopt;
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const bool big = byte(0) == 0xFE && byte(1) == 0xFF;
+  const bool little = byte(0) == 0xFF && byte(1) == 0xFE;
+  if (!big && !little) return std::nullopt;
+  std::string utf8;
+  utf8.reserve(text.size() / 2);
+  for (std::size_t i = 2; i + 1 < text.size(); i += 2) {
+    const unsigned unit = big ? (byte(i) << 8) | byte(i + 1) : (byte(i + 1) << 8) | byte(i);
+    if (unit < 0x80) {
+      utf8.push_back(static_cast<char>(unit));
+    } else if (unit < 0x800) {
+      utf8.push_back(static_cast<char>(0xC0 | (unit >> 6)));
+      utf8.push_back(static_cast<char>(0x80 | (unit & 0x3F)));
+    } else {
+      utf8.push_back(static_cast<char>(0xE0 | (unit >> 12)));
+      utf8.push_back(static_cast<char>(0x80 | ((unit >> 6) & 0x3F)));
+      utf8.push_back(static_cast<char>(0x80 | (unit & 0x3F)));
+    }
+  }
+  return utf8;
+}
+
 std::string_view strip_comment(std::string_view line) noexcept {
   const std::size_t hash = line.find('#');
   return hash == std::string_view::npos ? line : line.substr(0, hash);

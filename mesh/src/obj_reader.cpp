@@ -209,7 +209,8 @@ class ObjParser {
 }  // namespace
 
 LoadedMesh read_obj(std::string_view text, const std::string& source, const LoadOptions& options) {
-  return ObjParser(text, source, options).parse();
+  const std::optional<std::string> utf8 = io::utf16_as_utf8(text);
+  return ObjParser(utf8 ? std::string_view(*utf8) : text, source, options).parse();
 }
 
 }  // namespace exactgeo::mesh

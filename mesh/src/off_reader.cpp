@@ -273,7 +273,8 @@ class OffParser {
 }  // namespace
 
 LoadedMesh read_off(std::string_view text, const std::string& source, const LoadOptions& options) {
-  return OffParser(text, source, options).parse();
+  const std::optional<std::string> utf8 = io::utf16_as_utf8(text);
+  return OffParser(utf8 ? std::string_view(*utf8) : text, source, options).parse();
 }
 
 }  // namespace exactgeo::mesh

@@ -182,8 +182,10 @@ class PlyReader {
       throw InputError(source_, header_.data_line - 1, "the header declares no 'vertex' element");
     }
     if (face == nullptr) {
-      throw InputError(source_, header_.data_line - 1,
-                       "the header declares no 'face' element: the mesh has no faces");
+      throw InputError(
+          source_, header_.data_line - 1,
+          "the header declares no 'face' element: the mesh has no faces, a point cloud rather "
+          "than a surface");
     }
     if (vertex->count > kMaxVertices) fail_header(*vertex, "too many vertices");
     vertex_count_ = vertex->count;

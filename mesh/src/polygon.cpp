@@ -145,6 +145,10 @@ void require_faces(const LoadedMesh& loaded, const std::string& source) {
   if (loaded.mesh.faces.empty()) {
     std::string what = source;
     what.append(": the mesh has no faces");
+    if (const std::size_t n = loaded.mesh.vertices.size(); n > 0) {
+      what.append(": ").append(std::to_string(n)).append(n == 1 ? " vertex" : " vertices");
+      what.append(" only, a point cloud (or lines), not a surface");
+    }
     throw InputError(what);
   }
 }

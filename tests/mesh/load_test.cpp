@@ -499,7 +499,34 @@ TEST_F(mesh_io, ObjErrorsNameFileAndLine) {
   EXPECT_MESSAGE_HAS(load_error("x.obj", cat(square, "f 1 2 3x\n")), "x.obj:5:", "'3x'");
   EXPECT_MESSAGE_HAS(load_error("short.obj", cat(square, "f 1 2\n")),
                      "short.obj:5:", "at least 3 corners", "has 2");
-  EXPECT_MESSAGE_HAS(load_error("empty.obj", cat(square, "# no faces\n")), "empty.obj", "no faces");
+  EXPECT_MESSAGE_HAS(load_error("empty.obj", cat(square, "# no faces\n")), "empty.obj", "no faces",
+                     "4 vertices only, a point cloud (or lines), not a surface");
+}
+
+TEST_F(mesh_io, Utf16TextIsReadAsItsCharacters) {
+  // Some Windows tools save OBJ and OFF as UTF-16, with a byte order mark.
+  const std::string obj =
+      "# caf\u00e9\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+  const std::string off =
+      "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0.1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  for (const auto& [name, text] : {std::pair{"t.obj", obj}, std::pair{"t.off", off}}) {
+    const LoadedMesh utf8 = load(name, text);
+    for (const bool big : {true, false}) {
+      std::string utf16 = big ? "\xFE\xFF" : "\xFF\xFE";
+      // The text's characters are ASCII but for the comment's e-acute (U+00E9, two UTF-8
+      // bytes): each as one 16-bit unit.
+      for (std::size_t i = 0; i < text.size(); ++i) {
+        unsigned unit = static_cast<unsigned char>(text[i]);
+        if (unit == 0xC3) unit = 0xC0 | (static_cast<unsigned char>(text[++i]) & 0x3F);
+        const char high = static_cast<char>(unit >> 8), low = static_cast<char>(unit & 0xFF);
+        utf16.push_back(big ? high : low);
+        utf16.push_back(big ? low : high);
+      }
+      const LoadedMesh read = load(name, utf16);
+      EXPECT_EQ(read.mesh.vertices, utf8.mesh.vertices) << name << (big ? " big" : " little");
+      EXPECT_EQ(read.mesh.faces, utf8.mesh.faces) << name;
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------

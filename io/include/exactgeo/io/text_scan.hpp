@@ -39,6 +39,12 @@ class LineCursor {
 /// The text without a leading UTF-8 byte order mark.
 std::string_view skip_utf8_bom(std::string_view text) noexcept;
 
+/// Text that starts with a UTF-16 byte order mark (big or little endian), as UTF-8 (each
+/// 16-bit unit encoded alone: the mesh formats' keywords and numbers are ASCII, and what
+/// else a line holds is a comment or a name); nullopt for any other text. Some Windows
+/// tools save OBJ files so.
+std::optional<std::string> utf16_as_utf8(std::string_view text);
+
 /// The line up to its first '#'.
 std::string_view strip_comment(std::string_view line) noexcept;
 
