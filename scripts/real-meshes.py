@@ -9,10 +9,10 @@ reason's first words), does not load (the reader's message).
 Usage:
   scripts/real-meshes.py [--points N] [--seed S] FOLDER...
 
-Debian's libcgal-demo installs its meshes under /usr/share/doc/libcgal-demo/ (as a
-tarball of examples and demos to unpack); assimp-testmodels under
-/usr/share/assimp-testmodels. Neither is a build dependency. Needs numpy and the built
-module (build/python, found from this script's folder)."""
+Debian's libcgal-demo installs its meshes in /usr/share/doc/libcgal-demo/data.tar.gz
+(data/meshes once unpacked); assimp-testmodels under /usr/share/assimp/models. Neither is
+a build dependency. Needs numpy and the built module (build/python, found from this
+script's folder)."""
 import argparse
 import collections
 import os
