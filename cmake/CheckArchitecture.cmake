@@ -20,7 +20,7 @@ get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 # What each library may include besides itself (its targets' dependencies). ccd_files is
 # the one room of ccd/ that is a library of its own (src/files/, include/exactgeo/ccd/files/):
 # CCD reads no files, so only it may include io.
-set(kLibraries predicates parallel io boxes mesh ccd ccd_files inside)
+set(kLibraries predicates parallel io boxes mesh ccd ccd_files inside remesh)
 set(kAllowed_predicates "")
 set(kAllowed_parallel "")
 set(kAllowed_io "")
@@ -29,6 +29,7 @@ set(kAllowed_mesh predicates io boxes parallel)
 set(kAllowed_ccd predicates boxes parallel)
 set(kAllowed_ccd_files ccd predicates io)
 set(kAllowed_inside predicates boxes mesh parallel)
+set(kAllowed_remesh predicates ccd mesh)
 
 set(violations "")
 

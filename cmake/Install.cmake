@@ -1,5 +1,5 @@
 # `cmake --install`: the libraries as the CMake package exactgeo (find_package(exactgeo),
-# targets exactgeo::predicates, ::parallel, ::io, ::mesh, ::ccd, ::inside and, where
+# targets exactgeo::predicates, ::parallel, ::io, ::mesh, ::ccd, ::inside, ::remesh and, where
 # assimp is found, ::mesh_files), their headers, and the command-line tool. The libraries
 # are static, so their private dependencies are part of the export; exactgeoConfig.cmake
 # finds them again (tests/install/consumer uses it all). mesh_files is exported on its
@@ -15,7 +15,7 @@ set_target_properties(exactgeo_strict_fp PROPERTIES EXPORT_NAME strict_fp)
 
 install(TARGETS exactgeo_predicates exactgeo_parallel exactgeo_io exactgeo_boxes exactgeo_mesh
                 exactgeo_ccd exactgeo_ccd_files
-                exactgeo_inside exactgeo_strict_fp
+                exactgeo_inside exactgeo_remesh exactgeo_strict_fp
         EXPORT exactgeoTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -26,7 +26,7 @@ install(TARGETS exactgeo_mesh_files EXPORT exactgeoMeshFilesTargets
 install(TARGETS exactgeo RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 # Every public header, internal/ included: the public templates include those.
-foreach(folder predicates parallel io boxes mesh ccd inside)
+foreach(folder predicates parallel io boxes mesh ccd inside remesh)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/include/
           DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
           FILES_MATCHING PATTERN "*.hpp")

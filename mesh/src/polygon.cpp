@@ -98,11 +98,15 @@ void FileFaces::finish(LoadedMesh& out, const std::string& source, const LoadOpt
       }
       const std::span<const VertexIndex> corners(corners_.data() + polygon->begin,
                                                  polygon->end - polygon->begin);
-      // Non-finite coordinates, which the mesh checks refuse, have no projection: the fan
-      // keeps the face for the checks to name.
-      const PolygonForm form = finite_corners(corners, out.mesh.vertices)
-                                   ? triangulate_polygon(corners, out.mesh.vertices, split)
-                                   : PolygonForm::self_crossing;
+      if (!finite_corners(corners, out.mesh.vertices)) {
+        // No projection to split in: the fan keeps the face for the mesh checks, which
+        // refuse non-finite coordinates, to name.
+        append_fan(corners, split);
+        file_faces.resize(split.size(), f);
+        ++polygon;
+        continue;
+      }
+      const PolygonForm form = triangulate_polygon(corners, out.mesh.vertices, split);
       if (form == PolygonForm::non_planar) non_planar.push_back(f);
       if (form == PolygonForm::self_crossing) {
         if (!options.split_polygons) {

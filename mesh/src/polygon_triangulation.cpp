@@ -19,13 +19,11 @@ constexpr std::array<int, 3> kAxes{0, 1, 2};
 /// projection is one-to-one on the plane, so every orientation below is the polygon's own.
 class Projection {
  public:
-  explicit Projection(int axis) noexcept : i_((axis + 1) % 3), j_((axis + 2) % 3) {}
+  explicit Projection(int axis) noexcept : axis_(axis), i_((axis + 1) % 3), j_((axis + 2) % 3) {}
 
-  /// The sign of ((b - a) x (c - a)) along the dropped axis, exactly: the determinant of
-  /// the lifted points (a_i, a_j, 0), ..., against (0, 0, 1) is that 2 x 2 determinant
-  /// (expand along the third column), and orient3d is exact for every finite input.
+  /// The sign of ((b - a) x (c - a)) along the dropped axis, exactly.
   Sign orientation(const Point3& a, const Point3& b, const Point3& c) const noexcept {
-    return orient3d({a[i_], a[j_], 0.0}, {b[i_], b[j_], 0.0}, {c[i_], c[j_], 0.0}, {0.0, 0.0, 1.0});
+    return orient2d_along(axis_, a, b, c);
   }
 
   /// Coordinate k (0 or 1) of p's projection.
@@ -48,6 +46,7 @@ class Projection {
   }
 
  private:
+  int axis_;
   int i_;
   int j_;
 };

@@ -19,6 +19,11 @@ Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d
   return orient3d_with(kernel::ExactSigns{}, a, b, c, d);
 }
 
+Sign orient2d_along(int axis, const Point3& a, const Point3& b, const Point3& c) noexcept {
+  using kernel::Offset;
+  return kernel::ExactSigns{}.cross2(axis, Offset::between(a, b), Offset::between(a, c));
+}
+
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
               Arithmetic arithmetic) noexcept {
   return kernel::with_signs(arithmetic,

@@ -18,4 +18,10 @@ Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
               Arithmetic arithmetic) noexcept;
 
+/// The exact sign of ((b - a) x (c - a))_axis, for axis 0, 1 or 2: how a, b, c turn seen
+/// along that coordinate axis (projected with coordinate `axis` dropped, the other two in
+/// cyclic order, so that axis 2 gives the usual orientation in the (x, y) plane). Exact
+/// for every finite input. Precondition: finite coordinates, axis in {0, 1, 2}.
+Sign orient2d_along(int axis, const Point3& a, const Point3& b, const Point3& c) noexcept;
+
 }  // namespace exactgeo

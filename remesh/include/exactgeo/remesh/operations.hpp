@@ -1,0 +1,62 @@
+#pragma once
+
+// Collision-safe mesh operations on an intersection-free Surface: each is applied, leaving
+// the surface intersection free, or refused with the reason and, for a geometric refusal,
+// the element that would be met. Every geometric decision is exact.
+//
+//   relocate_vertex  the vertex moves on a straight line (pseudo_motion.hpp);
+//   collapse_edge    both ends move to the new point on straight lines, pairs that become
+//                    adjacent excepted; the triangles around the merged vertex are then
+//                    checked against every other triangle, exactly, in their final place;
+//   flip_edge        the surface sweeps the hull of the edge's two triangles' four corners;
+//   split_edge       nothing moves when the new vertex lies exactly on the edge; otherwise
+//                    the surface sweeps the hull of the edge's ends, the new vertex and
+//                    each opposite corner (swept_region.hpp).
+//
+// Topology is checked first: an edge of one or two triangles, no fixed corner, a flip
+// that would duplicate an edge, a collapse that breaks the link condition (the ends'
+// common neighbours must be the opposite corners: otherwise it pinches the surface), or
+// that would make a triangle of zero area or a duplicate triangle. Not covered here: how
+// much a collapse or a relocation turns a neighbouring triangle (a quality matter; a
+// triangle folding through another part of the surface is a contact, and refused).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "exactgeo/remesh/surface.hpp"
+#include "exactgeo/remesh/swept_region.hpp"
+
+namespace exactgeo::remesh {
+
+enum class Verdict : std::uint8_t {
+  applied,
+  refused_topology,   ///< not an operation this surface allows there (reason says why)
+  refused_collision,  ///< the motion or the swept region meets `blocker`
+};
+
+std::string_view to_string(Verdict v) noexcept;
+
+struct Outcome {
+  Verdict verdict = Verdict::applied;
+  std::string reason{};                     ///< empty when applied
+  std::optional<Blocker> blocker{};         ///< refused_collision: what would be met
+  std::optional<VertexIndex> new_vertex{};  ///< split_edge, applied: the vertex made
+  bool applied() const noexcept { return verdict == Verdict::applied; }
+};
+
+/// Moves vertex v to `to`. Refused for a fixed vertex or one no triangle uses.
+Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to);
+
+/// Merges a and b into a, at `to`; removes the edge's triangles (vertex b stays in the
+/// vertex list, used by no triangle).
+Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to);
+
+/// Replaces the triangles abc and bad on edge ab by cad and dbc.
+Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
+
+/// Adds a vertex at `at` and splits edge ab and its triangles there.
+Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at);
+
+}  // namespace exactgeo::remesh

@@ -1,0 +1,54 @@
+#pragma once
+
+// What a flip or a split sweeps, and what touches it, decided exactly.
+//
+// A flip of edge ab between triangles abc and bad replaces them by cad and dbc: the
+// surface moves across the closed convex hull of a, b, c, d (a tetrahedron, or, when the
+// four are coplanar, the quadrilateral itself), whose boundary the old and the new
+// triangles make. A split of ab at a point m that is not exactly on the segment moves
+// the surface across the hull of a, b, c, m for each opposite corner c. If no other part
+// of the surface meets that closed hull (beyond the corners, edges and triangles it
+// shares with the operation), the surface before and after is the same set of
+// non-touching pieces everywhere else, so an intersection-free surface stays so.
+//
+// Two convex sets meet outside the hull S of the corners they share exactly when a
+// corner of one that is not shared lies in the other, or an edge of one meets a triangle
+// of the other at a point other than a shared corner (a vertex of their intersection,
+// which is a convex polytope not inside S, is one of these). That is what is tested,
+// with orient3d and its coordinate-plane shadow orient2d_along only: every decision is
+// an exact sign.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include "exactgeo/predicates/point.hpp"
+#include "exactgeo/remesh/surface.hpp"
+
+namespace exactgeo::remesh {
+
+/// A surface element an operation would meet: a vertex, an edge or a triangle.
+struct Blocker {
+  enum class Kind : std::uint8_t { vertex, edge, triangle };
+  Kind kind = Kind::vertex;
+  /// Its corners (kNoVertex beyond the first one or two).
+  std::array<VertexIndex, 3> corners{kNoVertex, kNoVertex, kNoVertex};
+  friend bool operator==(const Blocker&, const Blocker&) = default;
+};
+
+/// A corner of a region: a vertex of the surface, or a new point (vertex kNoVertex).
+struct RegionCorner {
+  VertexIndex vertex = kNoVertex;
+  Point3 point{};
+};
+
+/// The first element of the surface (its vertices that some triangle uses, then its
+/// edges, then its triangles) that meets the closed convex hull of the four corners
+/// anywhere but in the hull of the corners it shares with them (by vertex index); the
+/// elements whose corners are all region corners (the operation's own) are skipped.
+/// nullopt when nothing meets it. Exact.
+/// Preconditions: finite coordinates; no three of the region's corners collinear.
+std::optional<Blocker> first_in_region(const Surface& surface,
+                                       const std::array<RegionCorner, 4>& region);
+
+}  // namespace exactgeo::remesh

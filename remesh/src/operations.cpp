@@ -1,0 +1,268 @@
+#include "exactgeo/remesh/operations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <vector>
+
+#include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
+#include "exactgeo/remesh/pseudo_motion.hpp"
+
+namespace exactgeo::remesh {
+
+std::string_view to_string(Verdict v) noexcept {
+  switch (v) {
+    case Verdict::applied:
+      return "applied";
+    case Verdict::refused_topology:
+      return "refused (topology)";
+    case Verdict::refused_collision:
+      return "refused (collision)";
+  }
+  return "?";
+}
+
+namespace {
+
+Outcome topology(std::string reason) {
+  return {Verdict::refused_topology, std::move(reason), std::nullopt, std::nullopt};
+}
+
+std::string corners_text(const Blocker& b) {
+  std::string s = b.kind == Blocker::Kind::vertex ? "vertex"
+                  : b.kind == Blocker::Kind::edge ? "edge"
+                                                  : "triangle";
+  for (const VertexIndex v : b.corners) {
+    if (v != kNoVertex) s.append(" ").append(std::to_string(v));
+  }
+  return s;
+}
+
+Outcome collision(const Blocker& blocker, std::string_view what) {
+  std::string reason(what);
+  reason.append(" would meet ").append(corners_text(blocker));
+  return {Verdict::refused_collision, std::move(reason), blocker, std::nullopt};
+}
+
+bool finite(const Point3& p) noexcept {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+/// All three corners on one line (or at one point), exactly.
+bool zero_area(const Point3& p, const Point3& q, const Point3& r) noexcept {
+  return orient2d_along(0, p, q, r) == Sign::zero && orient2d_along(1, p, q, r) == Sign::zero &&
+         orient2d_along(2, p, q, r) == Sign::zero;
+}
+
+bool zero_area(const Surface& s, const Triangle& t) noexcept {
+  return zero_area(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+}
+
+/// The reason a vertex cannot be operated on, or nullopt.
+std::optional<std::string> vertex_problem(const Surface& s, VertexIndex v) {
+  if (v >= s.vertices.size()) return "vertex " + std::to_string(v) + " does not exist";
+  if (s.is_fixed(v)) return "vertex " + std::to_string(v) + " is fixed";
+  return std::nullopt;
+}
+
+/// The triangles on edge ab, or the reason the edge cannot be operated on (it has none, or
+/// more than two, or a triangle with a fixed corner).
+std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, VertexIndex b,
+                                        std::vector<std::size_t>& on_edge) {
+  for (const VertexIndex v : {a, b}) {
+    if (auto why = vertex_problem(s, v)) return why;
+  }
+  on_edge = s.triangles_on_edge(a, b);
+  const std::string name = "edge " + std::to_string(a) + "-" + std::to_string(b);
+  if (a == b || on_edge.empty()) return name + " is no edge of the surface";
+  if (on_edge.size() > 2)
+    return name + " is used by " + std::to_string(on_edge.size()) + " triangles";
+  for (const std::size_t t : on_edge) {
+    const VertexIndex c = third_corner(s.triangles[t], a, b);
+    if (s.is_fixed(c)) return name + ": its triangle's corner " + std::to_string(c) + " is fixed";
+  }
+  return std::nullopt;
+}
+
+std::set<VertexIndex> neighbours(const Surface& s, VertexIndex v) {
+  std::set<VertexIndex> n;
+  for (const std::size_t t : s.triangles_around(v)) {
+    for (const VertexIndex c : s.triangles[t])
+      if (c != v) n.insert(c);
+  }
+  return n;
+}
+
+bool on_boundary(const Surface& s, VertexIndex v) {
+  for (const VertexIndex n : neighbours(s, v)) {
+    if (s.triangles_on_edge(v, n).size() == 1) return true;
+  }
+  return false;
+}
+
+/// The first triangle of `after` that a triangle around `v` intersects there (exactly,
+/// mesh::face_contact), or nullopt.
+std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
+  mesh::Mesh m;
+  m.vertices = after.vertices;
+  for (const Triangle& t : after.triangles)
+    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+  for (const std::size_t star : after.triangles_around(v)) {
+    for (std::size_t other = 0; other < m.faces.size(); ++other) {
+      if (other == star) continue;
+      if (mesh::face_contact(m, star, other) != mesh::FaceContact::apart) {
+        return Blocker{Blocker::Kind::triangle, after.triangles[other]};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to) {
+  if (auto why = vertex_problem(surface, v)) return topology(*why);
+  if (!finite(to)) return topology("the new position is not finite");
+  const std::vector<std::size_t> star = surface.triangles_around(v);
+  if (star.empty()) return topology("vertex " + std::to_string(v) + " is used by no triangle");
+  const Point3 from = surface.vertices[v];
+  surface.vertices[v] = to;
+  const bool flat = std::any_of(star.begin(), star.end(), [&](std::size_t t) {
+    return zero_area(surface, surface.triangles[t]);
+  });
+  surface.vertices[v] = from;
+  if (flat)
+    return topology("a triangle around vertex " + std::to_string(v) + " would have zero area");
+  const Move move{v, to};
+  if (auto hit = first_collision(surface, std::span(&move, 1))) {
+    return collision(*hit, "moving vertex " + std::to_string(v));
+  }
+  surface.vertices[v] = to;
+  return {};
+}
+
+Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
+  std::vector<std::size_t> on_edge;
+  if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
+  if (!finite(to)) return topology("the new position is not finite");
+  // The link condition: the ends' common neighbours are the opposite corners only.
+  std::set<VertexIndex> opposite;
+  for (const std::size_t t : on_edge)
+    opposite.insert(third_corner(surface.triangles[t], a, b));
+  const std::set<VertexIndex> na = neighbours(surface, a), nb = neighbours(surface, b);
+  std::set<VertexIndex> common;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(),
+                        std::inserter(common, common.begin()));
+  if (common != opposite) {
+    return topology("collapsing edge " + std::to_string(a) + "-" + std::to_string(b) +
+                    " would pinch the surface (the ends share a neighbour beyond its triangles)");
+  }
+  if (on_edge.size() == 2 && (on_boundary(surface, a) || on_boundary(surface, b))) {
+    return topology("collapsing an inner edge with an end on the boundary would pinch the surface");
+  }
+  // The surface after: the edge's triangles gone, b replaced by a, a at `to`.
+  Surface after = surface;
+  after.vertices[a] = to;
+  after.vertices[b] = to;
+  after.triangles.clear();
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
+    Triangle tri = surface.triangles[t];
+    for (VertexIndex& c : tri)
+      if (c == b) c = a;
+    after.triangles.push_back(tri);
+  }
+  std::set<std::array<VertexIndex, 3>> seen;
+  for (const std::size_t t : after.triangles_around(a)) {
+    Triangle sorted = after.triangles[t];
+    std::sort(sorted.begin(), sorted.end());
+    if (!seen.insert(sorted).second) return topology("the collapse would duplicate a triangle");
+    if (zero_area(after, after.triangles[t])) {
+      return topology("a triangle around the merged vertex would have zero area");
+    }
+  }
+  const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};
+  if (auto hit = first_collision(surface, moves, edge_of(a, b))) {
+    return collision(*hit, "collapsing edge " + std::to_string(a) + "-" + std::to_string(b));
+  }
+  if (auto hit = star_intersection(after, a)) {
+    return collision(*hit, "the triangles around the merged vertex");
+  }
+  surface = std::move(after);
+  return {};
+}
+
+Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
+  std::vector<std::size_t> on_edge;
+  if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
+  if (on_edge.size() != 2) return topology("a boundary edge cannot be flipped");
+  // t1 walks a -> b, t2 walks b -> a.
+  std::size_t t1 = on_edge[0], t2 = on_edge[1];
+  if (!walks(surface.triangles[t1], a, b)) std::swap(t1, t2);
+  if (!walks(surface.triangles[t1], a, b) || !walks(surface.triangles[t2], b, a)) {
+    return topology("the edge's triangles are not oriented alike");
+  }
+  const VertexIndex c = third_corner(surface.triangles[t1], a, b);
+  const VertexIndex d = third_corner(surface.triangles[t2], a, b);
+  if (c == d) return topology("the edge's triangles share their third corner");
+  if (!surface.triangles_on_edge(c, d).empty()) {
+    return topology("the flip would duplicate edge " + std::to_string(c) + "-" + std::to_string(d));
+  }
+  const Triangle new1{c, a, d}, new2{d, b, c};
+  if (zero_area(surface, new1) || zero_area(surface, new2)) {
+    return topology("a flipped triangle would have zero area");
+  }
+  const auto& p = surface.vertices;
+  if (auto hit = first_in_region(surface, {RegionCorner{a, p[a]}, RegionCorner{b, p[b]},
+                                           RegionCorner{c, p[c]}, RegionCorner{d, p[d]}})) {
+    return collision(*hit, "flipping edge " + std::to_string(a) + "-" + std::to_string(b));
+  }
+  surface.triangles[t1] = new1;
+  surface.triangles[t2] = new2;
+  return {};
+}
+
+Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at) {
+  std::vector<std::size_t> on_edge;
+  if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
+  if (!finite(at)) return topology("the new position is not finite");
+  const auto& p = surface.vertices;
+  // On the edge's line: only strictly between its ends, where nothing moves.
+  bool between = false;
+  if (zero_area(p[a], p[b], at)) {
+    between = at != p[a] && at != p[b];
+    for (int k = 0; k < 3; ++k)
+      between =
+          between && std::min(p[a][k], p[b][k]) <= at[k] && at[k] <= std::max(p[a][k], p[b][k]);
+    if (!between) return topology("the new vertex lies on the edge's line, outside the edge");
+  }
+  for (const std::size_t t : on_edge) {
+    const VertexIndex c = third_corner(surface.triangles[t], a, b);
+    if (zero_area(p[a], p[c], at) || zero_area(p[b], p[c], at)) {
+      return topology("a triangle of the split would have zero area");
+    }
+    if (between) continue;
+    if (auto hit = first_in_region(surface, {RegionCorner{a, p[a]}, RegionCorner{b, p[b]},
+                                             RegionCorner{c, p[c]}, RegionCorner{kNoVertex, at}})) {
+      return collision(*hit, "splitting edge " + std::to_string(a) + "-" + std::to_string(b));
+    }
+  }
+  const auto m = static_cast<VertexIndex>(surface.vertices.size());
+  surface.vertices.push_back(at);
+  if (!surface.fixed.empty()) surface.fixed.push_back(false);
+  for (const std::size_t t : on_edge) {
+    const Triangle old = surface.triangles[t];
+    const VertexIndex x = walks(old, a, b) ? a : b;  // the triangle walks x -> y
+    const VertexIndex y = x == a ? b : a;
+    const VertexIndex c = third_corner(old, a, b);
+    surface.triangles[t] = {x, m, c};
+    surface.triangles.push_back({m, y, c});
+  }
+  Outcome done;
+  done.new_vertex = m;
+  return done;
+}
+
+}  // namespace exactgeo::remesh

@@ -1,0 +1,245 @@
+#include "exactgeo/remesh/swept_region.hpp"
+
+#include <algorithm>
+#include <span>
+#include <vector>
+
+#include "exactgeo/predicates/orient3d.hpp"
+
+namespace exactgeo::remesh {
+
+namespace {
+
+constexpr std::array<int, 3> kAxes{0, 1, 2};
+
+/// An axis along which triangle pqr's normal has a non-zero component (its shadow on the
+/// other two coordinates is a triangle, and every point of its plane has its own shadow);
+/// nullopt for a degenerate triangle.
+std::optional<int> shadow_axis(const Point3& p, const Point3& q, const Point3& r) noexcept {
+  for (const int axis : kAxes) {
+    if (orient2d_along(axis, p, q, r) != Sign::zero) return axis;
+  }
+  return std::nullopt;
+}
+
+/// x, coplanar with the non-degenerate triangle pqr (seen along `axis`), in the closed
+/// triangle.
+bool in_closed_triangle_2d(int axis, const Point3& p, const Point3& q, const Point3& r,
+                           const Point3& x) noexcept {
+  const Sign turn = orient2d_along(axis, p, q, r);
+  return orient2d_along(axis, p, q, x) != -turn && orient2d_along(axis, q, r, x) != -turn &&
+         orient2d_along(axis, r, p, x) != -turn;
+}
+
+/// The closed segments ab and cd, coplanar, share a point (seen along `axis`, along which
+/// their plane has a shadow).
+bool segments_meet_2d(int axis, const Point3& a, const Point3& b, const Point3& c,
+                      const Point3& d) noexcept {
+  const Sign c_side = orient2d_along(axis, a, b, c);
+  const Sign d_side = orient2d_along(axis, a, b, d);
+  const Sign a_side = orient2d_along(axis, c, d, a);
+  const Sign b_side = orient2d_along(axis, c, d, b);
+  if (c_side * d_side == Sign::negative && a_side * b_side == Sign::negative) return true;
+  // Collinear cases: a point on the other segment's line lies on the segment exactly when
+  // it lies in its box (coordinates compare exactly).
+  const auto in_box = [](const Point3& s, const Point3& t, const Point3& x) {
+    for (int k = 0; k < 3; ++k) {
+      if (x[k] < std::min(s[k], t[k]) || x[k] > std::max(s[k], t[k])) return false;
+    }
+    return true;
+  };
+  return (c_side == Sign::zero && in_box(a, b, c)) || (d_side == Sign::zero && in_box(a, b, d)) ||
+         (a_side == Sign::zero && in_box(c, d, a)) || (b_side == Sign::zero && in_box(c, d, b));
+}
+
+/// The closed segment xy meets the closed non-degenerate triangle pqr.
+bool segment_meets_triangle(const Point3& x, const Point3& y, const Point3& p, const Point3& q,
+                            const Point3& r) noexcept {
+  const Sign sx = orient3d(p, q, r, x);
+  const Sign sy = orient3d(p, q, r, y);
+  if (sx == sy && sx != Sign::zero) return false;  // one side of the plane
+  if (sx == Sign::zero && sy == Sign::zero) {      // in the plane
+    const int axis = *shadow_axis(p, q, r);
+    return in_closed_triangle_2d(axis, p, q, r, x) || in_closed_triangle_2d(axis, p, q, r, y) ||
+           segments_meet_2d(axis, x, y, p, q) || segments_meet_2d(axis, x, y, q, r) ||
+           segments_meet_2d(axis, x, y, r, p);
+  }
+  // The line xy meets the plane once, at a point of the segment: in the closed triangle
+  // when it passes no edge on the wrong side (the three signs do not disagree).
+  const Sign u = orient3d(x, y, p, q);
+  const Sign v = orient3d(x, y, q, r);
+  const Sign w = orient3d(x, y, r, p);
+  const bool positive = u == Sign::positive || v == Sign::positive || w == Sign::positive;
+  const bool negative = u == Sign::negative || v == Sign::negative || w == Sign::negative;
+  return !(positive && negative);
+}
+
+/// The segment from s to x meets the closed triangle spq somewhere other than at its
+/// corner s: only in the triangle's plane, and then where x lies in the triangle's closed
+/// angle at s.
+bool segment_meets_triangle_beyond(const Point3& s, const Point3& x, const Point3& p,
+                                   const Point3& q) noexcept {
+  if (orient3d(s, p, q, x) != Sign::zero) return false;
+  const int axis = *shadow_axis(s, p, q);
+  const Sign turn = orient2d_along(axis, s, p, q);
+  return orient2d_along(axis, s, p, x) != -turn && orient2d_along(axis, s, x, q) != -turn;
+}
+
+/// A point with the vertex it is (kNoVertex for a new point).
+struct Corner {
+  VertexIndex vertex;
+  const Point3* point;
+};
+
+/// The closed segment ab meets the closed triangle t outside their shared corners.
+bool edge_meets_triangle(const std::array<Corner, 2>& ab, const std::array<Corner, 3>& t) {
+  std::vector<int> shared_in_t;  // which corners of t the segment shares
+  int shared_in_ab = -1;
+  for (int i = 0; i < 2; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (ab[i].vertex != kNoVertex && ab[i].vertex == t[k].vertex) {
+        shared_in_t.push_back(k);
+        shared_in_ab = i;
+      }
+    }
+  }
+  if (shared_in_t.size() >= 2) return false;  // an edge of the triangle
+  if (shared_in_t.empty()) {
+    return segment_meets_triangle(*ab[0].point, *ab[1].point, *t[0].point, *t[1].point,
+                                  *t[2].point);
+  }
+  const int k = shared_in_t[0];
+  return segment_meets_triangle_beyond(*t[k].point, *ab[1 - shared_in_ab].point,
+                                       *t[(k + 1) % 3].point, *t[(k + 2) % 3].point);
+}
+
+class Region {
+ public:
+  explicit Region(const std::array<RegionCorner, 4>& corners) {
+    for (int i = 0; i < 4; ++i)
+      corners_[i] = {corners[i].vertex, &corners[i].point};
+    for (int k = 0; k < 3; ++k) {
+      lower_[k] = upper_[k] = corners[0].point[k];
+      for (const RegionCorner& c : corners) {
+        lower_[k] = std::min(lower_[k], c.point[k]);
+        upper_[k] = std::max(upper_[k], c.point[k]);
+      }
+    }
+    volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
+  }
+
+  bool is_corner(VertexIndex v) const noexcept {
+    return std::any_of(corners_.begin(), corners_.end(),
+                       [v](const Corner& c) { return c.vertex == v; });
+  }
+
+  /// The closed boxes of the region and of the points overlap.
+  bool box_meets(std::span<const Point3* const> points) const noexcept {
+    for (int k = 0; k < 3; ++k) {
+      const auto [lo, hi] =
+          std::minmax_element(points.begin(), points.end(),
+                              [k](const Point3* a, const Point3* b) { return (*a)[k] < (*b)[k]; });
+      if ((**hi)[k] < lower_[k] || (**lo)[k] > upper_[k]) return false;
+    }
+    return true;
+  }
+
+  /// x in the closed hull.
+  bool holds(const Point3& x) const noexcept {
+    if (volume_ == Sign::zero) {  // flat: the union of the four corner triangles
+      for (const auto& t : triangles()) {
+        if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) != Sign::zero) return false;
+        const int axis = *shadow_axis(*t[0].point, *t[1].point, *t[2].point);
+        if (in_closed_triangle_2d(axis, *t[0].point, *t[1].point, *t[2].point, x)) return true;
+      }
+      return false;
+    }
+    // A tetrahedron: on no face's far side (the side away from the opposite corner).
+    for (int l = 0; l < 4; ++l) {
+      const auto& t = face_opposite(l);
+      const Sign inward = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+      if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward) return false;
+    }
+    return true;
+  }
+
+  /// The four corner triangles: the tetrahedron's faces, or the flat hull's cover.
+  std::array<std::array<Corner, 3>, 4> triangles() const noexcept {
+    return {face_opposite(0), face_opposite(1), face_opposite(2), face_opposite(3)};
+  }
+
+  std::array<std::array<Corner, 2>, 6> edges() const noexcept {
+    const auto& c = corners_;
+    return {{{c[0], c[1]}, {c[0], c[2]}, {c[0], c[3]}, {c[1], c[2]}, {c[1], c[3]}, {c[2], c[3]}}};
+  }
+
+ private:
+  std::array<Corner, 3> face_opposite(int l) const noexcept {
+    std::array<Corner, 3> t{};
+    int n = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (i != l) t[n++] = corners_[i];
+    }
+    return t;
+  }
+
+  std::array<Corner, 4> corners_{};
+  Point3 lower_{};
+  Point3 upper_{};
+  Sign volume_ = Sign::zero;
+};
+
+/// An edge of the surface crosses or touches one of the region's triangles outside
+/// their shared corners.
+bool edge_meets(const Region& region, const std::array<Corner, 2>& edge) {
+  const auto triangles = region.triangles();
+  return std::any_of(triangles.begin(), triangles.end(),
+                     [&](const auto& t) { return edge_meets_triangle(edge, t); });
+}
+
+/// An edge of the region crosses or touches a triangle of the surface outside their
+/// shared corners.
+bool pierces(const Region& region, const std::array<Corner, 3>& triangle) {
+  const auto edges = region.edges();
+  return std::any_of(edges.begin(), edges.end(),
+                     [&](const auto& e) { return edge_meets_triangle(e, triangle); });
+}
+
+}  // namespace
+
+std::optional<Blocker> first_in_region(const Surface& surface,
+                                       const std::array<RegionCorner, 4>& corners) {
+  // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
+  // its triangles, or one of its edges meeting a triangle (the corners and edges of a
+  // triangle are the surface's own vertices and edges, tested before it).
+  const Region region(corners);
+  const auto& p = surface.vertices;
+  std::vector<bool> used(p.size());
+  for (const Triangle& t : surface.triangles) {
+    for (const VertexIndex v : t)
+      used[v] = true;
+  }
+  for (VertexIndex v = 0; v < p.size(); ++v) {
+    if (!used[v] || region.is_corner(v)) continue;
+    if (region.holds(p[v])) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
+  }
+  for (const Edge& e : surface.edges()) {
+    if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // the operation's own
+    const std::array<const Point3*, 2> points{&p[e[0]], &p[e[1]]};
+    if (!region.box_meets(points)) continue;
+    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
+      return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
+    }
+  }
+  for (const Triangle& t : surface.triangles) {
+    if (region.is_corner(t[0]) && region.is_corner(t[1]) && region.is_corner(t[2])) continue;
+    const std::array<const Point3*, 3> points{&p[t[0]], &p[t[1]], &p[t[2]]};
+    if (!region.box_meets(points)) continue;
+    if (pierces(region, {Corner{t[0], &p[t[0]]}, Corner{t[1], &p[t[1]]}, Corner{t[2], &p[t[2]]}})) {
+      return Blocker{Blocker::Kind::triangle, t};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace exactgeo::remesh

@@ -1,0 +1,139 @@
+// Thousands of random operations on a stack of bumpy sheets, each sheet a grid whose
+// heights are random dyadic numbers, the sheets close enough that many operations would
+// make them meet. After every applied operation the exact self-intersection finder
+// (mesh::find_self_intersections) must find no intersecting pair and no triangle may
+// have zero area; a refused flip that names a vertex must have that vertex in the closed
+// tetrahedron of its four corners, by the rational orient3d of the test oracle.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <string>
+
+#include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/remesh/operations.hpp"
+#include "support/rational_oracle.hpp"
+#include "support/seed.hpp"
+
+namespace exactgeo::remesh {
+namespace {
+
+Surface stack(int sheets, int n, std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> bump(-12, 12);  // heights in steps of 2^-7
+  Surface s;
+  for (int k = 0; k < sheets; ++k) {
+    const auto first = static_cast<VertexIndex>(s.vertices.size());
+    const auto index = [&](int i, int j) {
+      return first + static_cast<VertexIndex>(i + (n + 1) * j);
+    };
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i)
+        s.vertices.push_back({0.25 * i, 0.25 * j, 0.25 * k + std::ldexp(bump(rng), -7)});
+    }
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        s.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
+        s.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
+      }
+    }
+  }
+  return s;
+}
+
+mesh::Mesh as_mesh(const Surface& s) {
+  mesh::Mesh m;
+  m.vertices = s.vertices;
+  for (const Triangle& t : s.triangles)
+    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+  return m;
+}
+
+/// x in the closed tetrahedron abcd, by rational signs (nullopt when it is flat).
+std::optional<bool> in_tetrahedron_oracle(const Point3& a, const Point3& b, const Point3& c,
+                                          const Point3& d, const Point3& x) {
+  const std::array<Point3, 4> p{a, b, c, d};
+  if (testing::orient3d_oracle(a, b, c, d) == Sign::zero) return std::nullopt;
+  for (int l = 0; l < 4; ++l) {
+    std::array<Point3, 3> f{};
+    int n = 0;
+    for (int i = 0; i < 4; ++i)
+      if (i != l) f[n++] = p[i];
+    const Sign inward = testing::orient3d_oracle(f[0], f[1], f[2], p[l]);
+    if (testing::orient3d_oracle(f[0], f[1], f[2], x) == -inward) return false;
+  }
+  return true;
+}
+
+TEST(RandomOperations, KeepTheStackIntersectionFree) {
+  auto rng = testing::seeded_engine("remesh.random_operations");
+  Surface surface = stack(3, 6, rng);
+  ASSERT_TRUE(mesh::find_self_intersections(as_mesh(surface), 1).intersecting.empty());
+  std::uniform_int_distribution<int> kind(0, 3);
+  std::uniform_int_distribution<int> step(-40, 40);  // moves in steps of 2^-7
+  const auto offset = [&] { return std::ldexp(step(rng), -7); };
+  std::map<std::string, int> tally;
+  int named_vertices = 0;
+  for (int op = 0; op < 1500; ++op) {
+    const std::vector<Edge> edges = surface.edges();
+    const Edge e = edges[std::uniform_int_distribution<std::size_t>(0, edges.size() - 1)(rng)];
+    const Point3& a = surface.vertices[e[0]];
+    const Point3& b = surface.vertices[e[1]];
+    const Point3 mid{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2 + offset()};
+    Outcome outcome;
+    std::string name;
+    switch (kind(rng)) {
+      case 0:
+        name = "relocate";
+        outcome =
+            relocate_vertex(surface, e[0], {a[0] + offset(), a[1] + offset(), a[2] + offset()});
+        break;
+      case 1: {
+        name = "flip";
+        const Surface before = surface;
+        outcome = flip_edge(surface, e[0], e[1]);
+        if (outcome.blocker && outcome.blocker->kind == Blocker::Kind::vertex) {
+          const auto on = before.triangles_on_edge(e[0], e[1]);
+          const VertexIndex c = third_corner(before.triangles[on[0]], e[0], e[1]);
+          const VertexIndex d = third_corner(before.triangles[on[1]], e[0], e[1]);
+          const auto inside = in_tetrahedron_oracle(a, b, before.vertices[c], before.vertices[d],
+                                                    before.vertices[outcome.blocker->corners[0]]);
+          if (inside) {
+            EXPECT_TRUE(*inside) << "flip " << e[0] << "-" << e[1] << ": " << outcome.reason;
+            ++named_vertices;
+          }
+        }
+        break;
+      }
+      case 2:
+        name = "split";
+        outcome = split_edge(surface, e[0], e[1], mid);
+        break;
+      default:
+        name = "collapse";
+        outcome = collapse_edge(surface, e[0], e[1], mid);
+        break;
+    }
+    ++tally[name + " " + std::string(to_string(outcome.verdict))];
+    if (!outcome.applied()) continue;
+    const mesh::Mesh m = as_mesh(surface);
+    const mesh::SelfIntersections found = mesh::find_self_intersections(m, 1);
+    ASSERT_TRUE(found.intersecting.empty())
+        << "operation " << op << " (" << name << " " << e[0] << "-" << e[1] << ") made faces "
+        << found.intersecting[0].first << " and " << found.intersecting[0].second << " intersect";
+    ASSERT_EQ(mesh::check_mesh(m).zero_area_faces.count, 0u) << "operation " << op;
+  }
+  for (const auto& [what, count] : tally)
+    std::cout << what << ": " << count << "\n";
+  for (const char* op : {"relocate", "flip", "split", "collapse"}) {
+    EXPECT_GT(tally[std::string(op) + " applied"], 0) << op;
+  }
+  EXPECT_GT(tally["relocate refused (collision)"], 0);
+  EXPECT_GT(tally["split refused (collision)"] + tally["flip refused (collision)"], 0);
+  std::cout << named_vertices << " refused flips checked against the rational oracle\n";
+}
+
+}  // namespace
+}  // namespace exactgeo::remesh
