@@ -30,19 +30,9 @@ Outcome topology(std::string reason) {
   return {Verdict::refused_topology, std::move(reason), std::nullopt, std::nullopt};
 }
 
-std::string corners_text(const Blocker& b) {
-  std::string s = b.kind == Blocker::Kind::vertex ? "vertex"
-                  : b.kind == Blocker::Kind::edge ? "edge"
-                                                  : "triangle";
-  for (const VertexIndex v : b.corners) {
-    if (v != kNoVertex) s.append(" ").append(std::to_string(v));
-  }
-  return s;
-}
-
 Outcome collision(const Blocker& blocker, std::string_view what) {
   std::string reason(what);
-  reason.append(" would meet ").append(corners_text(blocker));
+  reason.append(" would meet ").append(to_string(blocker));
   return {Verdict::refused_collision, std::move(reason), blocker, std::nullopt};
 }
 

@@ -207,6 +207,16 @@ bool pierces(const Region& region, const std::array<Corner, 3>& triangle) {
 
 }  // namespace
 
+std::string to_string(const Blocker& blocker) {
+  std::string s = blocker.kind == Blocker::Kind::vertex ? "vertex"
+                  : blocker.kind == Blocker::Kind::edge ? "edge"
+                                                        : "triangle";
+  for (const VertexIndex v : blocker.corners) {
+    if (v != kNoVertex) s.append(" ").append(std::to_string(v));
+  }
+  return s;
+}
+
 std::optional<Blocker> first_in_region(const Surface& surface,
                                        const std::array<RegionCorner, 4>& corners) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of

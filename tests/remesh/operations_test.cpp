@@ -213,6 +213,33 @@ TEST_P(Operations, AnEdgeThroughTheFlipsTetrahedronIsMet) {
   EXPECT_EQ(flip.blocker->kind, Blocker::Kind::edge) << flip.reason;
 }
 
+TEST_P(Operations, ASmoothingPassRefusesOnlyTheMovesThatCollide) {
+  const double s = scale();
+  Surface surface = sheets(4, 1.0, s);
+  const VertexIndex through = kInner, up = kInner + 2, under = 18, twice = 12;
+  const std::vector<Move> moves{{through, {s, s, 1.5 * s}},
+                                {up, {3 * s, s, 0.5 * s}},
+                                {under, {3 * s, 3 * s, just_below(1.0)}},
+                                {twice, {2 * s, 2 * s, 0.25 * s}},
+                                {twice, {2 * s, 2 * s, 0.5 * s}}};
+  const std::vector<Outcome> done = relocate_vertices(surface, moves);
+  ASSERT_EQ(done.size(), moves.size());
+  EXPECT_EQ(done[0].verdict, Verdict::refused_collision) << done[0].reason;
+  ASSERT_TRUE(done[0].blocker.has_value());
+  EXPECT_EQ(*done[0].blocker, (Blocker{Blocker::Kind::triangle, {25, 27, 26}}));
+  EXPECT_NE(done[0].reason.find("would meet triangle 25 27 26"), std::string::npos)
+      << done[0].reason;
+  EXPECT_TRUE(done[1].applied()) << done[1].reason;
+  EXPECT_TRUE(done[2].applied()) << done[2].reason;
+  EXPECT_TRUE(done[3].applied()) << done[3].reason;
+  EXPECT_EQ(done[4].verdict, Verdict::refused_topology);
+  EXPECT_EQ(surface.vertices[through], (Point3{s, s, 0.0}));
+  EXPECT_EQ(surface.vertices[up], (Point3{3 * s, s, 0.5 * s}));
+  EXPECT_EQ(surface.vertices[under], (Point3{3 * s, 3 * s, just_below(1.0)}));
+  EXPECT_EQ(surface.vertices[twice], (Point3{2 * s, 2 * s, 0.25 * s}));
+  expect_intersection_free(surface, "the smoothing pass");
+}
+
 TEST(OperationsTopology, RefusalsSayWhy) {
   Surface surface = sheets(4, 1.0, 1.0);
   // A boundary edge cannot be flipped; a boundary vertex's inner edge cannot collapse.

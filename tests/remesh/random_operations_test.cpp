@@ -135,5 +135,33 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
   std::cout << named_vertices << " refused flips checked against the rational oracle\n";
 }
 
+TEST(RandomOperations, SmoothingPassesKeepTheStackIntersectionFree) {
+  auto rng = testing::seeded_engine("remesh.random_smoothing");
+  Surface surface = stack(3, 8, rng);
+  std::uniform_int_distribution<int> step(-24, 24);  // in steps of 2^-7
+  std::size_t applied = 0, refused = 0;
+  for (int pass = 0; pass < 20; ++pass) {
+    std::vector<Move> moves;
+    for (VertexIndex v = 0; v < surface.vertices.size(); ++v) {
+      const Point3& p = surface.vertices[v];
+      moves.push_back({v,
+                       {p[0] + std::ldexp(step(rng), -8), p[1] + std::ldexp(step(rng), -8),
+                        p[2] + std::ldexp(step(rng), -7)}});
+    }
+    const Surface before = surface;
+    const std::vector<Outcome> done = relocate_vertices(surface, moves);
+    for (std::size_t i = 0; i < moves.size(); ++i) {
+      const VertexIndex v = moves[i].vertex;
+      EXPECT_EQ(surface.vertices[v], done[i].applied() ? moves[i].to : before.vertices[v]);
+      (done[i].applied() ? applied : refused) += 1;
+    }
+    const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(surface), 1);
+    ASSERT_TRUE(found.intersecting.empty()) << "pass " << pass;
+  }
+  std::cout << applied << " moves applied, " << refused << " refused\n";
+  EXPECT_GT(applied, 0u);
+  EXPECT_GT(refused, 0u);
+}
+
 }  // namespace
 }  // namespace exactgeo::remesh

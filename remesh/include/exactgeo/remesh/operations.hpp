@@ -22,9 +22,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "exactgeo/remesh/pseudo_motion.hpp"
 #include "exactgeo/remesh/surface.hpp"
 #include "exactgeo/remesh/swept_region.hpp"
 
@@ -48,6 +51,16 @@ struct Outcome {
 
 /// Moves vertex v to `to`. Refused for a fixed vertex or one no triangle uses.
 Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to);
+
+/// Many relocations at once (a smoothing pass): one pseudo-motion in which every vertex
+/// moves to its target, checked by the mesh broad phase (ccd::MeshCcd, exact method), so
+/// that the pass costs about one mesh CCD step instead of one check per vertex. The moves
+/// of every colliding pair are refused (with the element they would meet) and the others
+/// checked again, until a step has no collision; the applied moves are then made
+/// together. One outcome per move, in order. A vertex moved twice is refused the second
+/// time, and so is a move that would give a triangle zero area (with the others of that
+/// triangle's corners).
+std::vector<Outcome> relocate_vertices(Surface& surface, std::span<const Move> moves);
 
 /// Merges a and b into a, at `to`; removes the edge's triangles (vertex b stays in the
 /// vertex list, used by no triangle).

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "exactgeo/predicates/point.hpp"
 #include "exactgeo/remesh/surface.hpp"
@@ -35,6 +36,9 @@ struct Blocker {
   std::array<VertexIndex, 3> corners{kNoVertex, kNoVertex, kNoVertex};
   friend bool operator==(const Blocker&, const Blocker&) = default;
 };
+
+/// "vertex 25", "edge 3 7", "triangle 25 27 26".
+std::string to_string(const Blocker& blocker);
 
 /// A corner of a region: a vertex of the surface, or a new point (vertex kNoVertex).
 struct RegionCorner {

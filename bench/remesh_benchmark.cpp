@@ -1,0 +1,111 @@
+// A smoothing pass over a stack of sheets: every vertex moved a little, once by
+// relocate_vertex one vertex at a time (each check goes over the whole surface) and once
+// by relocate_vertices (one pseudo-motion through the mesh broad phase), and, as the
+// yardstick a pass should be close to, one mesh CCD step over the same motion
+// (ccd::find_collisions). All start from the same surface with the same moves; compare
+// their times in the same run:
+//
+//   build/bench/remesh_benchmark --benchmark_filter=Smoothing
+//
+// (docs/remesh.md quotes the ratio).
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/remesh/operations.hpp"
+
+namespace {
+
+using exactgeo::Point3;
+using exactgeo::remesh::Move;
+using exactgeo::remesh::Surface;
+using exactgeo::remesh::VertexIndex;
+
+/// `layers` wavy n x n sheets, 1/4 apart, and a move of at most 1/16 for every vertex.
+struct Scene {
+  Surface surface;
+  std::vector<Move> moves;
+};
+
+Scene scene(int layers, int n) {
+  Scene out;
+  Surface& s = out.surface;
+  const double h = 1.0 / n;
+  for (int k = 0; k < layers; ++k) {
+    const auto first = static_cast<VertexIndex>(s.vertices.size());
+    for (int j = 0; j <= n; ++j) {
+      for (int i = 0; i <= n; ++i) {
+        s.vertices.push_back({i * h, j * h, 0.25 * k + 0.05 * std::sin(7.0 * i * h + 3.0 * j * h)});
+      }
+    }
+    const auto at = [&](int i, int j) { return first + static_cast<VertexIndex>(i + (n + 1) * j); };
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        s.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        s.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> d(-h / 4, h / 4);
+  for (VertexIndex v = 0; v < s.vertices.size(); ++v) {
+    const Point3& p = s.vertices[v];
+    out.moves.push_back({v, {p[0] + d(rng), p[1] + d(rng), p[2] + d(rng)}});
+  }
+  return out;
+}
+
+void SmoothingOneByOne(benchmark::State& state) {
+  const Scene start = scene(3, static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    Surface s = start.surface;
+    std::size_t applied = 0;
+    for (const Move& m : start.moves)
+      applied += exactgeo::remesh::relocate_vertex(s, m.vertex, m.to).applied();
+    benchmark::DoNotOptimize(applied);
+  }
+  state.counters["vertices"] = static_cast<double>(start.moves.size());
+}
+
+void SmoothingBatch(benchmark::State& state) {
+  const Scene start = scene(3, static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    Surface s = start.surface;
+    benchmark::DoNotOptimize(exactgeo::remesh::relocate_vertices(s, start.moves));
+  }
+  state.counters["vertices"] = static_cast<double>(start.moves.size());
+}
+
+void SmoothingAsOneMeshCcdStep(benchmark::State& state) {
+  const Scene start = scene(3, static_cast<int>(state.range(0)));
+  std::vector<double> t0, t1;
+  for (const Point3& p : start.surface.vertices)
+    t0.insert(t0.end(), p.begin(), p.end());
+  t1 = t0;
+  for (const Move& m : start.moves) {
+    for (int k = 0; k < 3; ++k)
+      t1[3 * m.vertex + k] = m.to[k];
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        exactgeo::ccd::find_collisions(start.surface.triangles, {t0, t1}).collision());
+  }
+  state.counters["vertices"] = static_cast<double>(start.moves.size());
+}
+
+BENCHMARK(SmoothingOneByOne)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK(SmoothingBatch)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+BENCHMARK(SmoothingAsOneMeshCcdStep)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
