@@ -1,7 +1,7 @@
 # Type stub of the compiled extension (python/src); tests/python/test_package.py checks
 # that it names exactly what the module defines.
 from os import PathLike
-from typing import Any, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -118,3 +118,20 @@ def orient3d(a: Sequence[float], b: Sequence[float], c: Sequence[float], d: Sequ
 @overload
 def orient3d(a: _Points, b: _Points, c: _Points, d: _Points, *,
              method: str = "exact", threads: int = 0) -> npt.NDArray[np.int8]: ...
+
+_Outcome = Dict[str, Any]
+
+class Surface:
+    def __init__(
+        self, vertices: _Points, triangles: npt.ArrayLike, *,
+        fixed: Optional[npt.ArrayLike] = None
+    ) -> None: ...
+    @property
+    def vertices(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def triangles(self) -> npt.NDArray[np.uint32]: ...
+    def relocate_vertex(self, vertex: int, to: Sequence[float]) -> _Outcome: ...
+    def relocate_vertices(self, indices: npt.ArrayLike, targets: _Points) -> npt.NDArray[np.bool_]: ...
+    def collapse_edge(self, a: int, b: int, to: Sequence[float]) -> _Outcome: ...
+    def flip_edge(self, a: int, b: int) -> _Outcome: ...
+    def split_edge(self, a: int, b: int, at: Sequence[float]) -> _Outcome: ...

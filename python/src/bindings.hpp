@@ -21,5 +21,6 @@ void bind_mesh(pybind11::module_& module);        // Mesh, load_mesh
 void bind_inside(pybind11::module_& module);      // Classifier (needs Mesh)
 void bind_ccd(pybind11::module_& module);         // vertex_face_ccd, edge_edge_ccd, query files
 void bind_mesh_ccd(pybind11::module_& module);    // MeshCcd
+void bind_remesh(pybind11::module_& module);      // Surface (collision-safe operations)
 
 }  // namespace exactgeo::python

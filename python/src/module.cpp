@@ -31,4 +31,5 @@ PYBIND11_MODULE(_exactgeo, module) {
   exactgeo::python::bind_inside(module);
   exactgeo::python::bind_ccd(module);
   exactgeo::python::bind_mesh_ccd(module);
+  exactgeo::python::bind_remesh(module);
 }
