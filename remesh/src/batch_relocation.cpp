@@ -14,11 +14,6 @@ namespace {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
-bool zero_area(const Point3& p, const Point3& q, const Point3& r) noexcept {
-  return orient2d_along(0, p, q, r) == Sign::zero && orient2d_along(1, p, q, r) == Sign::zero &&
-         orient2d_along(2, p, q, r) == Sign::zero;
-}
-
 std::vector<double> flat(const std::vector<Point3>& points) {
   std::vector<double> out;
   out.reserve(3 * points.size());

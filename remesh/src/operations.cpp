@@ -40,13 +40,7 @@ bool finite(const Point3& p) noexcept {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
-/// All three corners on one line (or at one point), exactly.
-bool zero_area(const Point3& p, const Point3& q, const Point3& r) noexcept {
-  return orient2d_along(0, p, q, r) == Sign::zero && orient2d_along(1, p, q, r) == Sign::zero &&
-         orient2d_along(2, p, q, r) == Sign::zero;
-}
-
-bool zero_area(const Surface& s, const Triangle& t) noexcept {
+bool has_zero_area(const Surface& s, const Triangle& t) noexcept {
   return zero_area(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
@@ -120,7 +114,7 @@ Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to) {
   const Point3 from = surface.vertices[v];
   surface.vertices[v] = to;
   const bool flat = std::any_of(star.begin(), star.end(), [&](std::size_t t) {
-    return zero_area(surface, surface.triangles[t]);
+    return has_zero_area(surface, surface.triangles[t]);
   });
   surface.vertices[v] = from;
   if (flat)
@@ -169,7 +163,7 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
     Triangle sorted = after.triangles[t];
     std::sort(sorted.begin(), sorted.end());
     if (!seen.insert(sorted).second) return topology("the collapse would duplicate a triangle");
-    if (zero_area(after, after.triangles[t])) {
+    if (has_zero_area(after, after.triangles[t])) {
       return topology("a triangle around the merged vertex would have zero area");
     }
   }
@@ -201,7 +195,7 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
     return topology("the flip would duplicate edge " + std::to_string(c) + "-" + std::to_string(d));
   }
   const Triangle new1{c, a, d}, new2{d, b, c};
-  if (zero_area(surface, new1) || zero_area(surface, new2)) {
+  if (has_zero_area(surface, new1) || has_zero_area(surface, new2)) {
     return topology("a flipped triangle would have zero area");
   }
   const auto& p = surface.vertices;

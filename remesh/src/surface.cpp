@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "exactgeo/predicates/orient3d.hpp"
+
 namespace exactgeo::remesh {
 
 namespace {
@@ -52,6 +54,11 @@ bool walks(const Triangle& t, VertexIndex a, VertexIndex b) noexcept {
     if (t[k] == a && t[(k + 1) % 3] == b) return true;
   }
   return false;
+}
+
+bool zero_area(const Point3& p, const Point3& q, const Point3& r) noexcept {
+  return orient2d_along(0, p, q, r) == Sign::zero && orient2d_along(1, p, q, r) == Sign::zero &&
+         orient2d_along(2, p, q, r) == Sign::zero;
 }
 
 }  // namespace exactgeo::remesh

@@ -12,9 +12,12 @@
 
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "exactgeo/remesh/operations.hpp"
+#include "remesh/surface_mesh.hpp"
 
 namespace exactgeo::remesh {
 namespace {
+
+using testing::as_mesh;
 
 /// n x n squares of side 1 in z = 0 (vertex (i, j) is i + (n + 1) j), each split along
 /// its diagonal (i, j)-(i+1, j+1), turning counter-clockwise seen from +z; then a large
@@ -38,14 +41,6 @@ Surface sheets(int n, double h, double scale) {
   s.vertices.push_back({-scale * n, scale * 2 * n, scale * h});
   s.triangles.push_back({top, top + 2, top + 1});
   return s;
-}
-
-mesh::Mesh as_mesh(const Surface& s) {
-  mesh::Mesh m;
-  m.vertices = s.vertices;
-  for (const Triangle& t : s.triangles)
-    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
-  return m;
 }
 
 void expect_intersection_free(const Surface& s, const std::string& after) {

@@ -15,11 +15,14 @@
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "exactgeo/remesh/operations.hpp"
+#include "remesh/surface_mesh.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::remesh {
 namespace {
+
+using testing::as_mesh;
 
 Surface stack(int sheets, int n, std::mt19937_64& rng) {
   std::uniform_int_distribution<int> bump(-12, 12);  // heights in steps of 2^-7
@@ -41,14 +44,6 @@ Surface stack(int sheets, int n, std::mt19937_64& rng) {
     }
   }
   return s;
-}
-
-mesh::Mesh as_mesh(const Surface& s) {
-  mesh::Mesh m;
-  m.vertices = s.vertices;
-  for (const Triangle& t : s.triangles)
-    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
-  return m;
 }
 
 /// x in the closed tetrahedron abcd, by rational signs (nullopt when it is flat).

@@ -48,4 +48,7 @@ VertexIndex third_corner(const Triangle& t, VertexIndex a, VertexIndex b) noexce
 /// Whether the triangle is a, b, c in this cyclic order (a walks to b).
 bool walks(const Triangle& t, VertexIndex a, VertexIndex b) noexcept;
 
+/// All three points on one line (or at one point), exactly: a triangle of zero area.
+bool zero_area(const Point3& p, const Point3& q, const Point3& r) noexcept;
+
 }  // namespace exactgeo::remesh
