@@ -3,7 +3,9 @@
 // make them meet. After every applied operation the exact self-intersection finder
 // (mesh::find_self_intersections) must find no intersecting pair and no triangle may
 // have zero area; a refused flip that names a vertex must have that vertex in the closed
-// tetrahedron of its four corners, by the rational orient3d of the test oracle.
+// tetrahedron of its four corners, by the rational orient3d of the test oracle, and a
+// refused relocation's contact must be confirmed by the exact distance oracle of the CCD
+// tests (min_separation_oracle with distance 0, which shares no code with exact CCD).
 
 #include <gtest/gtest.h>
 
@@ -12,6 +14,7 @@
 #include <random>
 #include <string>
 
+#include "ccd/separation/min_separation_oracle.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "exactgeo/remesh/operations.hpp"
@@ -62,6 +65,38 @@ std::optional<bool> in_tetrahedron_oracle(const Point3& a, const Point3& b, cons
   return true;
 }
 
+/// Whether moving v to `to` brings it, one of its triangles or one of its edges into
+/// contact with the blocker, by the independent oracle.
+bool contact_confirmed(const Surface& s, VertexIndex v, const Point3& to, const Blocker& blocker) {
+  const auto p1 = [&](VertexIndex u) { return u == v ? to : s.vertices[u]; };
+  const auto& p0 = s.vertices;
+  const auto& c = blocker.corners;
+  switch (blocker.kind) {
+    case Blocker::Kind::triangle: {
+      const ccd::VertexFaceQuery q{p0[v], p0[c[0]], p0[c[1]], p0[c[2]],
+                                   to,    p1(c[0]), p1(c[1]), p1(c[2])};
+      return testing::min_separation_oracle(q, 0.0).within;
+    }
+    case Blocker::Kind::vertex:
+      for (const std::size_t t : s.triangles_around(v)) {
+        const Triangle& f = s.triangles[t];
+        const ccd::VertexFaceQuery q{p0[c[0]], p0[f[0]], p0[f[1]], p0[f[2]],
+                                     p0[c[0]], p1(f[0]), p1(f[1]), p1(f[2])};
+        if (testing::min_separation_oracle(q, 0.0).within) return true;
+      }
+      return false;
+    case Blocker::Kind::edge:
+      for (const Edge& e : s.edges()) {
+        if (e[0] != v && e[1] != v) continue;
+        const ccd::EdgeEdgeQuery q{p0[e[0]], p0[e[1]], p0[c[0]], p0[c[1]],
+                                   p1(e[0]), p1(e[1]), p0[c[0]], p0[c[1]]};
+        if (testing::min_separation_oracle(q, 0.0).within) return true;
+      }
+      return false;
+  }
+  return false;
+}
+
 TEST(RandomOperations, KeepTheStackIntersectionFree) {
   auto rng = testing::seeded_engine("remesh.random_operations");
   Surface surface = stack(3, 6, rng);
@@ -71,6 +106,7 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
   const auto offset = [&] { return std::ldexp(step(rng), -7); };
   std::map<std::string, int> tally;
   int named_vertices = 0;
+  int confirmed = 0;  // refused relocations whose contact the distance oracle confirmed
   for (int op = 0; op < 1500; ++op) {
     const std::vector<Edge> edges = surface.edges();
     const Edge e = edges[std::uniform_int_distribution<std::size_t>(0, edges.size() - 1)(rng)];
@@ -80,11 +116,17 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
     Outcome outcome;
     std::string name;
     switch (kind(rng)) {
-      case 0:
+      case 0: {
         name = "relocate";
-        outcome =
-            relocate_vertex(surface, e[0], {a[0] + offset(), a[1] + offset(), a[2] + offset()});
+        const Point3 to{a[0] + offset(), a[1] + offset(), a[2] + offset()};
+        outcome = relocate_vertex(surface, e[0], to);
+        if (outcome.blocker && confirmed < 40) {
+          EXPECT_TRUE(contact_confirmed(surface, e[0], to, *outcome.blocker))
+              << "relocate " << e[0] << ": " << outcome.reason;
+          ++confirmed;
+        }
         break;
+      }
       case 1: {
         name = "flip";
         const Surface before = surface;
@@ -127,7 +169,9 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
   }
   EXPECT_GT(tally["relocate refused (collision)"], 0);
   EXPECT_GT(tally["split refused (collision)"] + tally["flip refused (collision)"], 0);
-  std::cout << named_vertices << " refused flips checked against the rational oracle\n";
+  std::cout << named_vertices << " refused flips checked against the rational oracle, " << confirmed
+            << " refused relocations against the distance oracle\n";
+  EXPECT_GT(confirmed, 0);
 }
 
 TEST(RandomOperations, SmoothingPassesKeepTheStackIntersectionFree) {
