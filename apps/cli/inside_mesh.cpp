@@ -34,8 +34,10 @@ std::string refusal_explained(const InsideMeshOptions& options, const std::strin
     const inside::FillRule rule =
         options.float_rays ? inside::FillRule::parity
                            : inside::rule_for(mesh::check_mesh(loaded.mesh), options.rule);
-    return inside::refusal(loaded, rule, options.allow_non_manifold, inside::kCommandLineNames)
-        .value_or(message);
+    // The float ray baseline takes no rule: it offers none.
+    inside::OptionNames names = inside::kCommandLineNames;
+    if (options.float_rays) names.parity = names.nonzero = "";
+    return inside::refusal(loaded, rule, options.allow_non_manifold, names).value_or(message);
   } catch (const std::exception&) {
     return message;
   }

@@ -71,7 +71,8 @@ std::optional<std::string> refusal(const mesh::LoadedMesh& loaded, FillRule rule
   if (!problem) return std::nullopt;
   std::string& text = *problem;
   // Every option that would take the mesh as it is.
-  if (rule != FillRule::parity && !mesh::closed_surface_problem(check, true)) {
+  if (!names.parity.empty() && rule != FillRule::parity &&
+      !mesh::closed_surface_problem(check, true)) {
     text.append("; ").append(names.parity).append(", which needs no orientation, accepts it");
     if (!allow_non_manifold && mesh::closed_surface_problem(check, false)) {
       text.append(" with ").append(names.allow_non_manifold);
@@ -81,7 +82,8 @@ std::optional<std::string> refusal(const mesh::LoadedMesh& loaded, FillRule rule
       !mesh::closed_surface_problem(check, true)) {
     text.append("; ").append(names.allow_non_manifold).append(" accepts it");
   }
-  if (rule == FillRule::parity && !mesh::orientable_surface_problem(check)) {
+  if (!names.nonzero.empty() && rule == FillRule::parity &&
+      !mesh::orientable_surface_problem(check)) {
     text.append("; ").append(names.nonzero).append(" accepts it");
     if (!check.closed()) text.append(" as an open surface, by its generalized winding number");
   }

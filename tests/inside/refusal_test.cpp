@@ -85,6 +85,15 @@ TEST(Refusal, ATurnedFaceNamesParityAndASoupNamesWelding) {
              "it is accepted");
 }
 
+TEST(Refusal, AnOptionNotOfferedIsNotNamed) {
+  OptionNames no_rules = kCommandLineNames;
+  no_rules.parity = no_rules.nonzero = "";
+  const std::string message =
+      refused(cube_and("v 2 2 2\nf 1 2 9\n"), FillRule::parity, false, no_rules);
+  expect_has(message, "1 non-manifold edge");
+  EXPECT_EQ(message.find("--rule"), std::string::npos) << message;
+}
+
 TEST(Refusal, PythonSaysTheSameWithItsOwnSpelling) {
   const std::string fin = cube_and("v 2 2 2\nf 1 2 9\n");
   std::string command_line = refused(fin, FillRule::parity);

@@ -58,7 +58,8 @@ std::optional<std::string> rule_problem(const mesh::MeshCheck& check, FillRule r
                                         bool allow_non_manifold, const mesh::LoadedMesh& loaded);
 
 /// How a caller spells the options a refusal points to: the command line's flags or
-/// Python's keywords.
+/// Python's keywords. An empty name is an option the caller does not offer (the float ray
+/// baseline counts parity whatever the rule).
 struct OptionNames {
   std::string_view parity;              ///< "--rule parity"
   std::string_view nonzero;             ///< "--rule nonzero"
