@@ -144,10 +144,27 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
         }
         break;
       }
-      case 2:
+      case 2: {
         name = "split";
+        const Surface before = surface;
         outcome = split_edge(surface, e[0], e[1], mid);
+        if (outcome.blocker && outcome.blocker->kind == Blocker::Kind::vertex) {
+          // The vertex lies in the hull of a, b, mid and one of the opposite corners.
+          bool inside_one = false, decided = false;
+          for (const std::size_t t : before.triangles_on_edge(e[0], e[1])) {
+            const VertexIndex c = third_corner(before.triangles[t], e[0], e[1]);
+            const auto inside = in_tetrahedron_oracle(a, b, before.vertices[c], mid,
+                                                      before.vertices[outcome.blocker->corners[0]]);
+            decided = decided || inside.has_value();
+            inside_one = inside_one || inside.value_or(false);
+          }
+          if (decided) {
+            EXPECT_TRUE(inside_one) << "split " << e[0] << "-" << e[1] << ": " << outcome.reason;
+            ++named_vertices;
+          }
+        }
         break;
+      }
       default:
         name = "collapse";
         outcome = collapse_edge(surface, e[0], e[1], mid);
@@ -169,8 +186,8 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
   }
   EXPECT_GT(tally["relocate refused (collision)"], 0);
   EXPECT_GT(tally["split refused (collision)"] + tally["flip refused (collision)"], 0);
-  std::cout << named_vertices << " refused flips checked against the rational oracle, " << confirmed
-            << " refused relocations against the distance oracle\n";
+  std::cout << named_vertices << " refused flips and splits checked against the rational oracle, "
+            << confirmed << " refused relocations against the distance oracle\n";
   EXPECT_GT(confirmed, 0);
 }
 
