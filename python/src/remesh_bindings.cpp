@@ -60,9 +60,20 @@ Surface make(const py::object& vertices_in, const py::object& triangles_in,
 py::dict outcome_dict(const Outcome& o) {
   py::dict d;
   d["applied"] = o.applied();
-  d["verdict"] = o.verdict == remesh::Verdict::applied            ? "applied"
-                 : o.verdict == remesh::Verdict::refused_topology ? "refused_topology"
-                                                                  : "refused_collision";
+  switch (o.verdict) {
+    case remesh::Verdict::applied:
+      d["verdict"] = "applied";
+      break;
+    case remesh::Verdict::refused_topology:
+      d["verdict"] = "refused_topology";
+      break;
+    case remesh::Verdict::refused_collision:
+      d["verdict"] = "refused_collision";
+      break;
+    case remesh::Verdict::deferred:
+      d["verdict"] = "deferred";
+      break;
+  }
   d["reason"] = o.reason;
   if (o.blocker) {
     py::list corners;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <variant>
 #include <vector>
 
 #include "exactgeo/mesh/mesh.hpp"
@@ -20,6 +22,8 @@ std::string_view to_string(Verdict v) noexcept {
       return "refused (topology)";
     case Verdict::refused_collision:
       return "refused (collision)";
+    case Verdict::deferred:
+      return "deferred";
   }
   return "?";
 }
@@ -51,14 +55,14 @@ std::optional<std::string> vertex_problem(const Surface& s, VertexIndex v) {
   return std::nullopt;
 }
 
-/// The triangles on edge ab, or the reason the edge cannot be operated on (it has none, or
-/// more than two, or a triangle with a fixed corner).
+/// The triangles on edge ab (found unless given), or the reason the edge cannot be
+/// operated on (it has none, or more than two, or a triangle with a fixed corner).
 std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, VertexIndex b,
                                         std::vector<std::size_t>& on_edge) {
   for (const VertexIndex v : {a, b}) {
     if (auto why = vertex_problem(s, v)) return why;
   }
-  on_edge = s.triangles_on_edge(a, b);
+  if (on_edge.empty()) on_edge = s.triangles_on_edge(a, b);
   const std::string name = "edge " + std::to_string(a) + "-" + std::to_string(b);
   if (a == b || on_edge.empty()) return name + " is no edge of the surface";
   if (on_edge.size() > 2)
@@ -178,34 +182,135 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
   return {};
 }
 
-Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
-  std::vector<std::size_t> on_edge;
+namespace {
+
+/// A flip that passed its topology checks: its triangles, their replacements, the region
+/// it sweeps.
+struct FlipPlan {
+  std::size_t t1 = 0;  ///< walks a -> b
+  std::size_t t2 = 0;  ///< walks b -> a
+  Triangle new1{};
+  Triangle new2{};
+  std::array<RegionCorner, 4> region{};
+};
+
+/// The flip of edge ab, whose triangles are `on_edge`, or the reason it is refused.
+/// `edge_exists(c, d)` says whether the surface has edge cd.
+template <class EdgeExists>
+std::variant<Outcome, FlipPlan> plan_flip(const Surface& surface, VertexIndex a, VertexIndex b,
+                                          std::vector<std::size_t> on_edge,
+                                          const EdgeExists& edge_exists) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
   if (on_edge.size() != 2) return topology("a boundary edge cannot be flipped");
-  // t1 walks a -> b, t2 walks b -> a.
-  std::size_t t1 = on_edge[0], t2 = on_edge[1];
-  if (!walks(surface.triangles[t1], a, b)) std::swap(t1, t2);
-  if (!walks(surface.triangles[t1], a, b) || !walks(surface.triangles[t2], b, a)) {
+  FlipPlan plan{on_edge[0], on_edge[1], {}, {}, {}};
+  if (!walks(surface.triangles[plan.t1], a, b)) std::swap(plan.t1, plan.t2);
+  if (!walks(surface.triangles[plan.t1], a, b) || !walks(surface.triangles[plan.t2], b, a)) {
     return topology("the edge's triangles are not oriented alike");
   }
-  const VertexIndex c = third_corner(surface.triangles[t1], a, b);
-  const VertexIndex d = third_corner(surface.triangles[t2], a, b);
+  const VertexIndex c = third_corner(surface.triangles[plan.t1], a, b);
+  const VertexIndex d = third_corner(surface.triangles[plan.t2], a, b);
   if (c == d) return topology("the edge's triangles share their third corner");
-  if (!surface.triangles_on_edge(c, d).empty()) {
+  if (edge_exists(c, d)) {
     return topology("the flip would duplicate edge " + std::to_string(c) + "-" + std::to_string(d));
   }
-  const Triangle new1{c, a, d}, new2{d, b, c};
-  if (has_zero_area(surface, new1) || has_zero_area(surface, new2)) {
+  plan.new1 = {c, a, d};
+  plan.new2 = {d, b, c};
+  if (has_zero_area(surface, plan.new1) || has_zero_area(surface, plan.new2)) {
     return topology("a flipped triangle would have zero area");
   }
   const auto& p = surface.vertices;
-  if (auto hit = first_in_region(surface, {RegionCorner{a, p[a]}, RegionCorner{b, p[b]},
-                                           RegionCorner{c, p[c]}, RegionCorner{d, p[d]}})) {
-    return collision(*hit, "flipping edge " + std::to_string(a) + "-" + std::to_string(b));
-  }
-  surface.triangles[t1] = new1;
-  surface.triangles[t2] = new2;
+  plan.region = {RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
+                 RegionCorner{d, p[d]}};
+  return plan;
+}
+
+std::string flipping(VertexIndex a, VertexIndex b) {
+  return "flipping edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+}  // namespace
+
+Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
+  const auto planned = plan_flip(surface, a, b, {}, [&](VertexIndex c, VertexIndex d) {
+    return !surface.triangles_on_edge(c, d).empty();
+  });
+  if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
+  const FlipPlan& plan = std::get<FlipPlan>(planned);
+  if (auto hit = first_in_region(surface, plan.region)) return collision(*hit, flipping(a, b));
+  surface.triangles[plan.t1] = plan.new1;
+  surface.triangles[plan.t2] = plan.new2;
   return {};
+}
+
+std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
+  // The surface's edges and their triangles, once.
+  std::map<Edge, std::vector<std::size_t>> triangles_of;
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    const Triangle& tri = surface.triangles[t];
+    for (int k = 0; k < 3; ++k)
+      triangles_of[edge_of(tri[k], tri[(k + 1) % 3])].push_back(t);
+  }
+  const auto on = [&](VertexIndex a, VertexIndex b) {
+    const auto found = triangles_of.find(edge_of(a, b));
+    return found == triangles_of.end() ? std::vector<std::size_t>{} : found->second;
+  };
+  std::vector<Outcome> outcomes(edges.size());
+  std::vector<FlipPlan> plans;
+  std::vector<std::size_t> planned_edge;  // the edge of each plan
+  std::vector<std::array<Point3, 2>> boxes;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const auto [a, b] = edges[i];
+    auto planned = plan_flip(surface, a, b,
+                             a < surface.vertices.size() && b < surface.vertices.size()
+                                 ? on(a, b)
+                                 : std::vector<std::size_t>{},
+                             [&](VertexIndex c, VertexIndex d) { return !on(c, d).empty(); });
+    if (auto* refused = std::get_if<Outcome>(&planned)) {
+      outcomes[i] = std::move(*refused);
+      continue;
+    }
+    FlipPlan& plan = std::get<FlipPlan>(planned);
+    std::array<Point3, 2> box{plan.region[0].point, plan.region[0].point};
+    for (const RegionCorner& c : plan.region) {
+      for (int k = 0; k < 3; ++k) {
+        box[0][k] = std::min(box[0][k], c.point[k]);
+        box[1][k] = std::max(box[1][k], c.point[k]);
+      }
+    }
+    // Flips whose regions' boxes are apart change parts of the surface that no other
+    // one's region reaches: each is then checked against the surface as it is. A flip
+    // whose box meets an earlier one's waits for the next pass.
+    const auto meets = [&](const std::array<Point3, 2>& other) {
+      for (int k = 0; k < 3; ++k) {
+        if (box[1][k] < other[0][k] || other[1][k] < box[0][k]) return false;
+      }
+      return true;
+    };
+    if (std::any_of(boxes.begin(), boxes.end(), meets)) {
+      outcomes[i] = {Verdict::deferred,
+                     flipping(a, b) + " sweeps a region another flip of the pass reaches",
+                     {},
+                     {}};
+      continue;
+    }
+    boxes.push_back(box);
+    plans.push_back(plan);
+    planned_edge.push_back(i);
+  }
+  std::vector<std::array<RegionCorner, 4>> regions;
+  for (const FlipPlan& plan : plans)
+    regions.push_back(plan.region);
+  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  for (std::size_t k = 0; k < plans.size(); ++k) {
+    const Edge& e = edges[planned_edge[k]];
+    if (hits[k]) {
+      outcomes[planned_edge[k]] = collision(*hits[k], flipping(e[0], e[1]));
+      continue;
+    }
+    surface.triangles[plans[k].t1] = plans[k].new1;
+    surface.triangles[plans[k].t2] = plans[k].new2;
+  }
+  return outcomes;
 }
 
 Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at) {

@@ -1,6 +1,7 @@
 #include "exactgeo/remesh/swept_region.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <span>
 #include <vector>
 
@@ -217,39 +218,128 @@ std::string to_string(const Blocker& blocker) {
   return s;
 }
 
-std::optional<Blocker> first_in_region(const Surface& surface,
-                                       const std::array<RegionCorner, 4>& corners) {
+namespace {
+
+/// A vertex, an edge or a triangle of the surface with its box.
+struct Element {
+  Blocker what;
+  Point3 lower;
+  Point3 upper;
+};
+
+/// The surface's elements (the vertices some triangle uses, the edges, the triangles),
+/// in the order first_in_region reports them, and their order along x for the sweep.
+class Elements {
+ public:
+  explicit Elements(const Surface& surface) {
+    const auto& p = surface.vertices;
+    std::vector<bool> used(p.size());
+    for (const Triangle& t : surface.triangles) {
+      for (const VertexIndex v : t)
+        used[v] = true;
+    }
+    const auto add = [&](Blocker::Kind kind, std::array<VertexIndex, 3> corners, int n) {
+      Element e{{kind, corners}, p[corners[0]], p[corners[0]]};
+      for (int i = 1; i < n; ++i) {
+        for (int k = 0; k < 3; ++k) {
+          e.lower[k] = std::min(e.lower[k], p[corners[i]][k]);
+          e.upper[k] = std::max(e.upper[k], p[corners[i]][k]);
+        }
+      }
+      width_ = std::max(width_, e.upper[0] - e.lower[0]);
+      all_.push_back(e);
+    };
+    for (VertexIndex v = 0; v < p.size(); ++v) {
+      if (used[v]) add(Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}, 1);
+    }
+    for (const Edge& e : surface.edges())
+      add(Blocker::Kind::edge, {e[0], e[1], kNoVertex}, 2);
+    for (const Triangle& t : surface.triangles)
+      add(Blocker::Kind::triangle, t, 3);
+    by_x_.resize(all_.size());
+    std::iota(by_x_.begin(), by_x_.end(), std::size_t{0});
+    std::sort(by_x_.begin(), by_x_.end(),
+              [&](std::size_t a, std::size_t b) { return all_[a].lower[0] < all_[b].lower[0]; });
+  }
+
+  /// The elements whose closed boxes meet [lower, upper], in report order.
+  std::vector<std::size_t> meeting(const Point3& lower, const Point3& upper) const {
+    // Along x, only elements whose lower x lies in [lower - widest, upper] can meet.
+    const auto first = std::lower_bound(
+        by_x_.begin(), by_x_.end(), lower[0] - width_,
+        [&](std::size_t e, double x) { return all_[e].lower[0] < x; });
+    std::vector<std::size_t> found;
+    for (auto it = first; it != by_x_.end() && all_[*it].lower[0] <= upper[0]; ++it) {
+      const Element& e = all_[*it];
+      bool meets = true;
+      for (int k = 0; k < 3; ++k)
+        meets = meets && e.lower[k] <= upper[k] && lower[k] <= e.upper[k];
+      if (meets) found.push_back(*it);
+    }
+    std::sort(found.begin(), found.end());
+    return found;
+  }
+
+  const Element& operator[](std::size_t i) const noexcept { return all_[i]; }
+
+ private:
+  std::vector<Element> all_;
+  std::vector<std::size_t> by_x_;
+  double width_ = 0.0;  ///< the widest element along x
+};
+
+std::optional<Blocker> first_in(const Surface& surface, const Elements& elements,
+                                const std::array<RegionCorner, 4>& corners) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
   // triangle are the surface's own vertices and edges, tested before it).
   const Region region(corners);
   const auto& p = surface.vertices;
-  std::vector<bool> used(p.size());
-  for (const Triangle& t : surface.triangles) {
-    for (const VertexIndex v : t)
-      used[v] = true;
-  }
-  for (VertexIndex v = 0; v < p.size(); ++v) {
-    if (!used[v] || region.is_corner(v)) continue;
-    if (region.holds(p[v])) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
-  }
-  for (const Edge& e : surface.edges()) {
-    if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // the operation's own
-    const std::array<const Point3*, 2> points{&p[e[0]], &p[e[1]]};
-    if (!region.box_meets(points)) continue;
-    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
-      return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
+  Point3 lower = corners[0].point, upper = lower;
+  for (const RegionCorner& c : corners) {
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = std::min(lower[k], c.point[k]);
+      upper[k] = std::max(upper[k], c.point[k]);
     }
   }
-  for (const Triangle& t : surface.triangles) {
-    if (region.is_corner(t[0]) && region.is_corner(t[1]) && region.is_corner(t[2])) continue;
-    const std::array<const Point3*, 3> points{&p[t[0]], &p[t[1]], &p[t[2]]};
-    if (!region.box_meets(points)) continue;
-    if (pierces(region, {Corner{t[0], &p[t[0]]}, Corner{t[1], &p[t[1]]}, Corner{t[2], &p[t[2]]}})) {
-      return Blocker{Blocker::Kind::triangle, t};
+  for (const std::size_t i : elements.meeting(lower, upper)) {
+    const Blocker& b = elements[i].what;
+    const auto& c = b.corners;
+    switch (b.kind) {
+      case Blocker::Kind::vertex:
+        if (!region.is_corner(c[0]) && region.holds(p[c[0]])) return b;
+        break;
+      case Blocker::Kind::edge:
+        if (region.is_corner(c[0]) && region.is_corner(c[1])) break;  // the operation's own
+        if (edge_meets(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}})) return b;
+        break;
+      case Blocker::Kind::triangle:
+        if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) break;
+        if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]},
+                             Corner{c[2], &p[c[2]]}})) {
+          return b;
+        }
+        break;
     }
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Blocker> first_in_region(const Surface& surface,
+                                       const std::array<RegionCorner, 4>& corners) {
+  return first_in(surface, Elements(surface), corners);
+}
+
+std::vector<std::optional<Blocker>> first_in_regions(
+    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions) {
+  const Elements elements(surface);
+  std::vector<std::optional<Blocker>> found;
+  found.reserve(regions.size());
+  for (const auto& region : regions)
+    found.push_back(first_in(surface, elements, region));
+  return found;
 }
 
 }  // namespace exactgeo::remesh

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <random>
@@ -189,6 +190,36 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
   std::cout << named_vertices << " refused flips and splits checked against the rational oracle, "
             << confirmed << " refused relocations against the distance oracle\n";
   EXPECT_GT(confirmed, 0);
+}
+
+TEST(RandomOperations, AFlipPassAgreesWithFlipsOneByOne) {
+  auto rng = testing::seeded_engine("remesh.random_flip_pass");
+  Surface surface = stack(3, 8, rng);
+  std::map<std::string, int> tally;
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<Edge> edges = surface.edges();
+    std::shuffle(edges.begin(), edges.end(), rng);
+    const Surface before = surface;
+    const std::vector<Outcome> done = flip_edges(surface, edges);
+    ASSERT_EQ(done.size(), edges.size());
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      ++tally[std::string(to_string(done[i].verdict))];
+      if (done[i].verdict == Verdict::deferred) continue;
+      // Alone, on the surface before the pass, the flip has the same fate.
+      Surface alone = before;
+      const Outcome single = flip_edge(alone, edges[i][0], edges[i][1]);
+      EXPECT_EQ(single.verdict, done[i].verdict) << edges[i][0] << "-" << edges[i][1];
+      EXPECT_EQ(single.blocker, done[i].blocker) << edges[i][0] << "-" << edges[i][1];
+    }
+    const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(surface), 1);
+    ASSERT_TRUE(found.intersecting.empty()) << "pass " << pass;
+    ASSERT_EQ(mesh::check_mesh(as_mesh(surface)).zero_area_faces.count, 0u);
+  }
+  for (const auto& [what, count] : tally)
+    std::cout << what << ": " << count << "\n";
+  EXPECT_GT(tally["applied"], 0);
+  EXPECT_GT(tally["deferred"], 0);
+  EXPECT_GT(tally["refused (collision)"], 0);
 }
 
 TEST(RandomOperations, SmoothingPassesKeepTheStackIntersectionFree) {

@@ -37,6 +37,7 @@ enum class Verdict : std::uint8_t {
   applied,
   refused_topology,   ///< not an operation this surface allows there (reason says why)
   refused_collision,  ///< the motion or the swept region meets `blocker`
+  deferred,           ///< a pass: left for a later pass, another operation of it comes near
 };
 
 std::string_view to_string(Verdict v) noexcept;
@@ -68,6 +69,13 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
 
 /// Replaces the triangles abc and bad on edge ab by cad and dbc.
 Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
+
+/// Many flips at once (a pass): each is planned on the surface as it is; a flip whose
+/// region's box meets the box of an earlier one of the pass is deferred, the others'
+/// regions are checked in one pass over the surface (first_in_regions) and every flip
+/// that meets nothing is made. One outcome per edge, in order; flip_edge on each applied
+/// edge of the surface before the pass would have applied it too.
+std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges);
 
 /// Adds a vertex at `at` and splits edge ab and its triangles there.
 Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at);

@@ -21,7 +21,9 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "exactgeo/predicates/point.hpp"
 #include "exactgeo/remesh/surface.hpp"
@@ -54,5 +56,11 @@ struct RegionCorner {
 /// Preconditions: finite coordinates; no three of the region's corners collinear.
 std::optional<Blocker> first_in_region(const Surface& surface,
                                        const std::array<RegionCorner, 4>& region);
+
+/// first_in_region for several regions at once: the surface's elements are boxed and
+/// sorted along x once, and each region looks only at those its box reaches, so that a
+/// pass of many operations costs about one pass over the surface.
+std::vector<std::optional<Blocker>> first_in_regions(
+    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions);
 
 }  // namespace exactgeo::remesh
