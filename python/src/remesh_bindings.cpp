@@ -128,6 +128,50 @@ py::array_t<bool> relocate_many(Surface& s, const py::object& indices_in,
   return applied;
 }
 
+std::vector<remesh::Edge> edges_of(const Surface& s, const py::object& edges_in) {
+  const py::array_t<VertexIndex> edges =
+      vertex_indices(edges_in, "edges", {2}, vertex_range(s.vertices.size()));
+  std::vector<remesh::Edge> out;
+  for (py::ssize_t e = 0; e < edges.shape(0); ++e)
+    out.push_back({edges.data()[2 * e], edges.data()[2 * e + 1]});
+  return out;
+}
+
+py::list outcome_list(const std::vector<Outcome>& done) {
+  py::list out;
+  for (const Outcome& o : done)
+    out.append(outcome_dict(o));
+  return out;
+}
+
+py::list flip_many(Surface& s, const py::object& edges_in) {
+  const std::vector<remesh::Edge> edges = edges_of(s, edges_in);
+  std::vector<Outcome> done;
+  {
+    py::gil_scoped_release release;
+    done = remesh::flip_edges(s, edges);
+  }
+  return outcome_list(done);
+}
+
+py::list split_many(Surface& s, const py::object& edges_in, const py::object& points_in) {
+  const std::vector<remesh::Edge> edges = edges_of(s, edges_in);
+  const Doubles points = coordinates(points_in, "points", {-1, 3});
+  if (static_cast<std::size_t>(points.shape(0)) != edges.size()) {
+    throw py::value_error("edges and points must have the same length");
+  }
+  const std::span<const Point3> at = points_of(points);
+  std::vector<remesh::Split> splits;
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    splits.push_back({edges[i][0], edges[i][1], at[i]});
+  std::vector<Outcome> done;
+  {
+    py::gil_scoped_release release;
+    done = remesh::split_edges(s, splits);
+  }
+  return outcome_list(done);
+}
+
 }  // namespace
 
 void bind_remesh(py::module_& module) {
@@ -180,7 +224,14 @@ bool array, True where the move was made. The GIL is released.)doc")
             const Point3 point = point_of(at, "at");
             return outcome_dict(remesh::split_edge(s, vertex_of(s, a), vertex_of(s, b), point));
           },
-          py::arg("a"), py::arg("b"), py::arg("at"), "Splits edge ab at a new vertex `at`.");
+          py::arg("a"), py::arg("b"), py::arg("at"), "Splits edge ab at a new vertex `at`.")
+      .def("flip_edges", &flip_many, py::arg("edges"),
+           R"doc(A pass of flips over the (k, 2) edges: a flip near an earlier one of the pass is
+deferred (verdict "deferred"), the others checked in one pass over the surface. One dict
+per edge. The GIL is released.)doc")
+      .def("split_edges", &split_many, py::arg("edges"), py::arg("points"),
+           R"doc(A pass of splits of the (k, 2) edges at the (k, 3) points, as flip_edges. One
+dict per split. The GIL is released.)doc");
 }
 
 }  // namespace exactgeo::python

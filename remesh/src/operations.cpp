@@ -90,6 +90,26 @@ bool on_boundary(const Surface& s, VertexIndex v) {
   return false;
 }
 
+/// The closed box of points.
+template <class Points>
+std::array<Point3, 2> box_of(const Points& points) {
+  std::array<Point3, 2> box{*points.begin(), *points.begin()};
+  for (const Point3& q : points) {
+    for (int k = 0; k < 3; ++k) {
+      box[0][k] = std::min(box[0][k], q[k]);
+      box[1][k] = std::max(box[1][k], q[k]);
+    }
+  }
+  return box;
+}
+
+bool boxes_meet(const std::array<Point3, 2>& x, const std::array<Point3, 2>& y) noexcept {
+  for (int k = 0; k < 3; ++k) {
+    if (x[1][k] < y[0][k] || y[1][k] < x[0][k]) return false;
+  }
+  return true;
+}
+
 /// The first triangle of `after` that a triangle around `v` intersects there (exactly,
 /// mesh::face_contact), or nullopt.
 std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
@@ -270,23 +290,14 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
       continue;
     }
     FlipPlan& plan = std::get<FlipPlan>(planned);
-    std::array<Point3, 2> box{plan.region[0].point, plan.region[0].point};
-    for (const RegionCorner& c : plan.region) {
-      for (int k = 0; k < 3; ++k) {
-        box[0][k] = std::min(box[0][k], c.point[k]);
-        box[1][k] = std::max(box[1][k], c.point[k]);
-      }
-    }
+    const std::array<Point3, 4> corners{plan.region[0].point, plan.region[1].point,
+                                        plan.region[2].point, plan.region[3].point};
+    const std::array<Point3, 2> box = box_of(corners);
     // Flips whose regions' boxes are apart change parts of the surface that no other
     // one's region reaches: each is then checked against the surface as it is. A flip
     // whose box meets an earlier one's waits for the next pass.
-    const auto meets = [&](const std::array<Point3, 2>& other) {
-      for (int k = 0; k < 3; ++k) {
-        if (box[1][k] < other[0][k] || other[1][k] < box[0][k]) return false;
-      }
-      return true;
-    };
-    if (std::any_of(boxes.begin(), boxes.end(), meets)) {
+    if (std::any_of(boxes.begin(), boxes.end(),
+                    [&](const auto& other) { return boxes_meet(box, other); })) {
       outcomes[i] = {Verdict::deferred,
                      flipping(a, b) + " sweeps a region another flip of the pass reaches",
                      {},
@@ -313,8 +324,20 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   return outcomes;
 }
 
-Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at) {
+namespace {
+
+/// A split that passed its topology checks: the edge's triangles, and the regions it
+/// sweeps (none when the new vertex lies exactly on the edge).
+struct SplitPlan {
+  VertexIndex a = 0;
+  VertexIndex b = 0;
+  Point3 at{};
   std::vector<std::size_t> on_edge;
+  std::vector<std::array<RegionCorner, 4>> regions;
+};
+
+std::variant<Outcome, SplitPlan> plan_split(const Surface& surface, VertexIndex a, VertexIndex b,
+                                            const Point3& at, std::vector<std::size_t> on_edge) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
   if (!finite(at)) return topology("the new position is not finite");
   const auto& p = surface.vertices;
@@ -327,31 +350,101 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
           between && std::min(p[a][k], p[b][k]) <= at[k] && at[k] <= std::max(p[a][k], p[b][k]);
     if (!between) return topology("the new vertex lies on the edge's line, outside the edge");
   }
+  SplitPlan plan{a, b, at, on_edge, {}};
   for (const std::size_t t : on_edge) {
     const VertexIndex c = third_corner(surface.triangles[t], a, b);
     if (zero_area(p[a], p[c], at) || zero_area(p[b], p[c], at)) {
       return topology("a triangle of the split would have zero area");
     }
-    if (between) continue;
-    if (auto hit = first_in_region(surface, {RegionCorner{a, p[a]}, RegionCorner{b, p[b]},
-                                             RegionCorner{c, p[c]}, RegionCorner{kNoVertex, at}})) {
-      return collision(*hit, "splitting edge " + std::to_string(a) + "-" + std::to_string(b));
+    if (!between) {
+      plan.regions.push_back({RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
+                              RegionCorner{kNoVertex, at}});
     }
   }
+  return plan;
+}
+
+std::string splitting(VertexIndex a, VertexIndex b) {
+  return "splitting edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+/// Makes the planned split: a new vertex, and each triangle x y c (walking x -> y along
+/// the edge) replaced by x m c and m y c.
+Outcome apply_split(Surface& surface, const SplitPlan& plan) {
   const auto m = static_cast<VertexIndex>(surface.vertices.size());
-  surface.vertices.push_back(at);
+  surface.vertices.push_back(plan.at);
   if (!surface.fixed.empty()) surface.fixed.push_back(false);
-  for (const std::size_t t : on_edge) {
+  for (const std::size_t t : plan.on_edge) {
     const Triangle old = surface.triangles[t];
-    const VertexIndex x = walks(old, a, b) ? a : b;  // the triangle walks x -> y
-    const VertexIndex y = x == a ? b : a;
-    const VertexIndex c = third_corner(old, a, b);
+    const VertexIndex x = walks(old, plan.a, plan.b) ? plan.a : plan.b;
+    const VertexIndex y = x == plan.a ? plan.b : plan.a;
+    const VertexIndex c = third_corner(old, plan.a, plan.b);
     surface.triangles[t] = {x, m, c};
     surface.triangles.push_back({m, y, c});
   }
   Outcome done;
   done.new_vertex = m;
   return done;
+}
+
+}  // namespace
+
+Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at) {
+  const auto planned = plan_split(surface, a, b, at, {});
+  if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
+  const SplitPlan& plan = std::get<SplitPlan>(planned);
+  for (const auto& region : plan.regions) {
+    if (auto hit = first_in_region(surface, region)) return collision(*hit, splitting(a, b));
+  }
+  return apply_split(surface, plan);
+}
+
+std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits) {
+  std::vector<Outcome> outcomes(splits.size());
+  std::vector<SplitPlan> plans;
+  std::vector<std::size_t> planned;  // the split of each plan
+  std::vector<std::array<Point3, 2>> boxes;
+  std::vector<std::array<RegionCorner, 4>> regions;
+  for (std::size_t i = 0; i < splits.size(); ++i) {
+    const Split& s = splits[i];
+    auto plan_or = plan_split(surface, s.a, s.b, s.at, {});
+    if (auto* refused = std::get_if<Outcome>(&plan_or)) {
+      outcomes[i] = std::move(*refused);
+      continue;
+    }
+    SplitPlan& plan = std::get<SplitPlan>(plan_or);
+    // Its triangles and the new vertex: all it changes lies in this box.
+    std::vector<Point3> points{s.at};
+    for (const std::size_t t : plan.on_edge) {
+      for (const VertexIndex v : surface.triangles[t])
+        points.push_back(surface.vertices[v]);
+    }
+    const std::array<Point3, 2> box = box_of(points);
+    if (std::any_of(boxes.begin(), boxes.end(),
+                    [&](const auto& other) { return boxes_meet(box, other); })) {
+      outcomes[i] = {Verdict::deferred,
+                     splitting(s.a, s.b) + " changes a region another split of the pass reaches",
+                     {},
+                     {}};
+      continue;
+    }
+    boxes.push_back(box);
+    regions.insert(regions.end(), plan.regions.begin(), plan.regions.end());
+    plans.push_back(std::move(plan));
+    planned.push_back(i);
+  }
+  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  std::size_t next_region = 0;
+  for (std::size_t k = 0; k < plans.size(); ++k) {
+    std::optional<Blocker> hit;
+    for (std::size_t r = 0; r < plans[k].regions.size(); ++r, ++next_region) {
+      if (!hit) hit = hits[next_region];
+    }
+    const Split& s = splits[planned[k]];
+    outcomes[planned[k]] =
+        hit ? collision(*hit, splitting(s.a, s.b)) : apply_split(surface, plans[k]);
+  }
+  return outcomes;
 }
 
 }  // namespace exactgeo::remesh

@@ -52,3 +52,14 @@ def test_fixed_vertices_and_bad_arguments():
         exactgeo.Surface(vertices, triangles, fixed=[True])
     with pytest.raises(ValueError, match="non-finite"):
         surface.relocate_vertex(7, [1, np.nan, 0])
+
+
+def test_passes_of_flips_and_splits():
+    surface = exactgeo.Surface(*sheets())
+    # Two far apart diagonals and one next to the first: that one waits.
+    done = surface.flip_edges([[6, 12], [18, 24], [7, 13]])
+    assert [d["verdict"] for d in done] == ["applied", "applied", "deferred"]
+    done = surface.split_edges([[0, 1], [3, 4]], [[0.5, 0, 0], [3.5, 0, 2]])
+    assert done[0]["applied"] and done[0]["new_vertex"] == 28
+    assert done[1]["verdict"] == "refused_collision"
+    assert done[1]["blocker"] == ("triangle", (25, 27, 26))

@@ -222,6 +222,44 @@ TEST(RandomOperations, AFlipPassAgreesWithFlipsOneByOne) {
   EXPECT_GT(tally["refused (collision)"], 0);
 }
 
+TEST(RandomOperations, ASplitPassAgreesWithSplitsOneByOne) {
+  auto rng = testing::seeded_engine("remesh.random_split_pass");
+  Surface surface = stack(3, 6, rng);
+  std::uniform_int_distribution<int> lift(-40, 40);  // in steps of 2^-7
+  std::map<std::string, int> tally;
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<Edge> edges = surface.edges();
+    std::shuffle(edges.begin(), edges.end(), rng);
+    std::vector<Split> splits;
+    for (const Edge& e : edges) {
+      const Point3& a = surface.vertices[e[0]];
+      const Point3& b = surface.vertices[e[1]];
+      const double up = pass % 2 == 0 ? std::ldexp(lift(rng), -7) : 0.0;  // on the edge, or off
+      splits.push_back(
+          {e[0], e[1], {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2 + up}});
+    }
+    const Surface before = surface;
+    const std::vector<Outcome> done = split_edges(surface, splits);
+    ASSERT_EQ(done.size(), splits.size());
+    for (std::size_t i = 0; i < splits.size(); ++i) {
+      ++tally[std::string(to_string(done[i].verdict))];
+      if (done[i].verdict == Verdict::deferred) continue;
+      Surface alone = before;
+      const Outcome single = split_edge(alone, splits[i].a, splits[i].b, splits[i].at);
+      EXPECT_EQ(single.verdict, done[i].verdict) << splits[i].a << "-" << splits[i].b;
+      EXPECT_EQ(single.blocker, done[i].blocker) << splits[i].a << "-" << splits[i].b;
+    }
+    const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(surface), 1);
+    ASSERT_TRUE(found.intersecting.empty()) << "pass " << pass;
+    ASSERT_EQ(mesh::check_mesh(as_mesh(surface)).zero_area_faces.count, 0u);
+  }
+  for (const auto& [what, count] : tally)
+    std::cout << what << ": " << count << "\n";
+  EXPECT_GT(tally["applied"], 0);
+  EXPECT_GT(tally["deferred"], 0);
+  EXPECT_GT(tally["refused (collision)"], 0);
+}
+
 TEST(RandomOperations, SmoothingPassesKeepTheStackIntersectionFree) {
   auto rng = testing::seeded_engine("remesh.random_smoothing");
   Surface surface = stack(3, 8, rng);

@@ -80,4 +80,17 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges);
 /// Adds a vertex at `at` and splits edge ab and its triangles there.
 Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at);
 
+/// A split of edge ab at `at`.
+struct Split {
+  VertexIndex a = kNoVertex;
+  VertexIndex b = kNoVertex;
+  Point3 at{};
+};
+
+/// Many splits at once (a refinement pass), as flip_edges: a split whose box (its
+/// triangles and the new vertex) meets an earlier one's is deferred, the others' regions
+/// are checked in one pass over the surface, and every split that meets nothing is made
+/// (new vertices in the order of the splits).
+std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits);
+
 }  // namespace exactgeo::remesh
