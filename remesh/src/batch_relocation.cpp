@@ -5,7 +5,6 @@
 #include <vector>
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
-#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/remesh/operations.hpp"
 
 namespace exactgeo::remesh {

@@ -9,7 +9,6 @@
 
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
-#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
 
 namespace exactgeo::remesh {
