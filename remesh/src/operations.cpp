@@ -130,24 +130,9 @@ std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
 }  // namespace
 
 Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to) {
-  if (auto why = vertex_problem(surface, v)) return topology(*why);
-  if (!finite(to)) return topology("the new position is not finite");
-  const std::vector<std::size_t> star = surface.triangles_around(v);
-  if (star.empty()) return topology("vertex " + std::to_string(v) + " is used by no triangle");
-  const Point3 from = surface.vertices[v];
-  surface.vertices[v] = to;
-  const bool flat = std::any_of(star.begin(), star.end(), [&](std::size_t t) {
-    return has_zero_area(surface, surface.triangles[t]);
-  });
-  surface.vertices[v] = from;
-  if (flat)
-    return topology("a triangle around vertex " + std::to_string(v) + " would have zero area");
+  // A pass of one move: the same checks, one code path.
   const Move move{v, to};
-  if (auto hit = first_collision(surface, std::span(&move, 1))) {
-    return collision(*hit, "moving vertex " + std::to_string(v));
-  }
-  surface.vertices[v] = to;
-  return {};
+  return relocate_vertices(surface, std::span(&move, 1)).front();
 }
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
@@ -279,10 +264,8 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   std::vector<std::array<Point3, 2>> boxes;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
-    auto planned = plan_flip(surface, a, b,
-                             a < surface.vertices.size() && b < surface.vertices.size()
-                                 ? on(a, b)
-                                 : std::vector<std::size_t>{},
+    // An index out of range finds no triangles here, and plan_flip names it.
+    auto planned = plan_flip(surface, a, b, on(a, b),
                              [&](VertexIndex c, VertexIndex d) { return !on(c, d).empty(); });
     if (auto* refused = std::get_if<Outcome>(&planned)) {
       outcomes[i] = std::move(*refused);

@@ -134,16 +134,9 @@ class Region {
                        [v](const Corner& c) { return c.vertex == v; });
   }
 
-  /// The closed boxes of the region and of the points overlap.
-  bool box_meets(std::span<const Point3* const> points) const noexcept {
-    for (int k = 0; k < 3; ++k) {
-      const auto [lo, hi] =
-          std::minmax_element(points.begin(), points.end(),
-                              [k](const Point3* a, const Point3* b) { return (*a)[k] < (*b)[k]; });
-      if ((**hi)[k] < lower_[k] || (**lo)[k] > upper_[k]) return false;
-    }
-    return true;
-  }
+  /// The region's closed box.
+  const Point3& lower() const noexcept { return lower_; }
+  const Point3& upper() const noexcept { return upper_; }
 
   /// x in the closed hull.
   bool holds(const Point3& x) const noexcept {
@@ -265,9 +258,9 @@ class Elements {
   /// The elements whose closed boxes meet [lower, upper], in report order.
   std::vector<std::size_t> meeting(const Point3& lower, const Point3& upper) const {
     // Along x, only elements whose lower x lies in [lower - widest, upper] can meet.
-    const auto first = std::lower_bound(
-        by_x_.begin(), by_x_.end(), lower[0] - width_,
-        [&](std::size_t e, double x) { return all_[e].lower[0] < x; });
+    const auto first =
+        std::lower_bound(by_x_.begin(), by_x_.end(), lower[0] - width_,
+                         [&](std::size_t e, double x) { return all_[e].lower[0] < x; });
     std::vector<std::size_t> found;
     for (auto it = first; it != by_x_.end() && all_[*it].lower[0] <= upper[0]; ++it) {
       const Element& e = all_[*it];
@@ -295,14 +288,7 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
   // triangle are the surface's own vertices and edges, tested before it).
   const Region region(corners);
   const auto& p = surface.vertices;
-  Point3 lower = corners[0].point, upper = lower;
-  for (const RegionCorner& c : corners) {
-    for (int k = 0; k < 3; ++k) {
-      lower[k] = std::min(lower[k], c.point[k]);
-      upper[k] = std::max(upper[k], c.point[k]);
-    }
-  }
-  for (const std::size_t i : elements.meeting(lower, upper)) {
+  for (const std::size_t i : elements.meeting(region.lower(), region.upper())) {
     const Blocker& b = elements[i].what;
     const auto& c = b.corners;
     switch (b.kind) {
@@ -315,8 +301,8 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
         break;
       case Blocker::Kind::triangle:
         if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) break;
-        if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]},
-                             Corner{c[2], &p[c[2]]}})) {
+        if (pierces(region,
+                    {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
           return b;
         }
         break;

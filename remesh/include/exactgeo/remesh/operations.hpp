@@ -4,7 +4,8 @@
 // the surface intersection free, or refused with the reason and, for a geometric refusal,
 // the element that would be met. Every geometric decision is exact.
 //
-//   relocate_vertex  the vertex moves on a straight line (pseudo_motion.hpp);
+//   relocate_vertex  the vertex moves on a straight line, checked by exact CCD through the
+//                    mesh broad phase (a pass of one move: relocate_vertices);
 //   collapse_edge    both ends move to the new point on straight lines, pairs that become
 //                    adjacent excepted; the triangles around the merged vertex are then
 //                    checked against every other triangle, exactly, in their final place;

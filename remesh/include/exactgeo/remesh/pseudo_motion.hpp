@@ -1,8 +1,9 @@
 #pragma once
 
-// An operation that moves vertices, checked as a motion: relocation moves one vertex, a
-// collapse moves both ends of its edge to the new point, each on a straight line over one
-// pseudo-time step while every other vertex stands (El Topo's pseudo-trajectories). The
+// An operation that moves vertices, checked as a motion: a collapse moves both ends of its
+// edge to the new point, each on a straight line over one pseudo-time step while every
+// other vertex stands (El Topo's pseudo-trajectories). (Relocations, whose pairs need no
+// merging, go through the mesh broad phase instead: relocate_vertices.) The
 // surface stays intersection free through the step when no vertex-face pair and no
 // edge-edge pair that shares no vertex comes into contact: the first contact between two
 // triangles that were apart is one of those (exact CCD decides each, ccd.hpp).
