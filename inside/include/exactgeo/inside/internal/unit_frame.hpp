@@ -11,7 +11,7 @@
 // and since the direction's coordinates (3/16, 9/256, 1, ...) are exact in a few bits
 // while the offsets are near the mesh's size, the inputs of one sign spanned more binades
 // than one common scaling of the expansion stage covers (about 650 for det3): GMP
-// rationals decided every sign, and classification took 30 times as long.
+// rationals decided every sign (docs/inside.md has the cost, measured).
 //
 // So when the largest extent X of the box of the faces' corners lies outside
 // [2^-64, 2^64] (the window in which CCD leaves its queries as they are too,
