@@ -254,8 +254,7 @@ TEST(OperationsTopology, RefusalsSayWhy) {
   ASSERT_TRUE(flip_edge(surface, kInner, kInner + 6).applied());
   ASSERT_TRUE(flip_edge(surface, kInner + 1, kInner + 5).applied());
   EXPECT_FALSE(surface.triangles_on_edge(kInner, kInner + 6).empty());
-  // A split off the edge's line but in the sheet's plane would fold: zero area is not it,
-  // but a point beyond the edge on its line is refused.
+  // A split point on the edge's line but beyond its end is refused.
   EXPECT_EQ(split_edge(surface, kInner, kInner + 1, {3, 1, 0}).verdict, Verdict::refused_topology);
 }
 
