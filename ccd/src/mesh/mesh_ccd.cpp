@@ -200,18 +200,42 @@ TimeInterval refine_earliest(const MeshCcdResult& result, std::span<const TimeIn
   return *earliest;
 }
 
-}  // namespace
-
-MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions& options) {
-  State& s = *state_;
-  check_positions(positions.t0, s.vertex_count, "positions.t0");
-  check_positions(positions.t1, s.vertex_count, "positions.t1");
+/// Throws std::invalid_argument for frames or options MeshCcd::step does not take.
+void check_step(const StepPositions& positions, const MeshCcdOptions& options,
+                std::size_t vertex_count) {
+  check_positions(positions.t0, vertex_count, "positions.t0");
+  check_positions(positions.t1, vertex_count, "positions.t1");
   if (!is_valid_min_separation(options.min_separation)) {
     throw std::invalid_argument("MeshCcd::step: min_separation must be finite and >= 0");
   }
   if (options.min_separation > 0.0 && options.method != Method::exact) {
     throw std::invalid_argument("MeshCcd::step: min_separation > 0 needs the exact method");
   }
+}
+
+}  // namespace
+
+MeshCcdCandidates MeshCcd::candidates(const StepPositions& positions,
+                                      const MeshCcdOptions& options) {
+  State& s = *state_;
+  MeshCcdOptions as_exact = options;  // the method does not matter to the broad phase
+  as_exact.method = Method::exact;
+  check_step(positions, as_exact, s.vertex_count);
+  std::vector<double> unit;
+  const ScaledStep scaled = at_unit_magnitude(positions, options.min_separation, unit);
+  const internal::MeshCandidates found = s.broad_phase.candidates(
+      scaled.positions, scaled.largest, options.threads, scaled.min_separation);
+  MeshCcdCandidates out;
+  out.vertex_face = found.vertex_face;
+  out.edge_edge.reserve(found.edge_edge.size());
+  for (const internal::EdgeIndexPair& pair : found.edge_edge)
+    out.edge_edge.push_back({s.edges[pair.a], s.edges[pair.b]});
+  return out;
+}
+
+MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions& options) {
+  State& s = *state_;
+  check_step(positions, options, s.vertex_count);
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
   // A step far from magnitude 1 is brought there once for all its pairs, both ends by

@@ -1172,6 +1172,46 @@ TEST(MeshCcdApi, FindCollisionsEqualsStep) {
   EXPECT_TRUE(find_collisions(m.faces, m.frames()).collision());
 }
 
+TEST(MeshCcdApi, CandidatesAreTheNarrowPhasesInput) {
+  // The narrow phase run on candidates() gives step()'s pairs, as many as it counted, at
+  // scale 1 and 2^1000 (the broad phase works on the frames brought to magnitude 1).
+  Rng rng = testing::seeded_engine("mesh-ccd-candidates");
+  const MovingMesh crumpling = crumpling_sheet(rng, 9);
+  for (const double scale : {1.0, 0x1p1000}) {
+    MovingMesh m = crumpling;
+    for (double& x : m.t0)
+      x *= scale;
+    for (double& x : m.t1)
+      x *= scale;
+    MeshCcd ccd(m.vertex_count(), m.faces);
+    const MeshCcdCandidates found = ccd.candidates(m.frames(), mesh_options(Method::cubic, 1));
+    const MeshCcdResult step = MeshCcd(m.vertex_count(), m.faces).step(m.frames());
+    ASSERT_TRUE(step.collision());
+    EXPECT_EQ(found.vertex_face.size(), step.vertex_face_candidates);
+    EXPECT_EQ(found.edge_edge.size(), step.edge_edge_candidates);
+    std::vector<VertexFacePair> vertex_face;
+    for (const VertexFacePair& p : found.vertex_face) {
+      EXPECT_FALSE(is_corner(p.vertex, m.faces[p.face])) << describe(p);
+      if (vertex_face_ccd(vertex_face_query(m.frames(), m.faces, p)).collision)
+        vertex_face.push_back(p);
+    }
+    std::vector<EdgeEdgePair> edge_edge;
+    for (const EdgeEdgePair& p : found.edge_edge) {
+      EXPECT_FALSE(share_a_vertex(p.a, p.b)) << describe(p);
+      if (edge_edge_ccd(edge_edge_query(m.frames(), p)).collision) edge_edge.push_back(p);
+    }
+    std::sort(vertex_face.begin(), vertex_face.end());
+    std::sort(edge_edge.begin(), edge_edge.end());
+    EXPECT_EQ(vertex_face, step.vertex_face) << "scale " << scale;
+    EXPECT_EQ(edge_edge, step.edge_edge) << "scale " << scale;
+    // The trees are kept: the next step on the same MeshCcd agrees too.
+    expect_same_result(ccd.step(m.frames()), step, "step after candidates()");
+  }
+  MeshCcd ccd(crumpling.vertex_count(), crumpling.faces);
+  const std::vector<double> short_frame(3, 0.0);
+  EXPECT_THROW(ccd.candidates({crumpling.t0, short_frame}), std::invalid_argument);
+}
+
 bool same_points(std::span<const Point3> a, std::span<const Point3> b) {
   return std::equal(a.begin(), a.end(), b.begin(), b.end());
 }

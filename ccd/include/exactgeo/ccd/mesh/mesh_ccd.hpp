@@ -94,6 +94,12 @@ struct MeshCcdResult {
   bool collision() const noexcept { return !vertex_face.empty() || !edge_edge.empty(); }
 };
 
+/// The broad phase's pairs of a step, before the narrow phase (MeshCcd::candidates).
+struct MeshCcdCandidates {
+  std::vector<VertexFacePair> vertex_face;
+  std::vector<EdgeEdgePair> edge_edge;
+};
+
 class MeshCcd {
  public:
   /// Throws std::invalid_argument when a face has a corner index >= vertex_count or a
@@ -110,6 +116,12 @@ class MeshCcd {
   /// Not const: it keeps the broad phase's trees for the next step. One
   /// MeshCcd per thread; different MeshCcd objects are independent.
   MeshCcdResult step(const StepPositions& positions, const MeshCcdOptions& options = {});
+
+  /// The pairs step() would give to the narrow phase for these positions (its broad phase
+  /// alone, trees kept as step() keeps them; options.method is not used), for simulators
+  /// that run their own narrow phase and for measuring it: vertex_face_query and
+  /// edge_edge_query make each pair's query. Throws as step() does.
+  MeshCcdCandidates candidates(const StepPositions& positions, const MeshCcdOptions& options = {});
 
   std::size_t vertex_count() const noexcept;
   std::span<const Triangle> faces() const noexcept;
