@@ -110,15 +110,20 @@ bool boxes_meet(const std::array<Point3, 2>& x, const std::array<Point3, 2>& y) 
 }
 
 /// The first triangle of `after` that a triangle around `v` intersects there (exactly,
-/// mesh::face_contact), or nullopt.
+/// mesh::face_contact; triangles whose closed boxes are apart have no common point), or
+/// nullopt.
 std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
   mesh::Mesh m;
   m.vertices = after.vertices;
-  for (const Triangle& t : after.triangles)
+  std::vector<std::array<Point3, 2>> boxes;
+  for (const Triangle& t : after.triangles) {
     m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+    boxes.push_back(
+        box_of(std::array{after.vertices[t[0]], after.vertices[t[1]], after.vertices[t[2]]}));
+  }
   for (const std::size_t star : after.triangles_around(v)) {
     for (std::size_t other = 0; other < m.faces.size(); ++other) {
-      if (other == star) continue;
+      if (other == star || !boxes_meet(boxes[star], boxes[other])) continue;
       if (mesh::face_contact(m, star, other) != mesh::FaceContact::apart) {
         return Blocker{Blocker::Kind::triangle, after.triangles[other]};
       }
@@ -316,7 +321,43 @@ struct SplitPlan {
   Point3 at{};
   std::vector<std::size_t> on_edge;
   std::vector<std::array<RegionCorner, 4>> regions;
+  std::vector<VertexIndex> partners;  ///< per region: the other side's opposite corner
 };
+
+/// The triangles x m c and m y c that replace each triangle x y c of the edge (walking
+/// x -> y along it), for a new vertex numbered m.
+std::vector<Triangle> split_triangles(const Surface& surface,
+                                      const std::vector<std::size_t>& on_edge, VertexIndex a,
+                                      VertexIndex b, VertexIndex m) {
+  std::vector<Triangle> made;
+  for (const std::size_t t : on_edge) {
+    const Triangle& old = surface.triangles[t];
+    const VertexIndex x = walks(old, a, b) ? a : b;
+    const VertexIndex y = x == a ? b : a;
+    const VertexIndex c = third_corner(old, a, b);
+    made.push_back({x, m, c});
+    made.push_back({m, y, c});
+  }
+  return made;
+}
+
+/// Whether two of a split's new triangles intersect (exactly, mesh::face_contact): the
+/// two sides of an inner edge split off the edge are checked against each other here,
+/// not by each other's regions (first_in_region's partner).
+bool new_triangles_meet(const Surface& surface, const std::vector<Triangle>& made,
+                        const Point3& at) {
+  mesh::Mesh m;
+  m.vertices = surface.vertices;
+  m.vertices.push_back(at);
+  for (const Triangle& t : made)
+    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+  for (std::size_t i = 0; i < made.size(); ++i) {
+    for (std::size_t j = i + 1; j < made.size(); ++j) {
+      if (mesh::face_contact(m, i, j) != mesh::FaceContact::apart) return true;
+    }
+  }
+  return false;
+}
 
 std::variant<Outcome, SplitPlan> plan_split(const Surface& surface, VertexIndex a, VertexIndex b,
                                             const Point3& at, std::vector<std::size_t> on_edge) {
@@ -332,15 +373,27 @@ std::variant<Outcome, SplitPlan> plan_split(const Surface& surface, VertexIndex 
           between && std::min(p[a][k], p[b][k]) <= at[k] && at[k] <= std::max(p[a][k], p[b][k]);
     if (!between) return topology("the new vertex lies on the edge's line, outside the edge");
   }
-  SplitPlan plan{a, b, at, on_edge, {}};
-  for (const std::size_t t : on_edge) {
-    const VertexIndex c = third_corner(surface.triangles[t], a, b);
+  SplitPlan plan{a, b, at, on_edge, {}, {}};
+  for (std::size_t i = 0; i < on_edge.size(); ++i) {
+    const VertexIndex c = third_corner(surface.triangles[on_edge[i]], a, b);
     if (zero_area(p[a], p[c], at) || zero_area(p[b], p[c], at)) {
       return topology("a triangle of the split would have zero area");
     }
     if (!between) {
       plan.regions.push_back({RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
                               RegionCorner{kNoVertex, at}});
+      plan.partners.push_back(
+          on_edge.size() == 2 ? third_corner(surface.triangles[on_edge[1 - i]], a, b) : kNoVertex);
+    }
+  }
+  if (!between && on_edge.size() == 2) {
+    const auto m = static_cast<VertexIndex>(surface.vertices.size());
+    if (new_triangles_meet(surface, split_triangles(surface, on_edge, a, b, m), at)) {
+      return Outcome{Verdict::refused_collision,
+                     "splitting edge " + std::to_string(a) + "-" + std::to_string(b) +
+                         " off the edge would fold its two sides into each other",
+                     Blocker{Blocker::Kind::triangle, surface.triangles[on_edge[1]]},
+                     {}};
     }
   }
   return plan;
@@ -354,15 +407,12 @@ std::string splitting(VertexIndex a, VertexIndex b) {
 /// the edge) replaced by x m c and m y c.
 Outcome apply_split(Surface& surface, const SplitPlan& plan) {
   const auto m = static_cast<VertexIndex>(surface.vertices.size());
+  const std::vector<Triangle> made = split_triangles(surface, plan.on_edge, plan.a, plan.b, m);
   surface.vertices.push_back(plan.at);
   if (!surface.fixed.empty()) surface.fixed.push_back(false);
-  for (const std::size_t t : plan.on_edge) {
-    const Triangle old = surface.triangles[t];
-    const VertexIndex x = walks(old, plan.a, plan.b) ? plan.a : plan.b;
-    const VertexIndex y = x == plan.a ? plan.b : plan.a;
-    const VertexIndex c = third_corner(old, plan.a, plan.b);
-    surface.triangles[t] = {x, m, c};
-    surface.triangles.push_back({m, y, c});
+  for (std::size_t i = 0; i < plan.on_edge.size(); ++i) {
+    surface.triangles[plan.on_edge[i]] = made[2 * i];
+    surface.triangles.push_back(made[2 * i + 1]);
   }
   Outcome done;
   done.new_vertex = m;
@@ -375,8 +425,10 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
   const auto planned = plan_split(surface, a, b, at, {});
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const SplitPlan& plan = std::get<SplitPlan>(planned);
-  for (const auto& region : plan.regions) {
-    if (auto hit = first_in_region(surface, region)) return collision(*hit, splitting(a, b));
+  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
+    if (auto hit = first_in_region(surface, plan.regions[r], plan.partners[r])) {
+      return collision(*hit, splitting(a, b));
+    }
   }
   return apply_split(surface, plan);
 }
@@ -387,6 +439,7 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   std::vector<std::size_t> planned;  // the split of each plan
   std::vector<std::array<Point3, 2>> boxes;
   std::vector<std::array<RegionCorner, 4>> regions;
+  std::vector<VertexIndex> partners;
   for (std::size_t i = 0; i < splits.size(); ++i) {
     const Split& s = splits[i];
     auto plan_or = plan_split(surface, s.a, s.b, s.at, {});
@@ -412,10 +465,11 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
     }
     boxes.push_back(box);
     regions.insert(regions.end(), plan.regions.begin(), plan.regions.end());
+    partners.insert(partners.end(), plan.partners.begin(), plan.partners.end());
     plans.push_back(std::move(plan));
     planned.push_back(i);
   }
-  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions, partners);
   std::size_t next_region = 0;
   for (std::size_t k = 0; k < plans.size(); ++k) {
     std::optional<Blocker> hit;

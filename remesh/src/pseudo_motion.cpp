@@ -9,18 +9,17 @@ namespace exactgeo::remesh {
 
 namespace {
 
-/// The box of points at both ends of the step (closed).
+/// The closed box of some points (the corners of a primitive at both ends of the step).
 struct SweptBox {
-  Point3 lower;
-  Point3 upper;
+  Point3 lower{};
+  Point3 upper{};
 
-  template <class Points>
-  SweptBox(const Points& ends) : lower(*ends.begin()), upper(*ends.begin()) {
-    for (const Point3& p : ends) {
-      for (int k = 0; k < 3; ++k) {
-        lower[k] = std::min(lower[k], p[k]);
-        upper[k] = std::max(upper[k], p[k]);
-      }
+  explicit SweptBox(const Point3& p) : lower(p), upper(p) {}
+
+  void add(const Point3& p) noexcept {
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = std::min(lower[k], p[k]);
+      upper[k] = std::max(upper[k], p[k]);
     }
   }
 
@@ -52,12 +51,12 @@ class Step {
   }
 
   SweptBox box(std::initializer_list<VertexIndex> corners) const {
-    std::vector<Point3> ends;
+    SweptBox box(t0_[*corners.begin()]);
     for (const VertexIndex v : corners) {
-      ends.push_back(t0_[v]);
-      ends.push_back(t1_[v]);
+      box.add(t0_[v]);
+      box.add(t1_[v]);
     }
-    return SweptBox(ends);
+    return box;
   }
 
   bool vertex_face_collides(VertexIndex v, const Triangle& t) const noexcept {
@@ -97,37 +96,49 @@ std::optional<Blocker> first_collision(const Surface& surface, std::span<const M
   std::vector<VertexIndex> movers;
   for (const Move& m : moves)
     movers.push_back(m.vertex);
-  const auto collision = [&](VertexIndex v, const Triangle& t) {
-    return !shares(v, t) && step.box({t[0], t[1], t[2]}).meets(step.box({v})) &&
-           step.vertex_face_collides(v, t);
+  const auto collision = [&](VertexIndex v, const Triangle& t, const SweptBox& t_box) {
+    return !shares(v, t) && t_box.meets(step.box({v})) && step.vertex_face_collides(v, t);
   };
   for (const Triangle& t : surface.triangles) {
+    const SweptBox t_box = step.box({t[0], t[1], t[2]});
     if (step.moving(t[0]) || step.moving(t[1]) || step.moving(t[2])) {
       for (VertexIndex v = 0; v < surface.vertices.size(); ++v) {
-        if (!used[v] || !collision(v, t)) continue;
+        if (!used[v] || !collision(v, t, t_box)) continue;
         if (step.moving(v)) return Blocker{Blocker::Kind::triangle, t};
         return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
       }
     } else {
       for (const VertexIndex v : movers) {
-        if (collision(v, t)) return Blocker{Blocker::Kind::triangle, t};
+        if (collision(v, t, t_box)) return Blocker{Blocker::Kind::triangle, t};
       }
     }
   }
-  // Edge-edge pairs with a moving end.
-  const std::vector<Edge> edges = surface.edges();
-  for (std::size_t i = 0; i < edges.size(); ++i) {
-    const Edge& a = edges[i];
-    if (!step.moving(a[0]) && !step.moving(a[1])) continue;
-    const SweptBox a_box = step.box({a[0], a[1]});
-    for (std::size_t j = 0; j < edges.size(); ++j) {
-      const Edge& b = edges[j];
-      if (j == i || (j < i && (step.moving(b[0]) || step.moving(b[1])))) continue;  // once
-      const VertexIndex a0 = step.as(a[0]), a1 = step.as(a[1]);
+  // Edge-edge pairs with a moving end: the few moving edges against every edge (each
+  // side of every triangle: an inner edge is tried twice, which only repeats a test).
+  std::vector<Edge> moving_edges;
+  for (const Triangle& t : surface.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const Edge e = edge_of(t[k], t[(k + 1) % 3]);
+      if (step.moving(e[0]) || step.moving(e[1])) moving_edges.push_back(e);
+    }
+  }
+  std::sort(moving_edges.begin(), moving_edges.end());
+  moving_edges.erase(std::unique(moving_edges.begin(), moving_edges.end()), moving_edges.end());
+  std::vector<SweptBox> moving_boxes;
+  for (const Edge& a : moving_edges)
+    moving_boxes.push_back(step.box({a[0], a[1]}));
+  for (const Triangle& t : surface.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const Edge b = edge_of(t[k], t[(k + 1) % 3]);
+      const SweptBox b_box = step.box({b[0], b[1]});
       const VertexIndex b0 = step.as(b[0]), b1 = step.as(b[1]);
-      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
-      if (!a_box.meets(step.box({b[0], b[1]})) || !step.edge_edge_collides(a, b)) continue;
-      return Blocker{Blocker::Kind::edge, {b[0], b[1], kNoVertex}};
+      for (std::size_t i = 0; i < moving_edges.size(); ++i) {
+        const Edge& a = moving_edges[i];
+        const VertexIndex a0 = step.as(a[0]), a1 = step.as(a[1]);
+        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+        if (!moving_boxes[i].meets(b_box) || !step.edge_edge_collides(a, b)) continue;
+        return Blocker{Blocker::Kind::edge, {b[0], b[1], kNoVertex}};
+      }
     }
   }
   return std::nullopt;

@@ -282,25 +282,26 @@ class Elements {
 };
 
 std::optional<Blocker> first_in(const Surface& surface, const Elements& elements,
-                                const std::array<RegionCorner, 4>& corners) {
+                                const std::array<RegionCorner, 4>& corners, VertexIndex partner) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
   // triangle are the surface's own vertices and edges, tested before it).
   const Region region(corners);
   const auto& p = surface.vertices;
+  const auto own = [&](VertexIndex v) { return region.is_corner(v) || v == partner; };
   for (const std::size_t i : elements.meeting(region.lower(), region.upper())) {
     const Blocker& b = elements[i].what;
     const auto& c = b.corners;
     switch (b.kind) {
       case Blocker::Kind::vertex:
-        if (!region.is_corner(c[0]) && region.holds(p[c[0]])) return b;
+        if (!own(c[0]) && region.holds(p[c[0]])) return b;
         break;
       case Blocker::Kind::edge:
-        if (region.is_corner(c[0]) && region.is_corner(c[1])) break;  // the operation's own
+        if (own(c[0]) && own(c[1])) break;  // the operation's own
         if (edge_meets(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}})) return b;
         break;
       case Blocker::Kind::triangle:
-        if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) break;
+        if (own(c[0]) && own(c[1]) && own(c[2])) break;
         if (pierces(region,
                     {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
           return b;
@@ -314,17 +315,20 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
 }  // namespace
 
 std::optional<Blocker> first_in_region(const Surface& surface,
-                                       const std::array<RegionCorner, 4>& corners) {
-  return first_in(surface, Elements(surface), corners);
+                                       const std::array<RegionCorner, 4>& corners,
+                                       VertexIndex partner) {
+  return first_in(surface, Elements(surface), corners, partner);
 }
 
 std::vector<std::optional<Blocker>> first_in_regions(
-    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions) {
+    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
+    std::span<const VertexIndex> partners) {
   const Elements elements(surface);
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
-  for (const auto& region : regions)
-    found.push_back(first_in(surface, elements, region));
+  for (std::size_t i = 0; i < regions.size(); ++i)
+    found.push_back(
+        first_in(surface, elements, regions[i], partners.empty() ? kNoVertex : partners[i]));
   return found;
 }
 

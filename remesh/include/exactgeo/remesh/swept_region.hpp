@@ -51,16 +51,25 @@ struct RegionCorner {
 /// The first element of the surface (its vertices that some triangle uses, then its
 /// edges, then its triangles) that meets the closed convex hull of the four corners
 /// anywhere but in the hull of the corners it shares with them (by vertex index); the
-/// elements whose corners are all region corners (the operation's own) are skipped.
-/// nullopt when nothing meets it. Exact.
+/// elements whose corners are all the operation's own (region corners, or `partner`) are
+/// skipped. nullopt when nothing meets it. Exact.
+///
+/// `partner`: a split of an inner edge ab at a point m off the edge sweeps two regions,
+/// hull(a, b, c, m) and hull(a, b, d, m); the edge's other triangle abd is no obstacle to
+/// the first region (it is replaced too), so d is the first region's partner. Whether the
+/// new triangles of the two sides meet each other is then the split's own exact check.
+///
 /// Preconditions: finite coordinates; no three of the region's corners collinear.
 std::optional<Blocker> first_in_region(const Surface& surface,
-                                       const std::array<RegionCorner, 4>& region);
+                                       const std::array<RegionCorner, 4>& region,
+                                       VertexIndex partner = kNoVertex);
 
 /// first_in_region for several regions at once: the surface's elements are boxed and
 /// sorted along x once, and each region looks only at those its box reaches, so that a
-/// pass of many operations costs about one pass over the surface.
+/// pass of many operations costs about one pass over the surface. `partners` is empty
+/// (none) or holds one per region.
 std::vector<std::optional<Blocker>> first_in_regions(
-    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions);
+    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
+    std::span<const VertexIndex> partners = {});
 
 }  // namespace exactgeo::remesh
