@@ -102,6 +102,9 @@ FilterStats CollisionFilter::filter(std::span<const double> x0, std::span<double
     stats.narrow_phase_seconds += result.narrow_phase_seconds;
     ++stats.rounds;
     if (result.trees_rebuilt) ++stats.trees_rebuilt;
+    if (options_.timing != nullptr) {
+      options_.timing->add({x0, end}, ccd_.faces(), ccd_.candidates({x0, end}, ccd_options));
+    }
     if (first_t1 != nullptr && stats.rounds == 1) first_t1->assign(end.begin(), end.end());
     count(result, stats);
 
@@ -139,6 +142,15 @@ FilterStats CollisionFilter::filter(std::span<const double> x0, std::span<double
       if (std::equal(from, from + 3, to)) continue;
       std::copy_n(from, 3, to);
       froze_one = true;
+    }
+    if (!froze_one && stats.obstacle_held == 0) {
+      // Only the obstacle moves in the colliding pairs: hold it for this step.
+      const auto obstacle = static_cast<std::ptrdiff_t>(3 * cloth_vertices_);
+      if (!std::equal(x0.begin() + obstacle, x0.end(), x1.begin() + obstacle)) {
+        std::copy(x0.begin() + obstacle, x0.end(), x1.begin() + obstacle);
+        stats.obstacle_held = 1;
+        froze_one = true;
+      }
     }
     if (!froze_one) {
       throw std::logic_error(

@@ -6,11 +6,13 @@
 // (x1 = x0, velocity zero); the CCD runs again on the new x1 until nothing collides.
 //
 // Why the loop ends: MeshCcd never reports a pair whose primitives both stand still (every
-// corner with p_t0 == p_t1, bit for bit; the obstacle's x1 is a copy of its x0, and so is a
-// frozen vertex's). So every reported pair has a moving corner, and a moving corner is a
-// sheet vertex; freezing the pair's sheet vertices freezes at least one vertex that moved.
-// After at most (sheet vertices + 1) rounds nothing that could collide moves (one round
-// more with the look-ahead below).
+// corner with p_t0 == p_t1, bit for bit; a standing obstacle's x1 is a copy of its x0, and
+// so is a frozen vertex's). So every reported pair has a moving corner; freezing the
+// pair's sheet vertices freezes at least one vertex that moved, unless the only moving
+// corners are an obstacle's (a spinning ball pushing into a sheet vertex that stands): then
+// the whole obstacle is held for the step (its x1 becomes its x0). After at most (sheet
+// vertices + 2) rounds nothing that could collide moves (one round more with the
+// look-ahead below).
 //
 // Why the result is collision free: by induction over the steps, x0 is free of contact (the
 // sheet starts above the obstacle, and each step ends at a collision-free x1). A pair of
@@ -42,6 +44,7 @@
 #include <vector>
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "narrow_phase_timing.hpp"
 
 namespace exactgeo::cloth {
 
@@ -51,6 +54,8 @@ struct FilterOptions {
   FilterKind kind = FilterKind::freeze;
   double separation = 0.0;  ///< metres; freeze filter only
   unsigned threads = 0;     ///< MeshCcdOptions::threads
+  /// When set, every round's candidates are also timed by it (exact and cubic).
+  NarrowPhaseTiming* timing = nullptr;
 };
 
 struct FilterStats {
@@ -63,6 +68,7 @@ struct FilterStats {
   std::size_t frozen = 0;          ///< sheet vertices of colliding pairs: frozen, or (TOI) stopped
   std::size_t scaled = 0;          ///< TOI rounds that scaled the step
   std::size_t trees_rebuilt = 0;   ///< rounds that built a broad-phase tree anew
+  std::size_t obstacle_held = 0;   ///< steps whose moving obstacle was held back
   double seconds = 0.0;            ///< wall time in MeshCcd::step
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
@@ -79,6 +85,7 @@ struct FilterStats {
     frozen += s.frozen;
     scaled += s.scaled;
     trees_rebuilt += s.trees_rebuilt;
+    obstacle_held += s.obstacle_held;
     seconds += s.seconds;
     broad_phase_seconds += s.broad_phase_seconds;
     narrow_phase_seconds += s.narrow_phase_seconds;

@@ -1,0 +1,411 @@
+#include "remesher.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+namespace exactgeo::cloth {
+
+namespace {
+
+using remesh::Edge;
+using remesh::Surface;
+using remesh::VertexIndex;
+using Material = std::array<double, 2>;
+
+/// Splits and collapses use these fractions of an edge's size (a split edge's halves and a
+/// collapse's new edges then stay between them, so the two do not undo each other).
+constexpr double kSplitAbove = 4.0 / 3.0;
+constexpr double kCollapseBelow = 4.0 / 5.0;
+/// A flip's two opposite angles (in the material) must exceed pi by this much (radians),
+/// so that a cocircular quad, or one made so by rounding, is not flipped back and forth.
+constexpr double kDelaunaySlack = 1e-6;
+
+/// The surface being remeshed, with what the operations do not know about its vertices.
+struct Work {
+  Surface surface;
+  std::vector<Material> material;  ///< per vertex (the obstacles' are unused)
+  std::vector<Point3> velocity;    ///< per vertex (the obstacles' are unused)
+};
+
+/// A sheet edge with its triangles: `left` walks a -> b, `right` (if any) b -> a.
+struct SheetEdge {
+  VertexIndex a = 0;
+  VertexIndex b = 0;
+  std::size_t left = 0;
+  std::optional<std::size_t> right;
+};
+
+bool sheet_triangle(const Surface& s, const remesh::Triangle& t) {
+  return !s.is_fixed(t[0]) && !s.is_fixed(t[1]) && !s.is_fixed(t[2]);
+}
+
+/// Every edge of the sheets' triangles with its triangles (edges of more than two, which
+/// the sheets never have, are left out).
+std::vector<SheetEdge> sheet_edges(const Surface& s) {
+  struct Side {
+    Edge edge;
+    std::size_t triangle;
+    bool forward;  // the triangle walks edge[0] -> edge[1]
+  };
+  std::vector<Side> sides;
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    const remesh::Triangle& tri = s.triangles[t];
+    if (!sheet_triangle(s, tri)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const VertexIndex p = tri[k], q = tri[(k + 1) % 3];
+      sides.push_back({remesh::edge_of(p, q), t, p < q});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
+    return std::pair(x.edge, x.triangle) < std::pair(y.edge, y.triangle);
+  });
+  std::vector<SheetEdge> edges;
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && sides[j].edge == sides[i].edge)
+      ++j;
+    const Side& first = sides[i];
+    SheetEdge e;
+    if (first.forward) {
+      e = {first.edge[0], first.edge[1], first.triangle, std::nullopt};
+    } else {
+      e = {first.edge[1], first.edge[0], first.triangle, std::nullopt};
+    }
+    if (j == i + 2) {
+      e.right = sides[i + 1].triangle;
+      edges.push_back(e);
+    } else if (j == i + 1) {
+      edges.push_back(e);
+    }
+    i = j;
+  }
+  return edges;
+}
+
+double material_length(const Work& w, VertexIndex a, VertexIndex b) {
+  return std::hypot(w.material[b][0] - w.material[a][0], w.material[b][1] - w.material[a][1]);
+}
+
+/// Twice the signed area of the triangle in the material.
+double material_area(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c) {
+  const Material &p = w.material[a], &q = w.material[b], &r = w.material[c];
+  return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+}
+
+/// The angle at c of the triangle a b c in the material.
+double material_angle(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c) {
+  const Material &p = w.material[a], &q = w.material[b], &r = w.material[c];
+  const double ux = p[0] - r[0], uy = p[1] - r[1], vx = q[0] - r[0], vy = q[1] - r[1];
+  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+std::array<double, 3> normal(const Surface& s, const remesh::Triangle& t) {
+  const Point3 &p = s.vertices[t[0]], &q = s.vertices[t[1]], &r = s.vertices[t[2]];
+  const double ux = q[0] - p[0], uy = q[1] - p[1], uz = q[2] - p[2];
+  const double vx = r[0] - p[0], vy = r[1] - p[1], vz = r[2] - p[2];
+  return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+}
+
+/// The size every vertex asks for (Remesher's sizing, remesher.hpp).
+std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& edges,
+                                 const RemeshParameters& p) {
+  std::vector<double> size(w.surface.vertices.size(), p.max_length);
+  for (const SheetEdge& e : edges) {
+    if (!e.right) continue;
+    const auto n1 = normal(w.surface, w.surface.triangles[e.left]);
+    const auto n2 = normal(w.surface, w.surface.triangles[*e.right]);
+    const double cross = std::hypot(n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
+                                    n1[0] * n2[1] - n1[1] * n2[0]);
+    const double theta = std::atan2(cross, n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2]);
+    if (!(theta > 0.0)) continue;
+    const double ask = material_length(w, e.a, e.b) * p.turn_per_edge / theta;
+    size[e.a] = std::min(size[e.a], ask);
+    size[e.b] = std::min(size[e.b], ask);
+  }
+  for (double& s : size)
+    s = std::clamp(s, p.min_length, p.max_length);
+  return size;
+}
+
+double edge_size(const std::vector<double>& size, VertexIndex a, VertexIndex b) {
+  return std::min(size[a], size[b]);
+}
+
+bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
+  const std::vector<SheetEdge> edges = sheet_edges(w.surface);
+  const std::vector<double> size = vertex_sizes(w, edges, p);
+  std::vector<std::pair<double, remesh::Split>> wanted;  // (length / size, split)
+  for (const SheetEdge& e : edges) {
+    const double ratio = material_length(w, e.a, e.b) / edge_size(size, e.a, e.b);
+    if (ratio <= kSplitAbove) continue;
+    const Point3 &pa = w.surface.vertices[e.a], &pb = w.surface.vertices[e.b];
+    const Point3 mid{0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2])};
+    wanted.push_back({ratio, remesh::Split{e.a, e.b, mid}});
+  }
+  std::stable_sort(wanted.begin(), wanted.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  std::vector<remesh::Split> splits;
+  for (const auto& [ratio, split] : wanted)
+    splits.push_back(split);
+  const std::vector<remesh::Outcome> outcomes = remesh::split_edges(w.surface, splits);
+  bool any = false;
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    counts.add(outcomes[i].verdict);
+    std::fprintf(stderr, "split %u %u: %s\n", splits[i].a, splits[i].b, outcomes[i].reason.c_str());
+    if (!outcomes[i].applied()) continue;
+    any = true;
+    const VertexIndex a = splits[i].a, b = splits[i].b;
+    if (*outcomes[i].new_vertex != w.material.size()) {
+      throw std::logic_error("split_edges numbered its new vertices out of order");
+    }
+    w.material.push_back(
+        {0.5 * (w.material[a][0] + w.material[b][0]), 0.5 * (w.material[a][1] + w.material[b][1])});
+    const Point3 &va = w.velocity[a], &vb = w.velocity[b];
+    w.velocity.push_back({0.5 * (va[0] + vb[0]), 0.5 * (va[1] + vb[1]), 0.5 * (va[2] + vb[2])});
+  }
+  return any;
+}
+
+/// The corners of the triangles around v other than v, each once per triangle side: a
+/// neighbour seen once is across a boundary edge.
+std::vector<VertexIndex> ring_sides(const std::vector<remesh::Triangle>& star, VertexIndex v) {
+  std::vector<VertexIndex> sides;
+  for (const remesh::Triangle& t : star) {
+    for (const VertexIndex c : t)
+      if (c != v) sides.push_back(c);
+  }
+  std::sort(sides.begin(), sides.end());
+  return sides;
+}
+
+bool on_boundary(const std::vector<VertexIndex>& sides) {
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    while (j < sides.size() && sides[j] == sides[i])
+      ++j;
+    if (j - i == 1) return true;
+    i = j;
+  }
+  return false;
+}
+
+/// Whether removing `gone` into `kept` (gone moves to kept's place) suits the sheet: a
+/// boundary end moves only along its boundary edge and is no corner of the outline, no
+/// edge made is longer than it may be, and no triangle turns over in the material.
+bool collapse_suits(const Work& w, const std::vector<double>& size,
+                    const std::vector<remesh::Triangle>& star, VertexIndex kept, VertexIndex gone,
+                    bool boundary_edge) {
+  const std::vector<VertexIndex> sides = ring_sides(star, gone);
+  if (on_boundary(sides) != boundary_edge) return false;
+  if (boundary_edge) {  // gone's two boundary neighbours must be on one line with it
+    std::vector<VertexIndex> ends;
+    for (std::size_t i = 0; i < sides.size();) {
+      std::size_t j = i;
+      while (j < sides.size() && sides[j] == sides[i])
+        ++j;
+      if (j - i == 1) ends.push_back(sides[i]);
+      i = j;
+    }
+    if (ends.size() != 2) return false;
+    const double area = material_area(w, ends[0], gone, ends[1]);
+    const double scale = material_length(w, ends[0], gone) * material_length(w, gone, ends[1]);
+    if (std::abs(area) > 1e-9 * scale) return false;
+  }
+  for (const VertexIndex x : sides) {
+    if (x != kept && material_length(w, kept, x) > kSplitAbove * edge_size(size, kept, x))
+      return false;
+  }
+  for (remesh::Triangle tri : star) {
+    if (std::find(tri.begin(), tri.end(), kept) != tri.end()) continue;  // removed
+    const double before = material_area(w, tri[0], tri[1], tri[2]);
+    for (VertexIndex& c : tri)
+      if (c == gone) c = kept;
+    const double after = material_area(w, tri[0], tri[1], tri[2]);
+    if (!(before * after > 0.0)) return false;
+  }
+  return true;
+}
+
+bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
+  const std::vector<SheetEdge> edges = sheet_edges(w.surface);
+  const std::vector<double> size = vertex_sizes(w, edges, p);
+  std::vector<std::pair<double, const SheetEdge*>> wanted;
+  for (const SheetEdge& e : edges) {
+    const double length = material_length(w, e.a, e.b);
+    if (length < kCollapseBelow * edge_size(size, e.a, e.b)) wanted.push_back({length, &e});
+  }
+  std::stable_sort(wanted.begin(), wanted.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  // The triangles around each vertex as the pass starts. A collapse changes those around
+  // its ends and their neighbours: later collapses there wait for the next pass, so the
+  // others' stars stay as listed.
+  std::vector<std::vector<remesh::Triangle>> stars(w.surface.vertices.size());
+  for (const remesh::Triangle& t : w.surface.triangles) {
+    for (const VertexIndex v : t)
+      stars[v].push_back(t);
+  }
+  std::vector<bool> changed(w.surface.vertices.size(), false);
+  bool any = false;
+  for (const auto& [length, e] : wanted) {
+    if (changed[e->a] || changed[e->b]) continue;
+    const bool boundary = !e->right;
+    VertexIndex kept = e->a, gone = e->b;
+    if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) {
+      std::swap(kept, gone);
+      if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) continue;
+    }
+    const std::vector<VertexIndex> ring = ring_sides(stars[gone], gone);
+    const remesh::Outcome outcome =
+        remesh::collapse_edge(w.surface, kept, gone, w.surface.vertices[kept]);
+    counts.add(outcome.verdict);
+    if (!outcome.applied()) continue;
+    any = true;
+    changed[kept] = changed[gone] = true;
+    for (const VertexIndex x : ring)
+      changed[x] = true;
+  }
+  return any;
+}
+
+bool flip_pass(Work& w, VerdictCounts& counts) {
+  std::vector<Edge> flips;
+  for (const SheetEdge& e : sheet_edges(w.surface)) {
+    if (!e.right) continue;
+    const VertexIndex c = remesh::third_corner(w.surface.triangles[e.left], e.a, e.b);
+    const VertexIndex d = remesh::third_corner(w.surface.triangles[*e.right], e.a, e.b);
+    if (material_angle(w, e.a, e.b, c) + material_angle(w, e.a, e.b, d) <=
+        std::numbers::pi + kDelaunaySlack) {
+      continue;
+    }
+    // The new triangles c a d and d b c must turn as the old a b c does.
+    const double old_turn = material_area(w, e.a, e.b, c);
+    if (!(material_area(w, c, e.a, d) * old_turn > 0.0) ||
+        !(material_area(w, d, e.b, c) * old_turn > 0.0)) {
+      continue;
+    }
+    flips.push_back(remesh::edge_of(e.a, e.b));
+  }
+  bool any = false;
+  for (const remesh::Outcome& o : remesh::flip_edges(w.surface, flips)) {
+    counts.add(o.verdict);
+    any = any || o.applied();
+  }
+  return any;
+}
+
+Work work_of(const ClothMesh& mesh) {
+  Work w;
+  const std::size_t n = mesh.vertex_count(), sheet = mesh.sheet_vertices();
+  w.surface.vertices.resize(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    w.surface.vertices[v] = {mesh.positions[3 * v], mesh.positions[3 * v + 1],
+                             mesh.positions[3 * v + 2]};
+  }
+  w.surface.triangles.assign(mesh.faces.begin(), mesh.faces.end());
+  w.surface.fixed.assign(n, false);
+  std::fill(w.surface.fixed.begin() + static_cast<std::ptrdiff_t>(sheet), w.surface.fixed.end(),
+            true);
+  w.material = mesh.material;
+  w.material.resize(n);
+  w.velocity.resize(n);
+  for (std::size_t v = 0; v < sheet; ++v)
+    w.velocity[v] = {mesh.velocity[3 * v], mesh.velocity[3 * v + 1], mesh.velocity[3 * v + 2]};
+  return w;
+}
+
+/// The mesh back from the work: used sheet vertices first (in order), then the obstacle's,
+/// sheet faces first.
+void write_back(const Work& w, ClothMesh& mesh) {
+  const Surface& s = w.surface;
+  std::vector<bool> used(s.vertices.size(), false);
+  for (const remesh::Triangle& t : s.triangles) {
+    for (const VertexIndex v : t)
+      used[v] = true;
+  }
+  std::vector<VertexIndex> renumber(s.vertices.size(), remesh::kNoVertex);
+  std::vector<VertexIndex> order;
+  for (const bool obstacle : {false, true}) {
+    for (VertexIndex v = 0; v < s.vertices.size(); ++v) {
+      if (s.is_fixed(v) != obstacle || (!obstacle && !used[v])) continue;
+      renumber[v] = static_cast<VertexIndex>(order.size());
+      order.push_back(v);
+    }
+  }
+  mesh.positions.clear();
+  mesh.velocity.clear();
+  mesh.material.clear();
+  for (const VertexIndex v : order) {
+    mesh.positions.insert(mesh.positions.end(), s.vertices[v].begin(), s.vertices[v].end());
+    if (s.is_fixed(v)) continue;
+    mesh.velocity.insert(mesh.velocity.end(), w.velocity[v].begin(), w.velocity[v].end());
+    mesh.material.push_back(w.material[v]);
+  }
+  mesh.faces.clear();
+  for (const bool obstacle : {false, true}) {
+    for (const remesh::Triangle& t : s.triangles) {
+      if (sheet_triangle(s, t) == obstacle) continue;
+      mesh.faces.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
+    }
+    if (!obstacle) mesh.sheet_faces = mesh.faces.size();
+  }
+}
+
+}  // namespace
+
+void VerdictCounts::add(remesh::Verdict verdict) noexcept {
+  switch (verdict) {
+    case remesh::Verdict::applied:
+      ++applied;
+      break;
+    case remesh::Verdict::refused_topology:
+      ++refused_topology;
+      break;
+    case remesh::Verdict::refused_collision:
+      ++refused_collision;
+      break;
+    case remesh::Verdict::deferred:
+      ++deferred;
+      break;
+  }
+}
+
+VerdictCounts& VerdictCounts::operator+=(const VerdictCounts& c) noexcept {
+  applied += c.applied;
+  refused_topology += c.refused_topology;
+  refused_collision += c.refused_collision;
+  deferred += c.deferred;
+  return *this;
+}
+
+RemeshCounts& RemeshCounts::operator+=(const RemeshCounts& c) noexcept {
+  split += c.split;
+  collapse += c.collapse;
+  flip += c.flip;
+  seconds += c.seconds;
+  return *this;
+}
+
+RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters) {
+  const auto start = std::chrono::steady_clock::now();
+  RemeshCounts counts;
+  Work w = work_of(mesh);
+  // Split vertices come after the obstacle's (as split_edges appends them), and so do
+  // their entries in the work's per-vertex arrays; write_back puts them with the sheets.
+  for (int pass = 0; pass < parameters.passes && split_pass(w, parameters, counts.split); ++pass) {
+  }
+  for (int pass = 0; pass < parameters.passes && collapse_pass(w, parameters, counts.collapse);
+       ++pass) {
+  }
+  for (int pass = 0; pass < parameters.passes && flip_pass(w, counts.flip); ++pass) {
+  }
+  write_back(w, mesh);
+  counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return counts;
+}
+
+}  // namespace exactgeo::cloth
