@@ -156,7 +156,6 @@ bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   bool any = false;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     counts.add(outcomes[i].verdict);
-    std::fprintf(stderr, "split %u %u: %s\n", splits[i].a, splits[i].b, outcomes[i].reason.c_str());
     if (!outcomes[i].applied()) continue;
     any = true;
     const VertexIndex a = splits[i].a, b = splits[i].b;
