@@ -141,6 +141,31 @@ TEST_P(Operations, SplitPokingThroughTheSheetIsRefused) {
   expect_intersection_free(surface, "the split on the edge");
 }
 
+TEST_P(Operations, SplitOffTheEdgeIntoItsOtherTriangleIsApplied) {
+  // A rounded midpoint a hair off the diagonal (1, 1)-(2, 2), inside the triangle with
+  // corner (2, 1): the other triangle's region reaches into that triangle, which the
+  // split replaces too, so it is no obstacle (the partner corner), and the four new
+  // triangles tile the old two.
+  const double s = scale();
+  Surface surface = sheets(4, 1.0, s);
+  const VertexIndex a = kInner, b = kInner + 6;
+  const Point3 off{1.5 * s, std::nextafter(1.5 * s, 0.0), 0.0};
+  const Outcome split = split_edge(surface, a, b, off);
+  ASSERT_TRUE(split.applied()) << split.reason;
+  EXPECT_EQ(surface.triangles.size(), 35u);
+  expect_intersection_free(surface, "the split off the edge");
+  // Lifted by one ulp of the height as well: still inside the thin space under the sheet.
+  Surface lifted = sheets(4, 1.0, s);
+  const Outcome up = split_edge(lifted, a, b, {off[0], off[1], std::ldexp(s, -60)});
+  ASSERT_TRUE(up.applied()) << up.reason;
+  expect_intersection_free(lifted, "the lifted split off the edge");
+  // And in a pass.
+  Surface passed = sheets(4, 1.0, s);
+  const std::vector<Outcome> outcomes = split_edges(passed, std::array{Split{a, b, off}});
+  ASSERT_TRUE(outcomes.front().applied()) << outcomes.front().reason;
+  EXPECT_EQ(passed.triangles, surface.triangles);
+}
+
 TEST_P(Operations, FlipSweepsTheTetrahedronOfItsCorners) {
   const double s = scale();
   // Lift the grid's vertex (2, 1) so that flipping the diagonal (1, 1)-(2, 2) sweeps a
