@@ -328,7 +328,7 @@ int run(const Options& o) {
               << ": the mesh intersects itself: " << *found << '\n';
     if (!o.output.empty()) {
       exactgeo::cloth::write_obj(fs::path(o.output) / numbered("failed_", step, ".obj"),
-                                 mesh.positions, mesh.faces);
+                                 mesh.positions, mesh.faces, mesh.sheet_faces);
     }
     return true;
   };
@@ -339,7 +339,7 @@ int run(const Options& o) {
   double ball_angle = 0.0;
   if (!o.output.empty()) {
     exactgeo::cloth::write_obj(fs::path(o.output) / numbered("frame_", 0, ".obj"), mesh.positions,
-                               mesh.faces);
+                               mesh.faces, mesh.sheet_faces);
   }
   if (!o.json) {
     std::printf("%5s %6s %10s %10s %6s %8s %7s %9s\n", "step", "rounds", "candidates", "collisions",
@@ -361,9 +361,9 @@ int run(const Options& o) {
         collisions->filter.filter(x0, x1, mesh.velocity, o.queries.empty() ? nullptr : &first_t1);
     if (!o.queries.empty()) {
       exactgeo::cloth::write_obj(fs::path(o.queries) / numbered("step_", step, "_t0.obj"), x0,
-                                 mesh.faces);
+                                 mesh.faces, mesh.sheet_faces);
       exactgeo::cloth::write_obj(fs::path(o.queries) / numbered("step_", step, "_t1.obj"), first_t1,
-                                 mesh.faces);
+                                 mesh.faces, mesh.sheet_faces);
     }
 
     // The explicit check of the filtered step, by a second MeshCcd that sees only these.
@@ -377,9 +377,9 @@ int run(const Options& o) {
                 << " edge-edge pairs)\n";
       if (!o.output.empty()) {
         exactgeo::cloth::write_obj(fs::path(o.output) / numbered("failed_", step, "_t0.obj"), x0,
-                                   mesh.faces);
+                                   mesh.faces, mesh.sheet_faces);
         exactgeo::cloth::write_obj(fs::path(o.output) / numbered("failed_", step, "_t1.obj"), x1,
-                                   mesh.faces);
+                                   mesh.faces, mesh.sheet_faces);
         std::cerr << "exactgeo-cloth: the step's frames are in " << o.output << "/"
                   << numbered("failed_", step, "_t{0,1}.obj") << '\n';
       }
@@ -407,7 +407,7 @@ int run(const Options& o) {
     }
     if (!o.output.empty() && step % o.every == 0) {
       exactgeo::cloth::write_obj(fs::path(o.output) / numbered("frame_", step, ".obj"),
-                                 mesh.positions, mesh.faces);
+                                 mesh.positions, mesh.faces, mesh.sheet_faces);
     }
   }
   totals.triangles_end = mesh.faces.size();
