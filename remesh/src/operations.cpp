@@ -9,9 +9,11 @@
 
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
-#include "exactgeo/remesh/pseudo_motion.hpp"
+#include "operation_checks.hpp"
 
 namespace exactgeo::remesh {
+
+using namespace checks;  // operation_checks.hpp
 
 std::string_view to_string(Verdict v) noexcept {
   switch (v) {
@@ -27,168 +29,10 @@ std::string_view to_string(Verdict v) noexcept {
   return "?";
 }
 
-namespace {
-
-Outcome topology(std::string reason) {
-  return {Verdict::refused_topology, std::move(reason), std::nullopt, std::nullopt};
-}
-
-Outcome collision(const Blocker& blocker, std::string_view what) {
-  std::string reason(what);
-  reason.append(" would meet ").append(to_string(blocker));
-  return {Verdict::refused_collision, std::move(reason), blocker, std::nullopt};
-}
-
-bool finite(const Point3& p) noexcept {
-  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
-}
-
-bool has_zero_area(const Surface& s, const Triangle& t) noexcept {
-  return zero_area(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
-}
-
-/// The reason a vertex cannot be operated on, or nullopt.
-std::optional<std::string> vertex_problem(const Surface& s, VertexIndex v) {
-  if (v >= s.vertices.size()) return "vertex " + std::to_string(v) + " does not exist";
-  if (s.is_fixed(v)) return "vertex " + std::to_string(v) + " is fixed";
-  return std::nullopt;
-}
-
-/// The triangles on edge ab (found unless given), or the reason the edge cannot be
-/// operated on (it has none, or more than two, or a triangle with a fixed corner).
-std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, VertexIndex b,
-                                        std::vector<std::size_t>& on_edge) {
-  for (const VertexIndex v : {a, b}) {
-    if (auto why = vertex_problem(s, v)) return why;
-  }
-  if (on_edge.empty()) on_edge = s.triangles_on_edge(a, b);
-  const std::string name = "edge " + std::to_string(a) + "-" + std::to_string(b);
-  if (a == b || on_edge.empty()) return name + " is no edge of the surface";
-  if (on_edge.size() > 2)
-    return name + " is used by " + std::to_string(on_edge.size()) + " triangles";
-  for (const std::size_t t : on_edge) {
-    const VertexIndex c = third_corner(s.triangles[t], a, b);
-    if (s.is_fixed(c)) return name + ": its triangle's corner " + std::to_string(c) + " is fixed";
-  }
-  return std::nullopt;
-}
-
-std::set<VertexIndex> neighbours(const Surface& s, VertexIndex v) {
-  std::set<VertexIndex> n;
-  for (const std::size_t t : s.triangles_around(v)) {
-    for (const VertexIndex c : s.triangles[t])
-      if (c != v) n.insert(c);
-  }
-  return n;
-}
-
-bool on_boundary(const Surface& s, VertexIndex v) {
-  for (const VertexIndex n : neighbours(s, v)) {
-    if (s.triangles_on_edge(v, n).size() == 1) return true;
-  }
-  return false;
-}
-
-/// The closed box of points.
-template <class Points>
-std::array<Point3, 2> box_of(const Points& points) {
-  std::array<Point3, 2> box{*points.begin(), *points.begin()};
-  for (const Point3& q : points) {
-    for (int k = 0; k < 3; ++k) {
-      box[0][k] = std::min(box[0][k], q[k]);
-      box[1][k] = std::max(box[1][k], q[k]);
-    }
-  }
-  return box;
-}
-
-bool boxes_meet(const std::array<Point3, 2>& x, const std::array<Point3, 2>& y) noexcept {
-  for (int k = 0; k < 3; ++k) {
-    if (x[1][k] < y[0][k] || y[1][k] < x[0][k]) return false;
-  }
-  return true;
-}
-
-/// The first triangle of `after` that a triangle around `v` intersects there (exactly,
-/// mesh::face_contact; triangles whose closed boxes are apart have no common point), or
-/// nullopt.
-std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
-  mesh::Mesh m;
-  m.vertices = after.vertices;
-  std::vector<std::array<Point3, 2>> boxes;
-  for (const Triangle& t : after.triangles) {
-    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
-    boxes.push_back(
-        box_of(std::array{after.vertices[t[0]], after.vertices[t[1]], after.vertices[t[2]]}));
-  }
-  for (const std::size_t star : after.triangles_around(v)) {
-    for (std::size_t other = 0; other < m.faces.size(); ++other) {
-      if (other == star || !boxes_meet(boxes[star], boxes[other])) continue;
-      if (mesh::face_contact(m, star, other) != mesh::FaceContact::apart) {
-        return Blocker{Blocker::Kind::triangle, after.triangles[other]};
-      }
-    }
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
 Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to) {
   // A pass of one move: the same checks, one code path.
   const Move move{v, to};
   return relocate_vertices(surface, std::span(&move, 1)).front();
-}
-
-Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
-  std::vector<std::size_t> on_edge;
-  if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
-  if (!finite(to)) return topology("the new position is not finite");
-  // The link condition: the ends' common neighbours are the opposite corners only.
-  std::set<VertexIndex> opposite;
-  for (const std::size_t t : on_edge)
-    opposite.insert(third_corner(surface.triangles[t], a, b));
-  const std::set<VertexIndex> na = neighbours(surface, a), nb = neighbours(surface, b);
-  std::set<VertexIndex> common;
-  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(),
-                        std::inserter(common, common.begin()));
-  if (common != opposite) {
-    return topology("collapsing edge " + std::to_string(a) + "-" + std::to_string(b) +
-                    " would pinch the surface (the ends share a neighbour beyond its triangles)");
-  }
-  if (on_edge.size() == 2 && (on_boundary(surface, a) || on_boundary(surface, b))) {
-    return topology("collapsing an inner edge with an end on the boundary would pinch the surface");
-  }
-  // The surface after: the edge's triangles gone, b replaced by a, a at `to`.
-  Surface after = surface;
-  after.vertices[a] = to;
-  after.vertices[b] = to;
-  after.triangles.clear();
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
-    Triangle tri = surface.triangles[t];
-    for (VertexIndex& c : tri)
-      if (c == b) c = a;
-    after.triangles.push_back(tri);
-  }
-  std::set<std::array<VertexIndex, 3>> seen;
-  for (const std::size_t t : after.triangles_around(a)) {
-    Triangle sorted = after.triangles[t];
-    std::sort(sorted.begin(), sorted.end());
-    if (!seen.insert(sorted).second) return topology("the collapse would duplicate a triangle");
-    if (has_zero_area(after, after.triangles[t])) {
-      return topology("a triangle around the merged vertex would have zero area");
-    }
-  }
-  const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};
-  if (auto hit = first_collision(surface, moves, edge_of(a, b))) {
-    return collision(*hit, "collapsing edge " + std::to_string(a) + "-" + std::to_string(b));
-  }
-  if (auto hit = star_intersection(after, a)) {
-    return collision(*hit, "the triangles around the merged vertex");
-  }
-  surface = std::move(after);
-  return {};
 }
 
 namespace {

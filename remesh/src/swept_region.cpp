@@ -288,20 +288,45 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
   // triangle are the surface's own vertices and edges, tested before it).
   const Region region(corners);
   const auto& p = surface.vertices;
-  const auto own = [&](VertexIndex v) { return region.is_corner(v) || v == partner; };
+  // The operation's own elements: those of the region's corners only, and the partner's
+  // vertex d, edges ad and bd and triangle abd (a, b: the first two corners). Not any
+  // element whose corners are among a, b, c, d: a triangle acd next to the split is not
+  // the operation's.
+  const VertexIndex edge_a = corners[0].vertex, edge_b = corners[1].vertex;
+  const auto same = [](std::array<VertexIndex, 3> x, std::array<VertexIndex, 3> y) {
+    std::sort(x.begin(), x.end());
+    std::sort(y.begin(), y.end());
+    return x == y;
+  };
+  const auto partners = [&](const Blocker& e) {
+    if (partner == kNoVertex) return false;
+    const auto& c = e.corners;
+    switch (e.kind) {
+      case Blocker::Kind::vertex:
+        return c[0] == partner;
+      case Blocker::Kind::edge:
+        return same(c, {edge_a, partner, kNoVertex}) || same(c, {edge_b, partner, kNoVertex});
+      case Blocker::Kind::triangle:
+        return same(c, {edge_a, edge_b, partner});
+    }
+    return false;
+  };
   for (const std::size_t i : elements.meeting(region.lower(), region.upper())) {
     const Blocker& b = elements[i].what;
     const auto& c = b.corners;
     switch (b.kind) {
       case Blocker::Kind::vertex:
-        if (!own(c[0]) && region.holds(p[c[0]])) return b;
+        if (!region.is_corner(c[0]) && !partners(b) && region.holds(p[c[0]])) return b;
         break;
       case Blocker::Kind::edge:
-        if (own(c[0]) && own(c[1])) break;  // the operation's own
+        if ((region.is_corner(c[0]) && region.is_corner(c[1])) || partners(b)) break;  // own
         if (edge_meets(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}})) return b;
         break;
       case Blocker::Kind::triangle:
-        if (own(c[0]) && own(c[1]) && own(c[2])) break;
+        if ((region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) ||
+            partners(b)) {
+          break;
+        }
         if (pierces(region,
                     {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
           return b;

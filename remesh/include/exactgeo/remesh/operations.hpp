@@ -68,6 +68,26 @@ std::vector<Outcome> relocate_vertices(Surface& surface, std::span<const Move> m
 /// vertex list, used by no triangle).
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to);
 
+/// A collapse of edge ab: b merged into a, both at `to`.
+struct Collapse {
+  VertexIndex a = kNoVertex;
+  VertexIndex b = kNoVertex;
+  Point3 to{};
+};
+
+/// Many collapses at once (a coarsening pass): each is planned on the surface as it is
+/// (the same topology checks as collapse_edge); a collapse whose box (the triangles around
+/// its ends and the new point) meets an earlier one's is deferred; the others' motions are
+/// checked together as one step of the mesh broad phase (ccd::MeshCcd, exact method), the
+/// pairs that come to share the merged vertex excepted (they meet there at the end of the
+/// step, which is the collapse itself), refusing the collapses of every colliding pair
+/// until a step has no collision; then the surface with every remaining collapse made is
+/// checked exactly for intersecting triangles (mesh::find_self_intersections), and a
+/// collapse around whose merged vertex one lies is refused. One outcome per collapse, in
+/// order; collapse_edge on each applied edge of the surface before the pass would have
+/// applied it too. Removed triangles leave the list; the other triangles keep their order.
+std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses);
+
 /// Replaces the triangles abc and bad on edge ab by cad and dbc.
 Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
 

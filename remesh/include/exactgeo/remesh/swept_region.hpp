@@ -51,13 +51,16 @@ struct RegionCorner {
 /// The first element of the surface (its vertices that some triangle uses, then its
 /// edges, then its triangles) that meets the closed convex hull of the four corners
 /// anywhere but in the hull of the corners it shares with them (by vertex index); the
-/// elements whose corners are all the operation's own (region corners, or `partner`) are
-/// skipped. nullopt when nothing meets it. Exact.
+/// operation's own elements are skipped: those whose corners are all region corners, and
+/// the partner's.
+/// nullopt when nothing meets it. Exact.
 ///
 /// `partner`: a split of an inner edge ab at a point m off the edge sweeps two regions,
-/// hull(a, b, c, m) and hull(a, b, d, m); the edge's other triangle abd is no obstacle to
-/// the first region (it is replaced too), so d is the first region's partner. Whether the
-/// new triangles of the two sides meet each other is then the split's own exact check.
+/// hull(a, b, c, m) and hull(a, b, d, m) (a and b: the first two corners); the edge's
+/// other triangle abd, its edges ad and bd and its corner d are replaced too, so they are
+/// no obstacle to the first region: d is its partner. (Other elements with corners among
+/// a, b, c, d, such as a neighbouring triangle acd, are tested.) Whether the new triangles
+/// of the two sides meet each other is then the split's own exact check.
 ///
 /// Preconditions: finite coordinates; no three of the region's corners collinear.
 std::optional<Blocker> first_in_region(const Surface& surface,

@@ -1,0 +1,339 @@
+// collapse_edge and collapse_edges: an edge's ends merged at a new point, checked as a
+// pseudo-motion (both ends move there on straight lines while everything else stands)
+// and then in place (the triangles around the merged vertex against every other one).
+//
+// collapse_edge decides one collapse by pair CCD on every pair with a moving corner
+// (first_collision) and face contacts of its star; collapse_edges decides a pass through
+// the mesh broad phase and the exact self-intersection finder. Both are exact, and the
+// pass agrees with the single collapse on every collapse it does not defer (tested).
+
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <set>
+#include <variant>
+#include <vector>
+
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/remesh/operations.hpp"
+#include "exactgeo/remesh/pseudo_motion.hpp"
+#include "operation_checks.hpp"
+
+namespace exactgeo::remesh {
+
+using namespace checks;  // operation_checks.hpp
+
+namespace {
+
+/// The triangles around every vertex, by index in triangle order.
+using Stars = std::vector<std::vector<std::size_t>>;
+
+Stars stars_of(const Surface& s) {
+  Stars stars(s.vertices.size());
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    for (const VertexIndex v : s.triangles[t])
+      stars[v].push_back(t);
+  }
+  return stars;
+}
+
+/// A collapse that passed its topology checks.
+struct CollapsePlan {
+  VertexIndex a = 0;
+  VertexIndex b = 0;
+  Point3 to{};
+  std::vector<std::size_t> on_edge;  ///< the edge's triangles, removed
+};
+
+std::string collapsing(VertexIndex a, VertexIndex b) {
+  return "collapsing edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+/// The neighbours of v and whether v is on the boundary (an edge of one triangle).
+std::pair<std::set<VertexIndex>, bool> ring(const Surface& s, const Stars& stars, VertexIndex v) {
+  std::multiset<VertexIndex> sides;
+  for (const std::size_t t : stars[v]) {
+    for (const VertexIndex c : s.triangles[t])
+      if (c != v) sides.insert(c);
+  }
+  bool boundary = false;
+  for (const VertexIndex c : sides)
+    boundary = boundary || sides.count(c) == 1;
+  return {std::set<VertexIndex>(sides.begin(), sides.end()), boundary};
+}
+
+std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars& stars,
+                                                  VertexIndex a, VertexIndex b, const Point3& to) {
+  for (const VertexIndex v : {a, b}) {
+    if (auto why = vertex_problem(s, v)) return topology(*why);
+  }
+  std::vector<std::size_t> on_edge;
+  std::set_intersection(stars[a].begin(), stars[a].end(), stars[b].begin(), stars[b].end(),
+                        std::back_inserter(on_edge));
+  if (auto why = edge_problem(s, a, b, on_edge)) return topology(*why);
+  if (!finite(to)) return topology("the new position is not finite");
+  // The link condition: the ends' common neighbours are the opposite corners only.
+  std::set<VertexIndex> opposite;
+  for (const std::size_t t : on_edge)
+    opposite.insert(third_corner(s.triangles[t], a, b));
+  const auto [na, a_on_boundary] = ring(s, stars, a);
+  const auto [nb, b_on_boundary] = ring(s, stars, b);
+  std::set<VertexIndex> common;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(),
+                        std::inserter(common, common.begin()));
+  if (common != opposite) {
+    return topology(collapsing(a, b) +
+                    " would pinch the surface (the ends share a neighbour beyond its triangles)");
+  }
+  if (on_edge.size() == 2 && (a_on_boundary || b_on_boundary)) {
+    return topology("collapsing an inner edge with an end on the boundary would pinch the surface");
+  }
+  // The triangles around the merged vertex: none twice, none of zero area.
+  const auto at = [&](VertexIndex v) { return v == a || v == b ? to : s.vertices[v]; };
+  std::set<std::array<VertexIndex, 3>> seen;
+  for (const VertexIndex end : {a, b}) {
+    for (const std::size_t t : stars[end]) {
+      if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
+      Triangle tri = s.triangles[t];
+      std::replace(tri.begin(), tri.end(), b, a);
+      if (zero_area(at(tri[0]), at(tri[1]), at(tri[2]))) {
+        return topology("a triangle around the merged vertex would have zero area");
+      }
+      std::sort(tri.begin(), tri.end());
+      if (!seen.insert(tri).second) return topology("the collapse would duplicate a triangle");
+    }
+  }
+  return CollapsePlan{a, b, to, on_edge};
+}
+
+/// The surface with the planned collapses made: each edge's triangles gone (the others in
+/// order), b replaced by a, both at `to`.
+Surface collapsed(const Surface& surface, const std::vector<const CollapsePlan*>& plans) {
+  Surface after = surface;
+  std::vector<bool> removed(surface.triangles.size(), false);
+  std::vector<VertexIndex> merged_into(surface.vertices.size(), kNoVertex);
+  for (const CollapsePlan* p : plans) {
+    after.vertices[p->a] = after.vertices[p->b] = p->to;
+    for (const std::size_t t : p->on_edge)
+      removed[t] = true;
+    merged_into[p->b] = p->a;
+  }
+  after.triangles.clear();
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    if (removed[t]) continue;
+    Triangle tri = surface.triangles[t];
+    for (VertexIndex& c : tri)
+      if (merged_into[c] != kNoVertex) c = merged_into[c];
+    after.triangles.push_back(tri);
+  }
+  return after;
+}
+
+mesh::Mesh as_mesh(const Surface& s) {
+  mesh::Mesh m;
+  m.vertices = s.vertices;
+  for (const Triangle& t : s.triangles)
+    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+  return m;
+}
+
+/// The first triangle of `after` that a triangle around `v` intersects there (exactly,
+/// mesh::face_contact; triangles whose closed boxes are apart have no common point), or
+/// nullopt.
+std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
+  const mesh::Mesh m = as_mesh(after);
+  std::vector<std::array<Point3, 2>> boxes;
+  for (const Triangle& t : after.triangles)
+    boxes.push_back(
+        box_of(std::array{after.vertices[t[0]], after.vertices[t[1]], after.vertices[t[2]]}));
+  for (const std::size_t star : after.triangles_around(v)) {
+    for (std::size_t other = 0; other < m.faces.size(); ++other) {
+      if (other == star || !boxes_meet(boxes[star], boxes[other])) continue;
+      if (mesh::face_contact(m, star, other) != mesh::FaceContact::apart) {
+        return Blocker{Blocker::Kind::triangle, after.triangles[other]};
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+std::vector<double> flat(const std::vector<Point3>& points) {
+  std::vector<double> out;
+  out.reserve(3 * points.size());
+  for (const Point3& p : points)
+    out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+/// A pass of collapses (collapse_edges).
+class CollapsePass {
+ public:
+  CollapsePass(const Surface& surface, std::span<const Collapse> collapses)
+      : surface_(surface), stars_(stars_of(surface)), outcomes_(collapses.size()) {
+    plan(collapses);
+  }
+
+  std::vector<Outcome> run(Surface& surface) {
+    refuse_collisions();
+    refuse_intersections();
+    surface = collapsed(surface_, live_plans());
+    return std::move(outcomes_);
+  }
+
+ private:
+  /// Plans each collapse; defers those whose box meets an earlier planned one's.
+  void plan(std::span<const Collapse> collapses) {
+    owner_.assign(surface_.vertices.size(), kNone);
+    std::vector<std::array<Point3, 2>> boxes;
+    for (std::size_t i = 0; i < collapses.size(); ++i) {
+      const Collapse& c = collapses[i];
+      auto planned = plan_collapse(surface_, stars_, c.a, c.b, c.to);
+      if (auto* refused = std::get_if<Outcome>(&planned)) {
+        outcomes_[i] = std::move(*refused);
+        continue;
+      }
+      std::vector<Point3> points{c.to};
+      for (const VertexIndex end : {c.a, c.b}) {
+        for (const std::size_t t : stars_[end]) {
+          for (const VertexIndex v : surface_.triangles[t])
+            points.push_back(surface_.vertices[v]);
+        }
+      }
+      const std::array<Point3, 2> box = box_of(points);
+      if (std::any_of(boxes.begin(), boxes.end(),
+                      [&](const auto& other) { return boxes_meet(box, other); })) {
+        outcomes_[i] = {Verdict::deferred,
+                        collapsing(c.a, c.b) +
+                            " changes a region another collapse of the pass "
+                            "reaches",
+                        {},
+                        {}};
+        continue;
+      }
+      boxes.push_back(box);
+      owner_[c.a] = owner_[c.b] = plans_.size();
+      plans_.push_back(std::get<CollapsePlan>(std::move(planned)));
+      outcome_of_.push_back(i);
+    }
+  }
+
+  bool live(std::size_t k) const { return outcomes_[outcome_of_[k]].applied(); }
+
+  std::vector<const CollapsePlan*> live_plans() const {
+    std::vector<const CollapsePlan*> out;
+    for (std::size_t k = 0; k < plans_.size(); ++k) {
+      if (live(k)) out.push_back(&plans_[k]);
+    }
+    return out;
+  }
+
+  enum class Check : std::uint8_t { motion, in_place };
+
+  /// Refuses the live collapse that vertex v belongs to, if any; true if it did.
+  bool refuse(VertexIndex v, const Blocker& blocker, Check check) {
+    const std::size_t k = owner_[v];
+    if (k == kNone || !live(k)) return false;
+    outcomes_[outcome_of_[k]] = collision(
+        blocker, check == Check::motion
+                     ? collapsing(plans_[k].a, plans_[k].b)
+                     : "the triangles around the merged vertex " + std::to_string(plans_[k].a));
+    return true;
+  }
+
+  /// v as the pairs see it at the end of the step: a live collapse's b is its a.
+  VertexIndex merged(VertexIndex v) const {
+    const std::size_t k = owner_[v];
+    return k != kNone && live(k) && plans_[k].b == v ? plans_[k].a : v;
+  }
+
+  void refuse_collisions() {
+    std::vector<bool> used(surface_.vertices.size(), false);
+    for (const Triangle& t : surface_.triangles) {
+      for (const VertexIndex v : t)
+        used[v] = true;
+    }
+    ccd::MeshCcd mesh_ccd(surface_.vertices.size(), surface_.triangles);
+    const std::vector<double> t0 = flat(surface_.vertices);
+    for (bool refused = true; refused;) {
+      refused = false;
+      std::vector<Point3> end = surface_.vertices;
+      for (const CollapsePlan* p : live_plans())
+        end[p->a] = end[p->b] = p->to;
+      const std::vector<double> t1 = flat(end);
+      const ccd::MeshCcdResult step = mesh_ccd.step({t0, t1});
+      for (const ccd::VertexFacePair& pair : step.vertex_face) {
+        const Triangle& t = surface_.triangles[pair.face];
+        const VertexIndex v = merged(pair.vertex);
+        if (!used[pair.vertex] || v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
+          continue;  // no vertex of the surface, or the collapse itself
+        refused |= refuse(pair.vertex, {Blocker::Kind::triangle, t}, Check::motion);
+        for (const VertexIndex c : t)
+          refused |= refuse(c, {Blocker::Kind::vertex, {pair.vertex, kNoVertex, kNoVertex}},
+                            Check::motion);
+      }
+      for (const ccd::EdgeEdgePair& pair : step.edge_edge) {
+        const VertexIndex a0 = merged(pair.a[0]), a1 = merged(pair.a[1]);
+        const VertexIndex b0 = merged(pair.b[0]), b1 = merged(pair.b[1]);
+        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself
+        const Blocker a{Blocker::Kind::edge, {pair.a[0], pair.a[1], kNoVertex}};
+        const Blocker b{Blocker::Kind::edge, {pair.b[0], pair.b[1], kNoVertex}};
+        for (const VertexIndex v : pair.a)
+          refused |= refuse(v, b, Check::motion);
+        for (const VertexIndex v : pair.b)
+          refused |= refuse(v, a, Check::motion);
+      }
+    }
+  }
+
+  /// The surface with every live collapse made, checked exactly; a collapse whose merged
+  /// vertex is a corner of an intersecting triangle is refused. The collapses' boxes are
+  /// apart, so refusing one changes nothing near another: one round decides.
+  void refuse_intersections() {
+    const Surface after = collapsed(surface_, live_plans());
+    const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(after), 1);
+    for (const mesh::FacePair& pair : found.intersecting) {
+      const Triangle& first = after.triangles[pair.first];
+      const Triangle& second = after.triangles[pair.second];
+      for (const VertexIndex v : first)
+        refuse(v, {Blocker::Kind::triangle, second}, Check::in_place);
+      for (const VertexIndex v : second)
+        refuse(v, {Blocker::Kind::triangle, first}, Check::in_place);
+    }
+  }
+
+  const Surface& surface_;
+  Stars stars_;
+  std::vector<Outcome> outcomes_;
+  std::vector<CollapsePlan> plans_;
+  std::vector<std::size_t> outcome_of_;  ///< per plan: its collapse's index
+  std::vector<std::size_t> owner_;       ///< per vertex: the plan it is an end of, or kNone
+};
+
+}  // namespace
+
+Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
+  const auto planned = plan_collapse(surface, stars_of(surface), a, b, to);
+  if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
+  const CollapsePlan& plan = std::get<CollapsePlan>(planned);
+  const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};
+  if (auto hit = first_collision(surface, moves, edge_of(a, b))) {
+    return collision(*hit, collapsing(a, b));
+  }
+  Surface after = collapsed(surface, {&plan});
+  if (auto hit = star_intersection(after, a)) {
+    return collision(*hit, "the triangles around the merged vertex");
+  }
+  surface = std::move(after);
+  return {};
+}
+
+std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses) {
+  return CollapsePass(surface, collapses).run(surface);
+}
+
+}  // namespace exactgeo::remesh

@@ -1,0 +1,82 @@
+#pragma once
+
+// What the operations share (operations.cpp, collapse.cpp): the outcomes of a refusal,
+// the topology checks of an edge, and closed boxes.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "exactgeo/remesh/operations.hpp"
+
+namespace exactgeo::remesh::checks {
+
+inline Outcome topology(std::string reason) {
+  return {Verdict::refused_topology, std::move(reason), std::nullopt, std::nullopt};
+}
+
+inline Outcome collision(const Blocker& blocker, std::string_view what) {
+  std::string reason(what);
+  reason.append(" would meet ").append(to_string(blocker));
+  return {Verdict::refused_collision, std::move(reason), blocker, std::nullopt};
+}
+
+inline bool finite(const Point3& p) noexcept {
+  return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+inline bool has_zero_area(const Surface& s, const Triangle& t) noexcept {
+  return zero_area(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+}
+
+/// The reason a vertex cannot be operated on, or nullopt.
+inline std::optional<std::string> vertex_problem(const Surface& s, VertexIndex v) {
+  if (v >= s.vertices.size()) return "vertex " + std::to_string(v) + " does not exist";
+  if (s.is_fixed(v)) return "vertex " + std::to_string(v) + " is fixed";
+  return std::nullopt;
+}
+
+/// The triangles on edge ab (found unless given), or the reason the edge cannot be
+/// operated on (it has none, or more than two, or a triangle with a fixed corner).
+inline std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, VertexIndex b,
+                                               std::vector<std::size_t>& on_edge) {
+  for (const VertexIndex v : {a, b}) {
+    if (auto why = vertex_problem(s, v)) return why;
+  }
+  if (on_edge.empty()) on_edge = s.triangles_on_edge(a, b);
+  const std::string name = "edge " + std::to_string(a) + "-" + std::to_string(b);
+  if (a == b || on_edge.empty()) return name + " is no edge of the surface";
+  if (on_edge.size() > 2)
+    return name + " is used by " + std::to_string(on_edge.size()) + " triangles";
+  for (const std::size_t t : on_edge) {
+    const VertexIndex c = third_corner(s.triangles[t], a, b);
+    if (s.is_fixed(c)) return name + ": its triangle's corner " + std::to_string(c) + " is fixed";
+  }
+  return std::nullopt;
+}
+
+/// The closed box of points.
+template <class Points>
+std::array<Point3, 2> box_of(const Points& points) {
+  std::array<Point3, 2> box{*points.begin(), *points.begin()};
+  for (const Point3& q : points) {
+    for (int k = 0; k < 3; ++k) {
+      box[0][k] = std::min(box[0][k], q[k]);
+      box[1][k] = std::max(box[1][k], q[k]);
+    }
+  }
+  return box;
+}
+
+inline bool boxes_meet(const std::array<Point3, 2>& x, const std::array<Point3, 2>& y) noexcept {
+  for (int k = 0; k < 3; ++k) {
+    if (x[1][k] < y[0][k] || y[1][k] < x[0][k]) return false;
+  }
+  return true;
+}
+
+}  // namespace exactgeo::remesh::checks
