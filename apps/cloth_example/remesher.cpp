@@ -240,33 +240,27 @@ bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   }
   std::stable_sort(wanted.begin(), wanted.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
-  // The triangles around each vertex as the pass starts. A collapse changes those around
-  // its ends and their neighbours: later collapses there wait for the next pass, so the
-  // others' stars stay as listed.
+  // The triangles around each vertex as the pass starts (collapse_edges defers the
+  // collapses whose surroundings another one of the pass changes).
   std::vector<std::vector<remesh::Triangle>> stars(w.surface.vertices.size());
   for (const remesh::Triangle& t : w.surface.triangles) {
     for (const VertexIndex v : t)
       stars[v].push_back(t);
   }
-  std::vector<bool> changed(w.surface.vertices.size(), false);
-  bool any = false;
+  std::vector<remesh::Collapse> collapses;
   for (const auto& [length, e] : wanted) {
-    if (changed[e->a] || changed[e->b]) continue;
     const bool boundary = !e->right;
     VertexIndex kept = e->a, gone = e->b;
     if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) {
       std::swap(kept, gone);
       if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) continue;
     }
-    const std::vector<VertexIndex> ring = ring_sides(stars[gone], gone);
-    const remesh::Outcome outcome =
-        remesh::collapse_edge(w.surface, kept, gone, w.surface.vertices[kept]);
-    counts.add(outcome.verdict);
-    if (!outcome.applied()) continue;
-    any = true;
-    changed[kept] = changed[gone] = true;
-    for (const VertexIndex x : ring)
-      changed[x] = true;
+    collapses.push_back({kept, gone, w.surface.vertices[kept]});
+  }
+  bool any = false;
+  for (const remesh::Outcome& o : remesh::collapse_edges(w.surface, collapses)) {
+    counts.add(o.verdict);
+    any = any || o.applied();
   }
   return any;
 }
