@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "arrays.hpp"
@@ -154,20 +155,42 @@ py::list flip_many(Surface& s, const py::object& edges_in) {
   return outcome_list(done);
 }
 
-py::list split_many(Surface& s, const py::object& edges_in, const py::object& points_in) {
+/// A pass's (k, 2) edges and (k, 3) points, checked.
+std::vector<std::pair<remesh::Edge, Point3>> edges_and_points(const Surface& s,
+                                                              const py::object& edges_in,
+                                                              const py::object& points_in) {
   const std::vector<remesh::Edge> edges = edges_of(s, edges_in);
   const Doubles points = coordinates(points_in, "points", {-1, 3});
   if (static_cast<std::size_t>(points.shape(0)) != edges.size()) {
     throw py::value_error("edges and points must have the same length");
   }
   const std::span<const Point3> at = points_of(points);
-  std::vector<remesh::Split> splits;
+  std::vector<std::pair<remesh::Edge, Point3>> out;
   for (std::size_t i = 0; i < edges.size(); ++i)
-    splits.push_back({edges[i][0], edges[i][1], at[i]});
+    out.emplace_back(edges[i], at[i]);
+  return out;
+}
+
+py::list split_many(Surface& s, const py::object& edges_in, const py::object& points_in) {
+  std::vector<remesh::Split> splits;
+  for (const auto& [e, at] : edges_and_points(s, edges_in, points_in))
+    splits.push_back({e[0], e[1], at});
   std::vector<Outcome> done;
   {
     py::gil_scoped_release release;
     done = remesh::split_edges(s, splits);
+  }
+  return outcome_list(done);
+}
+
+py::list collapse_many(Surface& s, const py::object& edges_in, const py::object& points_in) {
+  std::vector<remesh::Collapse> collapses;
+  for (const auto& [e, to] : edges_and_points(s, edges_in, points_in))
+    collapses.push_back({e[0], e[1], to});
+  std::vector<Outcome> done;
+  {
+    py::gil_scoped_release release;
+    done = remesh::collapse_edges(s, collapses);
   }
   return outcome_list(done);
 }
@@ -231,7 +254,12 @@ deferred (verdict "deferred"), the others checked in one pass over the surface. 
 per edge. The GIL is released.)doc")
       .def("split_edges", &split_many, py::arg("edges"), py::arg("points"),
            R"doc(A pass of splits of the (k, 2) edges at the (k, 3) points, as flip_edges. One
-dict per split. The GIL is released.)doc");
+dict per split. The GIL is released.)doc")
+      .def("collapse_edges", &collapse_many, py::arg("edges"), py::arg("points"),
+           R"doc(A pass of collapses: edge (a, b) of the (k, 2) edges merged into a at the
+matching one of the (k, 3) points. A collapse near an earlier one of the pass is deferred;
+the others' motions are checked together by the mesh broad phase and their results by the
+exact self-intersection finder. One dict per collapse. The GIL is released.)doc");
 }
 
 }  // namespace exactgeo::python

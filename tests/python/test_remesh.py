@@ -63,3 +63,15 @@ def test_passes_of_flips_and_splits():
     assert done[0]["applied"] and done[0]["new_vertex"] == 28
     assert done[1]["verdict"] == "refused_collision"
     assert done[1]["blocker"] == ("triangle", (25, 27, 26))
+
+
+def test_pass_of_collapses():
+    surface = exactgeo.Surface(*sheets())
+    # A boundary edge into its corner; one next to it waits; one lifted through the sheet
+    # above is refused.
+    done = surface.collapse_edges([[0, 1], [1, 2], [23, 24]], [[0, 0, 0], [1, 0, 0], [3.5, 4, 2]])
+    assert [d["verdict"] for d in done] == ["applied", "deferred", "refused_collision"]
+    assert done[2]["blocker"] is not None
+    assert not (surface.triangles == 1).any()  # vertex 1 is used by no triangle now
+    with pytest.raises(ValueError, match="same length"):
+        surface.collapse_edges([[3, 4]], [[0, 0, 0], [1, 1, 1]])
