@@ -7,7 +7,13 @@
 //
 //   build/bench/remesh_benchmark --benchmark_filter=Smoothing
 //
-// (docs/remesh.md quotes the ratio).
+// A coarsening pass likewise: edges far enough apart collapsed into one end, by
+// collapse_edge one at a time, by collapse_edges, and as one mesh CCD step of the same
+// motion (the removed ends moving onto the kept ones):
+//
+//   build/bench/remesh_benchmark --benchmark_filter=Coarsening
+//
+// (docs/remesh.md quotes the ratios).
 
 #include <benchmark/benchmark.h>
 
@@ -21,6 +27,7 @@
 namespace {
 
 using exactgeo::Point3;
+using exactgeo::remesh::Collapse;
 using exactgeo::remesh::Move;
 using exactgeo::remesh::Surface;
 using exactgeo::remesh::VertexIndex;
@@ -96,6 +103,78 @@ void SmoothingAsOneMeshCcdStep(benchmark::State& state) {
   }
   state.counters["vertices"] = static_cast<double>(start.moves.size());
 }
+
+/// Collapses of the edges from (i, j) to (i + 1, j) for i = 1, 5, 9, ... and j = 1, 4, 7,
+/// ... of every sheet (n >= 4), into (i, j): apart from each other, no end on the boundary.
+std::vector<Collapse> coarsening(const Scene& scene, int layers, int n) {
+  std::vector<Collapse> out;
+  for (int k = 0; k < layers; ++k) {
+    const auto first = static_cast<VertexIndex>(k * (n + 1) * (n + 1));
+    for (int j = 1; j < n; j += 3) {
+      for (int i = 1; i + 1 < n; i += 4) {
+        const VertexIndex a = first + static_cast<VertexIndex>(i + (n + 1) * j);
+        out.push_back({a, a + 1, scene.surface.vertices[a]});
+      }
+    }
+  }
+  return out;
+}
+
+void CoarseningOneByOne(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Scene start = scene(3, n);
+  const std::vector<Collapse> collapses = coarsening(start, 3, n);
+  for (auto _ : state) {
+    Surface s = start.surface;
+    std::size_t applied = 0;
+    for (const Collapse& c : collapses)
+      applied += exactgeo::remesh::collapse_edge(s, c.a, c.b, c.to).applied();
+    benchmark::DoNotOptimize(applied);
+  }
+  state.counters["collapses"] = static_cast<double>(collapses.size());
+}
+
+void CoarseningPass(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Scene start = scene(3, n);
+  const std::vector<Collapse> collapses = coarsening(start, 3, n);
+  std::size_t applied = 0;
+  for (auto _ : state) {
+    Surface s = start.surface;
+    applied = 0;
+    for (const auto& o : exactgeo::remesh::collapse_edges(s, collapses))
+      applied += o.applied();
+    benchmark::DoNotOptimize(applied);
+  }
+  state.counters["collapses"] = static_cast<double>(collapses.size());
+  state.counters["applied"] = static_cast<double>(applied);
+}
+
+void CoarseningAsOneMeshCcdStep(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Scene start = scene(3, n);
+  std::vector<double> t0;
+  for (const Point3& p : start.surface.vertices)
+    t0.insert(t0.end(), p.begin(), p.end());
+  std::vector<double> t1 = t0;
+  for (const Collapse& c : coarsening(start, 3, n)) {
+    for (int k = 0; k < 3; ++k)
+      t1[3 * c.b + k] = c.to[k];
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        exactgeo::ccd::find_collisions(start.surface.triangles, {t0, t1}).collision());
+  }
+}
+
+BENCHMARK(CoarseningOneByOne)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK(CoarseningPass)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+BENCHMARK(CoarseningAsOneMeshCcdStep)
+    ->Arg(8)
+    ->Arg(16)
+    ->Arg(32)
+    ->Arg(64)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK(SmoothingOneByOne)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
 BENCHMARK(SmoothingBatch)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
