@@ -6,20 +6,15 @@
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/remesh/operations.hpp"
+#include "operation_checks.hpp"
 
 namespace exactgeo::remesh {
+
+using checks::flat;  // operation_checks.hpp
 
 namespace {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-
-std::vector<double> flat(const std::vector<Point3>& points) {
-  std::vector<double> out;
-  out.reserve(3 * points.size());
-  for (const Point3& p : points)
-    out.insert(out.end(), p.begin(), p.end());
-  return out;
-}
 
 class Pass {
  public:

@@ -160,14 +160,6 @@ std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
   return std::nullopt;
 }
 
-std::vector<double> flat(const std::vector<Point3>& points) {
-  std::vector<double> out;
-  out.reserve(3 * points.size());
-  for (const Point3& p : points)
-    out.insert(out.end(), p.begin(), p.end());
-  return out;
-}
-
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 /// A pass of collapses (collapse_edges).

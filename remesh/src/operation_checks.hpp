@@ -1,7 +1,8 @@
 #pragma once
 
-// What the operations share (operations.cpp, collapse.cpp): the outcomes of a refusal,
-// the topology checks of an edge, and closed boxes.
+// What the operations share (operations.cpp, collapse.cpp, batch_relocation.cpp): the
+// outcomes of a refusal, the topology checks of an edge, closed boxes, and positions as
+// MeshCcd takes them.
 
 #include <algorithm>
 #include <array>
@@ -77,6 +78,15 @@ inline bool boxes_meet(const std::array<Point3, 2>& x, const std::array<Point3, 
     if (x[1][k] < y[0][k] || y[1][k] < x[0][k]) return false;
   }
   return true;
+}
+
+/// x, y, z of every point in turn (ccd::StepPositions' layout).
+inline std::vector<double> flat(const std::vector<Point3>& points) {
+  std::vector<double> out;
+  out.reserve(3 * points.size());
+  for (const Point3& p : points)
+    out.insert(out.end(), p.begin(), p.end());
+  return out;
 }
 
 }  // namespace exactgeo::remesh::checks
