@@ -169,6 +169,22 @@ MUTANTS = [
     ("swept_region_widest_element_ignored",
      "remesh/src/swept_region.cpp",
      "lower[0] - width_,", "lower[0] - 0 * width_,", ["remesh_tests"]),
+    # A pass of collapses passes over the edge-edge pairs that come to share the merged
+    # vertex (they meet there: the collapse itself), and checks its end state exactly
+    # (remesh/src/collapse.cpp).
+    ("collapse_pass_checks_its_own_edge_pairs",
+     "remesh/src/collapse.cpp",
+     "if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself",
+     "if (false) continue;", ["remesh_tests"]),
+    ("collapse_pass_end_state_unchecked",
+     "remesh/src/collapse.cpp",
+     "    refuse_intersections();", "    if (false) refuse_intersections();", ["remesh_tests"]),
+    # A split's partner skips only the other side's own triangle (remesh/src/swept_region.cpp).
+    ("split_partner_skips_any_triangle_of_its_corners",
+     "remesh/src/swept_region.cpp",
+     "return same(c, {edge_a, edge_b, partner});",
+     "return same(c, {edge_a, edge_b, partner}) || same(c, {edge_a, corners[2].vertex, partner}) "
+     "|| same(c, {edge_b, corners[2].vertex, partner});", ["remesh_tests"]),
     # The unit frame's window: labels are exact whatever it is; only speed depends on it.
     ("unit_frame_window_never_entered",
      "inside/include/exactgeo/inside/internal/unit_frame.hpp",
