@@ -166,6 +166,35 @@ TEST_P(Operations, SplitOffTheEdgeIntoItsOtherTriangleIsApplied) {
   EXPECT_EQ(passed.triangles, surface.triangles);
 }
 
+TEST_P(Operations, SplitThroughANeighbourOfBothOppositeCornersIsRefused) {
+  // Found by the random operations (seed 101): edge ab = 4-5 with opposite corners c = 0
+  // and d = 3, and a triangle a d c beside it. The lifted midpoint's new triangle b m c
+  // passes through a d c; only its corners are all among a, b, c, d, and it is not the
+  // split's own: its region must test it.
+  const double s = scale();
+  Surface surface;
+  for (const Point3& p :
+       {Point3{0x1.9p-2, 0x1.74p+0, 0x1.2p-3}, Point3{0x1.b8p-2, 0x1.76p+0, 0x1.2p-3},
+        Point3{0x1.8p-1, 0x1.8p+0, 0x1.1p-2}, Point3{0x1.24p-1, 0x1.7ap+0, 0x1.38p-2},
+        Point3{0x1.48p-2, 0x1.7ap+0, 0x1.18p-2}, Point3{0x1p-1, 0x1.78p+0, 0x1.88p-3}}) {
+    surface.vertices.push_back({s * p[0], s * p[1], s * p[2]});
+  }
+  surface.triangles = {{0, 4, 5}, {3, 5, 4}, {1, 5, 2}, {4, 0, 3}, {5, 1, 0}, {5, 3, 2}};
+  expect_intersection_free(surface, "setting up");
+  const Point3 m{s * 0x1.a4p-2, s * 0x1.79p+0, s * 0x1.56p-2};
+  const Outcome split = split_edge(surface, 4, 5, m);
+  EXPECT_EQ(split.verdict, Verdict::refused_collision) << split.reason;
+  ASSERT_TRUE(split.blocker.has_value());
+  Surface forced = surface;  // what the split would have made
+  forced.vertices.push_back(m);
+  forced.triangles[0] = {0, 4, 6};
+  forced.triangles.push_back({0, 6, 5});
+  forced.triangles[1] = {3, 5, 6};
+  forced.triangles.push_back({3, 6, 4});
+  EXPECT_FALSE(mesh::find_self_intersections(as_mesh(forced), 1).intersecting.empty())
+      << "the refused split would have made an intersection";
+}
+
 TEST_P(Operations, FlipSweepsTheTetrahedronOfItsCorners) {
   const double s = scale();
   // Lift the grid's vertex (2, 1) so that flipping the diagonal (1, 1)-(2, 2) sweeps a
