@@ -28,10 +28,10 @@
 namespace exactgeo::cloth {
 
 struct MeshClothParameters {
-  double gravity = 9.81;            ///< m/s^2, along -y
-  double stretch_stiffness = 1.0;   ///< fraction of an edge's excess length removed per pass
+  double gravity = 9.81;             ///< m/s^2, along -y
+  double stretch_stiffness = 1.0;    ///< fraction of an edge's excess length removed per pass
   double compress_stiffness = 0.02;  ///< ... of its shortfall
-  double bending_stiffness = 0.02;  ///< ... of the opposite corners' distance error
+  double bending_stiffness = 0.02;   ///< ... of the opposite corners' distance error
   int iterations = 8;
   double air_damping = 0.002;     ///< fraction of the velocity lost per step
   double contact_margin = 0.006;  ///< metres kept above the ground and off the ball
