@@ -11,9 +11,9 @@
 // Lengths are rest lengths (material coordinates), which the model keeps the sheets near.
 //
 // A remesh is: split passes (edges longer than 4/3 of their size, at their midpoint,
-// longest first), collapse passes (edges shorter than 4/5 of their size, when no edge
-// made would be longer than its size and no triangle turns over in the material; an end
-// that is a corner of a sheet's outline stays), then flip passes (inner edges that are
+// longest first), collapse passes (edges shorter than 4/5 of their size, shortest first,
+// when no edge made would be split again and no triangle turns over in the material; an
+// end that is a corner of a sheet's outline stays), then flip passes (inner edges that are
 // not Delaunay in the material). A new vertex takes the midpoint's material coordinates
 // and velocity; a collapse keeps the surviving end's. Then the unused vertices go, the
 // sheets' vertices and faces first again.
