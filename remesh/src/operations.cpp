@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 #include <variant>
 #include <vector>
 
@@ -190,11 +189,16 @@ std::vector<Triangle> split_triangles(const Surface& surface,
 /// not by each other's regions (first_in_region's partner).
 bool new_triangles_meet(const Surface& surface, const std::vector<Triangle>& made,
                         const Point3& at) {
+  // A small mesh of their corners only (the new vertex is the one past the surface's).
   mesh::Mesh m;
-  m.vertices = surface.vertices;
-  m.vertices.push_back(at);
+  std::map<VertexIndex, VertexIndex> local;
+  const auto corner = [&](VertexIndex v) {
+    const auto [it, added] = local.emplace(v, static_cast<VertexIndex>(m.vertices.size()));
+    if (added) m.vertices.push_back(v < surface.vertices.size() ? surface.vertices[v] : at);
+    return it->second;
+  };
   for (const Triangle& t : made)
-    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
+    m.faces.push_back(mesh::make_triangle(corner(t[0]), corner(t[1]), corner(t[2])));
   for (std::size_t i = 0; i < made.size(); ++i) {
     for (std::size_t j = i + 1; j < made.size(); ++j) {
       if (mesh::face_contact(m, i, j) != mesh::FaceContact::apart) return true;
