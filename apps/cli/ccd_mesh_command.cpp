@@ -19,6 +19,7 @@
 #include "cli/mesh_marks.hpp"
 #include "cli/number_option.hpp"
 #include "cli/output_file.hpp"
+#include "cli/peak_memory.hpp"
 #include "cli/threads_option.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 
@@ -102,7 +103,8 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
   }
   std::string text;
   if (options.json) {
-    write_ccd_mesh_json(text, options.method, options.time_of_impact, result, marks, options.mark);
+    write_ccd_mesh_json(text, options.method, options.time_of_impact, result, marks, options.mark,
+                        peak_resident_bytes());
   } else {
     write_ccd_mesh_report(text, options.method, options.time_of_impact, *mesh_ccd, result, marks,
                           options.mark);
@@ -161,9 +163,10 @@ CLI::App& add_ccd_mesh_command(CLI::App& app, CcdMeshOptions& options) {
   add_split_polygons_flag(*sub, options.split_polygons,
                           " instead of refusing the files (every polygon is split as in the "
                           "first frame)");
-  sub->add_flag("--json", options.json,
-                "print one JSON object (pairs, candidate counts, time of impact, seconds) "
-                "instead of the report");
+  sub->add_flag(
+      "--json", options.json,
+      "print one JSON object (pairs, candidate counts, time of impact, seconds, peak memory) "
+      "instead of the report");
   return *sub;
 }
 

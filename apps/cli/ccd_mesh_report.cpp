@@ -23,7 +23,8 @@ std::string interval_text(const ccd::TimeInterval& t) {
 
 void write_ccd_mesh_json(std::string& text, ccd::Method method, bool time_of_impact,
                          const ccd::MeshCcdResult& result, const std::optional<MarkedMesh>& marks,
-                         const std::string& mark_path) {
+                         const std::string& mark_path,
+                         std::optional<std::size_t> peak_memory_bytes) {
   text.append("{\"method\": ").append(json_string(ccd::to_string(method)));
   text.append(", \"vertex_face\": [");
   for (std::size_t i = 0; i < result.vertex_face.size(); ++i) {
@@ -51,6 +52,8 @@ void write_ccd_mesh_json(std::string& text, ccd::Method method, bool time_of_imp
       .append(shortest(result.broad_phase_seconds + result.narrow_phase_seconds));
   text.append(", \"broad_phase_seconds\": ").append(shortest(result.broad_phase_seconds));
   text.append(", \"narrow_phase_seconds\": ").append(shortest(result.narrow_phase_seconds));
+  text.append(", \"peak_memory_bytes\": ")
+      .append(peak_memory_bytes ? std::to_string(*peak_memory_bytes) : "null");
   if (marks) text.append(", \"mark\": ").append(legend_json(*marks, mark_path));
   text.append("}\n");
 }

@@ -5,6 +5,7 @@
 // colliding pair, one per line) and, with --json, one JSON object. Both end with the
 // legend of the --mark file when there is one.
 
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -16,10 +17,12 @@ namespace exactgeo::cli {
 
 /// Appends the JSON object (and a newline) to `text`. `time_of_impact`: it was asked for,
 /// so the key is there (null without a collision). `marks`: the legend of the file
-/// written to `mark_path`.
+/// written to `mark_path`. `peak_memory_bytes`: the process's peak resident memory
+/// (null when unknown).
 void write_ccd_mesh_json(std::string& text, ccd::Method method, bool time_of_impact,
                          const ccd::MeshCcdResult& result, const std::optional<MarkedMesh>& marks,
-                         const std::string& mark_path);
+                         const std::string& mark_path,
+                         std::optional<std::size_t> peak_memory_bytes);
 
 /// Appends the text report of `mesh`'s step to `text`; the other arguments as for
 /// write_ccd_mesh_json.

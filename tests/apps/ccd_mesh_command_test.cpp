@@ -18,6 +18,7 @@
 
 #include "apps/marked_ply_text.hpp"
 #include "cli/ccd_mesh_command.hpp"
+#include "cli/peak_memory.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "support/generators.hpp"
@@ -178,6 +179,23 @@ TEST(CcdMeshCommand, MatchesExhaustivePairwiseCcdOnRandomMovingMeshes) {
       EXPECT_EQ(pairs_in(out.str(), "edge_edge"), edge_edge) << what;
     }
   }
+}
+
+TEST(CcdMeshCommand, JsonStatesThePeakMemory) {
+  // The process's peak resident memory: a number, at least what the step's frames hold.
+  auto rng = testing::seeded_engine("CcdMeshCommand.peak-memory");
+  const testing::ScratchDir dir("exactgeo_ccd_mesh_memory");
+  const Frames frames = crumpling_sheet(10, rng);
+  CcdMeshOptions options = frames_in(dir.path, frames, write_obj);
+  options.json = true;
+  std::ostringstream out, err;
+  ASSERT_EQ(run_ccd_mesh(options, out, err), ExitCode::success) << err.str();
+  const std::string json = out.str();
+  const std::size_t at = json.find("\"peak_memory_bytes\": ");
+  ASSERT_NE(at, std::string::npos) << json;
+  const std::size_t bytes = std::stoull(json.substr(at + 21));
+  EXPECT_GE(bytes, 2 * sizeof(Point3) * frames.t0.size()) << json;
+  EXPECT_EQ(peak_resident_bytes().value_or(0) >= bytes, true);  // it only grows
 }
 
 // --mark colours frame 0: exactly the faces and vertices of colliding vertex-face pairs,
