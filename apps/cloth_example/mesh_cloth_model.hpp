@@ -49,7 +49,7 @@ class MeshClothModel {
 
   /// Predicts the sheets' end of a step of length dt: x1's sheet part and `velocity` (3
   /// values per sheet vertex) are written; x1's obstacle part is left as it is (the caller
-  /// places the obstacle). `ball_angle` is the ball's turn over the step, if any.
+  /// places the obstacle). `ball_turn`: the angle the ball turns by over the step (0: none).
   void predict(std::span<const double> x0, std::span<double> velocity, std::span<double> x1,
                double dt, double ball_turn) const;
 

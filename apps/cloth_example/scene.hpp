@@ -39,7 +39,8 @@ std::optional<SceneKind> parse_scene(std::string_view name) noexcept;
 
 struct SceneOptions {
   SceneKind kind = SceneKind::block;
-  /// Vertices along each side of the sheet (>= 2).
+  /// Vertices along each side of a sheet (>= 2); the ribbon has this many across its
+  /// width and 10 times as many along it.
   std::uint32_t resolution = 40;
   /// Amplitude (metres) of a seeded vertical perturbation of the sheet's vertices; 0: none.
   double jitter = 0.0;
@@ -60,16 +61,16 @@ struct SpinningBall {
 };
 
 struct Scene {
-  /// x, y, z of every vertex: the sheet's resolution^2 vertices first, row by row, then
-  /// the obstacle's.
+  /// x, y, z of every vertex: the sheets' vertices first, row by row, then the
+  /// obstacles'.
   std::vector<double> positions;
   std::vector<ccd::Triangle> faces;
   std::size_t cloth_vertices = 0;
-  std::size_t cloth_faces = 0;  ///< the sheet's faces come first too
+  std::size_t cloth_faces = 0;  ///< the sheets' faces come first too
   std::uint32_t resolution = 0;
   double spacing = 0.0;  ///< rest distance between neighbouring sheet vertices
-  /// Gap between the sheet's start height and the top of the block: a jitter must stay
-  /// below it so that the start is collision free.
+  /// Gap between the sheets and what is below them at the start (the block's top, the
+  /// floor, the ball or the sheet below): a jitter must stay below it.
   double start_gap = 0.0;
   SceneKind kind = SceneKind::block;
   /// Rest coordinates of every sheet vertex (the sheet flat, metres).
