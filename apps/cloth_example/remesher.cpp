@@ -182,15 +182,17 @@ std::vector<VertexIndex> ring_sides(const std::vector<remesh::Triangle>& star, V
   return sides;
 }
 
-bool on_boundary(const std::vector<VertexIndex>& sides) {
+/// The neighbours across boundary edges: those seen once among the ring's sides.
+std::vector<VertexIndex> boundary_neighbours(const std::vector<VertexIndex>& sides) {
+  std::vector<VertexIndex> once;
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i;
     while (j < sides.size() && sides[j] == sides[i])
       ++j;
-    if (j - i == 1) return true;
+    if (j - i == 1) once.push_back(sides[i]);
     i = j;
   }
-  return false;
+  return once;
 }
 
 /// Whether removing `gone` into `kept` (gone moves to kept's place) suits the sheet: a
@@ -200,16 +202,9 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
                     const std::vector<remesh::Triangle>& star, VertexIndex kept, VertexIndex gone,
                     bool boundary_edge) {
   const std::vector<VertexIndex> sides = ring_sides(star, gone);
-  if (on_boundary(sides) != boundary_edge) return false;
+  const std::vector<VertexIndex> ends = boundary_neighbours(sides);
+  if (ends.empty() == boundary_edge) return false;  // gone on the boundary, or not
   if (boundary_edge) {  // gone's two boundary neighbours must be on one line with it
-    std::vector<VertexIndex> ends;
-    for (std::size_t i = 0; i < sides.size();) {
-      std::size_t j = i;
-      while (j < sides.size() && sides[j] == sides[i])
-        ++j;
-      if (j - i == 1) ends.push_back(sides[i]);
-      i = j;
-    }
     if (ends.size() != 2) return false;
     const double area = material_area(w, ends[0], gone, ends[1]);
     const double scale = material_length(w, ends[0], gone) * material_length(w, gone, ends[1]);
