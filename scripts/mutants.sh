@@ -182,9 +182,17 @@ MUTANTS = [
     # A split's partner skips only the other side's own triangle (remesh/src/swept_region.cpp).
     ("split_partner_skips_any_triangle_of_its_corners",
      "remesh/src/swept_region.cpp",
-     "return same(c, {edge_a, edge_b, partner});",
-     "return same(c, {edge_a, edge_b, partner}) || same(c, {edge_a, corners[2].vertex, partner}) "
-     "|| same(c, {edge_b, corners[2].vertex, partner});", ["remesh_tests"]),
+     "return on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2]);",
+     "return (on_other_side(c[0]) || c[0] == corners[2].vertex) && "
+     "(on_other_side(c[1]) || c[1] == corners[2].vertex) && "
+     "(on_other_side(c[2]) || c[2] == corners[2].vertex);", ["remesh_tests"]),
+    # ... and the two sides' new triangles are then checked against each other
+    # (remesh/src/operations.cpp).
+    ("split_sides_unchecked",
+     "remesh/src/operations.cpp",
+     "if (new_triangles_meet(surface, split_triangles(surface, on_edge, a, b, m), at)) {",
+     "if (new_triangles_meet(surface, split_triangles(surface, on_edge, a, b, m), at) && false) {",
+     ["remesh_tests"]),
     # The unit frame's window: labels are exact whatever it is; only speed depends on it.
     ("unit_frame_window_never_entered",
      "inside/include/exactgeo/inside/internal/unit_frame.hpp",

@@ -145,14 +145,20 @@ py::list outcome_list(const std::vector<Outcome>& done) {
   return out;
 }
 
-py::list flip_many(Surface& s, const py::object& edges_in) {
-  const std::vector<remesh::Edge> edges = edges_of(s, edges_in);
+/// Runs a pass (a callable returning its outcomes) without the GIL; one dict per outcome.
+template <class Pass>
+py::list run_pass(const Pass& pass) {
   std::vector<Outcome> done;
   {
     py::gil_scoped_release release;
-    done = remesh::flip_edges(s, edges);
+    done = pass();
   }
   return outcome_list(done);
+}
+
+py::list flip_many(Surface& s, const py::object& edges_in) {
+  const std::vector<remesh::Edge> edges = edges_of(s, edges_in);
+  return run_pass([&] { return remesh::flip_edges(s, edges); });
 }
 
 /// A pass's (k, 2) edges and (k, 3) points, checked.
@@ -175,24 +181,14 @@ py::list split_many(Surface& s, const py::object& edges_in, const py::object& po
   std::vector<remesh::Split> splits;
   for (const auto& [e, at] : edges_and_points(s, edges_in, points_in))
     splits.push_back({e[0], e[1], at});
-  std::vector<Outcome> done;
-  {
-    py::gil_scoped_release release;
-    done = remesh::split_edges(s, splits);
-  }
-  return outcome_list(done);
+  return run_pass([&] { return remesh::split_edges(s, splits); });
 }
 
 py::list collapse_many(Surface& s, const py::object& edges_in, const py::object& points_in) {
   std::vector<remesh::Collapse> collapses;
   for (const auto& [e, to] : edges_and_points(s, edges_in, points_in))
     collapses.push_back({e[0], e[1], to});
-  std::vector<Outcome> done;
-  {
-    py::gil_scoped_release release;
-    done = remesh::collapse_edges(s, collapses);
-  }
-  return outcome_list(done);
+  return run_pass([&] { return remesh::collapse_edges(s, collapses); });
 }
 
 }  // namespace

@@ -293,10 +293,8 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
   // element whose corners are among a, b, c, d: a triangle acd next to the split is not
   // the operation's.
   const VertexIndex edge_a = corners[0].vertex, edge_b = corners[1].vertex;
-  const auto same = [](std::array<VertexIndex, 3> x, std::array<VertexIndex, 3> y) {
-    std::sort(x.begin(), x.end());
-    std::sort(y.begin(), y.end());
-    return x == y;
+  const auto on_other_side = [&](VertexIndex v) {  // a corner of triangle abd
+    return v == edge_a || v == edge_b || v == partner;
   };
   const auto partners = [&](const Blocker& e) {
     if (partner == kNoVertex) return false;
@@ -304,10 +302,10 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
     switch (e.kind) {
       case Blocker::Kind::vertex:
         return c[0] == partner;
-      case Blocker::Kind::edge:
-        return same(c, {edge_a, partner, kNoVertex}) || same(c, {edge_b, partner, kNoVertex});
-      case Blocker::Kind::triangle:
-        return same(c, {edge_a, edge_b, partner});
+      case Blocker::Kind::edge:  // ad or bd: d and an end of the edge
+        return (c[0] == partner || c[1] == partner) && on_other_side(c[0]) && on_other_side(c[1]);
+      case Blocker::Kind::triangle:  // abd (its corners are distinct)
+        return on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2]);
     }
     return false;
   };

@@ -27,7 +27,8 @@ for key in collisions_total self_collisions_total obstacle_collisions_total; do
 done
 
 # Bad options: exit 2 and nothing on stdout.
-for args in "--resolution 1" "--dt 0" "--dt nan" "--steps -1" "--every 0" "--bogus"; do
+for args in "--resolution 1" "--dt 0" "--dt nan" "--steps -1" "--every 0" "--bogus" \
+  "--scene bogus" "--layers 0" "--scene stack --jitter 0.001"; do
   # shellcheck disable=SC2086
   bad=$("$exe" $args 2>/dev/null)
   rc=$?
