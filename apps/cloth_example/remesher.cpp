@@ -204,7 +204,10 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
   const std::vector<VertexIndex> sides = ring_sides(star, gone);
   const std::vector<VertexIndex> ends = boundary_neighbours(sides);
   if (ends.empty() == boundary_edge) return false;  // gone on the boundary, or not
-  if (boundary_edge) {  // gone's two boundary neighbours must be on one line with it
+  // A boundary end goes only where the outline is straight: its two boundary neighbours
+  // on one line with it, up to the rounding of averaged material coordinates (a choice of
+  // shape, not of safety: every collapse is still decided exactly by collapse_edges).
+  if (boundary_edge) {
     if (ends.size() != 2) return false;
     const double area = material_area(w, ends[0], gone, ends[1]);
     const double scale = material_length(w, ends[0], gone) * material_length(w, gone, ends[1]);
