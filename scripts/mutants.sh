@@ -193,6 +193,14 @@ MUTANTS = [
      "if (new_triangles_meet(surface, split_triangles(surface, on_edge, a, b, m), at)) {",
      "if (new_triangles_meet(surface, split_triangles(surface, on_edge, a, b, m), at) && false) {",
      ["remesh_tests"]),
+    # Memory, not answers: the step collects its whole candidate list before deciding it.
+    ("step_holds_every_candidate",
+     "ccd/src/mesh/mesh_ccd.cpp",
+     "  result.trees_rebuilt = prepared.trees_rebuilt;\n",
+     "  result.trees_rebuilt = prepared.trees_rebuilt;\n"
+     "  const auto held = s.broad_phase.candidates(scaled, scaled_step.largest, options.threads,"
+     " scaled_step.min_separation);\n",
+     ["ccd_tests"]),
     # The unit frame's window: labels are exact whatever it is; only speed depends on it.
     ("unit_frame_window_never_entered",
      "inside/include/exactgeo/inside/internal/unit_frame.hpp",

@@ -42,14 +42,13 @@ std::uint32_t motion_digest(const Vector3& head, const Vector3& tail) noexcept {
   return static_cast<std::uint32_t>(h >> 32) | 1u;
 }
 
-/// Each vertex's swept box and exact displacement p_t1 - p_t0 (TwoDiff: its rounded value
+/// Into s: each vertex's swept box and exact displacement p_t1 - p_t0 (TwoDiff: its rounded value
 /// and the rest, unique for each exact difference, so that rigid motion by a vector that is
 /// not a double is recognised too), and whether the vertex moves at all (the rounded
 /// difference of two finite doubles is zero only when they are equal).
-VertexBoxes sweep_of(const StepPositions& positions, double largest, double min_separation,
-                     unsigned threads) {
+void sweep(const StepPositions& positions, double largest, double min_separation, unsigned threads,
+           VertexBoxes& s) {
   const std::size_t n = positions.t0.size() / 3;
-  VertexBoxes s;
   s.box.resize(n);
   s.displacement.resize(n);
   s.displacement_tail.resize(n);
@@ -88,7 +87,6 @@ VertexBoxes sweep_of(const StepPositions& positions, double largest, double min_
       s.motion[v] = exact ? motion_digest(d, rest) : 0;
     }
   });
-  return s;
 }
 
 /// True when two primitives (lane i of leaf a, lane k of leaf b) move by one and the same
@@ -117,7 +115,8 @@ MeshBroadPhase::MeshBroadPhase(std::size_t vertex_count, std::span<const Triangl
     vertices_[v] = {static_cast<VertexIndex>(v)};
 }
 
-bool MeshBroadPhase::fit_trees(const VertexBoxes& sweep, unsigned threads) {
+bool MeshBroadPhase::fit_trees(unsigned threads) {
+  const VertexBoxes& sweep = sweep_;
   // One job per tree, the largest (edges) first: on two threads the edge tree takes as
   // long as the other two together.
   std::array<bool, 3> built{};
@@ -140,41 +139,64 @@ bool MeshBroadPhase::fit_trees(const VertexBoxes& sweep, unsigned threads) {
   return built[0] || built[1] || built[2];
 }
 
+MeshBroadPhase::PreparedStep MeshBroadPhase::prepare(const StepPositions& positions, double largest,
+                                                     unsigned threads, double min_separation) {
+  sweep(positions, largest, min_separation, threads, sweep_);
+  PreparedStep step;
+  step.trees_rebuilt = fit_trees(threads);
+  vertex_face_starts_ = split_pairs(vertex_face_walk(), kWalkPairs);
+  edge_edge_starts_ = split_pairs(edge_edge_walk(), kWalkPairs);
+  step.tasks = vertex_face_starts_.size() + edge_edge_starts_.size();
+  return step;
+}
+
+void MeshBroadPhase::walk(std::size_t task, WalkScratch& scratch,
+                          const std::function<void(const CandidateBatch&)>& decide) const {
+  auto& vertex_face = scratch.vertex_face;
+  auto& edge_edge = scratch.edge_edge;
+  vertex_face.clear();
+  edge_edge.clear();
+  const auto hand_over = [&] {
+    decide({vertex_face, edge_edge});
+    vertex_face.clear();
+    edge_edge.clear();
+  };
+  if (task < vertex_face_starts_.size()) {
+    overlapping_pairs(vertex_face_walk(), vertex_face_starts_[task], scratch.stack,
+                      [&](const Packet<1>& v, std::size_t i, const Packet<3>& f, std::size_t k) {
+                        if (rigid(v, i, f, k, sweep_)) return;
+                        vertex_face.push_back({v.id[i], f.id[k]});
+                        if (vertex_face.size() == kBatchPairs) hand_over();
+                      });
+  } else {
+    overlapping_pairs(
+        edge_edge_walk(), edge_edge_starts_[task - vertex_face_starts_.size()], scratch.stack,
+        [&](const Packet<2>& a, std::size_t i, const Packet<2>& b, std::size_t k) {
+          if (rigid(a, i, b, k, sweep_)) return;
+          edge_edge.push_back({std::min(a.id[i], b.id[k]), std::max(a.id[i], b.id[k])});
+          if (edge_edge.size() == kBatchPairs) hand_over();
+        });
+  }
+  if (!vertex_face.empty() || !edge_edge.empty()) hand_over();
+}
+
 MeshCandidates MeshBroadPhase::candidates(const StepPositions& positions, double largest,
                                           unsigned threads, double min_separation) {
-  MeshCandidates result;
-  const VertexBoxes sweep = sweep_of(positions, largest, min_separation, threads);
-  result.trees_rebuilt = fit_trees(sweep, threads);
-
-  // Both walks split into node pairs, vertex-face first; each pair's candidates in its
-  // own list, joined in order, so the order does not depend on the thread count.
-  const Walk<1, 3> vertex_face{vertex_tree_, face_tree_, sweep, boxes::SharedCorners::skip};
-  const Walk<2, 2> edge_edge{edge_tree_, edge_tree_, sweep, boxes::SharedCorners::skip};
-  const std::vector<NodePair> vertex_face_pairs = split_pairs(vertex_face, kWalkPairs);
-  const std::vector<NodePair> edge_edge_pairs = split_pairs(edge_edge, kWalkPairs);
-  struct Found {
-    std::vector<VertexFacePair> vertex_face;
-    std::vector<EdgeIndexPair> edge_edge;
-  };
-  std::vector<Found> found(vertex_face_pairs.size() + edge_edge_pairs.size());
-  std::vector<NodePair> stack;  // each worker's copy of the lambda has its own
-  parallel::for_each_block(found.size(), threads, [&, stack](std::size_t j) mutable {
-    Found& out = found[j];
-    if (j < vertex_face_pairs.size()) {
-      overlapping_pairs(vertex_face, vertex_face_pairs[j], stack,
-                        [&](const Packet<1>& v, std::size_t i, const Packet<3>& f, std::size_t k) {
-                          if (!rigid(v, i, f, k, sweep))
-                            out.vertex_face.push_back({v.id[i], f.id[k]});
-                        });
-      return;
-    }
-    overlapping_pairs(
-        edge_edge, edge_edge_pairs[j - vertex_face_pairs.size()], stack,
-        [&](const Packet<2>& a, std::size_t i, const Packet<2>& b, std::size_t k) {
-          if (rigid(a, i, b, k, sweep)) return;
-          out.edge_edge.push_back({std::min(a.id[i], b.id[k]), std::max(a.id[i], b.id[k])});
+  const PreparedStep step = prepare(positions, largest, threads, min_separation);
+  // Each task's pairs in its own list, joined in task order, so the order does not
+  // depend on the thread count.
+  std::vector<MeshCandidates> found(step.tasks);
+  parallel::for_each_block(
+      step.tasks, threads, [&, scratch = WalkScratch{}](std::size_t task) mutable {
+        MeshCandidates& out = found[task];
+        walk(task, scratch, [&](const CandidateBatch& batch) {
+          out.vertex_face.insert(out.vertex_face.end(), batch.vertex_face.begin(),
+                                 batch.vertex_face.end());
+          out.edge_edge.insert(out.edge_edge.end(), batch.edge_edge.begin(), batch.edge_edge.end());
         });
-  });
+      });
+  MeshCandidates result;
+  result.trees_rebuilt = step.trees_rebuilt;
   // Joined in parallel: each list copied to its offset.
   std::vector<std::array<std::size_t, 2>> offset(found.size() + 1);
   for (std::size_t j = 0; j < found.size(); ++j)

@@ -16,19 +16,22 @@ namespace exactgeo::ccd {
 
 namespace {
 
-/// Narrow-phase answers of one block of candidates.
-struct BlockCollisions {
+/// The narrow phase's answers for one task of the broad phase's walk, and its times.
+struct TaskCollisions {
   std::vector<VertexFacePair> vertex_face;
   std::vector<internal::EdgeIndexPair> edge_edge;
-  /// With a time of impact asked for: each colliding pair's bracket, vertex-face first.
-  std::vector<TimeInterval> brackets;
+  /// With a time of impact asked for: each colliding pair's bracket, in the pairs' order.
+  std::vector<TimeInterval> vertex_face_brackets;
+  std::vector<TimeInterval> edge_edge_brackets;
+  std::size_t vertex_face_candidates = 0;
+  std::size_t edge_edge_candidates = 0;
+  double narrow_seconds = 0.0;  ///< deciding the task's batches
+  double seconds = 0.0;         ///< the whole task: walking and deciding
 };
 
 /// The first round of the mesh's time of impact brackets every colliding pair to this
 /// width; only the pairs that can still hold the earliest root are refined further.
 constexpr double kCoarseWidth = 1.0 / 64;
-
-constexpr std::size_t kNarrowBlock = 256;  // candidates per narrow-phase job
 
 void check_positions(std::span<const double> positions, std::size_t vertex_count,
                      const char* name) {
@@ -213,6 +216,28 @@ void check_step(const StepPositions& positions, const MeshCcdOptions& options,
   }
 }
 
+/// The narrow phase on one batch of candidates: each colliding pair into `out`, with its
+/// bracket when a time of impact is asked for (a method without one brackets the step).
+void decide(const internal::CandidateBatch& batch, const StepPositions& positions,
+            std::span<const Triangle> faces, std::span<const Edge> edges, const Options& options,
+            bool brackets, TaskCollisions& out) {
+  out.vertex_face_candidates += batch.vertex_face.size();
+  out.edge_edge_candidates += batch.edge_edge.size();
+  for (const VertexFacePair pair : batch.vertex_face) {
+    const Result r = vertex_face_ccd(vertex_face_query(positions, faces, pair), options);
+    if (!r.collision) continue;
+    out.vertex_face.push_back(pair);
+    if (brackets) out.vertex_face_brackets.push_back(r.time_of_impact.value_or(TimeInterval{}));
+  }
+  for (const internal::EdgeIndexPair pair : batch.edge_edge) {
+    const Result r =
+        edge_edge_ccd(edge_edge_query(positions, {edges[pair.a], edges[pair.b]}), options);
+    if (!r.collision) continue;
+    out.edge_edge.push_back(pair);
+    if (brackets) out.edge_edge_brackets.push_back(r.time_of_impact.value_or(TimeInterval{}));
+  }
+}
+
 }  // namespace
 
 MeshCcdCandidates MeshCcd::candidates(const StepPositions& positions,
@@ -244,56 +269,56 @@ MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions
   const ScaledStep scaled_step = at_unit_magnitude(positions, options.min_separation, unit);
   const StepPositions& scaled = scaled_step.positions;
 
-  const internal::MeshCandidates candidates = s.broad_phase.candidates(
+  const internal::MeshBroadPhase::PreparedStep prepared = s.broad_phase.prepare(
       scaled, scaled_step.largest, options.threads, scaled_step.min_separation);
-  result.trees_rebuilt = candidates.trees_rebuilt;
-  result.vertex_face_candidates = candidates.vertex_face.size();
-  result.edge_edge_candidates = candidates.edge_edge.size();
-  result.broad_phase_seconds = seconds_since(broad_start);
+  result.trees_rebuilt = prepared.trees_rebuilt;
+  const double prepare_seconds = seconds_since(broad_start);
 
-  // Narrow phase: blocks of candidates, vertex-face first, then edge-edge.
-  const auto narrow_start = std::chrono::steady_clock::now();
+  // Each task of the walk decides its candidates a batch at a time, where they are found:
+  // the step never holds its candidate list (internal/broad_phase.hpp).
   const std::optional<double> width = options.time_of_impact_width;
   Options pair_options{options.method,
                        width ? std::optional(std::max(*width, kCoarseWidth)) : std::nullopt};
   pair_options.min_separation = scaled_step.min_separation;
-  const std::size_t vf_blocks = (candidates.vertex_face.size() + kNarrowBlock - 1) / kNarrowBlock;
-  const std::size_t ee_blocks = (candidates.edge_edge.size() + kNarrowBlock - 1) / kNarrowBlock;
-  std::vector<BlockCollisions> collisions(vf_blocks + ee_blocks);
-  parallel::for_each_block(collisions.size(), options.threads, [&](std::size_t b) {
-    BlockCollisions& out = collisions[b];
-    // One bracket per colliding pair, so brackets and pairs stay aligned; a method
-    // without a time of impact brackets the whole step.
-    const auto note = [&](const Result& r) {
-      if (r.collision && width) out.brackets.push_back(r.time_of_impact.value_or(TimeInterval{}));
-      return r.collision;
-    };
-    if (b < vf_blocks) {
-      const std::size_t end = std::min(candidates.vertex_face.size(), (b + 1) * kNarrowBlock);
-      for (std::size_t i = b * kNarrowBlock; i < end; ++i) {
-        const VertexFacePair pair = candidates.vertex_face[i];
-        if (note(vertex_face_ccd(vertex_face_query(scaled, s.faces, pair), pair_options)))
-          out.vertex_face.push_back(pair);
-      }
-      return;
-    }
-    const std::size_t first = (b - vf_blocks) * kNarrowBlock;
-    const std::size_t end = std::min(candidates.edge_edge.size(), first + kNarrowBlock);
-    for (std::size_t i = first; i < end; ++i) {
-      const internal::EdgeIndexPair pair = candidates.edge_edge[i];
-      const EdgeEdgePair edges{s.edges[pair.a], s.edges[pair.b]};
-      if (note(edge_edge_ccd(edge_edge_query(scaled, edges), pair_options)))
-        out.edge_edge.push_back(pair);
-    }
-  });
-  // Blocks of vertex-face candidates come first, so this is the order of the pairs in
-  // result (vertex-face, then edge-edge), which is also the order of the brackets.
+  std::vector<TaskCollisions> collisions(prepared.tasks);
+  const auto walk_start = std::chrono::steady_clock::now();
+  parallel::for_each_block(
+      prepared.tasks, options.threads,
+      [&, scratch = internal::WalkScratch{}](std::size_t task) mutable {
+        const auto task_start = std::chrono::steady_clock::now();
+        TaskCollisions& out = collisions[task];
+        s.broad_phase.walk(task, scratch, [&](const internal::CandidateBatch& batch) {
+          const auto batch_start = std::chrono::steady_clock::now();
+          decide(batch, scaled, s.faces, s.edges, pair_options, width.has_value(), out);
+          out.narrow_seconds += seconds_since(batch_start);
+        });
+        out.seconds = seconds_since(task_start);
+      });
+  // Walking and deciding ran interleaved: their wall time is split in the ratio of their
+  // times summed over the tasks.
+  const double walk_seconds = seconds_since(walk_start);
+  double narrow_sum = 0.0, task_sum = 0.0;
+  for (const TaskCollisions& c : collisions) {
+    result.vertex_face_candidates += c.vertex_face_candidates;
+    result.edge_edge_candidates += c.edge_edge_candidates;
+    narrow_sum += c.narrow_seconds;
+    task_sum += c.seconds;
+  }
+  const double narrow_share = task_sum > 0.0 ? std::min(1.0, narrow_sum / task_sum) : 0.0;
+  result.broad_phase_seconds = prepare_seconds + (1.0 - narrow_share) * walk_seconds;
+
+  const auto gather_start = std::chrono::steady_clock::now();
+  // Tasks in order, vertex-face pairs before edge-edge ones, as result holds them; the
+  // brackets in the same order.
   std::vector<TimeInterval> brackets;
-  for (const BlockCollisions& c : collisions) {
+  for (const TaskCollisions& c : collisions) {
     result.vertex_face.insert(result.vertex_face.end(), c.vertex_face.begin(), c.vertex_face.end());
+    brackets.insert(brackets.end(), c.vertex_face_brackets.begin(), c.vertex_face_brackets.end());
+  }
+  for (const TaskCollisions& c : collisions) {
     for (const internal::EdgeIndexPair& pair : c.edge_edge)
       result.edge_edge.push_back({s.edges[pair.a], s.edges[pair.b]});
-    brackets.insert(brackets.end(), c.brackets.begin(), c.brackets.end());
+    brackets.insert(brackets.end(), c.edge_edge_brackets.begin(), c.edge_edge_brackets.end());
   }
   if (!brackets.empty()) {
     result.time_of_impact = refine_earliest(result, brackets, scaled_step.min_separation, scaled,
@@ -301,7 +326,7 @@ MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions
   }
   std::sort(result.vertex_face.begin(), result.vertex_face.end());
   std::sort(result.edge_edge.begin(), result.edge_edge.end());
-  result.narrow_phase_seconds = seconds_since(narrow_start);
+  result.narrow_phase_seconds = narrow_share * walk_seconds + seconds_since(gather_start);
   return result;
 }
 

@@ -18,7 +18,10 @@
 //                 vector, included), so their distance is constant over the step and a
 //                 contact between them is not a collision of this step.
 //   narrow phase  vertex_face_ccd / edge_edge_ccd (ccd.hpp) on every candidate, in
-//                 parallel. The output is sorted, so it is the same for every thread count.
+//                 batches of a fixed size decided where the tree walk finds them, on all
+//                 threads: a step's memory is the mesh, its trees and a fixed budget per
+//                 thread, however many candidates it has. The output is sorted, so it is
+//                 the same for every thread count.
 //
 // The broad phase never drops a pair that the narrow phase would report (tests compare
 // with exhaustive pairwise CCD on every non-adjacent pair).
@@ -87,6 +90,9 @@ struct MeshCcdResult {
   /// True when the broad phase built a tree in this step (the first step, or one after
   /// the mesh moved so far that refitting the trees would have made them slow).
   bool trees_rebuilt = false;
+  /// Wall times. The tree walk and the narrow phase run interleaved (each batch of
+  /// candidates is decided where it is found); their shared wall time is split between
+  /// the two in the ratio of their times summed over the threads.
   double broad_phase_seconds = 0.0;
   double narrow_phase_seconds = 0.0;
 
