@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <set>
 #include <utility>
 #include <vector>
@@ -135,6 +136,39 @@ TEST(BoxTree, TwoTreesAndARefitReportWhatBruteForceDoes) {
     const Walk<1, 3> fresh{fresh_points, fresh_triangles, v, SharedCorners::skip};
     EXPECT_EQ(walked(fresh, 16), expected) << "round " << round;
     EXPECT_GT(expected.size(), 50u);
+  }
+}
+
+/// The build sorts along a Morton curve of the box centres on a grid over their bounds
+/// (box_tree.hpp); whatever that grid makes of the centres, the tree must hold every pair.
+TEST(BoxTree, CentresTheGridCannotTellApartStillGiveEveryPair) {
+  auto rng = testing::seeded_engine("boxes.box_tree.grid");
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  for (int layout = 0; layout < 3; ++layout) {
+    const std::size_t vertices = 500;
+    VertexBoxes v = random_vertices(rng, vertices, 1.0);
+    if (layout == 0) {  // half the vertices on one point: one grid cell for their primitives
+      for (std::size_t i = 0; i < vertices / 2; ++i)
+        v.box[i] = v.box[0];
+    } else if (layout == 1) {  // one far vertex: the others share a few cells on every axis
+      v.box[7] = point_box({1e30, -1e30, 1e30}, Scale(1e30));
+    } else {  // boxes reaching infinity: centres that are not finite, spreads that are not
+      v.box[3].hi = {kInf, kInf, kInf};
+      v.box[5].lo = {-kInf, -kInf, -kInf};
+      v.box[5].hi = {kInf, 0.0f, kInf};
+    }
+    const auto triangles = random_primitives<3>(rng, 700, vertices);
+    const BoxTree<3> tree(triangles, v);
+    Pairs expected;
+    for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+      for (std::uint32_t j = i + 1; j < triangles.size(); ++j) {
+        if (overlap(box_of(triangles[i], v), box_of(triangles[j], v))) expected.insert({i, j});
+      }
+    }
+    const Walk<3, 3> walk{tree, tree, v, SharedCorners::keep};
+    EXPECT_EQ(walked(walk, 1), expected) << "layout " << layout;
+    EXPECT_EQ(walked(walk, 64), expected) << "layout " << layout << ", split walk";
+    EXPECT_GT(expected.size(), 100u) << "layout " << layout;
   }
 }
 

@@ -60,8 +60,7 @@ TEST(BoxPacket, OverlapMaskIsTheScalarTestLaneByLane) {
     Packet<2> p{};
     const std::size_t used = static_cast<std::size_t>(testing::uniform_int(rng, 0, kPacketLanes));
     for (std::size_t j = 0; j < kPacketLanes; ++j)
-      p.set_box(j,
-                j < used ? random_box(rng) : FloatBox{{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}});
+      p.set_box(j, j < used ? random_box(rng) : kNoBox);
     const FloatBox a = testing::uniform_int(rng, 0, 9) == 0 ? p.box(0) : random_box(rng);
     const unsigned mask = overlap_mask(a, p);
     for (std::size_t j = 0; j < kPacketLanes; ++j) {

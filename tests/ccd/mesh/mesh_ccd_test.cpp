@@ -1298,6 +1298,38 @@ std::array<Point3, 8> points_of(const EdgeEdgeQuery& q) {
   return {q.ea0_t0, q.ea1_t0, q.eb0_t0, q.eb1_t0, q.ea0_t1, q.ea1_t1, q.eb0_t1, q.eb1_t1};
 }
 
+/// A separation so large that the boxes grown by it reach past the float range (to -inf
+/// and +inf): every pair that is not adjacent and not rigid comes within it, so the pairs
+/// are known by counting, and the trees' empty lanes must still overlap nothing.
+TEST(MeshCcdApi, ASeparationPastTheFloatRangeReportsEveryPairOnce) {
+  Rng rng = testing::seeded_engine("mesh-ccd-huge-separation");
+  const MovingMesh m = triangle_soup(rng, 13, 1.0, 0.3, 0.5);  // 39 vertices: odd leaves
+  const auto stands = [&](VertexIndex v) { return ::exactgeo::ccd::stands(m.frames(), v); };
+  std::size_t vertex_face = 0, edge_edge = 0;
+  for (VertexIndex v = 0; v < m.vertex_count(); ++v) {
+    for (const Triangle& f : m.faces) {
+      if (is_corner(v, f)) continue;
+      vertex_face += stands(v) && stands(f[0]) && stands(f[1]) && stands(f[2]) ? 0 : 1;
+    }
+  }
+  const std::vector<Edge> edges = unique_edges(m.faces);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const Edge &a = edges[i], &b = edges[j];
+      if (share_a_vertex(a, b)) continue;
+      edge_edge += stands(a[0]) && stands(a[1]) && stands(b[0]) && stands(b[1]) ? 0 : 1;
+    }
+  }
+  for (const double delta : {1e39, 1e300}) {
+    MeshCcdOptions options;
+    options.min_separation = delta;
+    const MeshCcdResult r = find_collisions(m.faces, m.frames(), options);
+    EXPECT_EQ(r.vertex_face.size(), vertex_face) << delta;
+    EXPECT_EQ(r.edge_edge.size(), edge_edge) << delta;
+    EXPECT_EQ(r.candidates(), vertex_face + edge_edge) << delta;
+  }
+}
+
 TEST(MeshCcdApi, PairQueriesAreTheOraclesQueries) {
   Rng rng = testing::seeded_engine("mesh-ccd-queries");
   const MovingMesh m = crumpling_sheet(rng, 5);

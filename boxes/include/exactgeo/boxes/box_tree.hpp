@@ -6,10 +6,16 @@
 // swept boxes (ccd/src/mesh/broad_phase.cpp), self-intersection one over the faces at
 // rest (mesh/src/self_intersection.cpp).
 //
-// Build: top down, the primitives of a node are split at the median of their box centres
-// along the axis where the centres spread the most, down to leaves of at most eight
-// primitives. Nodes are stored depth first: a node's left child follows it, and it keeps
-// the index of its right child. A leaf's primitives are one Packet (packet.hpp).
+// Build: the primitives are sorted along a Morton (Z-order) curve through their box
+// centres, quantized to 2^10 cells per axis over the centres' bounds; then, top down, a
+// node's run of the curve is split where its codes' highest differing bit changes, which
+// is a plane halving the node's cell of the grid (an octree's split, one axis at a time,
+// and axes along which the run does not spread are never split). Runs of at most two
+// leaves, and runs of one cell, are halved instead, down to leaves of at most eight
+// primitives. Sorting takes three passes of a radix sort and the splits a binary search
+// each: no comparison sort, no pass over a node's primitives per level. Nodes are stored
+// depth first: a node's left child follows it, and it keeps the index of its right child.
+// A leaf's primitives are one Packet (packet.hpp).
 //
 // Refit: with the connectivity fixed, the same tree serves every new set of vertex boxes.
 // Each leaf box is made anew from its corners' boxes, then each node box is the union of
@@ -26,6 +32,8 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -95,10 +103,9 @@ class BoxTree {
   /// The tree over `primitives` (primitive i has corners primitives[i]) on this step's boxes.
   BoxTree(std::span<const Corners> primitives, const VertexBoxes& vertices) {
     if (primitives.empty()) return;
-    std::vector<Built> order(primitives.size());
-    for (std::size_t i = 0; i < primitives.size(); ++i)
-      order[i] = {static_cast<std::uint32_t>(i), leaf_box(primitives[i], vertices)};
-    nodes_.reserve(primitives.size());  // 2 n / 4 at most: leaves hold 4 to 8 primitives
+    const std::vector<std::uint64_t> order = morton_order(primitives, vertices);
+    nodes_.reserve(2 * (primitives.size() / kPacketLanes + 1));
+    leaves_.reserve(primitives.size() / (kPacketLanes / 2) + 1);
     build(order, primitives, 0, order.size());
     refit(vertices);
     built_looseness_ = looseness_;
@@ -122,11 +129,6 @@ class BoxTree {
   const Leaf& leaf(const Node& n) const noexcept { return leaves_[n.first]; }
 
  private:
-  struct Built {
-    std::uint32_t id;
-    FloatBox box;
-  };
-
   static FloatBox leaf_box(const Corners& corners, const VertexBoxes& vertices) noexcept {
     FloatBox box = vertices.box[corners[0]];
     for (std::size_t c = 1; c < N; ++c)
@@ -134,14 +136,72 @@ class BoxTree {
     return box;
   }
 
-  /// A box's centre on one axis (halves first: finite even for boxes reaching infinity, so
-  /// the median split always sees a strict weak order).
-  static float centre(const FloatBox& b, int axis) noexcept {
-    return b.lo[axis] / 2 + b.hi[axis] / 2;
+  /// Bits per axis of the Morton codes: 2^10 cells per axis, 30 bits in all.
+  static constexpr int kMortonBits = 10;
+
+  /// x's low 10 bits spread out to every third bit (bit i to bit 3 i).
+  static std::uint32_t spread(std::uint32_t x) noexcept {
+    x = (x | (x << 16)) & 0x030000FFu;
+    x = (x | (x << 8)) & 0x0300F00Fu;
+    x = (x | (x << 4)) & 0x030C30C3u;
+    x = (x | (x << 2)) & 0x09249249u;
+    return x;
   }
 
-  /// Makes order[begin, end) a subtree and returns its root's index.
-  std::uint32_t build(std::vector<Built>& order, std::span<const Corners> primitives,
+  /// Each primitive as (Morton code << 32 | index), sorted: by code, ties by index. A
+  /// centre that is not finite, or an axis whose centres' spread is not, gives cell 0 (a
+  /// worse tree, never a wrong one: any order of the primitives makes a correct tree).
+  static std::vector<std::uint64_t> morton_order(std::span<const Corners> primitives,
+                                                 const VertexBoxes& vertices) {
+    const std::size_t n = primitives.size();
+    std::vector<std::array<float, 3>> centre(n);
+    std::array<float, 3> lo{}, hi{};
+    for (std::size_t i = 0; i < n; ++i) {
+      const FloatBox b = leaf_box(primitives[i], vertices);
+      for (int k = 0; k < 3; ++k) {
+        centre[i][k] = b.lo[k] / 2 + b.hi[k] / 2;
+        lo[k] = i == 0 ? centre[i][k] : std::min(lo[k], centre[i][k]);
+        hi[k] = i == 0 ? centre[i][k] : std::max(hi[k], centre[i][k]);
+      }
+    }
+    constexpr float kCells = 1 << kMortonBits;
+    std::array<float, 3> cells_per_unit{};
+    for (int k = 0; k < 3; ++k) {
+      const float spread_k = hi[k] - lo[k];
+      cells_per_unit[k] = spread_k > 0 && spread_k < INFINITY ? kCells / spread_k : 0.0f;
+    }
+    std::vector<std::uint64_t> keys(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint32_t code = 0;
+      for (int k = 0; k < 3; ++k) {
+        const float cell = (centre[i][k] - lo[k]) * cells_per_unit[k];
+        const float clamped = cell >= 0 ? std::min(cell, kCells - 1) : 0.0f;  // NaN: cell 0
+        code |= spread(static_cast<std::uint32_t>(clamped)) << k;
+      }
+      keys[i] = std::uint64_t{code} << 32 | i;
+    }
+    radix_sort_codes(keys);
+    return keys;
+  }
+
+  /// Sorts keys by their high 32 bits (codes of 3 kMortonBits bits), stably: keys made in
+  /// index order stay in index order among equal codes. Three passes of ten bits.
+  static void radix_sort_codes(std::vector<std::uint64_t>& keys) {
+    std::vector<std::uint64_t> other(keys.size());
+    for (int shift = 32; shift < 32 + 3 * kMortonBits; shift += kMortonBits) {
+      std::array<std::size_t, (1 << kMortonBits) + 1> start{};
+      for (const std::uint64_t key : keys)
+        ++start[(key >> shift & ((1u << kMortonBits) - 1)) + 1];
+      for (std::size_t d = 1; d < start.size(); ++d)
+        start[d] += start[d - 1];
+      for (const std::uint64_t key : keys)
+        other[start[key >> shift & ((1u << kMortonBits) - 1)]++] = key;
+      keys.swap(other);
+    }
+  }
+
+  /// Makes order[begin, end) (Morton order) a subtree and returns its root's index.
+  std::uint32_t build(const std::vector<std::uint64_t>& order, std::span<const Corners> primitives,
                       std::size_t begin, std::size_t end) {
     const auto index = static_cast<std::uint32_t>(nodes_.size());
     nodes_.push_back({});
@@ -151,43 +211,42 @@ class BoxTree {
       Leaf& leaf = leaves_.emplace_back();
       for (std::size_t j = 0; j < kPacketLanes; ++j) {
         const bool used = begin + j < end;
-        leaf.id[j] = used ? order[begin + j].id : kNoVertex;
+        leaf.id[j] = used ? static_cast<std::uint32_t>(order[begin + j]) : kNoVertex;
         for (std::size_t k = 0; k < N; ++k)
           leaf.corner[k][j] = used ? primitives[leaf.id[j]][k] : kNoVertex;
       }
       return index;
     }
-    std::array<float, 3> lo{}, hi{};
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = hi[k] = centre(order[begin].box, k);
-      for (std::size_t i = begin + 1; i < end; ++i) {
-        lo[k] = std::min(lo[k], centre(order[i].box, k));
-        hi[k] = std::max(hi[k], centre(order[i].box, k));
-      }
-    }
-    int axis = 0;
-    for (int k = 1; k < 3; ++k) {
-      if (hi[k] - lo[k] > hi[axis] - lo[axis]) axis = k;
-    }
-    const std::size_t middle = begin + (end - begin) / 2;
-    const auto by_centre = [axis](const Built& a, const Built& b) {
-      const float ca = centre(a.box, axis), cb = centre(b.box, axis);
-      return ca != cb ? ca < cb : a.id < b.id;
-    };
-    std::nth_element(order.begin() + static_cast<std::ptrdiff_t>(begin),
-                     order.begin() + static_cast<std::ptrdiff_t>(middle),
-                     order.begin() + static_cast<std::ptrdiff_t>(end), by_centre);
+    const std::size_t middle = split(order, begin, end);
     build(order, primitives, begin, middle);  // the left child is index + 1
     nodes_[index].first = build(order, primitives, middle, end);
     return index;
   }
 
+  /// Where to split order[begin, end): the first key whose code has the highest bit in
+  /// which the run's codes differ; the middle for a run of one code or of two leaves.
+  static std::size_t split(const std::vector<std::uint64_t>& order, std::size_t begin,
+                           std::size_t end) noexcept {
+    const std::size_t middle = begin + (end - begin) / 2;
+    const auto code = [&](std::size_t i) { return static_cast<std::uint32_t>(order[i] >> 32); };
+    const std::uint32_t differ = code(begin) ^ code(end - 1);
+    if (differ == 0 || end - begin <= 2 * kPacketLanes) return middle;
+    const std::uint32_t bit = std::uint32_t{1} << (31 - std::countl_zero(differ));
+    // The run shares every bit above `bit`; in Morton order its keys without `bit` come first.
+    const auto first = order.begin() + static_cast<std::ptrdiff_t>(begin);
+    const auto last = order.begin() + static_cast<std::ptrdiff_t>(end);
+    return static_cast<std::size_t>(
+        std::partition_point(
+            first, last,
+            [&](std::uint64_t key) { return (static_cast<std::uint32_t>(key >> 32) & bit) == 0; }) -
+        order.begin());
+  }
+
   static void fit_leaf(Leaf& leaf, const VertexBoxes& vertices) noexcept {
-    constexpr float kInf = std::numeric_limits<float>::infinity();
     leaf.moving = 0;
     for (std::size_t j = 0; j < kPacketLanes; ++j) {
       if (leaf.id[j] == kNoVertex) {
-        leaf.set_box(j, {{kInf, kInf, kInf}, {-kInf, -kInf, -kInf}});
+        leaf.set_box(j, kNoBox);
         continue;
       }
       const Corners corners = leaf.corners(j);

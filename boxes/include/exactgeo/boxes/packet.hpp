@@ -27,7 +27,13 @@ namespace exactgeo::boxes {
 inline constexpr std::size_t kPacketLanes = 8;
 
 // A lane that holds no primitive has corners kNoVertex (predicates/point.hpp) and the
-// empty box (lo = +inf, hi = -inf), which overlaps nothing.
+// box kNoBox, which overlaps nothing: its bounds are NaN, and every comparison with NaN is
+// false. (An empty box, lo = +inf and hi = -inf, would overlap a box reaching from -inf
+// to +inf, which a huge separation margin can make.)
+
+/// The box of a lane without a primitive.
+inline constexpr FloatBox kNoBox{{__builtin_nanf(""), __builtin_nanf(""), __builtin_nanf("")},
+                                 {__builtin_nanf(""), __builtin_nanf(""), __builtin_nanf("")}};
 
 /// Up to kPacketLanes primitives with N corners each.
 template <std::size_t N>
