@@ -22,7 +22,6 @@
 #include <cstdlib>
 #include <iostream>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -31,83 +30,14 @@
 #include "exactgeo/ccd/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
-#include "exactgeo/mesh/load.hpp"
+#include "step_frames.hpp"
 #include "sweep_and_prune.hpp"
 
 namespace {
 
 using namespace exactgeo;
-using ccd::Triangle;
 
-struct Frames {
-  std::vector<double> t0, t1;
-  std::vector<Triangle> faces;
-};
-
-std::vector<double> flat(const mesh::Mesh& mesh) {
-  std::vector<double> xyz;
-  xyz.reserve(3 * mesh.vertices.size());
-  for (const Point3& p : mesh.vertices)
-    xyz.insert(xyz.end(), p.begin(), p.end());
-  return xyz;
-}
-
-std::vector<Triangle> triangles(const mesh::Mesh& mesh) {
-  std::vector<Triangle> faces;
-  for (const mesh::Face& f : mesh.faces) {
-    faces.push_back({f.corners[0], f.corners[1], f.corners[2]});
-    if (!f.is_triangle()) faces.push_back({f.corners[0], f.corners[2], f.corners[3]});
-  }
-  return faces;
-}
-
-double mean_edge_length(const Frames& frames) {
-  double sum = 0.0;
-  for (const Triangle& f : frames.faces) {
-    for (int i = 0; i < 3; ++i) {
-      double d2 = 0.0;
-      for (int k = 0; k < 3; ++k) {
-        const double d = frames.t0[3 * f[i] + k] - frames.t0[3 * f[(i + 1) % 3] + k];
-        d2 += d * d;
-      }
-      sum += std::sqrt(d2);
-    }
-  }
-  return sum / (3.0 * static_cast<double>(frames.faces.size()));
-}
-
-void random_motion(Frames& frames, double amplitude, double standing, std::uint64_t seed) {
-  const std::size_t n = frames.t0.size() / 3;
-  int axis = 0;
-  std::array<double, 3> extent{};
-  for (int k = 0; k < 3; ++k) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (std::size_t v = 0; v < n; ++v) {
-      lo = std::min(lo, frames.t0[3 * v + k]);
-      hi = std::max(hi, frames.t0[3 * v + k]);
-    }
-    extent[k] = hi - lo;
-    if (extent[k] > extent[axis]) axis = k;
-  }
-  std::vector<double> heights(n);
-  for (std::size_t v = 0; v < n; ++v)
-    heights[v] = frames.t0[3 * v + axis];
-  std::vector<double> sorted = heights;
-  std::sort(sorted.begin(), sorted.end());
-  const double cut =
-      standing > 0
-          ? sorted[std::min(n - 1, static_cast<std::size_t>(standing * static_cast<double>(n)))]
-          : -INFINITY;
-  std::mt19937_64 rng(seed);
-  const double step = amplitude * mean_edge_length(frames);
-  std::uniform_real_distribution<double> d(-step, step);
-  frames.t1 = frames.t0;
-  for (std::size_t v = 0; v < n; ++v) {
-    if (heights[v] < cut) continue;
-    for (int k = 0; k < 3; ++k)
-      frames.t1[3 * v + k] += d(rng);
-  }
-}
+using ccd::bench::Frames;
 
 double seconds(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -275,16 +205,9 @@ int main(int argc, char** argv) {
   }
   if (paths.empty() || paths.size() > 2) usage("one or two mesh files expected");
 
-  Frames frames;
-  const auto first = mesh::load_mesh(paths[0]);
-  frames.t0 = flat(first.mesh);
-  frames.faces = triangles(first.mesh);
-  if (paths.size() == 2) {
-    frames.t1 = flat(mesh::load_mesh(paths[1]).mesh);
-    if (frames.t1.size() != frames.t0.size()) usage("frames differ in vertex count");
-  } else {
-    random_motion(frames, motion, standing, seed);
-  }
+  const std::optional<Frames> loaded = ccd::bench::load_frames(paths, motion, standing, seed);
+  if (!loaded) usage("frames differ in vertex count");
+  const Frames& frames = *loaded;
 
   const ccd::StepPositions view{frames.t0, frames.t1};
   const ccd::MeshCcdOptions options{method, std::nullopt, threads};
@@ -301,11 +224,8 @@ int main(int argc, char** argv) {
     }
   }
   // The following step: from FRAME1 on by a new random motion, or the same frames again.
-  Frames following = frames;
-  if (paths.size() == 1) {
-    following.t0 = frames.t1;
-    random_motion(following, motion, standing, seed + 1);
-  }
+  const Frames following =
+      paths.size() == 1 ? ccd::bench::moved_on(frames, motion, standing, seed + 1) : frames;
   const BroadPhaseComparison broad =
       compare_broad_phases(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), view,
                            ccd::StepPositions{following.t0, following.t1}, threads, repeat);

@@ -1,0 +1,45 @@
+#pragma once
+
+// The frames of mesh-level CCD steps for the benchmarks (ccd_mesh_bench, broad_phase_peers):
+// a mesh file whose vertices move by a seeded uniform random motion, or two frame files.
+// Quads are split into two triangles.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/mesh/mesh.hpp"
+
+namespace exactgeo::ccd::bench {
+
+/// One step: positions at t0 and t1 (3 doubles per vertex) and the triangles.
+struct Frames {
+  std::vector<double> t0, t1;
+  std::vector<Triangle> faces;
+};
+
+/// x, y, z of vertex 0, then of vertex 1, ...
+std::vector<double> flat(const mesh::Mesh& mesh);
+
+/// The faces as triangles: a quad (c0, c1, c2, c3) gives (c0, c1, c2) and (c0, c2, c3).
+std::vector<Triangle> triangles(const mesh::Mesh& mesh);
+
+/// The mean length of the triangles' edges at t0 (shared edges counted once per triangle).
+double mean_edge_length(const Frames& frames);
+
+/// frames.t1 = frames.t0 moved by `amplitude` mean edge lengths at most in each coordinate
+/// (uniform, seeded); the fraction `standing` of vertices lowest on the widest axis stands.
+void random_motion(Frames& frames, double amplitude, double standing, std::uint64_t seed);
+
+/// The first step: FRAME0 moved by random_motion, or FRAME0 to FRAME1 when two paths are
+/// given (then nullopt when their vertex counts differ). Loading errors are thrown as
+/// mesh::load_mesh throws them.
+std::optional<Frames> load_frames(const std::vector<std::string>& paths, double motion,
+                                  double standing, std::uint64_t seed);
+
+/// A following step: from step.t1 on by a new random motion with `seed`.
+Frames moved_on(const Frames& step, double motion, double standing, std::uint64_t seed);
+
+}  // namespace exactgeo::ccd::bench
