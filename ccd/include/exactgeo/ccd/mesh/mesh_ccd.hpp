@@ -10,7 +10,7 @@
 //   broad phase   swept boxes (the box of a primitive's corners at t0 and t1 contains the
 //                 primitive at every time in between, because each corner moves on a
 //                 segment and a box is convex), rounded outward to float, in one box tree
-//                 per kind of primitive (internal/box_tree.hpp), built on the first step
+//                 per kind of primitive (boxes/box_tree.hpp), built on the first step
 //                 and refitted on later ones; the vertex tree is walked against the face
 //                 tree and the edge tree against itself (docs/ccd.md says why). Pairs
 //                 sharing a vertex are skipped, and so are rigid pairs: all four corners
