@@ -93,8 +93,8 @@ TEST(DenseSteps, CandidatesAreTheSameAtEveryMagnitude) {
     EXPECT_LE(scaled.peak_bytes, 2 * at_one.peak_bytes) << "2^" << exponent;
 #endif
   }
-  // Last, as its list is the memory the steps above never hold. Every candidate handed to the
-  // narrow phase once: the count is that of the collected list.
+  // Every candidate is handed to the narrow phase once: the counts are those of the
+  // collected list. Last, as that list is the memory the steps above never hold.
   const testing::TurnedStep step = testing::turned_step(spot.positions, 20.0);
   MeshCcd ccd(spot.positions.size() / 3, spot.faces);
   const MeshCcdCandidates listed = ccd.candidates({step.t0, step.t1});
