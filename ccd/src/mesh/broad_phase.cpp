@@ -13,10 +13,8 @@
 namespace exactgeo::ccd::internal {
 
 using boxes::BoxTree;
-using boxes::NodePair;
 using boxes::Packet;
 using boxes::VertexBoxes;
-using boxes::Walk;
 
 namespace {
 
@@ -42,10 +40,11 @@ std::uint32_t motion_digest(const Vector3& head, const Vector3& tail) noexcept {
   return static_cast<std::uint32_t>(h >> 32) | 1u;
 }
 
-/// Into s: each vertex's swept box and exact displacement p_t1 - p_t0 (TwoDiff: its rounded value
-/// and the rest, unique for each exact difference, so that rigid motion by a vector that is
-/// not a double is recognised too), and whether the vertex moves at all (the rounded
-/// difference of two finite doubles is zero only when they are equal).
+/// Fills s with each vertex's swept box and exact displacement p_t1 - p_t0 (TwoDiff: its
+/// rounded value and the rest, unique for each exact difference, so that rigid motion by a
+/// vector that is not a double is recognised too), and whether the vertex moves at all
+/// (the rounded difference of two finite doubles is zero only when they are equal); s keeps
+/// its capacity from step to step.
 void sweep(const StepPositions& positions, double largest, double min_separation, unsigned threads,
            VertexBoxes& s) {
   const std::size_t n = positions.t0.size() / 3;
