@@ -24,10 +24,10 @@ constexpr std::size_t kVertexBlock = 1 << 14;  // vertices per job when making t
 /// the work evenly, few enough that opening them costs nothing next to the walk.
 constexpr std::size_t kWalkPairs = 256;
 
-/// A refitted tree is rebuilt once looseness() exceeds this factor times its value when
-/// the tree was built. A refitted tree is never wrong, only slower; this factor only
-/// trades the cost of a build (a few refits' worth) against a slower walk.
-constexpr double kRebuildLooseness = 1.5;
+/// A refitted tree is rebuilt once its centre_spread() (box_tree.hpp) exceeds this factor
+/// times its value when the tree was built. A refitted tree is never wrong, only slower;
+/// this factor only trades the cost of a build (about three refits) against a slower walk.
+constexpr double kRebuildSpread = 1.5;
 
 /// A digest of an exact displacement, head + tail: equal vectors give equal digests (-0
 /// and +0 are made one first), never 0.
@@ -123,7 +123,7 @@ bool MeshBroadPhase::fit_trees(unsigned threads) {
                                       std::span<const std::array<VertexIndex, N>> primitives) {
     if (built_) {
       tree.refit(sweep);
-      if (tree.looseness() <= kRebuildLooseness * tree.built_looseness()) return false;
+      if (tree.centre_spread() <= kRebuildSpread * tree.built_centre_spread()) return false;
     }
     tree = BoxTree<N>(primitives, sweep);
     return true;

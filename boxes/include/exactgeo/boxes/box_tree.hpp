@@ -21,8 +21,8 @@
 // Each leaf box is made anew from its corners' boxes, then each node box is the union of
 // its children's (children come after their parent, so one backward pass does it). A
 // node's box contains every box below it in any such tree, so a refitted tree finds
-// exactly the overlapping pairs a fresh one finds; it only gets slower when the vertices
-// have moved far from where the tree was built. looseness() measures that, and the owner
+// exactly the overlapping pairs a fresh one finds; it only gets slower when the primitives
+// grouped under one node have moved apart. centre_spread() measures that, and the owner
 // rebuilds when it has grown.
 //
 // Each node also knows whether all vertices below it move by one and the same vector
@@ -109,6 +109,7 @@ class BoxTree {
     build(order, primitives, 0, order.size());
     refit(vertices);
     built_looseness_ = looseness_;
+    built_centre_spread_ = centre_spread_;
   }
 
   /// This step's boxes for the same primitives.
@@ -123,6 +124,16 @@ class BoxTree {
   double looseness() const noexcept { return looseness_; }
   /// looseness() when the tree was built.
   double built_looseness() const noexcept { return built_looseness_; }
+
+  /// How far apart the primitives grouped under each node are: the half-perimeters of the
+  /// boxes of the primitives' box centres under each node, summed, over the root's. Unlike
+  /// looseness() it does not see how large the boxes are (a step's motion changes that
+  /// for every tree alike, fresh or refitted), nor motions that move everything alike
+  /// (translations, uniform scaling); it grows when primitives kept together by the tree
+  /// move apart, which is what makes a refitted tree slower than a fresh one.
+  double centre_spread() const noexcept { return centre_spread_; }
+  /// centre_spread() when the tree was built.
+  double built_centre_spread() const noexcept { return built_centre_spread_; }
 
   bool empty() const noexcept { return nodes_.empty(); }
   const Node& node(std::uint32_t i) const noexcept { return nodes_[i]; }
@@ -276,38 +287,57 @@ class BoxTree {
     return first;
   }
 
-  /// Every node's box, extent and `together`, and looseness_.
-  void fit_nodes(const VertexBoxes& vertices) noexcept {
-    double node_sum = 0.0, leaf_sum = 0.0;
+  /// A box's centre as a box of one point.
+  static FloatBox centre_of(const FloatBox& b) noexcept {
+    FloatBox c;
+    for (int k = 0; k < 3; ++k)
+      c.lo[k] = c.hi[k] = b.lo[k] / 2 + b.hi[k] / 2;
+    return c;
+  }
+
+  /// Every node's box, extent and `together`, looseness_ and centre_spread_.
+  void fit_nodes(const VertexBoxes& vertices) {
+    double node_sum = 0.0, leaf_sum = 0.0, hull_sum = 0.0;
+    centre_hull_.resize(nodes_.size());
     for (std::size_t i = nodes_.size(); i-- > 0;) {
       Node& n = nodes_[i];
+      FloatBox& hull = centre_hull_[i];
       if (n.is_leaf()) {
         const Leaf& p = leaves_[n.first];
         n.box = p.box(0);
+        hull = centre_of(n.box);
         leaf_sum += half_perimeter(n.box);
         for (std::size_t j = 1; j < n.count; ++j) {
           n.box = united(n.box, p.box(j));
+          hull = united(hull, centre_of(p.box(j)));
           leaf_sum += half_perimeter(p.box(j));
         }
         n.together = together(p, n.count, vertices);
       } else {
         const Node &left = nodes_[i + 1], &right = nodes_[n.first];
         n.box = united(left.box, right.box);
+        hull = united(centre_hull_[i + 1], centre_hull_[n.first]);
         const bool same = left.together != kNoVertex && right.together != kNoVertex &&
                           vertices.move_together(left.together, right.together);
         n.together = same ? left.together : kNoVertex;
       }
       n.extent = static_cast<float>(half_perimeter(n.box));
       node_sum += half_perimeter(n.box);
+      hull_sum += half_perimeter(hull);
     }
     const double root = nodes_.empty() ? 0.0 : half_perimeter(nodes_[0].box);
     looseness_ = leaf_sum + root > 0.0 ? node_sum / (leaf_sum + root) : 0.0;
+    const double root_hull = nodes_.empty() ? 0.0 : half_perimeter(centre_hull_[0]);
+    centre_spread_ = root_hull > 0.0 ? hull_sum / root_hull : 0.0;
   }
 
   std::vector<Node> nodes_;
   std::vector<Leaf> leaves_;  // one Packet per leaf node
   double looseness_ = 0.0;
   double built_looseness_ = 0.0;
+  double centre_spread_ = 0.0;
+  double built_centre_spread_ = 0.0;
+  std::vector<FloatBox> centre_hull_;  // each node's box of its primitives' centres
 };
 
 }  // namespace exactgeo::boxes
