@@ -108,7 +108,6 @@ class BoxTree {
     leaves_.reserve(primitives.size() / (kPacketLanes / 2) + 1);
     build(order, primitives, 0, order.size());
     refit(vertices);
-    built_looseness_ = looseness_;
     built_centre_spread_ = centre_spread_;
   }
 
@@ -120,10 +119,8 @@ class BoxTree {
   }
 
   /// The nodes' half-perimeters summed, over the primitives' summed plus the root's: the
-  /// walk's work per primitive, roughly. It grows when refitted boxes drift apart.
+  /// walk's work per primitive, roughly, for comparing trees built on the same boxes.
   double looseness() const noexcept { return looseness_; }
-  /// looseness() when the tree was built.
-  double built_looseness() const noexcept { return built_looseness_; }
 
   /// How far apart the primitives grouped under each node are: the half-perimeters of the
   /// boxes of the primitives' box centres under each node, summed, over the root's. Unlike
@@ -334,7 +331,6 @@ class BoxTree {
   std::vector<Node> nodes_;
   std::vector<Leaf> leaves_;  // one Packet per leaf node
   double looseness_ = 0.0;
-  double built_looseness_ = 0.0;
   double centre_spread_ = 0.0;
   double built_centre_spread_ = 0.0;
   std::vector<FloatBox> centre_hull_;  // each node's box of its primitives' centres
