@@ -120,7 +120,17 @@ class BoxTree {
 
   /// The nodes' half-perimeters summed, over the primitives' summed plus the root's: the
   /// walk's work per primitive, roughly, for comparing trees built on the same boxes.
-  double looseness() const noexcept { return looseness_; }
+  double looseness() const noexcept {
+    double node_sum = 0.0, leaf_sum = 0.0;
+    for (const Node& n : nodes_) {
+      node_sum += half_perimeter(n.box);
+      if (!n.is_leaf()) continue;
+      for (std::size_t j = 0; j < n.count; ++j)
+        leaf_sum += half_perimeter(leaves_[n.first].box(j));
+    }
+    const double root = nodes_.empty() ? 0.0 : half_perimeter(nodes_[0].box);
+    return leaf_sum + root > 0.0 ? node_sum / (leaf_sum + root) : 0.0;
+  }
 
   /// How far apart the primitives grouped under each node are: the half-perimeters of the
   /// boxes of the primitives' box centres under each node, summed, over the root's. Unlike
@@ -144,6 +154,14 @@ class BoxTree {
     return box;
   }
 
+  /// A box's centre as a box of one point.
+  static FloatBox centre_of(const FloatBox& b) noexcept {
+    FloatBox c;
+    for (int k = 0; k < 3; ++k)
+      c.lo[k] = c.hi[k] = b.lo[k] / 2 + b.hi[k] / 2;
+    return c;
+  }
+
   /// Bits per axis of the Morton codes: 2^10 cells per axis, 30 bits in all.
   static constexpr int kMortonBits = 10;
 
@@ -165,9 +183,8 @@ class BoxTree {
     std::vector<std::array<float, 3>> centre(n);
     std::array<float, 3> lo{}, hi{};
     for (std::size_t i = 0; i < n; ++i) {
-      const FloatBox b = leaf_box(primitives[i], vertices);
+      centre[i] = centre_of(leaf_box(primitives[i], vertices)).lo;
       for (int k = 0; k < 3; ++k) {
-        centre[i][k] = b.lo[k] / 2 + b.hi[k] / 2;
         lo[k] = i == 0 ? centre[i][k] : std::min(lo[k], centre[i][k]);
         hi[k] = i == 0 ? centre[i][k] : std::max(hi[k], centre[i][k]);
       }
@@ -284,17 +301,9 @@ class BoxTree {
     return first;
   }
 
-  /// A box's centre as a box of one point.
-  static FloatBox centre_of(const FloatBox& b) noexcept {
-    FloatBox c;
-    for (int k = 0; k < 3; ++k)
-      c.lo[k] = c.hi[k] = b.lo[k] / 2 + b.hi[k] / 2;
-    return c;
-  }
-
-  /// Every node's box, extent and `together`, looseness_ and centre_spread_.
+  /// Every node's box, extent and `together`, and centre_spread_.
   void fit_nodes(const VertexBoxes& vertices) {
-    double node_sum = 0.0, leaf_sum = 0.0, hull_sum = 0.0;
+    double hull_sum = 0.0;
     centre_hull_.resize(nodes_.size());
     for (std::size_t i = nodes_.size(); i-- > 0;) {
       Node& n = nodes_[i];
@@ -303,11 +312,9 @@ class BoxTree {
         const Leaf& p = leaves_[n.first];
         n.box = p.box(0);
         hull = centre_of(n.box);
-        leaf_sum += half_perimeter(n.box);
         for (std::size_t j = 1; j < n.count; ++j) {
           n.box = united(n.box, p.box(j));
           hull = united(hull, centre_of(p.box(j)));
-          leaf_sum += half_perimeter(p.box(j));
         }
         n.together = together(p, n.count, vertices);
       } else {
@@ -319,18 +326,14 @@ class BoxTree {
         n.together = same ? left.together : kNoVertex;
       }
       n.extent = static_cast<float>(half_perimeter(n.box));
-      node_sum += half_perimeter(n.box);
       hull_sum += half_perimeter(hull);
     }
-    const double root = nodes_.empty() ? 0.0 : half_perimeter(nodes_[0].box);
-    looseness_ = leaf_sum + root > 0.0 ? node_sum / (leaf_sum + root) : 0.0;
     const double root_hull = nodes_.empty() ? 0.0 : half_perimeter(centre_hull_[0]);
     centre_spread_ = root_hull > 0.0 ? hull_sum / root_hull : 0.0;
   }
 
   std::vector<Node> nodes_;
   std::vector<Leaf> leaves_;  // one Packet per leaf node
-  double looseness_ = 0.0;
   double centre_spread_ = 0.0;
   double built_centre_spread_ = 0.0;
   std::vector<FloatBox> centre_hull_;  // each node's box of its primitives' centres
