@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <set>
@@ -170,6 +171,59 @@ TEST(BoxTree, CentresTheGridCannotTellApartStillGiveEveryPair) {
     EXPECT_EQ(walked(walk, 64), expected) << "layout " << layout << ", split walk";
     EXPECT_GT(expected.size(), 100u) << "layout " << layout;
   }
+}
+
+/// The measure the mesh broad phase rebuilds its trees on (box_tree.hpp): blind to how
+/// large the boxes are and to motions that move everything alike, grown when the
+/// primitives a tree groups move apart.
+TEST(BoxTree, CentreSpreadSeesPrimitivesMoveApartNotTheirBoxesGrow) {
+  auto rng = testing::seeded_engine("boxes.box_tree.spread");
+  const std::size_t vertices = 600;
+  const VertexBoxes v = random_vertices(rng, vertices, 1.0);
+  const auto triangles = random_primitives<3>(rng, 800, vertices);
+  BoxTree<3> tree(triangles, v);
+  const double built = tree.centre_spread();
+  ASSERT_EQ(built, tree.built_centre_spread());
+  ASSERT_GT(built, 1.0);
+  const auto refit_to = [&](const auto& change) {
+    VertexBoxes moved = v;
+    for (FloatBox& b : moved.box)
+      change(b);
+    tree.refit(moved);
+    return tree.centre_spread();
+  };
+  const double loose = tree.looseness();
+  // Every box grown by the same amount on every side: the same centres (up to the float
+  // rounding of the grown bounds), where the looseness, which weighs the boxes' sizes,
+  // moves by a tenth or more.
+  const double grown = refit_to([](FloatBox& b) {
+    for (int k = 0; k < 3; ++k) {
+      b.lo[k] -= 0.25f;
+      b.hi[k] += 0.25f;
+    }
+  });
+  EXPECT_NEAR(grown, built, 1e-4 * built);
+  EXPECT_GT(std::abs(tree.looseness() - loose), 0.1 * loose);
+  // Everything scaled by 2 (exact in float and in the sums): the same spread.
+  const double doubled = refit_to([](FloatBox& b) {
+    for (int k = 0; k < 3; ++k) {
+      b.lo[k] *= 2;
+      b.hi[k] *= 2;
+    }
+  });
+  EXPECT_EQ(doubled, built);
+  // The vertices' places shuffled: what the tree groups is scattered.
+  std::vector<std::size_t> order(vertices);
+  for (std::size_t i = 0; i < vertices; ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), rng);
+  VertexBoxes shuffled = v;
+  for (std::size_t i = 0; i < vertices; ++i)
+    shuffled.box[i] = v.box[order[i]];
+  tree.refit(shuffled);
+  EXPECT_GT(tree.centre_spread(), 1.5 * built);
+  EXPECT_LT(BoxTree<3>(triangles, shuffled).centre_spread(), 1.5 * built)
+      << "a fresh tree on the shuffled boxes is about as tight as the first";
 }
 
 }  // namespace
