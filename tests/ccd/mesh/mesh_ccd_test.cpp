@@ -1212,6 +1212,14 @@ TEST(MeshCcdApi, CandidatesAreTheNarrowPhasesInput) {
   EXPECT_THROW(ccd.candidates({crumpling.t0, short_frame}), std::invalid_argument);
 }
 
+/// The step's positions at `fraction` of it (each vertex on its segment, rounded).
+std::vector<double> cut_at(const StepPositions& step, double fraction) {
+  std::vector<double> cut(step.t0.size());
+  for (std::size_t i = 0; i < cut.size(); ++i)
+    cut[i] = step.t0[i] + fraction * (step.t1[i] - step.t0[i]);
+  return cut;
+}
+
 /// The largest collision-free fraction of a step within a separation (what
 /// ipc-toolkit's compute_collision_free_stepsize answers), by the recipe of docs/ccd.md:
 /// the start of the time of impact within `delta`, then the step cut there checked again
@@ -1231,21 +1239,12 @@ Stepsize collision_free_stepsize(MeshCcd& ccd, const StepPositions& step, double
   if (!out.time_of_impact) return out;
   MeshCcdOptions check;
   check.min_separation = delta;
-  std::vector<double> cut(step.t0.size());
   for (out.fraction = out.time_of_impact->start; out.fraction > 0.0; out.fraction /= 2) {
-    for (std::size_t i = 0; i < cut.size(); ++i)
-      cut[i] = step.t0[i] + out.fraction * (step.t1[i] - step.t0[i]);
+    const std::vector<double> cut = cut_at(step, out.fraction);
     if (!ccd.step({step.t0, cut}, check).collision()) return out;
     ++out.halvings;
   }
   return out;
-}
-
-std::vector<double> cut_at(const MovingMesh& m, double fraction) {
-  std::vector<double> cut(m.t0.size());
-  for (std::size_t i = 0; i < cut.size(); ++i)
-    cut[i] = m.t0[i] + fraction * (m.t1[i] - m.t0[i]);
-  return cut;
 }
 
 TEST(MeshCcdApi, TheTimeOfImpactGivesACollisionFreeStepsize) {
@@ -1257,27 +1256,22 @@ TEST(MeshCcdApi, TheTimeOfImpactGivesACollisionFreeStepsize) {
   for (int trial = 0; trial < 12; ++trial) {
     const MovingMesh base = crumpling_sheet(rng, 6);
     for (const int exponent : {0, 1000, -1000}) {
-      const double scale = std::ldexp(1.0, exponent);
-      MovingMesh m = base;
-      for (double& x : m.t0)
-        x *= scale;
-      for (double& x : m.t1)
-        x *= scale;
-      for (const double delta : {0.0, std::ldexp(scale, -6)}) {
+      const MovingMesh m = scaled_mesh(base, exponent);
+      for (const double delta : {0.0, std::ldexp(1.0, exponent - 6)}) {
         MeshCcd ccd(m.vertex_count(), m.faces);
         const Stepsize found = collision_free_stepsize(ccd, m.frames(), delta);
         const std::string what = "trial " + std::to_string(trial) + ", 2^" +
                                  std::to_string(exponent) + ", delta " + std::to_string(delta);
         MeshCcdOptions check;
         check.min_separation = delta;
-        const std::vector<double> cut = cut_at(m, found.fraction);
+        const std::vector<double> cut = cut_at(m.frames(), found.fraction);
         EXPECT_FALSE(MeshCcd(m.vertex_count(), m.faces).step({m.t0, cut}, check).collision())
             << what << ": the cut at " << found.fraction << " collides";
         if (!found.time_of_impact) continue;
         ++cut_short;
         EXPECT_LE(found.halvings, 1) << what;
         EXPECT_LE(found.time_of_impact->end - found.time_of_impact->start, 0x1p-20) << what;
-        const std::vector<double> past = cut_at(m, found.time_of_impact->end);
+        const std::vector<double> past = cut_at(m.frames(), found.time_of_impact->end);
         reached += MeshCcd(m.vertex_count(), m.faces).step({m.t0, past}, check).collision();
       }
     }
