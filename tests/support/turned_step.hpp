@@ -5,8 +5,8 @@
 // between its two positions (the motion mesh CCD assumes).
 //
 // Dense: a vertex at distance r from the axis sweeps a chord of length 2 r sin(angle / 2),
-// so the swept boxes grow with the angle and so does the count of candidate pairs, into
-// the hundreds of millions on a mesh of 100k triangles. Without a collision: at time t the
+// so the swept boxes grow with the angle and so does the count of candidate pairs
+// (docs/ccd.md counts them on Spot). Without a collision: at time t the
 // mesh is c + M(t) (x - c) with M(t) = (1 - t) I + t R. In the plane across the axis M(t)
 // multiplies by the complex number (1 - t) + t e^(i angle), of modulus at least
 // cos(angle / 2) (at t = 1/2); along the axis it is the identity. So M(t) is invertible

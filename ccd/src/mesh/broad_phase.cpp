@@ -26,7 +26,7 @@ constexpr std::size_t kWalkPairs = 256;
 
 /// A refitted tree is rebuilt once its centre_spread() (box_tree.hpp) exceeds this factor
 /// times its value when the tree was built. A refitted tree is never wrong, only slower;
-/// this factor only trades the cost of a build (about three refits) against a slower walk.
+/// this factor only trades the cost of a build (a few refits) against a slower walk.
 constexpr double kRebuildSpread = 1.5;
 
 /// A digest of an exact displacement, head + tail: equal vectors give equal digests (-0

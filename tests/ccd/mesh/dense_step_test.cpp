@@ -2,10 +2,10 @@
 // phase finds them, so a step's peak memory does not grow with its candidate count.
 //
 // The steps turn the bundled Spot mesh (23,424 triangles) as a rigid body about the
-// vertical axis (support/turned_step.hpp): the candidates grow with the angle, from about
-// 20 thousand at half a degree to 7 million at 80 degrees, and there is no collision, by
-// an argument independent of the code (the motion is an invertible linear map at every
-// time), which the exact method must confirm on every pair.
+// vertical axis (support/turned_step.hpp): the candidates grow with the angle (the tests
+// ask for fewer than 100 thousand at half a degree, more than 5 million at 80 degrees),
+// and there is no collision, by an argument independent of the code (the motion is an
+// invertible linear map at every time), which the exact method must confirm on every pair.
 
 #include <gtest/gtest.h>
 
@@ -62,7 +62,8 @@ TEST(DenseSteps, PeakMemoryDoesNotGrowWithTheCandidates) {
   const Spot spot = spot_cc1();
   const MeasuredStep few = turned_spot(spot, 0.5);
   const MeasuredStep many = turned_spot(spot, 80.0);
-  // A list of 7 million pairs alone would be 56 MB, several times the whole step's peak.
+  // A list of 5 million pairs (8 bytes each) alone would be 40 MB, several times the peak
+  // of the step with few candidates.
   ASSERT_LT(few.result.candidates(), 100'000u);
   ASSERT_GT(many.result.candidates(), 5'000'000u);
   EXPECT_FALSE(few.result.collision());
