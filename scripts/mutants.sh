@@ -201,6 +201,13 @@ MUTANTS = [
      "  const auto held = s.broad_phase.candidates(scaled, scaled_step.largest, options.threads,"
      " scaled_step.min_separation);\n",
      ["ccd_tests"]),
+    # Empty packet lanes with the empty box, which a box reaching past the float range
+    # overlaps: the walk then visits lanes without a primitive.
+    ("empty_lanes_overlap_infinite_boxes",
+     "boxes/include/exactgeo/boxes/box_tree.hpp",
+     "leaf.set_box(j, kNoBox);",
+     "leaf.set_box(j, {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}});",
+     ["boxes_tests", "ccd_tests"]),
     # The unit frame's window: labels are exact whatever it is; only speed depends on it.
     ("unit_frame_window_never_entered",
      "inside/include/exactgeo/inside/internal/unit_frame.hpp",
