@@ -17,7 +17,8 @@
 //
 // Both frames are rounded to multiples of 2^-40 of a power of two at least the mesh's
 // largest coordinate magnitude, so that scaling them by 2^k for |k| <= 1000 is exact
-// (no bit falls below the smallest subnormal, 2^-1074): the step at 2^k is the same step.
+// when that magnitude is in [2^-34, 2^23) (no bit falls below the smallest subnormal,
+// 2^-1074, nor past the largest double): the step at 2^k is the same step.
 
 #include <algorithm>
 #include <array>
