@@ -19,8 +19,9 @@
 //                 contact between them is not a collision of this step.
 //   narrow phase  vertex_face_ccd / edge_edge_ccd (ccd.hpp) on every candidate, in
 //                 batches of a fixed size decided where the tree walk finds them, on all
-//                 threads: a step's memory is the mesh, its trees and a fixed budget per
-//                 thread, however many candidates it has. The output is sorted, so it is
+//                 threads: a step's memory is the mesh, its trees, a fixed budget per
+//                 thread and the pairs that collide, however many candidates it has.
+//                 The output is sorted, so it is
 //                 the same for every thread count.
 //
 // The broad phase never drops a pair that the narrow phase would report (tests compare
