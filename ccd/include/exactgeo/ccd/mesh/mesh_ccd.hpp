@@ -21,8 +21,7 @@
 //                 batches of a fixed size decided where the tree walk finds them, on all
 //                 threads: a step's memory is the mesh, its trees, a fixed budget per
 //                 thread and the pairs that collide, however many candidates it has.
-//                 The output is sorted, so it is
-//                 the same for every thread count.
+//                 The output is sorted, so it is the same for every thread count.
 //
 // The broad phase never drops a pair that the narrow phase would report (tests compare
 // with exhaustive pairwise CCD on every non-adjacent pair).
