@@ -10,13 +10,13 @@
 // random motion (seed S + 1). Quads are split into two triangles (bench/step_frames.hpp).
 //
 // Every peer gets exactly exactgeo's boxes: each vertex's swept box rounded outward to
-// float in the step's scale (ccd/mesh/internal/swept_box.hpp), each edge's and face's the
-// union of its corners' boxes, closed. Every pair a peer reports goes through one rule
-// (keep_vertex_face, keep_edge_edge): no shared vertex, not rigid (every corner of both
-// primitives moves by exactly the same p_t1 - p_t0, TwoDiff head and tail, standing still
-// included), as MeshBroadPhase decides. Its sorted pairs are then compared with
-// MeshBroadPhase's (vertex-face as (vertex, face), edge-edge as (smaller, larger) index
-// into the sorted unique edges).
+// float in the step's scale, made by the library's own sweep (ccd::internal::sweep_vertices),
+// each edge's and face's the union of its corners' boxes, closed. Every pair a peer reports
+// goes through one rule (keep_vertex_face, keep_edge_edge): no shared vertex, not rigid
+// (every corner of both primitives moves by exactly the same p_t1 - p_t0, standing still
+// included: boxes::VertexBoxes::move_together), as MeshBroadPhase decides. Its sorted pairs are
+// then compared with MeshBroadPhase's (vertex-face as (vertex, face), edge-edge as (smaller,
+// larger) index into the sorted unique edges).
 //
 // Times, best of R runs (fewer once a peer has spent --max-seconds, default 20), each on
 // steady_clock:
@@ -53,9 +53,7 @@
 #include "exactgeo/boxes/float_box.hpp"
 #include "exactgeo/ccd/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
-#include "exactgeo/ccd/mesh/internal/swept_box.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
-#include "exactgeo/predicates/kernel/error_free.hpp"
 #include "step_frames.hpp"
 
 #if defined(EXACTGEO_PEER_CGAL)
@@ -100,10 +98,10 @@ struct Step {
   MeshView mesh;
   ccd::StepPositions positions;
   double largest = 0.0;  ///< the largest magnitude of both frames
-  std::vector<FloatBox> vertex, edge, face;
-  /// p_t1 - p_t0 per vertex, exactly: TwoDiff's head and tail; `exact` false when it overflows
-  std::vector<Vector3> displacement, displacement_tail;
-  std::vector<std::uint8_t> exact;
+  /// Each vertex's swept box and exact displacement, made as the library's broad phase
+  /// makes them (MeshBroadPhase's own sweep).
+  boxes::VertexBoxes swept;
+  std::vector<FloatBox> edge, face;
 };
 
 template <std::size_t N>
@@ -121,34 +119,12 @@ Step make_step(const MeshView& mesh, const Frames& frames) {
   s.positions = {frames.t0, frames.t1};
   s.largest = std::max(ccd::internal::largest_magnitude(frames.t0),
                        ccd::internal::largest_magnitude(frames.t1));
-  const boxes::Scale scale(s.largest);
-  const std::size_t n = mesh.vertex_count;
-  s.vertex.resize(n);
-  s.displacement.resize(n);
-  s.displacement_tail.resize(n);
-  s.exact.resize(n);
-  for (std::size_t v = 0; v < n; ++v) {
-    s.vertex[v] = ccd::internal::vertex_swept_box(frames.t0.data(), frames.t1.data(), v, scale);
-    bool exact = true;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const auto d = kernel::two_diff(frames.t1[3 * v + k], frames.t0[3 * v + k]);
-      s.displacement[v][k] = d.head;
-      s.displacement_tail[v][k] = d.tail;
-      exact = exact && std::isfinite(d.head);
-    }
-    s.exact[v] = exact ? 1 : 0;
-  }
+  ccd::internal::sweep_vertices(s.positions, s.largest, 0.0, 1, s.swept);
   for (const Edge& e : mesh.edges)
-    s.edge.push_back(primitive_box(e, s.vertex));
+    s.edge.push_back(primitive_box(e, s.swept.box));
   for (const Triangle& f : mesh.faces)
-    s.face.push_back(primitive_box(f, s.vertex));
+    s.face.push_back(primitive_box(f, s.swept.box));
   return s;
-}
-
-/// Whether vertices a and b move by one and the same exactly known vector.
-bool move_together(const Step& s, VertexIndex a, VertexIndex b) noexcept {
-  return s.exact[a] != 0 && s.displacement[a] == s.displacement[b] &&
-         s.displacement_tail[a] == s.displacement_tail[b];
 }
 
 /// Whether every corner of both primitives moves with the first (standing still included).
@@ -156,9 +132,9 @@ template <std::size_t NA, std::size_t NB>
 bool rigid(const Step& s, const std::array<VertexIndex, NA>& a,
            const std::array<VertexIndex, NB>& b) noexcept {
   for (const VertexIndex v : a)
-    if (!move_together(s, a[0], v)) return false;
+    if (!s.swept.move_together(a[0], v)) return false;
   for (const VertexIndex v : b)
-    if (!move_together(s, a[0], v)) return false;
+    if (!s.swept.move_together(a[0], v)) return false;
   return true;
 }
 
@@ -284,7 +260,7 @@ std::vector<CgalBox> cgal_boxes(const std::vector<FloatBox>& boxes) {
 class CgalPeer : public Peer {
  public:
   Pairs first(const Step& s) override {
-    std::vector<CgalBox> vertices = cgal_boxes(s.vertex), faces = cgal_boxes(s.face),
+    std::vector<CgalBox> vertices = cgal_boxes(s.swept.box), faces = cgal_boxes(s.face),
                          edges = cgal_boxes(s.edge);
     Pairs p;
     constexpr std::ptrdiff_t kCutoff = 10;  // CGAL's default
@@ -354,19 +330,19 @@ fcl::AABB<double> fcl_box(const FloatBox& b) {
 class FclPeer : public Peer {
  public:
   Pairs first(const Step& s) override {
-    make(vertices_, s.vertex, Kind::vertex);
+    make(vertices_, s.swept.box, Kind::vertex);
     make(faces_, s.face, Kind::face);
     make(edges_, s.edge, Kind::edge);
     return query(s);
   }
   Pairs next(const Step& s) override {
-    update(vertices_, s.vertex);
+    update(vertices_, s.swept.box);
     update(faces_, s.face);
     update(edges_, s.edge);
     return query(s);
   }
   bool boxes_exact(const Step& s) const override {
-    return exact(vertices_, s.vertex) && exact(faces_, s.face) && exact(edges_, s.edge);
+    return exact(vertices_, s.swept.box) && exact(faces_, s.face) && exact(edges_, s.edge);
   }
 
  private:
@@ -464,7 +440,7 @@ class BulletPeer : public Peer {
     filter_.mesh = s.mesh;
     broad_phase_ = std::make_unique<btDbvtBroadphase>();
     broad_phase_->getOverlappingPairCache()->setOverlapFilterCallback(&filter_);
-    add(s.vertex, Kind::vertex);
+    add(s.swept.box, Kind::vertex);
     add(s.face, Kind::face);
     add(s.edge, Kind::edge);
     broad_phase_->calculateOverlappingPairs(&dispatcher_);
@@ -472,7 +448,7 @@ class BulletPeer : public Peer {
   }
   Pairs next(const Step& s) override {
     std::size_t i = 0;
-    for (const auto* boxes : {&s.vertex, &s.face, &s.edge})
+    for (const auto* boxes : {&s.swept.box, &s.face, &s.edge})
       for (const FloatBox& b : *boxes)
         broad_phase_->setAabb(proxies_[i++], low(b), high(b), &dispatcher_);
     broad_phase_->calculateOverlappingPairs(&dispatcher_);
@@ -483,7 +459,7 @@ class BulletPeer : public Peer {
   }
   bool boxes_exact(const Step& s) const override {
     std::size_t i = 0;
-    for (const auto* boxes : {&s.vertex, &s.face, &s.edge}) {
+    for (const auto* boxes : {&s.swept.box, &s.face, &s.edge}) {
       for (const FloatBox& b : *boxes) {
         const btBroadphaseProxy* p = proxies_[i++];
         if (!(p->m_aabbMin == low(b)) || !(p->m_aabbMax == high(b))) return false;
@@ -571,13 +547,13 @@ class EmbreePeer : public Peer {
   }
 
   Pairs first(const Step& s) override {
-    build(vertices_, s.vertex);
+    build(vertices_, s.swept.box);
     build(faces_, s.face);
     build(edges_, s.edge);
     return query(s);
   }
   Pairs next(const Step& s) override {
-    refit(vertices_, s.vertex);
+    refit(vertices_, s.swept.box);
     refit(faces_, s.face);
     refit(edges_, s.edge);
     return query(s);
@@ -670,7 +646,7 @@ class EmbreePeer : public Peer {
 
   Pairs query(const Step& s) {
     static std::atomic<std::uint64_t> next_id{1};
-    Collide vf{&s, s.vertex.data(), s.face.data(), false, next_id++, {}, {}, {}};
+    Collide vf{&s, s.swept.box.data(), s.face.data(), false, next_id++, {}, {}, {}};
     rtcCollide(vertices_.scene, faces_.scene, on_collisions, &vf);
     Collide ee{&s, s.edge.data(), s.edge.data(), true, next_id++, {}, {}, {}};
     rtcCollide(edges_.scene, edges_.scene, on_collisions, &ee);

@@ -40,13 +40,14 @@ std::uint32_t motion_digest(const Vector3& head, const Vector3& tail) noexcept {
   return static_cast<std::uint32_t>(h >> 32) | 1u;
 }
 
-/// Fills s with each vertex's swept box and exact displacement p_t1 - p_t0 (TwoDiff: its
-/// rounded value and the rest, unique for each exact difference, so that rigid motion by a
-/// vector that is not a double is recognised too), and whether the vertex moves at all
-/// (the rounded difference of two finite doubles is zero only when they are equal); s keeps
-/// its capacity from step to step.
-void sweep(const StepPositions& positions, double largest, double min_separation, unsigned threads,
-           VertexBoxes& s) {
+}  // namespace
+
+// The displacement is TwoDiff's rounded value and the rest, unique for each exact
+// difference, so that rigid motion by a vector that is not a double is recognised too; a
+// vertex moves at all when the rounded difference is not zero (the rounded difference of
+// two finite doubles is zero only when they are equal).
+void sweep_vertices(const StepPositions& positions, double largest, double min_separation,
+                    unsigned threads, VertexBoxes& s) {
   const std::size_t n = positions.t0.size() / 3;
   s.box.resize(n);
   s.displacement.resize(n);
@@ -87,6 +88,8 @@ void sweep(const StepPositions& positions, double largest, double min_separation
     }
   });
 }
+
+namespace {
 
 /// True when two primitives (lane i of leaf a, lane k of leaf b) move by one and the same
 /// vector, standing still included: their relative positions, hence all their distances,
@@ -140,7 +143,7 @@ bool MeshBroadPhase::fit_trees(unsigned threads) {
 
 MeshBroadPhase::PreparedStep MeshBroadPhase::prepare(const StepPositions& positions, double largest,
                                                      unsigned threads, double min_separation) {
-  sweep(positions, largest, min_separation, threads, sweep_);
+  sweep_vertices(positions, largest, min_separation, threads, sweep_);
   PreparedStep step;
   step.trees_rebuilt = fit_trees(threads);
   vertex_face_starts_ = split_pairs(vertex_face_walk(), kWalkPairs);

@@ -52,6 +52,12 @@ struct WalkScratch {
   std::vector<EdgeIndexPair> edge_edge;
 };
 
+/// Fills `out` with each vertex's swept box in the Scale of `largest` (grown by half of
+/// min_separation on every side), its exact displacement p_t1 - p_t0 and its motion digest,
+/// as the broad phase sees them; `out` keeps its capacity from call to call.
+void sweep_vertices(const StepPositions& positions, double largest, double min_separation,
+                    unsigned threads, boxes::VertexBoxes& out);
+
 class MeshBroadPhase {
  public:
   /// Pairs of one kind in a batch, at most: 16 KiB of vertex-face pairs, as much again of
