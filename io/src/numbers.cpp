@@ -16,6 +16,40 @@ bool starts_with_hex_prefix(std::string_view s) {
   return s.size() >= 2 && s[0] == '0' && (s[1] == 'x' || s[1] == 'X');
 }
 
+/// The body of a literal after its sign and hex prefix is digits with at most one point
+/// (at least one digit), then optionally the exponent marker, at most one sign and
+/// decimal digits. Checked here because libstdc++ 12's from_chars reads the hexadecimal
+/// "1p+-3" as 2^-3.
+bool well_formed(std::string_view body, bool hex) {
+  const auto is_digit = [&](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return hex ? std::isxdigit(u) != 0 : std::isdigit(u) != 0;
+  };
+  std::size_t i = 0;
+  std::size_t digits = 0;
+  bool point = false;
+  for (; i < body.size(); ++i) {
+    if (is_digit(body[i])) {
+      ++digits;
+    } else if (body[i] == '.' && !point) {
+      point = true;
+    } else {
+      break;
+    }
+  }
+  if (digits == 0) return false;
+  if (i == body.size()) return true;
+  const char marker = static_cast<char>(std::tolower(static_cast<unsigned char>(body[i])));
+  if (marker != (hex ? 'p' : 'e')) return false;
+  ++i;
+  if (i < body.size() && (body[i] == '+' || body[i] == '-')) ++i;
+  if (i == body.size()) return false;
+  for (; i < body.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(body[i]))) return false;
+  }
+  return true;
+}
+
 /// The literal as the nearest T (double or float: rounded once, straight to T's
 /// precision), or nullopt with the reason.
 template <class T>
@@ -31,13 +65,9 @@ std::optional<T> parse_literal(std::string_view token, std::string& error, const
     format = std::chars_format::hex;
     body.remove_prefix(2);
   }
-  // from_chars would accept a second sign, "inf" and "nan": reject them first. A hexfloat's
-  // first digit may be a letter ("0xAp-3", as C's %a can write it).
-  const auto digit = [&](char c) {
-    const auto u = static_cast<unsigned char>(c);
-    return format == std::chars_format::hex ? std::isxdigit(u) != 0 : std::isdigit(u) != 0;
-  };
-  if (body.empty() || !(digit(body[0]) || body[0] == '.')) {
+  // from_chars would accept a second sign, "inf" and "nan": the grammar is checked first.
+  // A hexfloat's first digit may be a letter ("0xAp-3", as C's %a can write it).
+  if (!well_formed(body, format == std::chars_format::hex)) {
     error = quoted(token) + " is not a number";
     return std::nullopt;
   }
@@ -62,6 +92,14 @@ std::optional<T> parse_literal(std::string_view token, std::string& error, const
 
 std::optional<double> parse_number(std::string_view token, std::string& error) {
   return parse_literal<double>(token, error, "double");
+}
+
+bool is_number_literal(std::string_view token) {
+  std::string_view body = token;
+  if (!body.empty() && (body[0] == '+' || body[0] == '-')) body.remove_prefix(1);
+  const bool hex = starts_with_hex_prefix(body);
+  if (hex) body.remove_prefix(2);
+  return well_formed(body, hex);
 }
 
 std::optional<double> parse_float32(std::string_view token, std::string& error) {

@@ -1,7 +1,11 @@
 #include "exactgeo/io/text_scan.hpp"
 
+#include <cctype>
 #include <charconv>
+#include <limits>
 #include <system_error>
+
+#include "exactgeo/io/input_error.hpp"
 
 namespace exactgeo::io {
 
@@ -21,12 +25,23 @@ std::string_view skip_utf8_bom(std::string_view text) noexcept {
   return text;
 }
 
-std::optional<std::string> utf16_as_utf8(std::string_view text) {
+std::optional<std::string> utf16_as_utf8(std::string_view text, const std::string& source) {
   if (text.size() < 2) return std::nullopt;
   const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
   const bool big = byte(0) == 0xFE && byte(1) == 0xFF;
   const bool little = byte(0) == 0xFF && byte(1) == 0xFE;
   if (!big && !little) return std::nullopt;
+  if (text.size() % 2 != 0) {
+    // Every character is two bytes (or four): a file cut between them has lost a part of
+    // its last character, and perhaps more than that, which nothing in the text can tell.
+    std::string what = source;
+    what.append(": UTF-16 text (");
+    what.append(big ? "big" : "little");
+    what.append("-endian byte order mark) of an odd number of bytes, ");
+    what.append(std::to_string(text.size()));
+    what.append(": the file is cut inside its last character");
+    throw InputError(what);
+  }
   std::string utf8;
   utf8.reserve(text.size() / 2);
   for (std::size_t i = 2; i + 1 < text.size(); i += 2) {
@@ -70,24 +85,32 @@ void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) 
 }
 
 std::optional<std::int64_t> parse_integer(std::string_view token, std::string& error) {
-  std::string_view body = token;
-  if (!body.empty() && body[0] == '+') body.remove_prefix(1);
-  // from_chars accepts a leading '-' itself; refuse "+-1" and "--1".
-  if (body.empty() || body[0] == '+' || (body[0] == '-' && body.size() > 1 && body[1] == '-')) {
+  // One optional sign, then decimal digits only: from_chars would take a '-' of its own
+  // after a '+' ("+-1").
+  std::string_view digits = token;
+  const bool negative = !digits.empty() && digits[0] == '-';
+  if (!digits.empty() && (digits[0] == '+' || digits[0] == '-')) digits.remove_prefix(1);
+  if (digits.empty() || !std::isdigit(static_cast<unsigned char>(digits[0]))) {
     error = quoted(token) + " is not an integer";
     return std::nullopt;
   }
-  std::int64_t value = 0;
-  const auto [end, ec] = std::from_chars(body.data(), body.data() + body.size(), value);
-  if (ec == std::errc::result_out_of_range) {
+  std::uint64_t magnitude = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), magnitude);
+  if (ec != std::errc() && ec != std::errc::result_out_of_range) {
+    error = quoted(token) + " is not an integer";
+    return std::nullopt;
+  }
+  if (end != digits.data() + digits.size()) {
+    error = quoted(token) + " is not an integer";
+    return std::nullopt;
+  }
+  constexpr std::uint64_t kMaxPositive = std::numeric_limits<std::int64_t>::max();
+  if (ec == std::errc::result_out_of_range || magnitude > kMaxPositive + (negative ? 1 : 0)) {
     error = quoted(token) + " is too large";
     return std::nullopt;
   }
-  if (ec != std::errc() || end != body.data() + body.size()) {
-    error = quoted(token) + " is not an integer";
-    return std::nullopt;
-  }
-  return value;
+  // -2^63 is representable; its magnitude is not, as an int64: negate in unsigned.
+  return negative ? static_cast<std::int64_t>(0 - magnitude) : static_cast<std::int64_t>(magnitude);
 }
 
 std::string printable(std::string_view text) {

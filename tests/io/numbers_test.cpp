@@ -140,6 +140,33 @@ TEST(ParseNumber, RejectsWhatIsNotOneFiniteDouble) {
   }
 }
 
+TEST(ParseNumber, OneSignAtMostInEveryPart) {
+  // A sign before another is refused in the significand and in the exponent, for decimal
+  // and hexadecimal literals: from_chars must never see a second one.
+  for (const char* body : {"5", "1.5e3", "0x1.8p3", ".5", "7e-2"}) {
+    EXPECT_EQ(parsed(std::string("+") + body), parsed(body)) << body;
+    EXPECT_EQ(parsed(std::string("-") + body), -parsed(body)) << body;
+    for (const char* two : {"+-", "-+", "++", "--"}) {
+      EXPECT_TRUE(rejected(std::string(two) + body)) << two << body;
+    }
+  }
+  for (const char* bad :
+       {"1e+-5", "1e-+5", "1e--5", "1e++5", "0x1p+-3", "0x-1p3", "-0x-1", "0x+1", "+0x-1p3"}) {
+    EXPECT_TRUE(rejected(bad)) << bad;
+  }
+}
+
+TEST(IsNumberLiteral, TheFormWhateverTheRange) {
+  for (const char* literal :
+       {"1", "-1.5e-3", "0x1.8p3", "1e400", "-1e400", "1e-400", "0x1p-1080", "+.5", "5."}) {
+    EXPECT_TRUE(is_number_literal(literal)) << literal;
+  }
+  for (const char* bad :
+       {"", "+", "-", "+-1", "--1e400", "nan", "inf", "1e", "0x", "1,5", "1 2", "a"}) {
+    EXPECT_FALSE(is_number_literal(bad)) << bad;
+  }
+}
+
 TEST(SplitFields, SpacesCommasAndComments) {
   using V = std::vector<std::string_view>;
   EXPECT_EQ(split_fields("1 2\t3"), (V{"1", "2", "3"}));

@@ -21,6 +21,11 @@ namespace exactgeo::io {
 /// The number, or nullopt with `error` set to a short reason.
 std::optional<double> parse_number(std::string_view token, std::string& error);
 
+/// The token is one number literal as parse_number reads them, whatever its value: also
+/// a literal beyond the double range (which parse_number refuses), for a field whose value
+/// is not used but whose form is checked.
+bool is_number_literal(std::string_view token);
+
 /// The same literal rounded once, straight to the nearest float (a value a file declares
 /// 32-bit, as a binary copy of it holds), returned exactly as a double. Refused beyond the
 /// float range, as parse_number refuses beyond the double range.

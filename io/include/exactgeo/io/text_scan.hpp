@@ -42,8 +42,9 @@ std::string_view skip_utf8_bom(std::string_view text) noexcept;
 /// Text that starts with a UTF-16 byte order mark (big or little endian), as UTF-8 (each
 /// 16-bit unit encoded alone: the mesh formats' keywords and numbers are ASCII, and what
 /// else a line holds is a comment or a name); nullopt for any other text. Some Windows
-/// tools save OBJ files so.
-std::optional<std::string> utf16_as_utf8(std::string_view text);
+/// tools save OBJ files so. Throws InputError naming `source` when the text has an odd
+/// number of bytes (cut inside its last character).
+std::optional<std::string> utf16_as_utf8(std::string_view text, const std::string& source);
 
 /// The line up to its first '#'.
 std::string_view strip_comment(std::string_view line) noexcept;
@@ -51,7 +52,7 @@ std::string_view strip_comment(std::string_view line) noexcept;
 /// Replaces `tokens` by the line's tokens, separated by spaces, tabs, CR, VT and FF.
 void split_tokens(std::string_view line, std::vector<std::string_view>& tokens);
 
-/// A decimal integer with an optional sign, in the range of int64, or nullopt with
+/// A decimal integer with at most one sign, in the range of int64, or nullopt with
 /// `error` set to a short reason ("'x' is not an integer", "... is too large").
 std::optional<std::int64_t> parse_integer(std::string_view token, std::string& error);
 
