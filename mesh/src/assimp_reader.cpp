@@ -188,8 +188,11 @@ LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
   out.format = "assimp ";
   out.format.append(extension);
   out.coordinates_via_float = true;
-  SceneMerger(*scene, source, options, out).merge();
-  out.welded_vertices = weld_vertices(out.mesh);
+  // Always welded, before polygons are split: assimp splits vertices at texture seams and
+  // per material.
+  LoadOptions welded = options;
+  welded.weld = true;
+  SceneMerger(*scene, source, welded, out).merge();
   return out;
 }
 

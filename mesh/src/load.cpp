@@ -10,7 +10,6 @@
 #include "exactgeo/mesh/off_reader.hpp"
 #include "exactgeo/mesh/ply_reader.hpp"
 #include "exactgeo/mesh/stl_reader.hpp"
-#include "exactgeo/mesh/weld.hpp"
 
 namespace exactgeo::mesh {
 
@@ -68,10 +67,8 @@ LoadedMesh load_mesh(const std::string& path, const LoadOptions& options) {
     return read_with_assimp_from_memory(read_stream(std::cin, source), source, format, options);
   }
   const std::string bytes = from_stdin ? read_stream(std::cin, source) : read_file(path);
-  LoadedMesh loaded = reader(bytes, source, options);
-  // The STL reader always welds (a triangle soup); a second weld would find nothing.
-  if (options.weld && reader != read_stl) loaded.welded_vertices = weld_vertices(loaded.mesh);
-  return loaded;
+  // Each reader welds when options.weld asks (STL always), before it splits polygons.
+  return reader(bytes, source, options);
 }
 
 }  // namespace exactgeo::mesh

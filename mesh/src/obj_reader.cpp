@@ -1,6 +1,9 @@
 #include "exactgeo/mesh/obj_reader.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "exactgeo/io/input_error.hpp"
@@ -87,6 +90,17 @@ bool denotes_one(std::string_view token) {
   return k != std::string_view::npos && static_cast<long>(k) - 4 * fraction + exponent == 0;
 }
 
+/// The vertex or face keyword `word` is in another case ("V", "F", "Fo", "FO"), if it is one.
+std::optional<std::string_view> keyword_in_another_case(std::string_view word) {
+  for (const std::string_view keyword : {"v", "f", "fo"}) {
+    const bool same_letters =
+        std::equal(word.begin(), word.end(), keyword.begin(), keyword.end(),
+                   [](char w, char k) { return std::tolower(static_cast<unsigned char>(w)) == k; });
+    if (same_letters && word != keyword) return keyword;
+  }
+  return std::nullopt;
+}
+
 class ObjParser {
  public:
   ObjParser(std::string_view text, const std::string& source, const LoadOptions& options)
@@ -103,6 +117,14 @@ class ObjParser {
         read_vertex();
       } else if (tokens_[0] == "f" || tokens_[0] == "fo") {
         read_face();
+      } else if (const auto meant = keyword_in_another_case(tokens_[0])) {
+        // Keywords are lower case; skipping a "V" line would make every face after it
+        // point at other vertices, and skipping an "F" line would lose a face.
+        std::string what = quoted(tokens_[0]);
+        what.append(" is not an OBJ keyword: keywords are lower case (");
+        what.append(quoted(*meant));
+        what.append(")");
+        fail(what);
       }
       // Anything else carries no polygon geometry: texture coordinates, normals, groups,
       // materials, smoothing, lines, points, free-form curves and surfaces.
@@ -150,9 +172,11 @@ class ObjParser {
     out_.mesh.vertices.push_back(p);
   }
 
-  // The position index of one corner ("i", "i/t", "i//n", "i/t/n"), 0-based.
+  // The position index of one corner ("i", "i/t", "i//n", "i/t/n"), 0-based. The texture
+  // and normal indices are not used, but each must be an integer (or absent).
   VertexIndex corner_index(std::string_view token) {
     const std::string_view position = token.substr(0, token.find('/'));
+    check_other_indices(token);
     if (position.empty()) {
       std::string what = "face corner ";
       what.append(quoted(token));
@@ -187,6 +211,22 @@ class ObjParser {
     return static_cast<VertexIndex>(one_based - 1);
   }
 
+  void check_other_indices(std::string_view token) {
+    std::size_t slash = token.find('/');
+    for (int part = 0; slash != std::string_view::npos; ++part) {
+      const std::size_t next = token.find('/', slash + 1);
+      const std::string_view index = token.substr(slash + 1, next - slash - 1);
+      std::string error;
+      if (part >= 2 || (!index.empty() && !parse_integer(index, error))) {
+        std::string what = "face corner ";
+        what.append(quoted(token));
+        what.append(" is not 'v', 'v/vt', 'v//vn' or 'v/vt/vn' with integer indices");
+        fail(what);
+      }
+      slash = next;
+    }
+  }
+
   void read_face() {
     corners_.clear();
     for (std::size_t i = 1; i < tokens_.size(); ++i) {
@@ -209,7 +249,7 @@ class ObjParser {
 }  // namespace
 
 LoadedMesh read_obj(std::string_view text, const std::string& source, const LoadOptions& options) {
-  const std::optional<std::string> utf8 = io::utf16_as_utf8(text);
+  const std::optional<std::string> utf8 = io::utf16_as_utf8(text, source);
   return ObjParser(utf8 ? std::string_view(*utf8) : text, source, options).parse();
 }
 

@@ -252,7 +252,12 @@ class OffParser {
         if (auto why = zero_based_index_problem(*index, vertex_count_)) fail_face(f, *why);
         corners_.push_back(static_cast<VertexIndex>(*index));
       }
-      // Values after the corners are the face's colour: not read.
+      // Values after the corners are the face's colour: not used, but numbers.
+      for (std::size_t i = static_cast<std::size_t>(*n) + 1; i < tokens_.size(); ++i) {
+        if (!io::is_number_literal(tokens_[i])) {
+          fail_face(f, "the colour after the corners: " + quoted(tokens_[i]) + " is not a number");
+        }
+      }
       if (auto why = faces_.add(corners_, lines_.line_number(), out_)) fail_face(f, *why);
     }
   }
@@ -273,7 +278,7 @@ class OffParser {
 }  // namespace
 
 LoadedMesh read_off(std::string_view text, const std::string& source, const LoadOptions& options) {
-  const std::optional<std::string> utf8 = io::utf16_as_utf8(text);
+  const std::optional<std::string> utf8 = io::utf16_as_utf8(text, source);
   return OffParser(utf8 ? std::string_view(*utf8) : text, source, options).parse();
 }
 

@@ -46,8 +46,10 @@ struct PlyHeader {
 };
 
 /// Parses the header at the start of `data`. A line whose first word is no PLY keyword
-/// (exporters write "Created by ..." lines) is skipped and listed: the data's layout
-/// comes from the format, element and property lines only. Throws
+/// (exporters write "Created by ..." lines) is skipped and listed, when it cannot be a
+/// layout line written wrong (the data's layout comes from the format, element and
+/// property lines only): else it is refused, as is a keyword in another case or misspelt
+/// by one or two letters. Throws
 /// InputError("<source>:<line>: ...") for a missing "ply" magic line, an unknown format or version,
 /// a malformed element or property line, a list whose count type is not an integer type, duplicate
 /// names, or a missing end_header.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "exactgeo/io/input_error.hpp"
+#include "exactgeo/mesh/weld.hpp"
 #include "polygon_triangulation.hpp"
 
 namespace exactgeo::mesh::internal {
@@ -81,6 +82,7 @@ std::string faces_named(const std::vector<std::size_t>& faces, const FileNumberi
 }  // namespace
 
 void FileFaces::finish(LoadedMesh& out, const std::string& source, const LoadOptions& options) {
+  if (options.weld) weld(out);
   if (!polygons_.empty()) {
     std::vector<Face>& faces = out.mesh.faces;
     std::vector<Face> split;
@@ -143,6 +145,19 @@ void FileFaces::finish(LoadedMesh& out, const std::string& source, const LoadOpt
     polygons_.clear();
   }
   require_faces(out, source);
+}
+
+void FileFaces::weld(LoadedMesh& out) {
+  const std::size_t before = out.mesh.vertices.size();
+  const std::vector<VertexIndex> new_index = merge_equal_positions(out.mesh.vertices);
+  if (new_index.empty()) return;
+  out.welded_vertices = before - out.mesh.vertices.size();
+  const auto renumber = [&](VertexIndex& c) {
+    if (c != kNoVertex) c = new_index[c];
+  };
+  for (Face& face : out.mesh.faces)
+    std::for_each(face.corners.begin(), face.corners.end(), renumber);
+  std::for_each(corners_.begin(), corners_.end(), renumber);
 }
 
 void require_faces(const LoadedMesh& loaded, const std::string& source) {

@@ -28,7 +28,9 @@ class FileFaces {
   std::optional<std::string> add(std::span<const VertexIndex> corners, std::size_t line,
                                  LoadedMesh& out);
 
-  /// Once every vertex is read: splits each polygon of more than four corners into
+  /// Once every vertex is read: welds the vertices when options.weld asks (before the
+  /// polygons are split, so that a polygon's corners written twice at one position are one
+  /// corner), splits each polygon of more than four corners into
   /// triangles in place, exactly when it is flat, else into a fan when
   /// options.split_polygons asks (with a note in out.notes), and keeps the file's face
   /// numbers in out.numbering. Throws io::InputError naming `source`, the face and its
@@ -36,6 +38,9 @@ class FileFaces {
   void finish(LoadedMesh& out, const std::string& source, const LoadOptions& options);
 
  private:
+  /// merge_equal_positions on the vertices, with every face and polygon re-indexed.
+  void weld(LoadedMesh& out);
+
   struct Polygon {
     std::size_t face;   ///< its place among the file's faces, from 0
     std::size_t line;   ///< 0 in a binary file

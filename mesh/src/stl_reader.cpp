@@ -38,6 +38,9 @@ constexpr std::size_t kRecordBytes = 50;  // normal, three corners (12 float32),
 
 constexpr const char* kOrdinal[3] = {"first", "second", "third"};
 
+/// What follows "1.#" in MSVC's old spellings of infinity, NaN and signalling NaN.
+constexpr std::string_view kMsvcKinds[] = {"inf", "ind", "qnan", "snan"};
+
 /// The pieces, appended (`"literal" + std::string` trips a false GCC 12 -Wrestrict warning).
 std::string cat(std::initializer_list<std::string_view> parts) {
   std::string s;
@@ -57,10 +60,44 @@ bool is_keyword(std::string_view token, std::string_view keyword) {
   });
 }
 
-/// NaN or infinity as printf and other writers spell them: "nan", "-inf", "Infinity", ...
+/// NaN or infinity as C runtimes print a float (the STL format's normal is one, written
+/// by printf or the like): glibc and MSVC since 2015 ("nan", "-nan", "inf", "INF",
+/// "-nan(ind)", "nan(snan)", C99's "nan(chars)"), MSVC before 2015 ("1.#INF00",
+/// "-1.#IND00", "1.#QNAN0", "1.#SNAN", with %e "1.#INF00e+000"), Java ("NaN",
+/// "Infinity"), in any case.
 bool spells_non_finite(std::string_view token) {
   if (!token.empty() && (token[0] == '+' || token[0] == '-')) token.remove_prefix(1);
-  return is_keyword(token, "nan") || is_keyword(token, "inf") || is_keyword(token, "infinity");
+  const auto lower = [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  };
+  std::string t(token.size(), '\0');
+  std::transform(token.begin(), token.end(), t.begin(), lower);
+  if (t == "nan" || t == "inf" || t == "infinity") return true;
+  if (t.starts_with("nan(") && t.ends_with(")")) {
+    const std::string_view chars = std::string_view(t).substr(4, t.size() - 5);
+    return std::all_of(chars.begin(), chars.end(), [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+  }
+  // MSVC's "1.#" spellings: a kind, then the padding digits of the precision, then an
+  // optional exponent as %e writes it.
+  if (!t.starts_with("1.#")) return false;
+  std::string_view rest = std::string_view(t).substr(3);
+  const bool kind =
+      std::any_of(std::begin(kMsvcKinds), std::end(kMsvcKinds), [&](std::string_view k) {
+        if (!rest.starts_with(k)) return false;
+        rest.remove_prefix(k.size());
+        return true;
+      });
+  if (!kind) return false;
+  const auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  while (!rest.empty() && is_digit(rest.front()))
+    rest.remove_prefix(1);
+  if (rest.empty()) return true;
+  if (rest.front() != 'e') return false;
+  rest.remove_prefix(1);
+  if (!rest.empty() && (rest.front() == '+' || rest.front() == '-')) rest.remove_prefix(1);
+  return !rest.empty() && std::all_of(rest.begin(), rest.end(), is_digit);
 }
 
 /// The first word (after a byte order mark and blanks) is "solid", in any case.
@@ -155,9 +192,11 @@ class AsciiStl {
     expect("normal");
     std::string error;
     for (std::size_t i = 0; i < 3; ++i) {
+      // The normal is not used: any float a writer can print is taken, even one beyond
+      // the double range, and only a token that is no float at all is refused.
       const std::string_view token = require("the normal");
-      if (!parse_number(token, error) && !spells_non_finite(token)) {
-        fail_facet(cat({"the normal: ", error}));
+      if (!io::is_number_literal(token) && !spells_non_finite(token)) {
+        fail_facet(cat({"the normal: ", quoted(token), " is not a number"}));
       }
     }
     expect("outer");

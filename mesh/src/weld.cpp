@@ -37,28 +37,34 @@ struct KeyHash {
 
 }  // namespace
 
-std::size_t weld_vertices(Mesh& mesh) {
-  const std::size_t n = mesh.vertices.size();
+std::vector<VertexIndex> merge_equal_positions(std::vector<Point3>& vertices) {
+  const std::size_t n = vertices.size();
   std::unordered_map<Key, VertexIndex, KeyHash> first;
   first.reserve(n);
   std::vector<VertexIndex> new_index(n);
-  std::vector<Point3> welded;
-  welded.reserve(n);
+  std::vector<Point3> merged;
+  merged.reserve(n);
   for (std::size_t v = 0; v < n; ++v) {
     const auto [it, inserted] =
-        first.try_emplace(key_of(mesh.vertices[v]), static_cast<VertexIndex>(welded.size()));
-    if (inserted) welded.push_back(mesh.vertices[v]);
+        first.try_emplace(key_of(vertices[v]), static_cast<VertexIndex>(merged.size()));
+    if (inserted) merged.push_back(vertices[v]);
     new_index[v] = it->second;
   }
-  const std::size_t removed = n - welded.size();
-  if (removed == 0) return 0;
+  if (merged.size() == n) return {};
+  vertices = std::move(merged);
+  return new_index;
+}
+
+std::size_t weld_vertices(Mesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  const std::vector<VertexIndex> new_index = merge_equal_positions(mesh.vertices);
+  if (new_index.empty()) return 0;
   for (Face& face : mesh.faces) {
     for (VertexIndex& c : face.corners) {
       if (c != kNoVertex) c = new_index[c];
     }
   }
-  mesh.vertices = std::move(welded);
-  return removed;
+  return n - mesh.vertices.size();
 }
 
 namespace {

@@ -7,7 +7,7 @@
 //     every face a triangle or a quad whose corners index existing vertices, and every
 //     coordinate finite (and the same after welding);
 //   - STL: every face a triangle, and the vertices welded: three per face before welding,
-//     none left to weld after.
+//     none left to weld after; with the weld option, every reader leaves none to weld.
 //
 // Build with clang (EXACTGEO_BUILD_FUZZERS) and run e.g.
 //   build-fuzz/bin/mesh_input_fuzz -max_total_time=300 <copy of tests/fuzz/corpus/mesh>
@@ -91,10 +91,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check(exactgeo::mesh::weld_vertices(again) == 0);
   }
   if (options.weld) {
-    const std::size_t before = loaded.mesh.vertices.size();
-    const std::size_t removed = exactgeo::mesh::weld_vertices(loaded.mesh);
-    check(loaded.mesh.vertices.size() + removed == before);
-    check_mesh(loaded.mesh);
+    // Welded by the reader, before its polygons were split: nothing is left to weld.
+    check(exactgeo::mesh::weld_vertices(loaded.mesh) == 0);
   }
   return 0;
 }

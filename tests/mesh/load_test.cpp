@@ -501,6 +501,26 @@ TEST_F(mesh_io, ObjErrorsNameFileAndLine) {
                      "short.obj:5:", "at least 3 corners", "has 2");
   EXPECT_MESSAGE_HAS(load_error("empty.obj", cat(square, "# no faces\n")), "empty.obj", "no faces",
                      "4 vertices only, a point cloud (or lines), not a surface");
+  // Texture and normal indices are not used, but they are integers.
+  for (const char* corner : {"3/x", "3//+-1", "3/1/2/4", "3/1.5", "3/-+2/1"}) {
+    EXPECT_MESSAGE_HAS(load_error("vt.obj", cat(square, "f 1 2 ", corner, "\n")),
+                       "vt.obj:5:", corner);
+  }
+  EXPECT_NO_THROW((void)load("vt.obj", cat(square, "f 1/1 2//-1 3/+1/1 4/-2/\n")));
+}
+
+TEST_F(mesh_io, ObjKeywordsInAnotherCaseAreRefused) {
+  // Skipping a "V" line would make the faces after it point at other vertices; an "F" line
+  // would lose a face.
+  const std::string square(kObjSquare);
+  for (const char* keyword : {"V", "F", "Fo", "FO", "fO"}) {
+    const std::string line = std::string(keyword) + (keyword[0] == 'V' ? " 0 0 2" : " 1 2 3");
+    const std::string meant = keyword[0] == 'V' ? "'v'" : (keyword[1] ? "'fo'" : "'f'");
+    const std::string said = cat("'", keyword, "' is not an OBJ keyword");
+    EXPECT_MESSAGE_HAS(load_error("case.obj", cat(square, line, "\n")), "case.obj:5:", said, meant);
+  }
+  // Other statements in any case are not geometry, and are skipped as before.
+  EXPECT_NO_THROW((void)load("case.obj", cat(square, "VT 0 0\nG group\nUsemtl x\nf 1 2 3\n")));
 }
 
 TEST_F(mesh_io, Utf16TextIsReadAsItsCharacters) {
@@ -525,6 +545,12 @@ TEST_F(mesh_io, Utf16TextIsReadAsItsCharacters) {
       const LoadedMesh read = load(name, utf16);
       EXPECT_EQ(read.mesh.vertices, utf8.mesh.vertices) << name << (big ? " big" : " little");
       EXPECT_EQ(read.mesh.faces, utf8.mesh.faces) << name;
+      // Cut by one byte, inside its last character: refused, never read short (a cut quad
+      // once loaded as a triangle).
+      utf16.pop_back();
+      EXPECT_MESSAGE_HAS(load_error(name, utf16), name, "UTF-16",
+                         big ? "big-endian" : "little-endian", "odd number of bytes",
+                         std::to_string(utf16.size()));
     }
   }
 }
@@ -1306,6 +1332,36 @@ TEST_F(mesh_io, WeldingTurnsAQuadSoupIntoSharedVertices) {
   }
   // First-occurrence order: the first face's corners are vertices 0..3.
   EXPECT_TRUE(welded.mesh.faces[0] == make_quad(0, 1, 2, 3));
+}
+
+TEST_F(mesh_io, WeldingComesBeforePolygonsAreSplit) {
+  // A pentagon whose first corner is written again as vertex 6 at the same place: without
+  // welding the polygon touches itself there (refused in every reader, for want of
+  // --split-polygons); welded, it is the pentagon, split exactly.
+  const std::string vertices = "v 0 0 0\nv 2 0 0\nv 3 1 0\nv 1 2 0\nv -1 1 0\nv 0 0 0\n";
+  const std::string faces = "f 1 2 3 4 5 6\n";
+  EXPECT_MESSAGE_HAS(load_error("touch.obj", vertices + faces), "touch.obj:7:", "face 1",
+                     "--split-polygons");
+  const LoadedMesh welded = load("touch.obj", vertices + faces, {.weld = true});
+  EXPECT_EQ(welded.welded_vertices, 1u);
+  EXPECT_EQ(welded.mesh.vertices.size(), 5u);
+  EXPECT_EQ(welded.mesh.faces.size(), 3u);
+  EXPECT_EQ(welded.split_polygons, 1u);
+  for (const Face& f : welded.mesh.faces) {
+    EXPECT_TRUE(f.is_triangle());
+    for (std::size_t c = 0; c < 3; ++c)
+      EXPECT_LT(f.corners[c], 5u);
+  }
+  // The same in OFF and PLY.
+  const std::string off = "OFF\n6 1 0\n0 0 0\n2 0 0\n3 1 0\n1 2 0\n-1 1 0\n0 0 0\n6 0 1 2 3 4 5\n";
+  EXPECT_MESSAGE_HAS(load_error("touch.off", off), "touch.off:9:", "--split-polygons");
+  EXPECT_EQ(load("touch.off", off, {.weld = true}).mesh.faces.size(), 3u);
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n2 0 0\n3 1 0\n1 2 0\n-1 1 0\n0 0 0\n6 0 1 2 3 4 5\n";
+  EXPECT_MESSAGE_HAS(load_error("touch.ply", ply), "touch.ply", "--split-polygons");
+  EXPECT_EQ(load("touch.ply", ply, {.weld = true}).mesh.faces.size(), 3u);
 }
 
 TEST(mesh_io_weld, SignedZerosMergeAndFirstOccurrenceWins) {

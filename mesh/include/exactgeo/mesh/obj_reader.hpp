@@ -15,7 +15,8 @@
 namespace exactgeo::mesh {
 
 /// Parses OBJ text; `source` names it in errors ("<source>:<line>: ..."). Applies
-/// options.split_polygons (not options.weld). Throws io::InputError.
+/// options.split_polygons and options.weld (vertices welded before polygons are split). Throws
+/// io::InputError.
 LoadedMesh read_obj(std::string_view text, const std::string& source, const LoadOptions& options);
 
 }  // namespace exactgeo::mesh

@@ -16,7 +16,8 @@
 namespace exactgeo::mesh {
 
 /// Parses OFF text; `source` names it in errors ("<source>:<line>: ..."). Applies
-/// options.split_polygons (not options.weld). Throws io::InputError.
+/// options.split_polygons and options.weld (vertices welded before polygons are split). Throws
+/// io::InputError.
 LoadedMesh read_off(std::string_view text, const std::string& source, const LoadOptions& options);
 
 }  // namespace exactgeo::mesh

@@ -17,7 +17,8 @@ namespace exactgeo::mesh {
 /// Parses PLY data; `source` names it in errors: "<source>:<line>: ..." for the header
 /// and ASCII data, "<source>: <element> <index>: ..." for binary data. Every count in the
 /// header is checked against the bytes present before anything is allocated for it.
-/// Applies options.split_polygons (not options.weld). Throws io::InputError.
+/// Applies options.split_polygons and options.weld (vertices welded before polygons are
+/// split). Throws io::InputError.
 LoadedMesh read_ply(std::string_view data, const std::string& source, const LoadOptions& options);
 
 }  // namespace exactgeo::mesh

@@ -21,8 +21,13 @@
 // in any case; they and the numbers may be spread over the lines in any way, but a solid's
 // name is the rest of its line. Coordinates are decimal (or hexadecimal) literals converted
 // with correct rounding, as in OBJ: a coordinate copied from the file reads back exactly.
-// A normal is three numbers, or spellings of NaN and infinity (which some writers put on
-// degenerate facets); normals are not used. A UTF-8 byte order mark is skipped.
+// A normal is three floats as a writer prints them, and normals are not used: any number
+// literal is taken (even beyond the double range), and so is every spelling of NaN and
+// infinity that C runtimes print (some writers put them on degenerate facets): glibc's and
+// current MSVC's "nan", "-inf", "-nan(ind)", "nan(chars)", older MSVC's "1.#INF00",
+// "-1.#IND00", "1.#QNAN0", "1.#SNAN" (and "1.#INF00e+000" from %e), Java's "Infinity", in
+// any case. A token that is no float ("a", "1,5", "0x") is refused. A UTF-8 byte order mark is
+// skipped.
 //
 // Which of the two a file is: binary when its size is exactly 84 + 50 n for the count n in
 // bytes 80..83, unless it begins with "solid" and reads as ASCII STL to its end. (Text in

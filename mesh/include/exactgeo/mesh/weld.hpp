@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "exactgeo/mesh/mesh.hpp"
 
@@ -16,6 +17,11 @@ namespace exactgeo::mesh {
 /// (two corners at one position); they are kept for the mesh checks to report.
 /// Precondition: every corner index is in range or kNoVertex.
 std::size_t weld_vertices(Mesh& mesh);
+
+/// The merge of weld_vertices on positions alone: `vertices` keeps each position's first
+/// occurrence, and the result maps each old vertex to its new index; empty (and
+/// `vertices` unchanged) when no two positions are equal.
+std::vector<VertexIndex> merge_equal_positions(std::vector<Point3>& vertices);
 
 /// A face soup's test: when the mesh has boundary edges only because its faces do not
 /// share vertices, the number of vertices welding would merge to close it (every edge then
