@@ -1,5 +1,6 @@
 #include "cli/ccd_command.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <ostream>
 #include <vector>
@@ -38,8 +39,18 @@ ExitCode run_ccd(const CcdCommandOptions& options, std::ostream& out, std::ostre
   for (const QueryFile& f : files)
     total += f.records.size();
   if (total == 0) {
-    err << "exactgeo ccd: no queries in the " << files.size()
-        << (files.size() == 1 ? " file read\n" : " files read\n");
+    // Every file is empty (or blank lines only): name them, the first few if many.
+    err << "exactgeo ccd: no queries in ";
+    if (files.size() == 1) {
+      err << files.front().path;
+    } else {
+      err << "any of the " << files.size() << " files read (";
+      constexpr std::size_t kNamed = 3;
+      for (std::size_t k = 0; k < std::min(files.size(), kNamed); ++k)
+        err << (k > 0 ? ", " : "") << files[k].path;
+      err << (files.size() > kNamed ? ", ...)" : ")");
+    }
+    err << ": a query is 8 lines of x_num,x_den,y_num,y_den,z_num,z_den[,truth]\n";
     return ExitCode::input_error;
   }
 

@@ -64,6 +64,18 @@ expect 2 "ccd type contradicting the path" "" ccd --type vf "$unit"
 expect 2 "ccd truth file for 7-column files" "" ccd --truth "$scratch/two.json" "$unit"
 : >"$scratch/empty_vf.csv"
 expect 2 "ccd without queries" "" ccd "$scratch/empty_vf.csv"
+# The message names the empty file (or the first empty files, when every file is empty).
+printf '\n\n' >"$scratch/blank_ee.csv"
+for args in "$scratch/empty_vf.csv" "$scratch/blank_ee.csv $scratch/empty_vf.csv"; do
+  # shellcheck disable=SC2086
+  message=$("$exe" ccd $args 2>&1 >/dev/null)
+  for file in $args; do
+    case "$message" in
+      *"$file"*) ;;
+      *) echo "FAIL: ccd on empty files does not name $file: $message"; failures=$((failures + 1)) ;;
+    esac
+  done
+done
 expect 2 "ccd zero timing passes" "" ccd --repeat 0 "$unit"
 # Timing passes change the times only: the counts are those of a single pass.
 untimed() {
