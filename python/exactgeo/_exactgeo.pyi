@@ -49,11 +49,12 @@ class Classifier:
         self, points: _Points, *, method: str = "exact", threads: Optional[int] = None
     ) -> npt.NDArray[np.int32]: ...
     def classify(
-        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None
+        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None,
+        first_row: int = 0
     ) -> npt.NDArray[np.int8]: ...
     def contains(
         self, points: _Points, *, boundary: bool = True, method: str = "exact",
-        threads: Optional[int] = None
+        threads: Optional[int] = None, first_row: int = 0
     ) -> npt.NDArray[np.bool_]: ...
 
 @overload

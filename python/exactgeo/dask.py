@@ -78,9 +78,12 @@ def worker_cache() -> dict:
 
 
 def _classify_block(block: np.ndarray, mesh_path: str, method: str, threads: int,
-                    options: Tuple[bool, bool, bool, Optional[str]]) -> np.ndarray:
+                    options: Tuple[bool, bool, bool, Optional[str]],
+                    block_info: Optional[dict] = None) -> np.ndarray:
     classifier = _cache.get(mesh_path, *options)
-    return classifier.classify(block, method=method, threads=threads)
+    # Messages name a point by its row in the whole array, not in its block.
+    first_row = block_info[0]["array-location"][0][0] if block_info else 0
+    return classifier.classify(block, method=method, threads=threads, first_row=first_row)
 
 
 _LIST_CHUNK = 1_000_000  # points per task when the points come as a list

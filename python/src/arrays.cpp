@@ -49,14 +49,15 @@ void require_shape(const py::array& array, std::string_view name,
   }
 }
 
-void require_finite(const Doubles& array, std::string_view name) {
+void require_finite(const Doubles& array, std::string_view name, std::size_t first_row) {
   const double* values = array.data();
   const double* end = values + array.size();
   // The search alone in the loop (libstdc++ unrolls it); the message is made outside.
   const double* bad = std::find_if_not(values, end, [](double x) { return std::isfinite(x); });
   if (bad == end) return;
   const auto row_length = static_cast<std::size_t>(array.size() / array.shape(0));
-  coordinate(*bad, {name, static_cast<std::size_t>(bad - values) / row_length});  // throws
+  coordinate(*bad,
+             {name, first_row + static_cast<std::size_t>(bad - values) / row_length});  // throws
 }
 
 namespace {
@@ -85,14 +86,15 @@ std::optional<py::array> objects_of(const py::object& sequence) {
 }
 
 /// Calls `visit(element, where)` for each element of a C-contiguous array of Elements, in
-/// order, with the element's row.
+/// order, with the element's row (counted from `first_row`).
 template <typename Element, typename Visit>
-void for_each_element(const py::array& array, std::string_view name, Visit&& visit) {
+void for_each_element(const py::array& array, std::string_view name, std::size_t first_row,
+                      Visit&& visit) {
   const auto* elements = static_cast<const Element*>(array.data());
   const std::size_t rows = array.ndim() == 0 ? 1 : static_cast<std::size_t>(array.shape(0));
   const std::size_t row_length = rows == 0 ? 0 : static_cast<std::size_t>(array.size()) / rows;
   for (std::size_t row = 0; row < rows; ++row) {
-    const Where where{name, row};
+    const Where where{name, first_row + row};
     for (std::size_t k = 0; k < row_length; ++k, ++elements)
       visit(*elements, where);
   }
@@ -102,10 +104,10 @@ void for_each_element(const py::array& array, std::string_view name, Visit&& vis
 /// array) in a new float64 array of the same shape, each through `coordinate`: checked and
 /// converted in one pass.
 template <typename Element>
-Doubles doubles_from(const py::array& array, std::string_view name) {
+Doubles doubles_from(const py::array& array, std::string_view name, std::size_t first_row) {
   Doubles doubles(shape_of(array));
   double* out = doubles.mutable_data();
-  for_each_element<Element>(array, name, [&](Element element, const Where& where) {
+  for_each_element<Element>(array, name, first_row, [&](Element element, const Where& where) {
     if constexpr (std::is_same_v<Element, PyObject*>) {
       *out++ = coordinate(py::handle(element), where);
     } else {
@@ -117,20 +119,20 @@ Doubles doubles_from(const py::array& array, std::string_view name) {
 
 /// The same from an array of any dtype, first converted to Number without loss.
 template <typename Number>
-Doubles doubles_via(const py::array& array, std::string_view name) {
+Doubles doubles_via(const py::array& array, std::string_view name, std::size_t first_row) {
   using Numbers = py::array_t<Number, py::array::c_style | py::array::forcecast>;
-  return doubles_from<Number>(Numbers::ensure(array), name);
+  return doubles_from<Number>(Numbers::ensure(array), name, first_row);
 }
 
 }  // namespace
 
 Doubles coordinates(const py::object& object, std::string_view name,
-                    std::initializer_list<py::ssize_t> shape) {
+                    std::initializer_list<py::ssize_t> shape, std::size_t first_row) {
   if (is_python_sequence(object)) {
     const std::optional<py::array> objects = objects_of(object);
     if (!objects) throw py::type_error(std::string(name) + " must be an array of coordinates");
     require_shape(*objects, name, shape);
-    return doubles_from<PyObject*>(*objects, name);
+    return doubles_from<PyObject*>(*objects, name, first_row);
   }
   const py::array array = py::array::ensure(object);
   if (!array) throw py::type_error(std::string(name) + " must be an array of coordinates");
@@ -141,15 +143,16 @@ Doubles coordinates(const py::object& object, std::string_view name,
   }
   require_shape(array, name, shape);
   if (kind == 'O')
-    return doubles_from<PyObject*>(py::array::ensure(array, py::array::c_style), name);
+    return doubles_from<PyObject*>(py::array::ensure(array, py::array::c_style), name, first_row);
   const auto itemsize = static_cast<std::size_t>(array.dtype().itemsize());
-  if (kind == 'f' && itemsize > sizeof(double)) return doubles_via<long double>(array, name);
-  if (kind == 'i' && itemsize == 8) return doubles_via<std::int64_t>(array, name);
-  if (kind == 'u' && itemsize == 8) return doubles_via<std::uint64_t>(array, name);
+  if (kind == 'f' && itemsize > sizeof(double))
+    return doubles_via<long double>(array, name, first_row);
+  if (kind == 'i' && itemsize == 8) return doubles_via<std::int64_t>(array, name, first_row);
+  if (kind == 'u' && itemsize == 8) return doubles_via<std::uint64_t>(array, name, first_row);
   // float16, float32, float64 and integers of up to 32 bits: every value is a double. A
   // C-contiguous float64 array is not copied; the others are converted exactly.
   Doubles doubles = Doubles::ensure(array);
-  require_finite(doubles, name);
+  require_finite(doubles, name, first_row);
   return doubles;
 }
 
@@ -176,7 +179,7 @@ py::array_t<VertexIndex> indices_from(const py::array& array, std::string_view n
                                       const IndexRange& range) {
   py::array_t<VertexIndex> indices(shape_of(array));
   VertexIndex* out = indices.mutable_data();
-  for_each_element<Element>(array, name, [&](Element element, const Where& where) {
+  for_each_element<Element>(array, name, 0, [&](Element element, const Where& where) {
     if constexpr (std::is_same_v<Element, PyObject*>) {
       *out++ = corner_index(py::handle(element), where, range);
     } else {

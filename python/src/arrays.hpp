@@ -37,9 +37,10 @@ using Doubles = py::array_t<double, py::array::c_style | py::array::forcecast>;
 /// any size, floats, NumPy numbers), are taken when they are exactly doubles. Every other
 /// dtype or element (complex, strings, booleans, other objects) is a TypeError; a wrong
 /// shape, a NaN or infinity, or a value that is not exactly a double is a ValueError naming
-/// the argument and the row. A C-contiguous float64 array is used as it is.
+/// the argument and the row, counted from `first_row` (a block of a larger array names the
+/// rows of the whole). A C-contiguous float64 array is used as it is.
 Doubles coordinates(const py::object& object, std::string_view name,
-                    std::initializer_list<py::ssize_t> shape);
+                    std::initializer_list<py::ssize_t> shape, std::size_t first_row = 0);
 
 /// "(5, 2)": an array's shape as Python prints it.
 std::string shape_text(const py::array& array);
@@ -50,8 +51,9 @@ void require_shape(const py::array& array, std::string_view name,
                    std::initializer_list<py::ssize_t> shape);
 
 /// Throws ValueError naming the first row (index along the first axis) that holds a NaN or
-/// an infinity. Precondition: the shape was checked (at least one axis).
-void require_finite(const Doubles& array, std::string_view name);
+/// an infinity, counted from `first_row`. Precondition: the shape was checked (at least one
+/// axis).
+void require_finite(const Doubles& array, std::string_view name, std::size_t first_row = 0);
 
 /// The vertex indices of a faces argument: `object` (an (m, k) integer array, a list of
 /// rows, an object array) as a C-contiguous (m, k) array, k one of `widths`; an empty list

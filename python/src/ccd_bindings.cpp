@@ -28,10 +28,16 @@ using ccd::QueryType;
 
 constexpr std::size_t kBlock = 256;  // queries per parallel block
 
-ccd::Options options_from(const std::string& method, std::optional<double> toi_width,
-                          double cubic_tolerance, double min_separation) {
+ccd::Options options_from(const std::string& method, const py::object& toi_width_in,
+                          const py::object& cubic_tolerance_in,
+                          const py::object& min_separation_in) {
   ccd::Options options;
   options.method = ccd_method_named(method);
+  const double min_separation = option_number(min_separation_in, "min_separation");
+  const double cubic_tolerance = option_number(cubic_tolerance_in, "cubic_tolerance");
+  const std::optional<double> toi_width =
+      toi_width_in.is_none() ? std::nullopt
+                             : std::optional(option_number(toi_width_in, "toi_width"));
   if (!ccd::is_valid_min_separation(min_separation)) {
     throw py::value_error("min_separation must be finite and >= 0");
   }
@@ -49,7 +55,8 @@ ccd::Options options_from(const std::string& method, std::optional<double> toi_w
           "a pair collides)");
     }
     if (!(*toi_width > 0.0 && *toi_width <= 1.0)) {
-      throw py::value_error("toi_width must be in (0, 1], got " + std::to_string(*toi_width));
+      throw py::value_error("toi_width must be in (0, 1], got " +
+                            std::string(py::repr(toi_width_in)));
     }
     options.time_of_impact_width = toi_width;
   }
@@ -64,8 +71,8 @@ ccd::Options options_from(const std::string& method, std::optional<double> toi_w
 /// toi_width an (n, 2) array of brackets (NaN rows where there is no collision).
 template <ccd::QueryType type>
 py::object run_queries(const py::object& x0_in, const py::object& x1_in, const std::string& method,
-                       std::optional<double> toi_width, double cubic_tolerance, int threads,
-                       double min_separation) {
+                       const py::object& toi_width, const py::object& cubic_tolerance, int threads,
+                       const py::object& min_separation) {
   const ccd::Options options = options_from(method, toi_width, cubic_tolerance, min_separation);
   const Doubles x0 = coordinates(x0_in, "x0", {-1, 4, 3});
   const Doubles x1 = coordinates(x1_in, "x1", {-1, 4, 3});

@@ -24,7 +24,8 @@ bool exactly_double(long double value) {
 }
 
 std::string Where::text() const {
-  return std::string(name) + "[" + std::to_string(row) + "]";
+  if (!row) return std::string(name);
+  return std::string(name) + "[" + std::to_string(*row) + "]";
 }
 
 namespace {
@@ -61,12 +62,18 @@ std::string text_of(long double value) {
 /// `roundable`: the nearest double is finite, so rounding first is a way out.
 [[noreturn]] void refuse_inexact(const Where& where, const std::string& value, std::string_view why,
                                  bool roundable) {
-  throw py::value_error(where.text() + " has a coordinate that is not exactly a double: " + value +
-                        " (" + std::string(why) + ")" +
+  const char* is = where.row ? " has a coordinate that is" : " is";
+  throw py::value_error(where.text() + is + " not exactly a double: " + value + " (" +
+                        std::string(why) + ")" +
                         (roundable ? std::string(kRoundFirst) : std::string()));
 }
 
 [[noreturn]] void refuse_not_real(py::handle value, const Where& where) {
+  if (!where.row) {
+    throw py::type_error(std::string(where.name) +
+                         " must be a real number (an int, a float or a NumPy number), got " +
+                         described(value));
+  }
   throw py::type_error(std::string(where.name) + " must hold real numbers, got " +
                        described(value) + " in " + where.text());
 }
@@ -147,7 +154,8 @@ std::optional<py::object> integer_of(py::handle value) {
 }  // namespace
 
 void refuse_non_finite(const Where& where, const std::string& value) {
-  throw py::value_error(where.text() + " has a non-finite coordinate (" + value + ")");
+  const char* is = where.row ? " has a non-finite coordinate (" : " is not finite (";
+  throw py::value_error(where.text() + is + value + ")");
 }
 
 void refuse_inexact_integer(const Where& where, const std::string& value) {
@@ -173,6 +181,10 @@ double coordinate(py::handle value, const Where& where) {
     return numpy_coordinate(*scalar, where);
   }
   refuse_not_real(value, where);
+}
+
+double option_number(py::handle value, std::string_view name) {
+  return coordinate(value, Where{name, std::nullopt});  // a bool is refused there
 }
 
 IndexRange vertex_range(std::optional<std::uint64_t> vertex_count) {

@@ -44,13 +44,13 @@ constexpr bool exactly_double(std::int64_t value) {
 /// value beyond it is undefined behaviour) and unchanged by the round trip through double.
 bool exactly_double(long double value);
 
-/// Where a number sits in its argument, for messages: the argument's name and the row (the
-/// index along the first axis).
+/// Where a number sits, for messages: the argument's name and the row (the index along the
+/// first axis) of an array, or an option's name alone (no row).
 struct Where {
   std::string_view name;
-  std::size_t row;
+  std::optional<std::size_t> row;
 
-  /// "points[3]"
+  /// "points[3]", or "min_separation"
   std::string text() const;
 };
 
@@ -114,6 +114,13 @@ VertexIndex corner_index(Integer value, const Where& where, const IndexRange& ra
 /// __index__, except a bool. A float (Python or NumPy, integral or not), a Fraction or a
 /// Decimal is a ValueError naming the row and the value, never truncated.
 VertexIndex corner_index(py::handle corner, const Where& where, const IndexRange& range);
+
+/// A numeric option (min_separation=, toi_width=, ...) by the rules of a coordinate: an
+/// int, a float or a NumPy number, finite and exactly a double (2**53 + 1 is refused, not
+/// rounded); a TypeError naming the option for anything else (a bool, a Fraction, a
+/// Decimal, a string), a ValueError for a value that is not finite or not a double. Range
+/// checks are the caller's.
+double option_number(py::handle value, std::string_view name);
 
 /// An integer from a Python object (a vertex count), by the rules of corner_index: a
 /// TypeError for what is not an integer, a ValueError outside 0..`largest`.

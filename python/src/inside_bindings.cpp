@@ -40,8 +40,9 @@ unsigned threads_for(const ClassifierObject& object, const std::optional<int>& t
 
 /// The labels of `points` (validated), computed without the GIL.
 std::vector<Location> locations_of(const ClassifierObject& object, const py::object& points_in,
-                                   const std::string& method, const std::optional<int>& threads) {
-  const Doubles points = coordinates(points_in, "points", {-1, 3});
+                                   const std::string& method, const std::optional<int>& threads,
+                                   std::size_t first_row) {
+  const Doubles points = coordinates(points_in, "points", {-1, 3}, first_row);
   const Arithmetic arithmetic = arithmetic_named(method);
   const unsigned workers = threads_for(object, threads);
   const std::span<const Point3> rows = points_of(points);
@@ -52,8 +53,10 @@ std::vector<Location> locations_of(const ClassifierObject& object, const py::obj
 }
 
 py::array_t<std::int8_t> classify(const ClassifierObject& classifier, const py::object& points,
-                                  const std::string& method, const std::optional<int>& threads) {
-  const std::vector<Location> locations = locations_of(classifier, points, method, threads);
+                                  const std::string& method, const std::optional<int>& threads,
+                                  std::size_t first_row) {
+  const std::vector<Location> locations =
+      locations_of(classifier, points, method, threads, first_row);
   py::array_t<std::int8_t> labels(static_cast<py::ssize_t>(locations.size()));
   std::transform(locations.begin(), locations.end(), labels.mutable_data(),
                  [](Location l) { return static_cast<std::int8_t>(l); });
@@ -62,8 +65,9 @@ py::array_t<std::int8_t> classify(const ClassifierObject& classifier, const py::
 
 py::array_t<bool> contains(const ClassifierObject& classifier, const py::object& points,
                            bool boundary, const std::string& method,
-                           const std::optional<int>& threads) {
-  const std::vector<Location> locations = locations_of(classifier, points, method, threads);
+                           const std::optional<int>& threads, std::size_t first_row) {
+  const std::vector<Location> locations =
+      locations_of(classifier, points, method, threads, first_row);
   py::array_t<bool> inside(static_cast<py::ssize_t>(locations.size()));
   std::transform(locations.begin(), locations.end(), inside.mutable_data(), [&](Location l) {
     return l == Location::inside || (boundary && l == Location::boundary);
@@ -226,7 +230,7 @@ for classify. Raises ValueError when the faces are not oriented alike (a mesh ac
 rule="parity" only) or the surface is open (its generalized winding numbers are not
 integers).)doc")
       .def("classify", &classify, py::arg("points"), py::kw_only(), py::arg("method") = "exact",
-           py::arg("threads") = py::none(),
+           py::arg("threads") = py::none(), py::arg("first_row") = 0,
            R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY (and
 UNDECIDED against an open surface, where no precision allowed settles the label).
 
@@ -235,11 +239,13 @@ method: "exact" (default) or "double" (the same traversal in plain doubles: fast
     wrong near the surface, for comparison).
 threads: worker threads, 0 for all hardware threads; None (default): the classifier's
     (Classifier(threads=)). The GIL is released.
+first_row: the number messages give points[0]: a block of a larger array (as
+    exactgeo.dask passes them) names its rows as the whole array numbers them.
 
 Raises ValueError for a wrong shape, or for a coordinate that is not finite or not exactly
 a double, such as the int64 2**53 + 1 (naming its row).)doc")
       .def("contains", &contains, py::arg("points"), py::kw_only(), py::arg("boundary") = true,
-           py::arg("method") = "exact", py::arg("threads") = py::none(),
+           py::arg("method") = "exact", py::arg("threads") = py::none(), py::arg("first_row") = 0,
            R"doc(A bool array: inside the solid, or on its boundary when `boundary` is true.
 
 An UNDECIDED point (an open surface's w exactly 1/2, or too close to it) is not

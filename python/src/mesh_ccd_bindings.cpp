@@ -59,7 +59,7 @@ std::unique_ptr<MeshCcdObject> make(const py::object& faces_in, const py::object
 
 StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object& x1_in,
                 const std::string& method, const py::object& toi, int threads,
-                double min_separation) {
+                const py::object& min_separation_in) {
   const std::size_t n = object.ccd.vertex_count();
   const Doubles x0 = coordinates(x0_in, "x0", {-1, 3});
   const Doubles x1 = coordinates(x1_in, "x1", {-1, 3});
@@ -76,15 +76,10 @@ StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object
   if (py::isinstance<py::bool_>(toi)) {
     if (toi.cast<bool>()) options.time_of_impact_width = 1e-6;
   } else {
-    double width = 0.0;
-    try {
-      width = toi.cast<double>();
-    } catch (const py::cast_error&) {
-      throw py::type_error("toi must be True, False or a width (a float)");
-    }
+    const double width = option_number(toi, "toi");
     if (!(width > 0.0 && width <= 1.0)) {
       throw py::value_error("toi must be True, False or a width in (0, 1], got " +
-                            std::to_string(width));
+                            std::string(py::repr(toi)));
     }
     options.time_of_impact_width = width;
   }
@@ -94,6 +89,7 @@ StepResult step(MeshCcdObject& object, const py::object& x0_in, const py::object
         "collides)");
   }
 
+  const double min_separation = option_number(min_separation_in, "min_separation");
   if (!ccd::is_valid_min_separation(min_separation)) {
     throw py::value_error("min_separation must be finite and >= 0");
   }

@@ -1,6 +1,7 @@
 """exactgeo.dask on a real distributed.LocalCluster (two worker processes on loopback):
 the single-process labels, one classifier build per worker, and loader errors."""
 
+import re
 
 import numpy as np
 import pytest
@@ -134,8 +135,24 @@ def test_coordinates_are_exact_or_refused(client, cube_file):
     labels = exactgeo.dask.classify(cube_file, [[0.5, 0.5, 0.5], [2**53 + 2, 0.5, 0], [1, 0, 0]])
     assert labels.compute().tolist() == [exactgeo.INSIDE, exactgeo.OUTSIDE, exactgeo.BOUNDARY]
     int64 = da.from_array(np.array([[0, 0, 0], [2**53 + 1, 0, 0]]), chunks=(1, 3))
-    with pytest.raises(ValueError, match=r"points\[0\] has a coordinate that is not exactly"):
+    with pytest.raises(ValueError, match=r"points\[1\] has a coordinate that is not exactly"):
         exactgeo.dask.classify(cube_file, int64).compute()
+
+
+@pytest.mark.parametrize("chunk", [1, 2, 3, 5])
+def test_errors_name_the_row_of_the_whole_array(client, cube_file, chunk):
+    # A bad point in a later block is named by its row in the whole array, not in its block
+    # (a NaN at row 4 was once "points[0]").
+    for row, value in ((4, np.nan), (6, np.inf), (7, -np.inf)):
+        points = np.full((9, 3), 0.5)
+        points[row, 1] = value
+        with pytest.raises(ValueError, match=re.escape(f"points[{row}] has a non-finite")):
+            exactgeo.dask.classify(cube_file, da.from_array(points, chunks=(chunk, 3))).compute()
+    rows = [[0.5, 0.5, 0.5]] * 8
+    rows[5] = [0.5, 2**53 + 1, 0.5]
+    with pytest.raises(ValueError, match=re.escape("points[5] has a coordinate that is not")):
+        exactgeo.dask.classify(cube_file, da.from_array(np.array(rows, dtype=object),
+                                                        chunks=(chunk, 3))).compute()
 
 
 def test_ccd_files_count_as_the_command_line(client, cli):

@@ -335,3 +335,58 @@ def test_vertex_count_is_an_integer():
         with pytest.raises(ValueError, match=f"vertex_count must be in 0..4294967295, got {value}"):
             exactgeo.MeshCcd([[0, 1, 2]], vertex_count=value)
     assert exactgeo.MeshCcd([[0, 1, 2]], vertex_count=np.uint8(5)).vertex_count == 5
+
+
+# Numeric options: converted as coordinates are, exactly or refused, naming the option.
+
+_X = np.zeros((1, 4, 3))
+_SHEET = [[0, 1, 2]]
+_SHEET_X = np.array([[0.0, 0, 0], [1, 0, 0], [0, 1, 0]])
+OPTIONS = {
+    "min_separation": lambda v: exactgeo.vertex_face_ccd(_X, _X, min_separation=v),
+    "toi_width": lambda v: exactgeo.edge_edge_ccd(_X, _X, toi_width=v),
+    "cubic_tolerance": lambda v: exactgeo.vertex_face_ccd(_X, _X, method="cubic",
+                                                          cubic_tolerance=v),
+    "toi": lambda v: exactgeo.MeshCcd(_SHEET).step(_SHEET_X, _SHEET_X, toi=v),
+    "min_separation ": lambda v: exactgeo.MeshCcd(_SHEET).step(_SHEET_X, _SHEET_X,
+                                                               min_separation=v),
+}
+
+
+@pytest.mark.parametrize("option", sorted(OPTIONS))
+def test_numeric_options_are_exact_or_refused(option):
+    call, name = OPTIONS[option], option.strip()
+    # Not real numbers to the conversion, whatever their value: refused by type, never
+    # rounded (Decimal("1e-400") once ran as 0).
+    for value in (Decimal("1e-400"), Decimal("0.5"), Fraction(1, 3), Fraction(1, 2), "0.5",
+                  1j, [0.5]):
+        with pytest.raises(TypeError, match=re.escape(f"{name} must be a real number")):
+            call(value)
+    # Real numbers that are not exactly doubles: refused by value, with the way out.
+    inexact = [2**53 + 1, np.int64(2**53 + 1), np.uint64(2**64 - 1), 10**400]
+    if LONG_DOUBLE_IS_WIDER:
+        inexact.append(np.longdouble(1) / 3)
+    for value in inexact:
+        with pytest.raises(ValueError, match=re.escape(f"{name} is not exactly a double")):
+            call(value)
+    for value in (float("nan"), np.float32("inf")):
+        with pytest.raises(ValueError, match=f"{name} "):
+            call(value)
+
+
+def test_numeric_options_that_are_doubles_run_as_the_float():
+    x0 = np.array([[[0.2, 0.2, 0.25], [0, 0, 0], [1, 0, 0], [0, 1, 0]]])
+    x1 = x0.copy()
+    x1[0, 0, 2] = -0.25  # the vertex passes through the triangle
+    for value in (np.float32(0.25), np.float16(0.25), np.longdouble(0.25), np.array(0.25)):
+        assert exactgeo.vertex_face_ccd(x0, x0, min_separation=value)[0]
+    assert not exactgeo.vertex_face_ccd(x0, x0, min_separation=np.float32(0.125))[0]
+    # An int that is a double is taken as that double.
+    assert exactgeo.vertex_face_ccd(x0 * 2**60, x0 * 2**60, min_separation=2**58)[0]
+    hits, brackets = exactgeo.vertex_face_ccd(x0, x1, toi_width=np.float32(2**-10))
+    same, reference = exactgeo.vertex_face_ccd(x0, x1, toi_width=2**-10)
+    assert hits.tolist() == same.tolist() == [True]
+    assert brackets.tolist() == reference.tolist()
+    assert brackets[0, 0] <= 0.5 <= brackets[0, 1] and brackets[0, 1] - brackets[0, 0] <= 2**-10
+    step = exactgeo.MeshCcd(_SHEET).step(_SHEET_X, _SHEET_X, toi=np.float64(0.5))
+    assert not step.collision
