@@ -37,10 +37,11 @@ using internal::shape_of;
 
 /// The filters first (cheapest and most often decisive first: on a smooth quad mesh a
 /// corner plane of one face settles most neighbours), then the exact method of the pair.
-FaceContact contact(const FaceGeometry& a, const FaceGeometry& b) noexcept {
+FaceContact contact(const FaceGeometry& a, const FaceGeometry& b,
+                    CoplanarOverlap coplanar) noexcept {
   if (a.shape == Shape::degenerate || b.shape == Shape::degenerate) return FaceContact::apart;
   if (separated_by_corner_plane(a, b) || separated_by_corner_plane(b, a)) return FaceContact::apart;
-  if (a.convex_polygon() && b.convex_polygon()) return convex_polygons_contact(a, b);
+  if (a.convex_polygon() && b.convex_polygon()) return convex_polygons_contact(a, b, coplanar);
   if (separated_by_edge_pair_axis(a, b)) return FaceContact::apart;
   // A coplanar pair gets here only with an other-flat quad (a skew quad lies in no plane).
   // Every edge then lies in the other face's plane, so each ray either misses the face or
@@ -63,12 +64,12 @@ std::string_view to_string(FaceContact contact) noexcept {
   return "?";
 }
 
-FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b) {
+FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b, CoplanarOverlap coplanar) {
   if (a == b) return FaceContact::apart;
   const Face& fa = mesh.faces[a];
   const Face& fb = mesh.faces[b];
   return contact(geometry_of(mesh, fa, shape_of(mesh, fa)),
-                 geometry_of(mesh, fb, shape_of(mesh, fb)));
+                 geometry_of(mesh, fb, shape_of(mesh, fb)), coplanar);
 }
 
 namespace {
@@ -108,7 +109,8 @@ void overlapping_face_pairs(const Mesh& mesh, const std::vector<std::size_t>& fa
 
 }  // namespace
 
-SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads) {
+SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads,
+                                          CoplanarOverlap coplanar) {
   const std::size_t n = mesh.faces.size();
   std::vector<Shape> shapes(n);
   std::vector<std::size_t> faces;  // the non-degenerate ones, which alone can intersect
@@ -132,8 +134,9 @@ SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads) {
       const std::size_t end = std::min(pending.size(), (block + 1) * kBlock);
       for (std::size_t k = block * kBlock; k < end; ++k) {
         const FacePair& pair = pending[k];
-        answers[k] = contact(geometry_of(mesh, mesh.faces[pair.first], shapes[pair.first]),
-                             geometry_of(mesh, mesh.faces[pair.second], shapes[pair.second]));
+        answers[k] =
+            contact(geometry_of(mesh, mesh.faces[pair.first], shapes[pair.first]),
+                    geometry_of(mesh, mesh.faces[pair.second], shapes[pair.second]), coplanar);
       }
     });
     for (std::size_t k = 0; k < pending.size(); ++k) {

@@ -1028,5 +1028,37 @@ TEST(SelfIntersections, CoplanarOverlapFacingTheSameWayIntersects) {
   EXPECT_TRUE(find_self_intersections(mesh).intersecting.empty());
 }
 
+TEST(SelfIntersections, SheetsThatMustStayApartCountEveryCoplanarOverlap) {
+  // CoplanarOverlap::intersecting: a sheet lying flat on another is in contact whichever
+  // way the two face; edges and corners shared or touched are still no intersection.
+  constexpr auto kApart = CoplanarOverlap::intersecting;
+  Mesh fan;
+  fan.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0}, {4, 4, 0}, {1, -1, 0}};
+  fan.faces = {make_triangle(0, 1, 2), make_triangle(1, 0, 3)};  // folded flat onto the first
+  EXPECT_EQ(face_contact(fan, 0, 1), FaceContact::apart);
+  EXPECT_EQ(face_contact(fan, 0, 1, kApart), FaceContact::intersecting);
+  EXPECT_EQ(face_contact(fan, 1, 0, kApart), FaceContact::intersecting);
+  EXPECT_EQ(find_self_intersections(fan, 1, kApart).intersecting, (std::vector<FacePair>{{0, 1}}));
+  // Neighbours in one plane that tile it: apart under both rules, whichever the facing.
+  for (const Face second : {make_triangle(1, 4, 2), make_triangle(2, 4, 1), make_triangle(1, 0, 5),
+                            make_triangle(0, 1, 5)}) {
+    fan.faces[1] = second;
+    EXPECT_EQ(face_contact(fan, 0, 1, kApart), FaceContact::apart);
+    EXPECT_TRUE(find_self_intersections(fan, 1, kApart).intersecting.empty());
+  }
+  // Convex quads overlapping partially, the second facing the other way.
+  Mesh quads;
+  quads.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0},
+                    {1, 1, 0}, {3, 1, 0}, {3, 3, 0}, {1, 3, 0}};
+  quads.faces = {make_quad(0, 1, 2, 3), make_quad(4, 7, 6, 5)};
+  EXPECT_TRUE(find_self_intersections(quads).intersecting.empty());
+  EXPECT_EQ(find_self_intersections(quads, 2, kApart).intersecting,
+            (std::vector<FacePair>{{0, 1}}));
+  // Touching along a segment only (the second square moved to x in [2, 4]): apart.
+  for (VertexIndex v = 4; v < 8; ++v)
+    quads.vertices[v][0] += 1.0;
+  EXPECT_EQ(face_contact(quads, 0, 1, kApart), FaceContact::apart);
+}
+
 }  // namespace
 }  // namespace exactgeo::mesh

@@ -37,7 +37,8 @@ bool edge_line_separates(const FaceGeometry& f, const FaceGeometry& g, std::size
 }
 
 /// Coplanar convex polygons. Facing opposite ways they only touch, by the rule, whether
-/// or not they overlap. Facing the same way, their interiors are disjoint exactly when a
+/// or not they overlap (unless `coplanar` says such an overlap intersects). Otherwise
+/// their interiors are disjoint exactly when a
 /// line weakly separates them, and then one through an edge of either does (the Minkowski
 /// difference of two convex polygons has edges parallel to theirs; the origin lies
 /// outside its interior exactly when it is on the closed outer side of one of its edge
@@ -50,8 +51,11 @@ bool edge_line_separates(const FaceGeometry& f, const FaceGeometry& g, std::size
 /// the plane x_axis = 0, `up` one unit above it, and the cross product of the flattened
 /// differences is (0, .., n[axis], .., 0), the other coordinates dropping out. For a
 /// strictly convex quad every three corners in boundary order have the polygon's
-/// orientation, so its first three corners give its facing.
-FaceContact coplanar_contact(const FaceGeometry& a, const FaceGeometry& b) noexcept {
+/// orientation, so its first three corners give its facing. The edge lines are tested
+/// against each polygon's own facing (its inside is on that side of each of its edges),
+/// so the separation test holds for either facing of the other.
+FaceContact coplanar_contact(const FaceGeometry& a, const FaceGeometry& b,
+                             CoplanarOverlap coplanar) noexcept {
   // Dropping a coordinate on which the plane's normal is nonzero keeps the configuration.
   std::size_t axis = 0;
   Sign a_facing = orient2d(a.p[0], a.p[1], a.p[2], axis);
@@ -59,7 +63,9 @@ FaceContact coplanar_contact(const FaceGeometry& a, const FaceGeometry& b) noexc
     a_facing = orient2d(a.p[0], a.p[1], a.p[2], ++axis);
   // Nonzero too: b lies in a's plane and its first three corners are not collinear.
   const Sign b_facing = orient2d(b.p[0], b.p[1], b.p[2], axis);
-  if (a_facing != b_facing) return FaceContact::apart;  // the two sides of the surface
+  if (a_facing != b_facing && coplanar == CoplanarOverlap::touching) {
+    return FaceContact::apart;  // the two sides of the surface
+  }
   if (edge_line_separates(a, b, axis, a_facing) || edge_line_separates(b, a, axis, b_facing))
     return FaceContact::apart;
   return FaceContact::intersecting;
@@ -126,11 +132,12 @@ Sides sides_reached(const std::array<Sign, 4>& sides, std::size_t n) noexcept {
 
 }  // namespace
 
-FaceContact convex_polygons_contact(const FaceGeometry& a, const FaceGeometry& b) noexcept {
+FaceContact convex_polygons_contact(const FaceGeometry& a, const FaceGeometry& b,
+                                    CoplanarOverlap coplanar) noexcept {
   const std::array<Sign, 4> a_sides = sides_against(a, b);
   const std::array<Sign, 4> b_sides = sides_against(b, a);
   const Sides a_reach = sides_reached(a_sides, a.n), b_reach = sides_reached(b_sides, b.n);
-  if (!b_reach.any()) return coplanar_contact(a, b);
+  if (!b_reach.any()) return coplanar_contact(a, b, coplanar);
   // Not both sides: the polygon's interior is off the other plane (or the two are
   // coplanar, handled above).
   if (!a_reach.both() || !b_reach.both()) return FaceContact::apart;

@@ -4,8 +4,9 @@
 // never undecided.
 //
 // The open faces are the polygons' interiors. Coplanar polygons facing opposite ways only
-// touch (the rule of self_intersection.hpp); facing the same way they meet exactly when
-// no line through an edge of either weakly separates them. Polygons in planes that cross
+// touch by the rule of self_intersection.hpp (CoplanarOverlap::touching); facing the same
+// way, or under CoplanarOverlap::intersecting either way, they meet exactly when no line
+// through an edge of either weakly separates them. Polygons in planes that cross
 // meet exactly when the open chords in which each cuts the other's plane overlap on the
 // planes' common line. Every test is an exact orient3d sign (convex_polygons.cpp has the
 // derivations).
@@ -16,6 +17,7 @@
 namespace exactgeo::mesh::internal {
 
 /// Precondition: a.convex_polygon() and b.convex_polygon().
-FaceContact convex_polygons_contact(const FaceGeometry& a, const FaceGeometry& b) noexcept;
+FaceContact convex_polygons_contact(const FaceGeometry& a, const FaceGeometry& b,
+                                    CoplanarOverlap coplanar) noexcept;
 
 }  // namespace exactgeo::mesh::internal

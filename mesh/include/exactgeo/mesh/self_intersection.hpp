@@ -14,6 +14,11 @@
 // face, an edge lying on a face with the faces on one side of it, edges crossing edges)
 // are not intersections. Degenerate faces (a repeated corner, or zero area) are skipped.
 //
+// Surfaces that must stay apart (cloth, sheets that collide) ask for the other rule
+// (CoplanarOverlap::intersecting): a coplanar overlap with area is an intersection
+// whichever way the faces face, since a sheet lying flat inside another is two sheets in
+// contact, which the next collision step starts from.
+//
 // Why facing decides: a ray through a coplanar overlapping pair crosses both faces, so
 // crossing parity (point-in-volume) never sees the overlap as surface. For two closed,
 // consistently oriented solids set face to face (opposite facing) that gives their union,
@@ -42,11 +47,19 @@ enum class FaceContact : std::uint8_t {
 };
 std::string_view to_string(FaceContact contact) noexcept;
 
-/// Exact decision for faces a and b (a != b) of the mesh.
+/// What two coplanar faces whose interiors overlap while facing opposite ways are.
+enum class CoplanarOverlap : std::uint8_t {
+  touching,      ///< the two sides of one surface meeting (solids set face to face): apart
+  intersecting,  ///< an intersection all the same (sheets that must stay apart: cloth)
+};
+
+/// Exact decision for faces a and b (a != b) of the mesh, coplanar overlaps facing
+/// opposite ways read by `coplanar` (the rule above: touching).
 ///
 /// Two triangles, or any two planar faces that are triangles or strictly convex quads:
 /// exact and complete (apart or intersecting, never undecided); coplanar ones facing
-/// opposite ways are apart whether or not they overlap. Any other pair (a skew
+/// opposite ways are apart whether or not they overlap (intersecting when they overlap,
+/// under CoplanarOverlap::intersecting). Any other pair (a skew
 /// quad, or a planar quad that is not convex): separating planes first, then every edge
 /// of one face against the other face and vice versa; `intersecting` is always proved,
 /// but `apart` is then only "no edge crosses the other face an odd number of times"
@@ -56,7 +69,8 @@ std::string_view to_string(FaceContact contact) noexcept;
 /// everything.
 ///
 /// Preconditions: a, b < mesh.faces.size(), corner indices in range, finite coordinates.
-FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b);
+FaceContact face_contact(const Mesh& mesh, std::size_t a, std::size_t b,
+                         CoplanarOverlap coplanar = CoplanarOverlap::touching);
 
 /// Two faces by index, first < second.
 struct FacePair {
@@ -78,7 +92,10 @@ struct SelfIntersections {
 /// thread; the pairs it finds are decided in blocks on `threads` workers (0: one per
 /// hardware thread). The result is the same for every thread count.
 ///
+/// `coplanar` as for face_contact.
+///
 /// Preconditions: corner indices in range, finite coordinates (check_mesh reports both).
-SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads = 0);
+SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads = 0,
+                                          CoplanarOverlap coplanar = CoplanarOverlap::touching);
 
 }  // namespace exactgeo::mesh
