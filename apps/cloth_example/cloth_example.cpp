@@ -243,8 +243,10 @@ std::optional<std::string> intersection(const exactgeo::cloth::ClothMesh& mesh, 
   }
   for (const exactgeo::ccd::Triangle& t : mesh.faces)
     m.faces.push_back(exactgeo::mesh::make_triangle(t[0], t[1], t[2]));
-  const exactgeo::mesh::SelfIntersections found =
-      exactgeo::mesh::find_self_intersections(m, threads);
+  // Cloth must stay apart: a sheet lying flat on another, facing the other way, is a
+  // contact too (the rule for solids set face to face would let it pass).
+  const exactgeo::mesh::SelfIntersections found = exactgeo::mesh::find_self_intersections(
+      m, threads, exactgeo::mesh::CoplanarOverlap::intersecting);
   ++totals.intersection_checks;
   totals.intersection_seconds += std::chrono::duration<double>(Clock::now() - start).count();
   if (found.intersecting.empty() && found.undecided.empty()) return std::nullopt;

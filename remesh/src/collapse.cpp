@@ -1,11 +1,13 @@
 // collapse_edge and collapse_edges: an edge's ends merged at a new point, checked as a
-// pseudo-motion (both ends move there on straight lines while everything else stands)
-// and then in place (the triangles around the merged vertex against every other one).
+// pseudo-motion (both ends move there on straight lines while everything else stands).
 //
 // collapse_edge decides one collapse by pair CCD on every pair with a moving corner
-// (first_collision) and face contacts of its star; collapse_edges decides a pass through
-// the mesh broad phase and the exact self-intersection finder. Both are exact, and the
-// pass agrees with the single collapse on every collapse it does not defer (tested).
+// (first_collision); collapse_edges decides a pass through the mesh broad phase. Both are
+// exact, and the pass agrees with the single collapse on every collapse it does not defer
+// (tested). The surface after the collapse needs no check of its own: a pair of triangles
+// that intersects there was in contact during the motion, through a vertex-face or an
+// edge-edge pair the motion check decides (docs/remesh.md, "Collapse", has the argument;
+// Collapses.AnEndStateThatIntersectsIsRefusedByTheMotion, the evidence).
 
 #include <algorithm>
 #include <cstdint>
@@ -16,8 +18,6 @@
 #include <vector>
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
-#include "exactgeo/mesh/mesh.hpp"
-#include "exactgeo/mesh/self_intersection.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
 #include "operation_checks.hpp"
@@ -132,34 +132,6 @@ Surface collapsed(const Surface& surface, const std::vector<const CollapsePlan*>
   return after;
 }
 
-mesh::Mesh as_mesh(const Surface& s) {
-  mesh::Mesh m;
-  m.vertices = s.vertices;
-  for (const Triangle& t : s.triangles)
-    m.faces.push_back(mesh::make_triangle(t[0], t[1], t[2]));
-  return m;
-}
-
-/// The first triangle of `after` that a triangle around `v` intersects there (exactly,
-/// mesh::face_contact; triangles whose closed boxes are apart have no common point), or
-/// nullopt.
-std::optional<Blocker> star_intersection(const Surface& after, VertexIndex v) {
-  const mesh::Mesh m = as_mesh(after);
-  std::vector<std::array<Point3, 2>> boxes;
-  for (const Triangle& t : after.triangles)
-    boxes.push_back(
-        box_of(std::array{after.vertices[t[0]], after.vertices[t[1]], after.vertices[t[2]]}));
-  for (const std::size_t star : after.triangles_around(v)) {
-    for (std::size_t other = 0; other < m.faces.size(); ++other) {
-      if (other == star || !boxes_meet(boxes[star], boxes[other])) continue;
-      if (mesh::face_contact(m, star, other) != mesh::FaceContact::apart) {
-        return Blocker{Blocker::Kind::triangle, after.triangles[other]};
-      }
-    }
-  }
-  return std::nullopt;
-}
-
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 /// A pass of collapses (collapse_edges).
@@ -172,7 +144,6 @@ class CollapsePass {
 
   std::vector<Outcome> run(Surface& surface) {
     refuse_collisions();
-    refuse_intersections();
     surface = collapsed(surface_, live_plans());
     return std::move(outcomes_);
   }
@@ -224,16 +195,11 @@ class CollapsePass {
     return out;
   }
 
-  enum class Check : std::uint8_t { motion, in_place };
-
   /// Refuses the live collapse that vertex v belongs to, if any; true if it did.
-  bool refuse(VertexIndex v, const Blocker& blocker, Check check) {
+  bool refuse(VertexIndex v, const Blocker& blocker) {
     const std::size_t k = owner_[v];
     if (k == kNone || !live(k)) return false;
-    outcomes_[outcome_of_[k]] = collision(
-        blocker, check == Check::motion
-                     ? collapsing(plans_[k].a, plans_[k].b)
-                     : "the triangles around the merged vertex " + std::to_string(plans_[k].a));
+    outcomes_[outcome_of_[k]] = collision(blocker, collapsing(plans_[k].a, plans_[k].b));
     return true;
   }
 
@@ -263,10 +229,9 @@ class CollapsePass {
         const VertexIndex v = merged(pair.vertex);
         if (!used[pair.vertex] || v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
           continue;  // no vertex of the surface, or the collapse itself
-        refused |= refuse(pair.vertex, {Blocker::Kind::triangle, t}, Check::motion);
+        refused |= refuse(pair.vertex, {Blocker::Kind::triangle, t});
         for (const VertexIndex c : t)
-          refused |= refuse(c, {Blocker::Kind::vertex, {pair.vertex, kNoVertex, kNoVertex}},
-                            Check::motion);
+          refused |= refuse(c, {Blocker::Kind::vertex, {pair.vertex, kNoVertex, kNoVertex}});
       }
       for (const ccd::EdgeEdgePair& pair : step.edge_edge) {
         const VertexIndex a0 = merged(pair.a[0]), a1 = merged(pair.a[1]);
@@ -275,26 +240,10 @@ class CollapsePass {
         const Blocker a{Blocker::Kind::edge, {pair.a[0], pair.a[1], kNoVertex}};
         const Blocker b{Blocker::Kind::edge, {pair.b[0], pair.b[1], kNoVertex}};
         for (const VertexIndex v : pair.a)
-          refused |= refuse(v, b, Check::motion);
+          refused |= refuse(v, b);
         for (const VertexIndex v : pair.b)
-          refused |= refuse(v, a, Check::motion);
+          refused |= refuse(v, a);
       }
-    }
-  }
-
-  /// The surface with every live collapse made, checked exactly; a collapse whose merged
-  /// vertex is a corner of an intersecting triangle is refused. The collapses' boxes are
-  /// apart, so refusing one changes nothing near another: one round decides.
-  void refuse_intersections() {
-    const Surface after = collapsed(surface_, live_plans());
-    const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(after), 1);
-    for (const mesh::FacePair& pair : found.intersecting) {
-      const Triangle& first = after.triangles[pair.first];
-      const Triangle& second = after.triangles[pair.second];
-      for (const VertexIndex v : first)
-        refuse(v, {Blocker::Kind::triangle, second}, Check::in_place);
-      for (const VertexIndex v : second)
-        refuse(v, {Blocker::Kind::triangle, first}, Check::in_place);
     }
   }
 
@@ -316,11 +265,7 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
   if (auto hit = first_collision(surface, moves, edge_of(a, b))) {
     return collision(*hit, collapsing(a, b));
   }
-  Surface after = collapsed(surface, {&plan});
-  if (auto hit = star_intersection(after, a)) {
-    return collision(*hit, "the triangles around the merged vertex");
-  }
-  surface = std::move(after);
+  surface = collapsed(surface, {&plan});
   return {};
 }
 

@@ -36,6 +36,28 @@ Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to) {
 
 namespace {
 
+std::string flipping(VertexIndex a, VertexIndex b) {
+  return "flipping edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+std::string splitting(VertexIndex a, VertexIndex b) {
+  return "splitting edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+/// The refusal of an operation whose new triangle `made` would turn over in the plane of
+/// the triangle it replaces (turns_over_in_plane): a fold flat onto the surface around
+/// `corner`, the operation's vertex where it folds.
+Outcome turns_over(const std::string& operation, const Triangle& made, VertexIndex corner) {
+  const Blocker blocker{Blocker::Kind::vertex, {corner, kNoVertex, kNoVertex}};
+  return {Verdict::refused_collision,
+          operation + " would turn new triangle " + std::to_string(made[0]) + " " +
+              std::to_string(made[1]) + " " + std::to_string(made[2]) +
+              " over, flat in the plane of the triangle it replaces, folding at " +
+              to_string(blocker),
+          blocker,
+          {}};
+}
+
 /// A flip that passed its topology checks: its triangles, their replacements, the region
 /// it sweeps.
 struct FlipPlan {
@@ -71,13 +93,17 @@ std::variant<Outcome, FlipPlan> plan_flip(const Surface& surface, VertexIndex a,
     return topology("a flipped triangle would have zero area");
   }
   const auto& p = surface.vertices;
+  // In a flat quadrilateral that is not convex, one new triangle would lie over the other:
+  // cad turns over when a is the reflex corner (a then lies in dbc), dbc when b is.
+  const std::array<Point3, 3> old{p[a], p[b], p[c]};
+  for (const auto& [made, reflex] : {std::pair{plan.new1, a}, std::pair{plan.new2, b}}) {
+    if (turns_over_in_plane(old, {p[made[0]], p[made[1]], p[made[2]]})) {
+      return turns_over(flipping(a, b), made, reflex);
+    }
+  }
   plan.region = {RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
                  RegionCorner{d, p[d]}};
   return plan;
-}
-
-std::string flipping(VertexIndex a, VertexIndex b) {
-  return "flipping edge " + std::to_string(a) + "-" + std::to_string(b);
 }
 
 }  // namespace
@@ -201,7 +227,9 @@ bool new_triangles_meet(const Surface& surface, const std::vector<Triangle>& mad
     m.faces.push_back(mesh::make_triangle(corner(t[0]), corner(t[1]), corner(t[2])));
   for (std::size_t i = 0; i < made.size(); ++i) {
     for (std::size_t j = i + 1; j < made.size(); ++j) {
-      if (mesh::face_contact(m, i, j) != mesh::FaceContact::apart) return true;
+      if (mesh::face_contact(m, i, j, mesh::CoplanarOverlap::intersecting) !=
+          mesh::FaceContact::apart)
+        return true;
     }
   }
   return false;
@@ -222,10 +250,23 @@ std::variant<Outcome, SplitPlan> plan_split(const Surface& surface, VertexIndex 
     if (!between) return topology("the new vertex lies on the edge's line, outside the edge");
   }
   SplitPlan plan{a, b, at, on_edge, {}, {}};
+  const auto m = static_cast<VertexIndex>(surface.vertices.size());  // the new vertex
+  const std::vector<Triangle> made = split_triangles(surface, on_edge, a, b, m);
   for (std::size_t i = 0; i < on_edge.size(); ++i) {
-    const VertexIndex c = third_corner(surface.triangles[on_edge[i]], a, b);
+    const Triangle& old = surface.triangles[on_edge[i]];
+    const VertexIndex c = third_corner(old, a, b);
     if (zero_area(p[a], p[c], at) || zero_area(p[b], p[c], at)) {
       return topology("a triangle of the split would have zero area");
+    }
+    // At a point of the old triangle's plane off the edge, outside the triangle's
+    // angle at c, a half would face the other way (lying flat over the other, or the
+    // two turned over together).
+    const auto point = [&](VertexIndex v) { return v == m ? at : p[v]; };
+    for (const Triangle& t : {made[2 * i], made[2 * i + 1]}) {
+      if (turns_over_in_plane({p[old[0]], p[old[1]], p[old[2]]},
+                              {point(t[0]), point(t[1]), point(t[2])})) {
+        return turns_over(splitting(a, b), t, c);
+      }
     }
     if (!between) {
       plan.regions.push_back({RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
@@ -235,20 +276,14 @@ std::variant<Outcome, SplitPlan> plan_split(const Surface& surface, VertexIndex 
     }
   }
   if (!between && on_edge.size() == 2) {
-    const auto m = static_cast<VertexIndex>(surface.vertices.size());
-    if (new_triangles_meet(surface, split_triangles(surface, on_edge, a, b, m), at)) {
+    if (new_triangles_meet(surface, made, at)) {
       return Outcome{Verdict::refused_collision,
-                     "splitting edge " + std::to_string(a) + "-" + std::to_string(b) +
-                         " off the edge would fold its two sides into each other",
+                     splitting(a, b) + " off the edge would fold its two sides into each other",
                      Blocker{Blocker::Kind::triangle, surface.triangles[on_edge[1]]},
                      {}};
     }
   }
   return plan;
-}
-
-std::string splitting(VertexIndex a, VertexIndex b) {
-  return "splitting edge " + std::to_string(a) + "-" + std::to_string(b);
 }
 
 /// Makes the planned split: a new vertex, and each triangle x y c (walking x -> y along

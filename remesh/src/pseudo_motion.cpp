@@ -38,9 +38,12 @@ class Step {
         t1_(surface.vertices),
         moving_(surface.vertices.size()),
         merged_(merged) {
+    // A move to where the vertex is already moves nothing (a collapse into one end): the
+    // pairs it alone would join stand still, and what stands still was apart before the
+    // step, touching at most, as the mesh broad phase skips standing pairs.
     for (const Move& m : moves) {
       t1_[m.vertex] = m.to;
-      moving_[m.vertex] = true;
+      moving_[m.vertex] = m.to != t0_[m.vertex];
     }
   }
 
@@ -94,8 +97,9 @@ std::optional<Blocker> first_collision(const Surface& surface, std::span<const M
   // Vertex-face pairs with a moving vertex or a moving triangle (each pair once: a moving
   // vertex against standing triangles, then every vertex against moving triangles).
   std::vector<VertexIndex> movers;
-  for (const Move& m : moves)
-    movers.push_back(m.vertex);
+  for (const Move& m : moves) {
+    if (step.moving(m.vertex)) movers.push_back(m.vertex);
+  }
   const auto collision = [&](VertexIndex v, const Triangle& t, const SweptBox& t_box) {
     return !shares(v, t) && t_box.meets(step.box({v})) && step.vertex_face_collides(v, t);
   };

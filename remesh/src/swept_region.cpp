@@ -201,6 +201,15 @@ bool pierces(const Region& region, const std::array<Corner, 3>& triangle) {
 
 }  // namespace
 
+bool turns_over_in_plane(const std::array<Point3, 3>& old, const std::array<Point3, 3>& made) {
+  for (const Point3& q : made) {
+    if (orient3d(old[0], old[1], old[2], q) != Sign::zero) return false;
+  }
+  const int axis = *shadow_axis(old[0], old[1], old[2]);
+  return orient2d_along(axis, made[0], made[1], made[2]) !=
+         orient2d_along(axis, old[0], old[1], old[2]);
+}
+
 std::string to_string(const Blocker& blocker) {
   std::string s = blocker.kind == Blocker::Kind::vertex ? "vertex"
                   : blocker.kind == Blocker::Kind::edge ? "edge"

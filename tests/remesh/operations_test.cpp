@@ -44,7 +44,7 @@ Surface sheets(int n, double h, double scale) {
 }
 
 void expect_intersection_free(const Surface& s, const std::string& after) {
-  const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(s), 1);
+  const mesh::SelfIntersections found = testing::sheets_meeting(s);
   EXPECT_TRUE(found.intersecting.empty()) << "after " << after;
 }
 
@@ -191,7 +191,7 @@ TEST_P(Operations, SplitThroughANeighbourOfBothOppositeCornersIsRefused) {
   forced.triangles.push_back({0, 6, 5});
   forced.triangles[1] = {3, 5, 6};
   forced.triangles.push_back({3, 6, 4});
-  EXPECT_FALSE(mesh::find_self_intersections(as_mesh(forced), 1).intersecting.empty())
+  EXPECT_FALSE(testing::sheets_meeting(forced).intersecting.empty())
       << "the refused split would have made an intersection";
 }
 

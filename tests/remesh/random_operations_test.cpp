@@ -19,6 +19,7 @@
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "exactgeo/remesh/operations.hpp"
+#include "remesh/stacked_sheets.hpp"
 #include "remesh/surface_mesh.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
@@ -27,32 +28,8 @@ namespace exactgeo::remesh {
 namespace {
 
 using testing::as_mesh;
-
-/// Bumpy n x n sheets of squares of side 1/4 stacked `spacing` apart, heights in steps
-/// of 2^-7 up to 12 steps from the plane; all sheets share one triangulation, so the gap
-/// between two is linear on each triangle and smallest at a vertex: more than spacing -
-/// 24 / 128 > 0.
-Surface stack(int sheets, int n, std::mt19937_64& rng, double spacing = 0.25) {
-  std::uniform_int_distribution<int> bump(-12, 12);
-  Surface s;
-  for (int k = 0; k < sheets; ++k) {
-    const auto first = static_cast<VertexIndex>(s.vertices.size());
-    const auto index = [&](int i, int j) {
-      return first + static_cast<VertexIndex>(i + (n + 1) * j);
-    };
-    for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= n; ++i)
-        s.vertices.push_back({0.25 * i, 0.25 * j, spacing * k + std::ldexp(bump(rng), -7)});
-    }
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) {
-        s.triangles.push_back({index(i, j), index(i + 1, j), index(i + 1, j + 1)});
-        s.triangles.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
-      }
-    }
-  }
-  return s;
-}
+using testing::crumple;
+using testing::stack;
 
 /// x in the closed tetrahedron abcd, by rational signs (nullopt when it is flat).
 std::optional<bool> in_tetrahedron_oracle(const Point3& a, const Point3& b, const Point3& c,
@@ -105,7 +82,7 @@ bool contact_confirmed(const Surface& s, VertexIndex v, const Point3& to, const 
 TEST(RandomOperations, KeepTheStackIntersectionFree) {
   auto rng = testing::seeded_engine("remesh.random_operations");
   Surface surface = stack(3, 6, rng);
-  ASSERT_TRUE(mesh::find_self_intersections(as_mesh(surface), 1).intersecting.empty());
+  ASSERT_TRUE(testing::sheets_meeting(surface).intersecting.empty());
   std::uniform_int_distribution<int> kind(0, 3);
   std::uniform_int_distribution<int> step(-40, 40);  // moves in steps of 2^-7
   const auto offset = [&] { return std::ldexp(step(rng), -7); };
@@ -180,7 +157,8 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
     ++tally[name + " " + std::string(to_string(outcome.verdict))];
     if (!outcome.applied()) continue;
     const mesh::Mesh m = as_mesh(surface);
-    const mesh::SelfIntersections found = mesh::find_self_intersections(m, 1);
+    const mesh::SelfIntersections found =
+        mesh::find_self_intersections(m, 1, mesh::CoplanarOverlap::intersecting);
     ASSERT_TRUE(found.intersecting.empty())
         << "operation " << op << " (" << name << " " << e[0] << "-" << e[1] << ") made faces "
         << found.intersecting[0].first << " and " << found.intersecting[0].second << " intersect";
@@ -196,20 +174,6 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
   std::cout << named_vertices << " refused flips and splits checked against the rational oracle, "
             << confirmed << " refused relocations against the distance oracle\n";
   EXPECT_GT(confirmed, 0);
-}
-
-/// The stack crumpled by rounds of random vertical moves (relocate_vertices refuses the
-/// colliding ones), so that the sheets come close where the operations' regions reach.
-void crumple(Surface& surface, std::mt19937_64& rng) {
-  std::uniform_int_distribution<int> step(-28, 28);  // in steps of 2^-7
-  for (int round = 0; round < 12; ++round) {
-    std::vector<Move> moves;
-    for (VertexIndex v = 0; v < surface.vertices.size(); ++v) {
-      const Point3& p = surface.vertices[v];
-      moves.push_back({v, {p[0], p[1], p[2] + std::ldexp(step(rng), -7)}});
-    }
-    relocate_vertices(surface, moves);
-  }
 }
 
 /// Passes of `pass_of` (which makes a pass's operations from the surface, runs them and
@@ -243,7 +207,9 @@ void expect_passes_agree(Surface& surface, const Pass& pass_of, const Alone& alo
       }
     }
     const mesh::Mesh m = as_mesh(surface);
-    ASSERT_TRUE(mesh::find_self_intersections(m, 1).intersecting.empty()) << "pass " << pass;
+    ASSERT_TRUE(mesh::find_self_intersections(m, 1, mesh::CoplanarOverlap::intersecting)
+                    .intersecting.empty())
+        << "pass " << pass;
     ASSERT_EQ(mesh::check_mesh(m).zero_area_faces.count, 0u) << "pass " << pass;
   }
   for (const auto& [what, count] : tally)
@@ -347,7 +313,7 @@ TEST(RandomOperations, SmoothingPassesKeepTheStackIntersectionFree) {
       EXPECT_EQ(surface.vertices[v], done[i].applied() ? moves[i].to : before.vertices[v]);
       (done[i].applied() ? applied : refused) += 1;
     }
-    const mesh::SelfIntersections found = mesh::find_self_intersections(as_mesh(surface), 1);
+    const mesh::SelfIntersections found = testing::sheets_meeting(surface);
     ASSERT_TRUE(found.intersecting.empty()) << "pass " << pass;
   }
   std::cout << applied << " moves applied, " << refused << " refused\n";

@@ -67,6 +67,19 @@ std::optional<Blocker> first_in_region(const Surface& surface,
                                        const std::array<RegionCorner, 4>& region,
                                        VertexIndex partner = kNoVertex);
 
+/// Whether triangle `made`, which replaces `old` in a flip or a split, turns over in old's
+/// plane: every corner of `made` lies in that plane and it faces the other way (its
+/// corners turn the other way, seen from either side). The region test above keeps the
+/// rest of the surface out of the swept hull, but not the new triangles off each other:
+/// when the hull is flat (the four corners in one plane), a flip of a quadrilateral that
+/// is not convex, or a split at a point beyond the opposite corner, leaves one new
+/// triangle lying flat over another, facing the other way. Refusing every new triangle
+/// that turns over rules that out: two new triangles that share an edge and face as the
+/// old one have their third corners on opposite sides of it. Off the plane, the new and
+/// old triangles are faces of one tetrahedron, which meet only at their shared edges.
+/// Exact. Precondition: `old` has non-zero area.
+bool turns_over_in_plane(const std::array<Point3, 3>& old, const std::array<Point3, 3>& made);
+
 /// first_in_region for several regions at once: the surface's elements are boxed and
 /// sorted along x once, and each region looks only at those its box reaches, so that a
 /// pass of many operations costs about one pass over the surface. `partners` is empty

@@ -1,0 +1,141 @@
+// Splits in flat sheets at points of the sheet's plane: a split off its edge must not turn
+// a new triangle over or lay one half over another. A boundary edge (one triangle) and an
+// inner edge (two) of integer triangles in two planes, at 2^0 and 2^+-1000, split at every
+// point of a half-integer grid around them: applied exactly when the rational oracle finds
+// the split surface without overlap, zero area or a turned triangle (or the point lies
+// strictly inside the edge, where nothing moves), as a single split and in a pass.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "exactgeo/remesh/operations.hpp"
+#include "remesh/flat_sheet.hpp"
+
+namespace exactgeo::remesh {
+namespace {
+
+using testing::facing_oracle;
+using testing::flat_overlap;
+using testing::points_of;
+using testing::TrianglePoints;
+
+/// The split of edge ab (vertices 0 and 1) at `at` made without any check: each triangle
+/// x y c walking x -> y along the edge becomes x m c and m y c.
+Surface forced_split(const Surface& s, const Point3& at) {
+  Surface split = s;
+  const auto m = static_cast<VertexIndex>(s.vertices.size());
+  split.vertices.push_back(at);
+  split.triangles.clear();
+  for (const Triangle& t : s.triangles) {
+    const VertexIndex c = third_corner(t, 0, 1);
+    const VertexIndex x = walks(t, 0, 1) ? 0 : 1, y = 1 - x;
+    split.triangles.push_back({x, m, c});
+    split.triangles.push_back({m, y, c});
+  }
+  return split;
+}
+
+/// Why the forced split is wrong by the oracle, or nullopt.
+std::optional<std::string> split_fault(const Surface& s, const Point3& at) {
+  const Surface split = forced_split(s, at);
+  if (auto fault = flat_overlap(split)) return fault;
+  for (std::size_t i = 0; i < split.triangles.size(); ++i) {
+    const TrianglePoints old = points_of(s, s.triangles[i / 2]);
+    if (facing_oracle(old, points_of(split, split.triangles[i])) != Sign::positive)
+      return "new triangle " + std::to_string(i) + " turns over";
+  }
+  return std::nullopt;
+}
+
+/// Strictly inside segment ab (exactly: collinear by the oracle's plane test, in the box).
+bool inside_edge(const Point3& a, const Point3& b, const Point3& m) {
+  if (m == a || m == b) return false;
+  for (int k = 0; k < 3; ++k) {
+    if (m[k] < std::min(a[k], b[k]) || m[k] > std::max(a[k], b[k])) return false;
+  }
+  // Collinear: the cross product of b - a and m - a vanishes, checked on a grid point
+  // where these small multiples are exact.
+  const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+  const double vx = m[0] - a[0], vy = m[1] - a[1], vz = m[2] - a[2];
+  return uy * vz - uz * vy == 0 && uz * vx - ux * vz == 0 && ux * vy - uy * vx == 0;
+}
+
+struct SplitCase {
+  const char* name;
+  std::vector<std::array<double, 2>> corners;  // a, b, then the opposite corners
+  std::vector<Triangle> triangles;
+};
+
+class FlatSplits : public ::testing::TestWithParam<std::tuple<int, bool>> {};
+
+TEST_P(FlatSplits, AppliedExactlyWhenTheHalvesTileTheirTriangles) {
+  const auto [exponent, tilted] = GetParam();
+  const testing::FlatPlane plane = testing::flat_plane(tilted, exponent);
+  const std::vector<SplitCase> cases = {
+      {"boundary edge", {{0, 0}, {4, 0}, {1, 2}}, {{0, 1, 2}}},
+      {"inner edge", {{0, 0}, {4, 0}, {1, 2}, {3, -2}}, {{0, 1, 2}, {1, 0, 3}}},
+      {"inner edge, obtuse", {{0, 0}, {4, 0}, {-1, 1}, {5, -1}}, {{0, 1, 2}, {1, 0, 3}}},
+  };
+  for (const SplitCase& c : cases) {
+    Surface surface;
+    for (const auto& [x, y] : c.corners)
+      surface.vertices.push_back(plane(x, y));
+    surface.triangles = c.triangles;
+    ASSERT_FALSE(flat_overlap(surface).has_value()) << c.name;
+    int applied = 0, refused = 0;
+    for (double x = -4; x <= 8; x += 0.5) {
+      for (double y = -4; y <= 4; y += 0.5) {
+        const Point3 at = plane(x, y);
+        const std::string what = std::string(c.name) + " at (" + std::to_string(x) + ", " +
+                                 std::to_string(y) + "), scale 2^" + std::to_string(exponent);
+        const bool on_edge = inside_edge(surface.vertices[0], surface.vertices[1], at);
+        const std::optional<std::string> fault = on_edge ? std::nullopt : split_fault(surface, at);
+        Surface single = surface;
+        const Outcome one = split_edge(single, 0, 1, at);
+        Surface pass = surface;
+        const std::array<Split, 1> splits{Split{0, 1, at}};
+        const Outcome in_pass = split_edges(pass, splits).front();
+        EXPECT_EQ(one.applied(), !fault) << what << ": " << (fault ? *fault : one.reason);
+        EXPECT_EQ(in_pass.verdict, one.verdict) << what;
+        if (one.applied()) {
+          ++applied;
+          EXPECT_FALSE(flat_overlap(single).has_value()) << what;
+        } else {
+          ++refused;
+        }
+      }
+    }
+    EXPECT_GT(applied, 5) << c.name;
+    EXPECT_GT(refused, 100) << c.name;
+  }
+}
+
+TEST(FlatSplits, APointBeyondTheOppositeCornerIsRefusedNamingIt) {
+  // A boundary edge's triangle a b c split at m beyond c: both halves turn over.
+  Surface s;
+  s.vertices = {{0, 0, 0}, {4, 0, 0}, {1, 1, 0}};
+  s.triangles = {{0, 1, 2}};
+  const Outcome split = split_edge(s, 0, 1, {1, 3, 0});
+  EXPECT_EQ(split.verdict, Verdict::refused_collision);
+  ASSERT_TRUE(split.blocker.has_value());
+  EXPECT_EQ(split.blocker->corners[0], 2u) << split.reason;
+  EXPECT_NE(split.reason.find("over, flat in the plane of the triangle it replaces"),
+            std::string::npos)
+      << split.reason;
+}
+
+INSTANTIATE_TEST_SUITE_P(Planes, FlatSplits,
+                         ::testing::Combine(::testing::Values(0, 1000, -1000), ::testing::Bool()),
+                         [](const auto& param_info) {
+                           const int k = std::get<0>(param_info.param);
+                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k)) +
+                                  (std::get<1>(param_info.param) ? "_tilted" : "_flat");
+                         });
+
+}  // namespace
+}  // namespace exactgeo::remesh
