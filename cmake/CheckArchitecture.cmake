@@ -29,7 +29,7 @@ set(kAllowed_mesh predicates io boxes parallel)
 set(kAllowed_ccd predicates boxes parallel)
 set(kAllowed_ccd_files ccd predicates io)
 set(kAllowed_inside predicates boxes mesh parallel)
-set(kAllowed_remesh predicates ccd mesh)
+set(kAllowed_remesh predicates boxes ccd mesh)
 
 set(violations "")
 

@@ -17,10 +17,12 @@
 #include <variant>
 #include <vector>
 
+#include "box_pairs.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
 #include "operation_checks.hpp"
+#include "pass_schedule.hpp"
 
 namespace exactgeo::remesh {
 
@@ -134,6 +136,53 @@ Surface collapsed(const Surface& surface, const std::vector<const CollapsePlan*>
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
+/// The part of the surface the collapses' motions can reach: the triangles around their
+/// ends, and every triangle whose box meets the box one of those sweeps (its corners and
+/// its collapse's new point), found by box trees; as a small mesh of its own (triangles
+/// in surface order, over `vertices`, which maps its indices to the surface's). Every
+/// vertex-face or edge-edge pair with a moving corner whose swept boxes meet lies in it:
+/// a static element lies in the box of each of its triangles.
+struct Reach {
+  std::vector<VertexIndex> vertices;
+  std::vector<ccd::Triangle> triangles;
+
+  Reach(const Surface& s, const std::vector<const CollapsePlan*>& plans) {
+    std::vector<Point3> points = s.vertices;
+    std::vector<std::array<VertexIndex, 4>> swept;  // a moving triangle's corners and `to`
+    std::vector<VertexIndex> moving(s.vertices.size(), kNoVertex);  // its collapse's `to`
+    for (const CollapsePlan* p : plans) {
+      moving[p->a] = moving[p->b] = static_cast<VertexIndex>(points.size());
+      points.push_back(p->to);
+    }
+    std::vector<bool> reached(s.triangles.size(), false);
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+      const Triangle& tri = s.triangles[t];
+      for (const VertexIndex v : tri) {
+        if (moving[v] == kNoVertex) continue;
+        swept.push_back({tri[0], tri[1], tri[2], moving[v]});
+        reached[t] = true;
+        break;
+      }
+    }
+    internal::overlapping_groups<4, 3>(points, swept, s.triangles,
+                                       [&](std::size_t, std::size_t t) { reached[t] = true; });
+    std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+      if (!reached[t]) continue;
+      ccd::Triangle tri{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        const VertexIndex v = s.triangles[t][k];
+        if (local[v] == kNoVertex) {
+          local[v] = static_cast<VertexIndex>(vertices.size());
+          vertices.push_back(v);
+        }
+        tri[k] = local[v];
+      }
+      triangles.push_back(tri);
+    }
+  }
+};
+
 /// A pass of collapses (collapse_edges).
 class CollapsePass {
  public:
@@ -149,38 +198,58 @@ class CollapsePass {
   }
 
  private:
-  /// Plans each collapse; defers those whose box meets an earlier planned one's.
+  /// Plans each collapse; one whose surroundings (the vertices of the triangles around
+  /// its ends) share a vertex with those of an earlier one that goes ahead waits for the
+  /// next pass: its plan read them (the link condition, the triangles it changes), and the
+  /// other changes them. Their motions are checked together (refuse_collisions).
   void plan(std::span<const Collapse> collapses) {
     owner_.assign(surface_.vertices.size(), kNone);
-    std::vector<std::array<Point3, 2>> boxes;
+    std::vector<CollapsePlan> planned;
+    std::vector<std::size_t> planned_collapse;
+    std::vector<internal::Footprint> footprints;
     for (std::size_t i = 0; i < collapses.size(); ++i) {
       const Collapse& c = collapses[i];
-      auto planned = plan_collapse(surface_, stars_, c.a, c.b, c.to);
-      if (auto* refused = std::get_if<Outcome>(&planned)) {
+      auto plan_or = plan_collapse(surface_, stars_, c.a, c.b, c.to);
+      if (auto* refused = std::get_if<Outcome>(&plan_or)) {
         outcomes_[i] = std::move(*refused);
         continue;
       }
-      std::vector<Point3> points{c.to};
+      // The vertices around both ends, and the box each triangle with a moving end sweeps.
+      internal::Footprint footprint;
+      footprint.by_boxes = true;
+      const auto moves = [&](VertexIndex v) {
+        return (v == c.a || v == c.b) && surface_.vertices[v] != c.to;
+      };
       for (const VertexIndex end : {c.a, c.b}) {
         for (const std::size_t t : stars_[end]) {
-          for (const VertexIndex v : surface_.triangles[t])
-            points.push_back(surface_.vertices[v]);
+          const Triangle& tri = surface_.triangles[t];
+          footprint.vertices.insert(footprint.vertices.end(), tri.begin(), tri.end());
+          if (end == c.b && std::find(tri.begin(), tri.end(), c.a) != tri.end()) continue;  // once
+          if (!moves(tri[0]) && !moves(tri[1]) && !moves(tri[2])) continue;
+          const auto& p = surface_.vertices;
+          footprint.regions.push_back(
+              {RegionCorner{tri[0], p[tri[0]]}, RegionCorner{tri[1], p[tri[1]]},
+               RegionCorner{tri[2], p[tri[2]]}, RegionCorner{kNoVertex, c.to}});
         }
       }
-      const std::array<Point3, 2> box = box_of(points);
-      if (std::any_of(boxes.begin(), boxes.end(),
-                      [&](const auto& other) { return boxes_meet(box, other); })) {
+      footprints.push_back(std::move(footprint));
+      planned.push_back(std::get<CollapsePlan>(std::move(plan_or)));
+      planned_collapse.push_back(i);
+    }
+    const std::vector<bool> ahead = internal::go_ahead(footprints, surface_.vertices);
+    for (std::size_t k = 0; k < planned.size(); ++k) {
+      const std::size_t i = planned_collapse[k];
+      if (!ahead[k]) {
         outcomes_[i] = {Verdict::deferred,
-                        collapsing(c.a, c.b) +
-                            " changes a region another collapse of the pass "
-                            "reaches",
+                        collapsing(planned[k].a, planned[k].b) +
+                            " comes near another collapse of the pass (a shared vertex around "
+                            "their ends, or their moving triangles' boxes)",
                         {},
                         {}};
         continue;
       }
-      boxes.push_back(box);
-      owner_[c.a] = owner_[c.b] = plans_.size();
-      plans_.push_back(std::get<CollapsePlan>(std::move(planned)));
+      owner_[planned[k].a] = owner_[planned[k].b] = plans_.size();
+      plans_.push_back(std::move(planned[k]));
       outcome_of_.push_back(i);
     }
   }
@@ -195,10 +264,11 @@ class CollapsePass {
     return out;
   }
 
-  /// Refuses the live collapse that vertex v belongs to, if any; true if it did.
+  /// Refuses the live collapse that moves vertex v, if any; true if it did. (The end a
+  /// collapse keeps in place moves nothing: a pair it is in collides by another's motion.)
   bool refuse(VertexIndex v, const Blocker& blocker) {
     const std::size_t k = owner_[v];
-    if (k == kNone || !live(k)) return false;
+    if (k == kNone || !live(k) || surface_.vertices[v] == plans_[k].to) return false;
     outcomes_[outcome_of_[k]] = collision(blocker, collapsing(plans_[k].a, plans_[k].b));
     return true;
   }
@@ -209,40 +279,51 @@ class CollapsePass {
     return k != kNone && live(k) && plans_[k].b == v ? plans_[k].a : v;
   }
 
+  /// The motions of the live collapses, checked together by the mesh broad phase over the
+  /// part of the surface they can reach: every collision refuses the collapse whose
+  /// motion makes it (no moving triangle of one comes near another's: plan), and the rest
+  /// is checked again, until a step is clean.
   void refuse_collisions() {
-    std::vector<bool> used(surface_.vertices.size(), false);
-    for (const Triangle& t : surface_.triangles) {
-      for (const VertexIndex v : t)
-        used[v] = true;
-    }
-    ccd::MeshCcd mesh_ccd(surface_.vertices.size(), surface_.triangles);
-    const std::vector<double> t0 = flat(surface_.vertices);
-    for (bool refused = true; refused;) {
-      refused = false;
-      std::vector<Point3> end = surface_.vertices;
-      for (const CollapsePlan* p : live_plans())
-        end[p->a] = end[p->b] = p->to;
+    const Reach reach(surface_, live_plans());
+    if (reach.triangles.empty()) return;
+    ccd::MeshCcd mesh_ccd(reach.vertices.size(), reach.triangles);
+    std::vector<Point3> start(reach.vertices.size());
+    for (std::size_t i = 0; i < start.size(); ++i)
+      start[i] = surface_.vertices[reach.vertices[i]];
+    const std::vector<double> t0 = flat(start);
+    for (bool changed = true; changed;) {
+      changed = false;
+      std::vector<Point3> end = start;
+      for (std::size_t i = 0; i < end.size(); ++i) {
+        const std::size_t k = owner_[reach.vertices[i]];
+        if (k != kNone && live(k)) end[i] = plans_[k].to;
+      }
       const std::vector<double> t1 = flat(end);
       const ccd::MeshCcdResult step = mesh_ccd.step({t0, t1});
+      const auto& global = reach.vertices;  // a reached vertex's index in the surface
       for (const ccd::VertexFacePair& pair : step.vertex_face) {
-        const Triangle& t = surface_.triangles[pair.face];
-        const VertexIndex v = merged(pair.vertex);
-        if (!used[pair.vertex] || v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
-          continue;  // no vertex of the surface, or the collapse itself
-        refused |= refuse(pair.vertex, {Blocker::Kind::triangle, t});
+        const ccd::Triangle& local = reach.triangles[pair.face];
+        const Triangle t{global[local[0]], global[local[1]], global[local[2]]};
+        const VertexIndex x = global[pair.vertex];
+        const VertexIndex v = merged(x);
+        if (v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
+          continue;  // the collapse itself
+        changed |= refuse(x, {Blocker::Kind::triangle, t});
         for (const VertexIndex c : t)
-          refused |= refuse(c, {Blocker::Kind::vertex, {pair.vertex, kNoVertex, kNoVertex}});
+          changed |= refuse(c, {Blocker::Kind::vertex, {x, kNoVertex, kNoVertex}});
       }
       for (const ccd::EdgeEdgePair& pair : step.edge_edge) {
-        const VertexIndex a0 = merged(pair.a[0]), a1 = merged(pair.a[1]);
-        const VertexIndex b0 = merged(pair.b[0]), b1 = merged(pair.b[1]);
+        const std::array<VertexIndex, 2> ea{global[pair.a[0]], global[pair.a[1]]};
+        const std::array<VertexIndex, 2> eb{global[pair.b[0]], global[pair.b[1]]};
+        const VertexIndex a0 = merged(ea[0]), a1 = merged(ea[1]);
+        const VertexIndex b0 = merged(eb[0]), b1 = merged(eb[1]);
         if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself
-        const Blocker a{Blocker::Kind::edge, {pair.a[0], pair.a[1], kNoVertex}};
-        const Blocker b{Blocker::Kind::edge, {pair.b[0], pair.b[1], kNoVertex}};
-        for (const VertexIndex v : pair.a)
-          refused |= refuse(v, b);
-        for (const VertexIndex v : pair.b)
-          refused |= refuse(v, a);
+        const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};
+        const Blocker b{Blocker::Kind::edge, {eb[0], eb[1], kNoVertex}};
+        for (const VertexIndex v : ea)
+          changed |= refuse(v, b);
+        for (const VertexIndex v : eb)
+          changed |= refuse(v, a);
       }
     }
   }

@@ -9,6 +9,7 @@
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "operation_checks.hpp"
+#include "pass_schedule.hpp"
 
 namespace exactgeo::remesh {
 
@@ -121,61 +122,57 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
 }
 
 std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
-  // The surface's edges and their triangles, once.
-  std::map<Edge, std::vector<std::size_t>> triangles_of;
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    const Triangle& tri = surface.triangles[t];
-    for (int k = 0; k < 3; ++k)
-      triangles_of[edge_of(tri[k], tri[(k + 1) % 3])].push_back(t);
-  }
-  const auto on = [&](VertexIndex a, VertexIndex b) {
-    const auto found = triangles_of.find(edge_of(a, b));
-    return found == triangles_of.end() ? std::vector<std::size_t>{} : found->second;
-  };
+  const EdgeTriangles table(surface);
   std::vector<Outcome> outcomes(edges.size());
   std::vector<FlipPlan> plans;
   std::vector<std::size_t> planned_edge;  // the edge of each plan
-  std::vector<std::array<Point3, 2>> boxes;
+  std::vector<internal::Footprint> footprints;
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     // An index out of range finds no triangles here, and plan_flip names it.
-    auto planned = plan_flip(surface, a, b, on(a, b),
-                             [&](VertexIndex c, VertexIndex d) { return !on(c, d).empty(); });
+    auto planned = plan_flip(surface, a, b, table.on(a, b),
+                             [&](VertexIndex c, VertexIndex d) { return !table.on(c, d).empty(); });
     if (auto* refused = std::get_if<Outcome>(&planned)) {
       outcomes[i] = std::move(*refused);
       continue;
     }
     FlipPlan& plan = std::get<FlipPlan>(planned);
-    const std::array<Point3, 4> corners{plan.region[0].point, plan.region[1].point,
-                                        plan.region[2].point, plan.region[3].point};
-    const std::array<Point3, 2> box = box_of(corners);
-    // Flips whose regions' boxes are apart change parts of the surface that no other
-    // one's region reaches: each is then checked against the surface as it is. A flip
-    // whose box meets an earlier one's waits for the next pass.
-    if (std::any_of(boxes.begin(), boxes.end(),
-                    [&](const auto& other) { return boxes_meet(box, other); })) {
-      outcomes[i] = {Verdict::deferred,
-                     flipping(a, b) + " sweeps a region another flip of the pass reaches",
-                     {},
-                     {}};
-      continue;
-    }
-    boxes.push_back(box);
+    internal::Footprint footprint;
+    for (const RegionCorner& corner : plan.region)
+      footprint.vertices.push_back(corner.vertex);
+    footprint.regions.push_back(plan.region);
+    footprints.push_back(std::move(footprint));
     plans.push_back(plan);
     planned_edge.push_back(i);
   }
+  // The flips that go ahead change the surface only inside their own regions, which no
+  // other one's reaches (pass_schedule.hpp); the others wait for the next pass.
+  const std::vector<bool> ahead = internal::go_ahead(footprints, surface.vertices);
   std::vector<std::array<RegionCorner, 4>> regions;
-  for (const FlipPlan& plan : plans)
-    regions.push_back(plan.region);
-  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  std::vector<std::size_t> checked;  // the plans going ahead
   for (std::size_t k = 0; k < plans.size(); ++k) {
-    const Edge& e = edges[planned_edge[k]];
-    if (hits[k]) {
-      outcomes[planned_edge[k]] = collision(*hits[k], flipping(e[0], e[1]));
+    if (ahead[k]) {
+      regions.push_back(plans[k].region);
+      checked.push_back(k);
       continue;
     }
-    surface.triangles[plans[k].t1] = plans[k].new1;
-    surface.triangles[plans[k].t2] = plans[k].new2;
+    const Edge& e = edges[planned_edge[k]];
+    outcomes[planned_edge[k]] = {
+        Verdict::deferred,
+        flipping(e[0], e[1]) + " shares a vertex or its region with another flip of the pass",
+        {},
+        {}};
+  }
+  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  for (std::size_t n = 0; n < checked.size(); ++n) {
+    const FlipPlan& plan = plans[checked[n]];
+    const Edge& e = edges[planned_edge[checked[n]]];
+    if (hits[n]) {
+      outcomes[planned_edge[checked[n]]] = collision(*hits[n], flipping(e[0], e[1]));
+      continue;
+    }
+    surface.triangles[plan.t1] = plan.new1;
+    surface.triangles[plan.t2] = plan.new2;
   }
   return outcomes;
 }
@@ -317,44 +314,50 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
 }
 
 std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits) {
+  const EdgeTriangles table(surface);
   std::vector<Outcome> outcomes(splits.size());
   std::vector<SplitPlan> plans;
   std::vector<std::size_t> planned;  // the split of each plan
-  std::vector<std::array<Point3, 2>> boxes;
-  std::vector<std::array<RegionCorner, 4>> regions;
-  std::vector<VertexIndex> partners;
+  std::vector<internal::Footprint> footprints;
   for (std::size_t i = 0; i < splits.size(); ++i) {
     const Split& s = splits[i];
-    auto plan_or = plan_split(surface, s.a, s.b, s.at, {});
+    auto plan_or = plan_split(surface, s.a, s.b, s.at, table.on(s.a, s.b));
     if (auto* refused = std::get_if<Outcome>(&plan_or)) {
       outcomes[i] = std::move(*refused);
       continue;
     }
     SplitPlan& plan = std::get<SplitPlan>(plan_or);
-    // Its triangles and the new vertex: all it changes lies in this box.
-    std::vector<Point3> points{s.at};
+    internal::Footprint footprint;
     for (const std::size_t t : plan.on_edge) {
       for (const VertexIndex v : surface.triangles[t])
-        points.push_back(surface.vertices[v]);
+        footprint.vertices.push_back(v);
     }
-    const std::array<Point3, 2> box = box_of(points);
-    if (std::any_of(boxes.begin(), boxes.end(),
-                    [&](const auto& other) { return boxes_meet(box, other); })) {
-      outcomes[i] = {Verdict::deferred,
-                     splitting(s.a, s.b) + " changes a region another split of the pass reaches",
-                     {},
-                     {}};
-      continue;
-    }
-    boxes.push_back(box);
-    regions.insert(regions.end(), plan.regions.begin(), plan.regions.end());
-    partners.insert(partners.end(), plan.partners.begin(), plan.partners.end());
+    footprint.regions = plan.regions;
+    footprints.push_back(std::move(footprint));
     plans.push_back(std::move(plan));
     planned.push_back(i);
+  }
+  // As for flips: the splits that go ahead meet nothing another one makes.
+  const std::vector<bool> ahead = internal::go_ahead(footprints, surface.vertices);
+  std::vector<std::array<RegionCorner, 4>> regions;
+  std::vector<VertexIndex> partners;
+  for (std::size_t k = 0; k < plans.size(); ++k) {
+    if (!ahead[k]) {
+      const Split& s = splits[planned[k]];
+      outcomes[planned[k]] = {
+          Verdict::deferred,
+          splitting(s.a, s.b) + " shares a vertex or its region with another split of the pass",
+          {},
+          {}};
+      continue;
+    }
+    regions.insert(regions.end(), plans[k].regions.begin(), plans[k].regions.end());
+    partners.insert(partners.end(), plans[k].partners.begin(), plans[k].partners.end());
   }
   const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions, partners);
   std::size_t next_region = 0;
   for (std::size_t k = 0; k < plans.size(); ++k) {
+    if (!ahead[k]) continue;
     std::optional<Blocker> hit;
     for (std::size_t r = 0; r < plans[k].regions.size(); ++r, ++next_region) {
       if (!hit) hit = hits[next_region];

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <numeric>
 #include <span>
+#include <tuple>
 #include <vector>
 
+#include "box_pairs.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 
 namespace exactgeo::remesh {
@@ -222,75 +224,34 @@ std::string to_string(const Blocker& blocker) {
 
 namespace {
 
-/// A vertex, an edge or a triangle of the surface with its box.
-struct Element {
-  Blocker what;
-  Point3 lower;
-  Point3 upper;
-};
+/// The elements of the surface near one region: the triangles whose boxes meet its box
+/// (found by a box tree), their corners and their edges, each once, in the order
+/// first_in_region reports them (vertices by index, edges by their ends, triangles by
+/// index). Every element that meets the region has its box meeting the region's box,
+/// and so has a triangle of it; the others are tested and pass.
+struct NearbyElements {
+  std::vector<VertexIndex> vertices;
+  std::vector<Edge> edges;
+  std::vector<std::size_t> triangles;
 
-/// The surface's elements (the vertices some triangle uses, the edges, the triangles),
-/// in the order first_in_region reports them, and their order along x for the sweep.
-class Elements {
- public:
-  explicit Elements(const Surface& surface) {
-    const auto& p = surface.vertices;
-    std::vector<bool> used(p.size());
-    for (const Triangle& t : surface.triangles) {
-      for (const VertexIndex v : t)
-        used[v] = true;
-    }
-    const auto add = [&](Blocker::Kind kind, std::array<VertexIndex, 3> corners, int n) {
-      Element e{{kind, corners}, p[corners[0]], p[corners[0]]};
-      for (int i = 1; i < n; ++i) {
-        for (int k = 0; k < 3; ++k) {
-          e.lower[k] = std::min(e.lower[k], p[corners[i]][k]);
-          e.upper[k] = std::max(e.upper[k], p[corners[i]][k]);
-        }
+  NearbyElements(const Surface& surface, std::vector<std::size_t> near)
+      : triangles(std::move(near)) {
+    std::sort(triangles.begin(), triangles.end());
+    for (const std::size_t t : triangles) {
+      const Triangle& tri = surface.triangles[t];
+      for (int k = 0; k < 3; ++k) {
+        vertices.push_back(tri[k]);
+        edges.push_back(edge_of(tri[k], tri[(k + 1) % 3]));
       }
-      width_ = std::max(width_, e.upper[0] - e.lower[0]);
-      all_.push_back(e);
-    };
-    for (VertexIndex v = 0; v < p.size(); ++v) {
-      if (used[v]) add(Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}, 1);
     }
-    for (const Edge& e : surface.edges())
-      add(Blocker::Kind::edge, {e[0], e[1], kNoVertex}, 2);
-    for (const Triangle& t : surface.triangles)
-      add(Blocker::Kind::triangle, t, 3);
-    by_x_.resize(all_.size());
-    std::iota(by_x_.begin(), by_x_.end(), std::size_t{0});
-    std::sort(by_x_.begin(), by_x_.end(),
-              [&](std::size_t a, std::size_t b) { return all_[a].lower[0] < all_[b].lower[0]; });
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   }
-
-  /// The elements whose closed boxes meet [lower, upper], in report order.
-  std::vector<std::size_t> meeting(const Point3& lower, const Point3& upper) const {
-    // Along x, only elements whose lower x lies in [lower - widest, upper] can meet.
-    const auto first =
-        std::lower_bound(by_x_.begin(), by_x_.end(), lower[0] - width_,
-                         [&](std::size_t e, double x) { return all_[e].lower[0] < x; });
-    std::vector<std::size_t> found;
-    for (auto it = first; it != by_x_.end() && all_[*it].lower[0] <= upper[0]; ++it) {
-      const Element& e = all_[*it];
-      bool meets = true;
-      for (int k = 0; k < 3; ++k)
-        meets = meets && e.lower[k] <= upper[k] && lower[k] <= e.upper[k];
-      if (meets) found.push_back(*it);
-    }
-    std::sort(found.begin(), found.end());
-    return found;
-  }
-
-  const Element& operator[](std::size_t i) const noexcept { return all_[i]; }
-
- private:
-  std::vector<Element> all_;
-  std::vector<std::size_t> by_x_;
-  double width_ = 0.0;  ///< the widest element along x
 };
 
-std::optional<Blocker> first_in(const Surface& surface, const Elements& elements,
+std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& near,
                                 const std::array<RegionCorner, 4>& corners, VertexIndex partner) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
@@ -305,40 +266,29 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
   const auto on_other_side = [&](VertexIndex v) {  // a corner of triangle abd
     return v == edge_a || v == edge_b || v == partner;
   };
-  const auto partners = [&](const Blocker& e) {
-    if (partner == kNoVertex) return false;
-    const auto& c = e.corners;
-    switch (e.kind) {
-      case Blocker::Kind::vertex:
-        return c[0] == partner;
-      case Blocker::Kind::edge:  // ad or bd: d and an end of the edge
-        return (c[0] == partner || c[1] == partner) && on_other_side(c[0]) && on_other_side(c[1]);
-      case Blocker::Kind::triangle:  // abd (its corners are distinct)
-        return on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2]);
+  const bool has_partner = partner != kNoVertex;
+  for (const VertexIndex v : near.vertices) {
+    if (region.is_corner(v) || (has_partner && v == partner)) continue;
+    if (region.holds(p[v])) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
+  }
+  for (const Edge& e : near.edges) {
+    if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
+    // ad or bd: d and an end of the edge.
+    if (has_partner && (e[0] == partner || e[1] == partner) && on_other_side(e[0]) &&
+        on_other_side(e[1])) {
+      continue;
     }
-    return false;
-  };
-  for (const std::size_t i : elements.meeting(region.lower(), region.upper())) {
-    const Blocker& b = elements[i].what;
-    const auto& c = b.corners;
-    switch (b.kind) {
-      case Blocker::Kind::vertex:
-        if (!region.is_corner(c[0]) && !partners(b) && region.holds(p[c[0]])) return b;
-        break;
-      case Blocker::Kind::edge:
-        if ((region.is_corner(c[0]) && region.is_corner(c[1])) || partners(b)) break;  // own
-        if (edge_meets(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}})) return b;
-        break;
-      case Blocker::Kind::triangle:
-        if ((region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) ||
-            partners(b)) {
-          break;
-        }
-        if (pierces(region,
-                    {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
-          return b;
-        }
-        break;
+    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
+      return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
+    }
+  }
+  for (const std::size_t t : near.triangles) {
+    const Triangle& c = surface.triangles[t];
+    if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
+    // abd (its corners are distinct)
+    if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
+    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
+      return Blocker{Blocker::Kind::triangle, c};
     }
   }
   return std::nullopt;
@@ -349,19 +299,47 @@ std::optional<Blocker> first_in(const Surface& surface, const Elements& elements
 std::optional<Blocker> first_in_region(const Surface& surface,
                                        const std::array<RegionCorner, 4>& corners,
                                        VertexIndex partner) {
-  return first_in(surface, Elements(surface), corners, partner);
+  return first_in_regions(surface, std::span(&corners, 1), std::span(&partner, 1)).front();
 }
 
 std::vector<std::optional<Blocker>> first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
     std::span<const VertexIndex> partners) {
-  const Elements elements(surface);
+  const internal::RegionPoints boxed(surface.vertices, regions);
+  std::vector<std::vector<std::size_t>> near(regions.size());
+  internal::overlapping_groups<4, 3>(boxed.points, boxed.groups, surface.triangles,
+                                     [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
-  for (std::size_t i = 0; i < regions.size(); ++i)
-    found.push_back(
-        first_in(surface, elements, regions[i], partners.empty() ? kNoVertex : partners[i]));
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    found.push_back(first_in(surface, NearbyElements(surface, std::move(near[r])), regions[r],
+                             partners.empty() ? kNoVertex : partners[r]));
+  }
   return found;
+}
+
+bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionCorner, 4>& y) {
+  // Convex sets meet exactly when a corner of one lies in the other or an edge of one
+  // meets a triangle of the other (the header's argument with no shared corner: the
+  // corners are taken as points, so two at one place meet).
+  const auto as_points = [](std::array<RegionCorner, 4> corners) {
+    for (RegionCorner& c : corners)
+      c.vertex = kNoVertex;
+    return corners;
+  };
+  const std::array<RegionCorner, 4> px = as_points(x), py = as_points(y);
+  const Region rx(px), ry(py);
+  for (const auto& [a, b, a_corners] : {std::tuple{&rx, &ry, &px}, std::tuple{&ry, &rx, &py}}) {
+    for (const RegionCorner& c : *a_corners) {
+      if (b->holds(c.point)) return true;
+    }
+    for (const auto& edge : a->edges()) {
+      for (const auto& triangle : b->triangles()) {
+        if (edge_meets_triangle(edge, triangle)) return true;
+      }
+    }
+  }
+  return false;
 }
 
 }  // namespace exactgeo::remesh

@@ -199,7 +199,8 @@ void expect_passes_agree(Surface& surface, const Pass& pass_of, const Alone& alo
       if (done[i].verdict == Verdict::deferred) continue;
       Surface copy = before;
       const Outcome single = alone(copy, i);
-      EXPECT_EQ(single.verdict, done[i].verdict) << "operation " << i << ": " << single.reason;
+      EXPECT_EQ(single.verdict, done[i].verdict)
+          << "operation " << i << ": alone " << single.reason << "; in the pass " << done[i].reason;
       if (same_blocker) {
         EXPECT_EQ(single.blocker, done[i].blocker) << "operation " << i << ": " << single.reason;
       } else {

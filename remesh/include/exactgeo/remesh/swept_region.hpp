@@ -67,6 +67,13 @@ std::optional<Blocker> first_in_region(const Surface& surface,
                                        const std::array<RegionCorner, 4>& region,
                                        VertexIndex partner = kNoVertex);
 
+/// Whether two regions (closed convex hulls of their corners, whatever the corners'
+/// vertices) have a point in common. Exact. Two operations of a pass whose regions are
+/// apart, and that share no vertex, can be checked against the surface as it is before
+/// either: what one makes lies in its own region, which the other's does not reach.
+/// Precondition: as first_in_region's, for each.
+bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionCorner, 4>& y);
+
 /// Whether triangle `made`, which replaces `old` in a flip or a split, turns over in old's
 /// plane: every corner of `made` lies in that plane and it faces the other way (its
 /// corners turn the other way, seen from either side). The region test above keeps the
@@ -80,10 +87,11 @@ std::optional<Blocker> first_in_region(const Surface& surface,
 /// Exact. Precondition: `old` has non-zero area.
 bool turns_over_in_plane(const std::array<Point3, 3>& old, const std::array<Point3, 3>& made);
 
-/// first_in_region for several regions at once: the surface's elements are boxed and
-/// sorted along x once, and each region looks only at those its box reaches, so that a
-/// pass of many operations costs about one pass over the surface. `partners` is empty
-/// (none) or holds one per region.
+/// first_in_region for several regions at once: one walk of two box trees (the regions',
+/// the surface's triangles') finds the triangles each region's box reaches, and each
+/// region tests those and their corners and edges only, so that a pass of many
+/// operations costs about one pass over the surface. `partners` is empty (none) or holds
+/// one per region.
 std::vector<std::optional<Blocker>> first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
     std::span<const VertexIndex> partners = {});

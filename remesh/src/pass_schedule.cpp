@@ -1,0 +1,56 @@
+#include "pass_schedule.hpp"
+
+#include <algorithm>
+
+#include "box_pairs.hpp"
+
+namespace exactgeo::remesh::internal {
+
+std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<const Point3> points) {
+  // Every region of the pass, with its operation, and the pairs whose boxes overlap.
+  std::vector<std::array<RegionCorner, 4>> regions;
+  std::vector<std::size_t> operation_of;
+  for (std::size_t i = 0; i < operations.size(); ++i) {
+    for (const auto& r : operations[i].regions) {
+      regions.push_back(r);
+      operation_of.push_back(i);
+    }
+  }
+  std::vector<std::vector<std::size_t>> near(regions.size());  // regions whose boxes meet
+  const RegionPoints boxed(points, regions);
+  overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
+    if (operation_of[x] == operation_of[y]) return;
+    near[x].push_back(y);
+    near[y].push_back(x);
+  });
+  std::vector<std::size_t> first_region(operations.size() + 1, 0);
+  for (std::size_t i = 0; i < operations.size(); ++i)
+    first_region[i + 1] = first_region[i] + operations[i].regions.size();
+
+  std::vector<bool> ahead(operations.size(), false);
+  std::vector<bool> taken(points.size(), false);  // a vertex of an operation going ahead
+  for (std::size_t i = 0; i < operations.size(); ++i) {
+    const std::vector<VertexIndex>& vertices = operations[i].vertices;
+    if (std::any_of(vertices.begin(), vertices.end(), [&](VertexIndex v) { return taken[v]; }))
+      continue;
+    bool apart = true;
+    for (std::size_t r = first_region[i]; r < first_region[i + 1] && apart; ++r) {
+      for (const std::size_t other : near[r]) {
+        const std::size_t j = operation_of[other];
+        if (!ahead[j]) continue;  // later, or waiting
+        const bool by_boxes = operations[i].by_boxes || operations[j].by_boxes;
+        if (by_boxes || regions_meet(regions[r], regions[other])) {
+          apart = false;
+          break;
+        }
+      }
+    }
+    if (!apart) continue;
+    ahead[i] = true;
+    for (const VertexIndex v : vertices)
+      taken[v] = true;
+  }
+  return ahead;
+}
+
+}  // namespace exactgeo::remesh::internal
