@@ -13,6 +13,10 @@
 //
 //   build/bench/remesh_benchmark --benchmark_filter=Coarsening
 //
+// A full remesh (a pass of splits, one of collapses, one of flips) against the same step:
+//
+//   build/bench/remesh_benchmark --benchmark_filter='FullRemesh|SmoothingAsOne'
+//
 // (docs/remesh.md quotes the ratios).
 
 #include <benchmark/benchmark.h>
@@ -166,6 +170,45 @@ void CoarseningAsOneMeshCcdStep(benchmark::State& state) {
         exactgeo::ccd::find_collisions(start.surface.triangles, {t0, t1}).collision());
   }
 }
+
+/// A full remesh of the sheets: a pass of splits (every edge at its rounded midpoint), a
+/// pass of collapses (coarsening()) and a pass of flips (every edge), one after the other
+/// on the surface each leaves, as a remesher calls them; against one mesh CCD step of the
+/// same mesh (the smoothing moves, a step from scratch), the yardstick a remesh should be
+/// within.
+std::vector<exactgeo::remesh::Split> midpoint_splits(const Surface& s) {
+  std::vector<exactgeo::remesh::Split> out;
+  for (const auto& e : s.edges()) {
+    const Point3 &a = s.vertices[e[0]], &b = s.vertices[e[1]];
+    out.push_back({e[0], e[1], {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])}});
+  }
+  return out;
+}
+
+void FullRemesh(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Scene start = scene(3, n);
+  const std::vector<Collapse> collapses = coarsening(start, 3, n);
+  const std::vector<exactgeo::remesh::Split> splits = midpoint_splits(start.surface);
+  std::size_t applied = 0;
+  for (auto _ : state) {
+    Surface s = start.surface;
+    applied = 0;
+    for (const auto& o : exactgeo::remesh::split_edges(s, splits))
+      applied += o.applied();
+    // The collapses name the start's vertices, which the splits keep (new ones come after).
+    for (const auto& o : exactgeo::remesh::collapse_edges(s, collapses))
+      applied += o.applied();
+    const std::vector<exactgeo::remesh::Edge> edges = s.edges();
+    for (const auto& o : exactgeo::remesh::flip_edges(s, edges))
+      applied += o.applied();
+    benchmark::DoNotOptimize(applied);
+  }
+  state.counters["triangles"] = static_cast<double>(start.surface.triangles.size());
+  state.counters["applied"] = static_cast<double>(applied);
+}
+
+BENCHMARK(FullRemesh)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
 
 BENCHMARK(CoarseningOneByOne)->Arg(8)->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
 BENCHMARK(CoarseningPass)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);

@@ -183,11 +183,11 @@ MUTANTS = [
      "(on_other_side(c[1]) || c[1] == corners[2].vertex) && "
      "(on_other_side(c[2]) || c[2] == corners[2].vertex);", ["remesh_tests"]),
     # ... and the two sides' new triangles are then checked against each other
-    # (remesh/src/operations.cpp).
+    # (remesh/src/split.cpp).
     ("split_sides_unchecked",
-     "remesh/src/operations.cpp",
-     "if (new_triangles_meet(surface, made, at)) {",
-     "if (new_triangles_meet(surface, made, at) && false) {",
+     "remesh/src/split.cpp",
+     "plan.on_edge.size() == 2 && sides_meet(surface, made, at)) {",
+     "plan.on_edge.size() == 2 && sides_meet(surface, made, at) && false) {",
      ["remesh_tests"]),
     # A flip's or split's new triangle may not turn over in the old triangle's plane
     # (remesh/src/swept_region.cpp).

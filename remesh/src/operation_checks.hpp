@@ -35,6 +35,27 @@ inline bool has_zero_area(const Surface& s, const Triangle& t) noexcept {
   return zero_area(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
+/// The refusal of an operation whose new triangle `made` would turn over in the plane of
+/// the triangle it replaces (turns_over_in_plane): a fold flat onto the surface around
+/// `corner`, the operation's vertex where it folds.
+inline Outcome turns_over(const std::string& operation, const Triangle& made, VertexIndex corner) {
+  const Blocker blocker{Blocker::Kind::vertex, {corner, kNoVertex, kNoVertex}};
+  return {Verdict::refused_collision,
+          operation + " would turn new triangle " + std::to_string(made[0]) + " " +
+              std::to_string(made[1]) + " " + std::to_string(made[2]) +
+              " over, flat in the plane of the triangle it replaces, folding at " +
+              to_string(blocker),
+          blocker,
+          {}};
+}
+
+/// A pass's refusal of an operation that waits for the next pass.
+inline Outcome deferred(const std::string& operation, std::string_view why) {
+  std::string reason = operation;
+  reason.append(" ").append(why);
+  return {Verdict::deferred, std::move(reason), std::nullopt, std::nullopt};
+}
+
 /// The reason a vertex cannot be operated on, or nullopt.
 inline std::optional<std::string> vertex_problem(const Surface& s, VertexIndex v) {
   if (v >= s.vertices.size()) return "vertex " + std::to_string(v) + " does not exist";

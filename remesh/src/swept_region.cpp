@@ -129,6 +129,23 @@ class Region {
       }
     }
     volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
+    for (int l = 0; l < 4; ++l) {
+      const auto& t = face_opposite(l);
+      inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+    }
+  }
+
+  /// Of a tetrahedron's faces, those with x strictly on their far side (bit l: the face
+  /// opposite corner l); 0 for a flat region. Elements whose corners all lie beyond one
+  /// face are apart from the tetrahedron: four signs per vertex spare an element's tests.
+  unsigned beyond(const Point3& x) const noexcept {
+    if (volume_ == Sign::zero) return 0;
+    unsigned mask = 0;
+    for (int l = 0; l < 4; ++l) {
+      const auto& t = face_opposite(l);
+      if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l]) mask |= 1u << l;
+    }
+    return mask;
   }
 
   bool is_corner(VertexIndex v) const noexcept {
@@ -151,13 +168,10 @@ class Region {
       return false;
     }
     // A tetrahedron: on no face's far side (the side away from the opposite corner).
-    for (int l = 0; l < 4; ++l) {
-      const auto& t = face_opposite(l);
-      const Sign inward = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
-      if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward) return false;
-    }
-    return true;
+    return beyond(x) == 0;
   }
+
+  bool flat() const noexcept { return volume_ == Sign::zero; }
 
   /// The four corner triangles: the tetrahedron's faces, or the flat hull's cover.
   std::array<std::array<Corner, 3>, 4> triangles() const noexcept {
@@ -183,6 +197,7 @@ class Region {
   Point3 lower_{};
   Point3 upper_{};
   Sign volume_ = Sign::zero;
+  std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
 };
 
 /// An edge of the surface crosses or touches one of the region's triangles outside
@@ -267,11 +282,22 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
     return v == edge_a || v == edge_b || v == partner;
   };
   const bool has_partner = partner != kNoVertex;
-  for (const VertexIndex v : near.vertices) {
+  // Each nearby vertex's faces of the tetrahedron it lies beyond (none for a flat region).
+  std::vector<unsigned> beyond(near.vertices.size());
+  for (std::size_t i = 0; i < near.vertices.size(); ++i)
+    beyond[i] = region.beyond(p[near.vertices[i]]);
+  const auto beyond_of = [&](VertexIndex v) {
+    const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
+    return beyond[static_cast<std::size_t>(it - near.vertices.begin())];
+  };
+  for (std::size_t i = 0; i < near.vertices.size(); ++i) {
+    const VertexIndex v = near.vertices[i];
     if (region.is_corner(v) || (has_partner && v == partner)) continue;
-    if (region.holds(p[v])) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
+    const bool inside = region.flat() ? region.holds(p[v]) : beyond[i] == 0;
+    if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
   }
   for (const Edge& e : near.edges) {
+    if ((beyond_of(e[0]) & beyond_of(e[1])) != 0) continue;          // beyond one face: apart
     if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
     // ad or bd: d and an end of the edge.
     if (has_partner && (e[0] == partner || e[1] == partner) && on_other_side(e[0]) &&
@@ -284,6 +310,7 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   }
   for (const std::size_t t : near.triangles) {
     const Triangle& c = surface.triangles[t];
+    if ((beyond_of(c[0]) & beyond_of(c[1]) & beyond_of(c[2])) != 0) continue;  // apart
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;

@@ -1,4 +1,5 @@
-// relocate_vertices: a smoothing pass as one pseudo-motion through the mesh broad phase.
+// relocate_vertex and relocate_vertices: vertices moved on straight lines, a smoothing pass
+// as one pseudo-motion through the mesh broad phase (a single relocation is a pass of one).
 
 #include <cmath>
 #include <limits>
@@ -135,6 +136,12 @@ class Pass {
 
 std::vector<Outcome> relocate_vertices(Surface& surface, std::span<const Move> moves) {
   return Pass(surface, moves).run(surface);
+}
+
+Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to) {
+  // A pass of one move: the same checks, one code path.
+  const Move move{v, to};
+  return relocate_vertices(surface, std::span(&move, 1)).front();
 }
 
 }  // namespace exactgeo::remesh

@@ -1,0 +1,256 @@
+// split_edge and split_edges: edge ab split at a new vertex m, each of its triangles x y c
+// (walking x -> y along the edge) replaced by x m c and m y c. A point exactly inside the
+// edge moves nothing; any other point sweeps, for each triangle, the hull of a, b, c and
+// m (swept_region.hpp, with the other side's triangle as the region's partner), and the
+// two sides' new triangles are checked against each other.
+//
+// A pass plans in the order flip.cpp's does: topology (the edge's triangles), no shared
+// vertex with an earlier split going ahead, geometry (where m is, no zero area or
+// turn-over, the two sides apart), regions apart from the earlier ones'; then the regions
+// against the surface in one walk.
+
+#include <array>
+#include <variant>
+#include <vector>
+
+#include "exactgeo/mesh/mesh.hpp"
+#include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/remesh/operations.hpp"
+#include "operation_checks.hpp"
+#include "pass_schedule.hpp"
+
+namespace exactgeo::remesh {
+
+using namespace checks;  // operation_checks.hpp
+
+namespace {
+
+std::string splitting(VertexIndex a, VertexIndex b) {
+  return "splitting edge " + std::to_string(a) + "-" + std::to_string(b);
+}
+
+/// A split: the edge's triangles, and once its geometry is checked the regions it sweeps
+/// (none when the new vertex lies exactly on the edge) with their partners.
+struct SplitPlan {
+  VertexIndex a = 0;
+  VertexIndex b = 0;
+  Point3 at{};
+  std::vector<std::size_t> on_edge;
+  std::vector<std::array<RegionCorner, 4>> regions;
+  std::vector<VertexIndex> partners;  ///< per region: the other side's opposite corner
+};
+
+/// The triangles x m c and m y c that replace each triangle x y c of the edge (walking
+/// x -> y along it), for a new vertex numbered m.
+std::vector<Triangle> split_triangles(const Surface& surface,
+                                      const std::vector<std::size_t>& on_edge, VertexIndex a,
+                                      VertexIndex b, VertexIndex m) {
+  std::vector<Triangle> made;
+  for (const std::size_t t : on_edge) {
+    const Triangle& old = surface.triangles[t];
+    const VertexIndex x = walks(old, a, b) ? a : b;
+    const VertexIndex y = x == a ? b : a;
+    const VertexIndex c = third_corner(old, a, b);
+    made.push_back({x, m, c});
+    made.push_back({m, y, c});
+  }
+  return made;
+}
+
+/// Whether a new triangle of one side of an inner edge meets one of the other side's
+/// outside their shared corners (exactly, mesh::face_contact, a flat overlap counting):
+/// the two sides are not each other's obstacles in their regions (the partner), so they
+/// are checked against each other here. The halves of one side tile their region (they
+/// face as the old triangle: split_geometry), so only pairs across the edge are tested.
+bool sides_meet(const Surface& surface, const std::vector<Triangle>& made, const Point3& at) {
+  // A small mesh of their corners only: the new vertex last.
+  mesh::Mesh m;
+  std::array<VertexIndex, 4> corners{};  // the surface's vertices among them
+  std::size_t n = 0;
+  const auto local = [&](VertexIndex v) -> VertexIndex {
+    if (v >= surface.vertices.size()) return 4;  // the new vertex
+    for (std::size_t k = 0; k < n; ++k) {
+      if (corners[k] == v) return static_cast<VertexIndex>(k);
+    }
+    corners[n] = v;
+    return static_cast<VertexIndex>(n++);
+  };
+  std::vector<mesh::Face> faces;
+  for (const Triangle& t : made)
+    faces.push_back(mesh::make_triangle(local(t[0]), local(t[1]), local(t[2])));
+  for (std::size_t k = 0; k < n; ++k)
+    m.vertices.push_back(surface.vertices[corners[k]]);
+  m.vertices.resize(4, at);  // unused slots, then
+  m.vertices.push_back(at);  // the new vertex, at index 4
+  m.faces = std::move(faces);
+  for (const std::size_t i : {0, 1}) {
+    for (const std::size_t j : {2, 3}) {
+      if (mesh::face_contact(m, i, j, mesh::CoplanarOverlap::intersecting) !=
+          mesh::FaceContact::apart) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+std::variant<Outcome, SplitPlan> split_topology(const Surface& surface, VertexIndex a,
+                                                VertexIndex b, const Point3& at,
+                                                std::vector<std::size_t> on_edge) {
+  if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
+  return SplitPlan{a, b, at, std::move(on_edge), {}, {}};
+}
+
+/// The geometry of a planned split: nullopt with its regions filled in, or why it is
+/// refused.
+std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
+  const VertexIndex a = plan.a, b = plan.b;
+  const Point3& at = plan.at;
+  if (!finite(at)) return topology("the new position is not finite");
+  const auto& p = surface.vertices;
+  // On the edge's line: only strictly between its ends, where nothing moves.
+  bool between = false;
+  if (zero_area(p[a], p[b], at)) {
+    between = at != p[a] && at != p[b];
+    for (int k = 0; k < 3; ++k)
+      between =
+          between && std::min(p[a][k], p[b][k]) <= at[k] && at[k] <= std::max(p[a][k], p[b][k]);
+    if (!between) return topology("the new vertex lies on the edge's line, outside the edge");
+  }
+  const auto m = static_cast<VertexIndex>(surface.vertices.size());  // the new vertex
+  const std::vector<Triangle> made = split_triangles(surface, plan.on_edge, a, b, m);
+  const auto point = [&](VertexIndex v) { return v == m ? at : p[v]; };
+  for (std::size_t i = 0; i < plan.on_edge.size(); ++i) {
+    const Triangle& old = surface.triangles[plan.on_edge[i]];
+    const VertexIndex c = third_corner(old, a, b);
+    if (zero_area(p[a], p[c], at) || zero_area(p[b], p[c], at)) {
+      return topology("a triangle of the split would have zero area");
+    }
+    // At a point of the old triangle's plane off the edge, outside the triangle's angle
+    // at c, a half would face the other way (lying flat over the other, or the two
+    // turned over together).
+    for (const Triangle& t : {made[2 * i], made[2 * i + 1]}) {
+      if (turns_over_in_plane({p[old[0]], p[old[1]], p[old[2]]},
+                              {point(t[0]), point(t[1]), point(t[2])})) {
+        return turns_over(splitting(a, b), t, c);
+      }
+    }
+    if (!between) {
+      plan.regions.push_back({RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
+                              RegionCorner{kNoVertex, at}});
+      plan.partners.push_back(plan.on_edge.size() == 2
+                                  ? third_corner(surface.triangles[plan.on_edge[1 - i]], a, b)
+                                  : kNoVertex);
+    }
+  }
+  if (!between && plan.on_edge.size() == 2 && sides_meet(surface, made, at)) {
+    return Outcome{Verdict::refused_collision,
+                   splitting(a, b) + " off the edge would fold its two sides into each other",
+                   Blocker{Blocker::Kind::triangle, surface.triangles[plan.on_edge[1]]},
+                   {}};
+  }
+  return std::nullopt;
+}
+
+/// Makes the planned split: a new vertex, and each triangle x y c (walking x -> y along
+/// the edge) replaced by x m c and m y c.
+Outcome apply_split(Surface& surface, const SplitPlan& plan) {
+  const auto m = static_cast<VertexIndex>(surface.vertices.size());
+  const std::vector<Triangle> made = split_triangles(surface, plan.on_edge, plan.a, plan.b, m);
+  surface.vertices.push_back(plan.at);
+  if (!surface.fixed.empty()) surface.fixed.push_back(false);
+  for (std::size_t i = 0; i < plan.on_edge.size(); ++i) {
+    surface.triangles[plan.on_edge[i]] = made[2 * i];
+    surface.triangles.push_back(made[2 * i + 1]);
+  }
+  Outcome done;
+  done.new_vertex = m;
+  return done;
+}
+
+}  // namespace
+
+Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at) {
+  auto planned = split_topology(surface, a, b, at, {});
+  if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
+  SplitPlan& plan = std::get<SplitPlan>(planned);
+  if (auto refused = split_geometry(surface, plan)) return *refused;
+  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
+    if (auto hit = first_in_region(surface, plan.regions[r], plan.partners[r])) {
+      return collision(*hit, splitting(a, b));
+    }
+  }
+  return apply_split(surface, plan);
+}
+
+std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits) {
+  const EdgeTriangles table(surface);
+  std::vector<Outcome> outcomes(splits.size());
+  // 1. Topology.
+  std::vector<SplitPlan> plans;
+  std::vector<std::size_t> split_of_plan;
+  for (std::size_t i = 0; i < splits.size(); ++i) {
+    const Split& s = splits[i];
+    auto planned = split_topology(surface, s.a, s.b, s.at, table.on(s.a, s.b));
+    if (auto* refused = std::get_if<Outcome>(&planned)) {
+      outcomes[i] = std::move(*refused);
+      continue;
+    }
+    plans.push_back(std::get<SplitPlan>(std::move(planned)));
+    split_of_plan.push_back(i);
+  }
+  // 2. No shared vertex with an earlier split that goes ahead.
+  std::vector<internal::Footprint> by_vertices(plans.size());
+  for (std::size_t k = 0; k < plans.size(); ++k) {
+    for (const std::size_t t : plans[k].on_edge) {
+      const Triangle& tri = surface.triangles[t];
+      by_vertices[k].vertices.insert(by_vertices[k].vertices.end(), tri.begin(), tri.end());
+    }
+  }
+  const std::vector<bool> apart = internal::go_ahead(by_vertices, surface.vertices);
+  // 3. Geometry, and 4. regions apart from the earlier ones'.
+  std::vector<std::size_t> candidates;
+  std::vector<internal::Footprint> by_regions;
+  for (std::size_t k = 0; k < plans.size(); ++k) {
+    const std::size_t i = split_of_plan[k];
+    if (!apart[k]) {
+      outcomes[i] = deferred(splitting(plans[k].a, plans[k].b),
+                             "shares a vertex with another split of the pass");
+    } else if (auto refused = split_geometry(surface, plans[k])) {
+      outcomes[i] = std::move(*refused);
+    } else {
+      candidates.push_back(k);
+      by_regions.push_back({{}, plans[k].regions, false});
+    }
+  }
+  const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
+  std::vector<std::array<RegionCorner, 4>> regions;
+  std::vector<VertexIndex> partners;
+  std::vector<std::size_t> checked;
+  for (std::size_t n = 0; n < candidates.size(); ++n) {
+    const SplitPlan& plan = plans[candidates[n]];
+    if (!ahead[n]) {
+      outcomes[split_of_plan[candidates[n]]] = deferred(
+          splitting(plan.a, plan.b), "sweeps a region that meets another split's of the pass");
+      continue;
+    }
+    regions.insert(regions.end(), plan.regions.begin(), plan.regions.end());
+    partners.insert(partners.end(), plan.partners.begin(), plan.partners.end());
+    checked.push_back(candidates[n]);
+  }
+  // As for flips: the splits that go ahead meet nothing another one makes.
+  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions, partners);
+  std::size_t next_region = 0;
+  for (const std::size_t k : checked) {
+    std::optional<Blocker> hit;
+    for (std::size_t r = 0; r < plans[k].regions.size(); ++r, ++next_region) {
+      if (!hit) hit = hits[next_region];
+    }
+    const SplitPlan& plan = plans[k];
+    outcomes[split_of_plan[k]] =
+        hit ? collision(*hit, splitting(plan.a, plan.b)) : apply_split(surface, plan);
+  }
+  return outcomes;
+}
+
+}  // namespace exactgeo::remesh
