@@ -25,6 +25,13 @@ constexpr double kCollapseBelow = 4.0 / 5.0;
 /// so that a cocircular quad, or one made so by rounding, is not flipped back and forth.
 constexpr double kDelaunaySlack = 1e-6;
 
+/// The quality guard, in the world (where the simulation and the picture see the
+/// triangles): no operation makes a triangle whose smallest angle is below this, unless
+/// the triangles it replaces were worse already (it may improve a sliver, never make one).
+/// El Topo's default floor is 3 degrees; slivers here sat at the tips of the cones the
+/// folds buckle into, which a finer floor keeps from forming where the remesher acts.
+constexpr double kMinAngle = 5.0 * std::numbers::pi / 180.0;
+
 /// The surface being remeshed, with what the operations do not know about its vertices.
 struct Work {
   Surface surface;
@@ -45,44 +52,50 @@ bool sheet_triangle(const Surface& s, const remesh::Triangle& t) {
 }
 
 /// Every edge of the sheets' triangles with its triangles (edges of more than two, which
-/// the sheets never have, are left out).
+/// the sheets never have, are left out), ordered by their ends. The triangles' sides are
+/// bucketed by their smaller vertex (a counting sort: linear, where a sort of all sides
+/// was a good part of a remesh), then paired within each bucket.
 std::vector<SheetEdge> sheet_edges(const Surface& s) {
   struct Side {
-    Edge edge;
+    VertexIndex other;  // the larger end
     std::size_t triangle;
-    bool forward;  // the triangle walks edge[0] -> edge[1]
+    bool forward;  // the triangle walks smaller -> larger
   };
-  std::vector<Side> sides;
+  std::vector<std::size_t> first(s.vertices.size() + 1, 0);
+  for (const remesh::Triangle& tri : s.triangles) {
+    if (!sheet_triangle(s, tri)) continue;
+    for (int k = 0; k < 3; ++k)
+      ++first[std::min(tri[k], tri[(k + 1) % 3]) + 1];
+  }
+  for (std::size_t v = 1; v < first.size(); ++v)
+    first[v] += first[v - 1];
+  std::vector<Side> sides(first.back());
+  std::vector<std::size_t> next(first.begin(), first.end() - 1);
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const remesh::Triangle& tri = s.triangles[t];
     if (!sheet_triangle(s, tri)) continue;
     for (int k = 0; k < 3; ++k) {
       const VertexIndex p = tri[k], q = tri[(k + 1) % 3];
-      sides.push_back({remesh::edge_of(p, q), t, p < q});
+      sides[next[std::min(p, q)]++] = {std::max(p, q), t, p < q};
     }
   }
-  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-    return std::pair(x.edge, x.triangle) < std::pair(y.edge, y.triangle);
-  });
   std::vector<SheetEdge> edges;
-  for (std::size_t i = 0; i < sides.size();) {
-    std::size_t j = i + 1;
-    while (j < sides.size() && sides[j].edge == sides[i].edge)
-      ++j;
-    const Side& first = sides[i];
-    SheetEdge e;
-    if (first.forward) {
-      e = {first.edge[0], first.edge[1], first.triangle, std::nullopt};
-    } else {
-      e = {first.edge[1], first.edge[0], first.triangle, std::nullopt};
+  for (VertexIndex v = 0; v + 1 < first.size(); ++v) {
+    const auto begin = sides.begin() + static_cast<std::ptrdiff_t>(first[v]);
+    const auto end = sides.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
+    std::sort(begin, end, [](const Side& x, const Side& y) {
+      return std::pair(x.other, x.triangle) < std::pair(y.other, y.triangle);
+    });
+    for (auto i = begin; i != end;) {
+      auto j = i + 1;
+      while (j != end && j->other == i->other)
+        ++j;
+      SheetEdge e = i->forward ? SheetEdge{v, i->other, i->triangle, std::nullopt}
+                               : SheetEdge{i->other, v, i->triangle, std::nullopt};
+      if (j == i + 2) e.right = (i + 1)->triangle;
+      if (j - i <= 2) edges.push_back(e);
+      i = j;
     }
-    if (j == i + 2) {
-      e.right = sides[i + 1].triangle;
-      edges.push_back(e);
-    } else if (j == i + 1) {
-      edges.push_back(e);
-    }
-    i = j;
   }
   return edges;
 }
@@ -111,6 +124,26 @@ std::array<double, 3> normal(const Surface& s, const remesh::Triangle& t) {
   return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
 }
 
+/// The smallest angle of the triangle p q r in the world (0 for a degenerate one).
+double world_min_angle(const Point3& p, const Point3& q, const Point3& r) {
+  const auto angle_at = [](const Point3& o, const Point3& x, const Point3& y) {
+    const double ux = x[0] - o[0], uy = x[1] - o[1], uz = x[2] - o[2];
+    const double vx = y[0] - o[0], vy = y[1] - o[1], vz = y[2] - o[2];
+    const double cross = std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
+    return std::atan2(cross, ux * vx + uy * vy + uz * vz);
+  };
+  return std::min({angle_at(p, q, r), angle_at(q, r, p), angle_at(r, p, q)});
+}
+
+double world_min_angle(const Surface& s, const remesh::Triangle& t) {
+  return world_min_angle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+}
+
+/// The guard: the new triangles' smallest angle stays at kMinAngle, or at the old ones'.
+bool keeps_quality(double old_worst, double new_worst) {
+  return new_worst >= std::min(kMinAngle, old_worst);
+}
+
 /// The size every vertex asks for (Remesher's sizing, remesher.hpp).
 std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& edges,
                                  const RemeshParameters& p) {
@@ -136,6 +169,19 @@ double edge_size(const std::vector<double>& size, VertexIndex a, VertexIndex b) 
   return std::min(size[a], size[b]);
 }
 
+/// The guard for a split of e at m: each triangle a b c becomes a m c and m b c.
+bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) {
+  for (const std::optional<std::size_t> t : {std::optional(e.left), e.right}) {
+    if (!t) continue;
+    const remesh::Triangle& tri = s.triangles[*t];
+    const Point3& c = s.vertices[remesh::third_corner(tri, e.a, e.b)];
+    const Point3 &a = s.vertices[e.a], &b = s.vertices[e.b];
+    const double made = std::min(world_min_angle(a, m, c), world_min_angle(m, b, c));
+    if (!keeps_quality(world_min_angle(s, tri), made)) return false;
+  }
+  return true;
+}
+
 bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   const std::vector<SheetEdge> edges = sheet_edges(w.surface);
   const std::vector<double> size = vertex_sizes(w, edges, p);
@@ -145,6 +191,7 @@ bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
     if (ratio <= kSplitAbove) continue;
     const Point3 &pa = w.surface.vertices[e.a], &pb = w.surface.vertices[e.b];
     const Point3 mid{0.5 * (pa[0] + pb[0]), 0.5 * (pa[1] + pb[1]), 0.5 * (pa[2] + pb[2])};
+    if (!split_keeps_quality(w.surface, e, mid)) continue;
     wanted.push_back({ratio, remesh::Split{e.a, e.b, mid}});
   }
   std::stable_sort(wanted.begin(), wanted.end(),
@@ -220,10 +267,12 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
   for (remesh::Triangle tri : star) {
     if (std::find(tri.begin(), tri.end(), kept) != tri.end()) continue;  // removed
     const double before = material_area(w, tri[0], tri[1], tri[2]);
+    const double old_worst = world_min_angle(w.surface, tri);
     for (VertexIndex& c : tri)
       if (c == gone) c = kept;
     const double after = material_area(w, tri[0], tri[1], tri[2]);
     if (!(before * after > 0.0)) return false;
+    if (!keeps_quality(old_worst, world_min_angle(w.surface, tri))) return false;
   }
   return true;
 }
@@ -279,6 +328,11 @@ bool flip_pass(Work& w, VerdictCounts& counts) {
         !(material_area(w, d, e.b, c) * old_turn > 0.0)) {
       continue;
     }
+    const double old_worst = std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
+                                      world_min_angle(w.surface, w.surface.triangles[*e.right]));
+    const double new_worst =
+        std::min(world_min_angle(w.surface, {c, e.a, d}), world_min_angle(w.surface, {d, e.b, c}));
+    if (!keeps_quality(old_worst, new_worst)) continue;
     flips.push_back(remesh::edge_of(e.a, e.b));
   }
   bool any = false;
