@@ -362,8 +362,14 @@ int run(const Options& o) {
       exactgeo::cloth::place_obstacle(scene, obstacle_rest, ball_angle + turn,
                                       std::span<double>(x1).subspan(obstacle));
     }
-    const FilterStats stats =
+    FilterStats stats =
         collisions->filter.filter(x0, x1, mesh.velocity, o.queries.empty() ? nullptr : &first_t1);
+    // The frozen vertices pin the sheet around them for a second projection, so that it
+    // follows them instead of stretching away (the filter then checks that step again).
+    if (cloth_model && stats.frozen > 0) {
+      cloth_model->relax(x0, mesh.velocity, x1, collisions->filter.frozen(), o.dt, turn);
+      stats += collisions->filter.filter(x0, x1, mesh.velocity);
+    }
     if (!o.queries.empty()) {
       exactgeo::cloth::write_obj(fs::path(o.queries) / numbered("step_", step, "_t0.obj"), x0,
                                  mesh.faces, mesh.sheet_faces);

@@ -159,8 +159,11 @@ FilterStats CollisionFilter::filter(std::span<const double> x0, std::span<double
     }
   }
   stats.frozen = marked_list_.size();
-  for (std::size_t v : marked_list_)
+  frozen_.assign(cloth_vertices_, 0);
+  for (std::size_t v : marked_list_) {
+    frozen_[v] = 1;
     marked_[v] = 0;
+  }
   marked_list_.clear();
   return stats;
 }

@@ -105,6 +105,9 @@ class CollisionFilter {
   FilterStats filter(std::span<const double> x0, std::span<double> x1, std::span<double> velocity,
                      std::vector<double>* first_t1 = nullptr);
 
+  /// Per sheet vertex, whether the last filter() froze (or stopped) it.
+  std::span<const unsigned char> frozen() const noexcept { return frozen_; }
+
  private:
   /// The frame the next round checks: x1, or its look-ahead.
   std::span<const double> round_end(std::span<const double> x0, std::span<const double> x1,
@@ -119,6 +122,7 @@ class CollisionFilter {
   std::vector<double> look_ahead_;
   std::vector<unsigned char> marked_;
   std::vector<std::size_t> marked_list_;
+  std::vector<unsigned char> frozen_;
 };
 
 }  // namespace exactgeo::cloth

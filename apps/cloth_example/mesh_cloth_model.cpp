@@ -117,9 +117,31 @@ void MeshClothModel::predict(std::span<const double> x0, std::span<double> veloc
       x1[3 * v + k] = x0[3 * v + k] + dt * velocity[3 * v + k];
     }
   }
+  project(x0, x1, inverse_mass_, ball_turn);
+  for (std::size_t i = 0; i < 3 * n; ++i)
+    velocity[i] = (x1[i] - x0[i]) / dt;
+}
+
+void MeshClothModel::relax(std::span<const double> x0, std::span<double> velocity,
+                           std::span<double> x1, std::span<const unsigned char> pinned, double dt,
+                           double ball_turn) const {
+  std::vector<double> inverse_mass = inverse_mass_;
+  for (std::size_t v = 0; v < inverse_mass.size(); ++v) {
+    if (pinned[v] != 0) inverse_mass[v] = 0.0;
+  }
+  project(x0, x1, inverse_mass, ball_turn);
+  for (std::size_t v = 0; v < inverse_mass.size(); ++v) {
+    if (pinned[v] != 0) continue;
+    for (std::size_t k = 0; k < 3; ++k)
+      velocity[3 * v + k] = (x1[3 * v + k] - x0[3 * v + k]) / dt;
+  }
+}
+
+void MeshClothModel::project(std::span<const double> x0, std::span<double> x1,
+                             std::span<const double> inverse_mass, double ball_turn) const {
   for (int iteration = 0; iteration < parameters_.iterations; ++iteration) {
     for (const Constraint& c : constraints_) {
-      const double wa = inverse_mass_[c.a], wb = inverse_mass_[c.b];
+      const double wa = inverse_mass[c.a], wb = inverse_mass[c.b];
       const Vec3 pa = load(x1, c.a), pb = load(x1, c.b);
       const Vec3 d{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
       const double len = std::hypot(d[0], d[1], d[2]);
@@ -134,11 +156,10 @@ void MeshClothModel::predict(std::span<const double> x0, std::span<double> veloc
         x1[3 * c.b + k] -= wb * step * d[k];
       }
     }
-    for (std::size_t v = 0; v < n; ++v)
-      keep_off_obstacles(x0, x1, v, ball_turn);
+    for (std::size_t v = 0; v < inverse_mass.size(); ++v) {
+      if (inverse_mass[v] > 0.0) keep_off_obstacles(x0, x1, v, ball_turn);
+    }
   }
-  for (std::size_t i = 0; i < 3 * n; ++i)
-    velocity[i] = (x1[i] - x0[i]) / dt;
 }
 
 }  // namespace exactgeo::cloth

@@ -53,6 +53,12 @@ class MeshClothModel {
   void predict(std::span<const double> x0, std::span<double> velocity, std::span<double> x1,
                double dt, double ball_turn) const;
 
+  /// Projects the constraints again with the `pinned` sheet vertices held where x1 has them
+  /// (the ones the collision filter froze at x0), so that the rest of the sheet follows
+  /// them instead of leaving them behind; the others' x1 and velocity are rewritten.
+  void relax(std::span<const double> x0, std::span<double> velocity, std::span<double> x1,
+             std::span<const unsigned char> pinned, double dt, double ball_turn) const;
+
  private:
   struct Constraint {
     ccd::VertexIndex a = 0;
@@ -64,6 +70,11 @@ class MeshClothModel {
   /// Pushes vertex v of x1 out of the ground and the ball, with friction.
   void keep_off_obstacles(std::span<const double> x0, std::span<double> x1, std::size_t v,
                           double ball_turn) const;
+
+  /// The constraint passes on x1, with these inverse masses, then the obstacles' pushes
+  /// (of the vertices with a mass).
+  void project(std::span<const double> x0, std::span<double> x1,
+               std::span<const double> inverse_mass, double ball_turn) const;
 
   MeshClothParameters parameters_;
   std::optional<SpinningBall> ball_;
