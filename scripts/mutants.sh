@@ -157,12 +157,12 @@ MUTANTS = [
      "predicates/src/double_interval.hpp",
      "return std::nextafter(x, -std::numeric_limits<double>::infinity());",
      "return x;", ["predicates_tests", "inside_tests"]),
-    # A polygon's triangles are certified by finding no two that overlap
-    # (mesh/src/polygon_triangulation.cpp).
-    ("polygon_overlap_certificate_skipped",
-     "mesh/src/polygon_triangulation.cpp",
-     "interiors_disjoint(std::span(out).subspan(before), vertices, plane, turn)",
-     "(interiors_disjoint(std::span(out).subspan(before), vertices, plane, turn) || true)",
+    # A polygon's triangles are certified by the sweep's winding numbers, 0 or 1 in every
+    # region (mesh/src/polygon_sweep.cpp).
+    ("polygon_winding_certificate_skipped",
+     "mesh/src/polygon_sweep.cpp",
+     "if (inserted_segment.above > 1 || inserted_segment.above < -1 || (positive && negative)) {",
+     "if (false) {",
      ["mesh_tests", "inside_tests"]),
     # The swept regions look at the elements whose lower x lies within the widest element
     # of the region's box (remesh/src/swept_region.cpp).

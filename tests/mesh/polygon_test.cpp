@@ -4,18 +4,23 @@
 // triangle turns as the polygon does, their areas add up to the polygon's, and at random
 // points the number of triangles covering the point is the polygon's winding number
 // there), for polygons in three different planes and at 2^0, 2^+-1000 and subnormal
-// scales. A polygon off its plane by one coordinate step is split over its projection,
-// with a note; a self-crossing one is refused, naming the file's face, or made a fan on
-// request; every message names faces as the file numbers them.
+// scales. Large polygons of every family (convex, star-shaped, with corners inside
+// straight edges, comb-shaped, with many holes through bridges), from 10 to 10^5 corners,
+// are checked the same way. A polygon off its plane by one coordinate step is split over
+// its projection, with a note; a self-crossing one is refused, naming the file's face, or
+// made a fan on request; every message names faces as the file numbers them.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <functional>
+#include <map>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/io/input_error.hpp"
@@ -56,8 +61,8 @@ std::vector<std::pair<std::string, Embedding>> embeddings(double s) {
 
 std::string number(double x) {
   char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);  // 17 digits: the double back exactly
-  return buffer;
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;  // shortest, exact
+  return std::string(buffer, end);
 }
 
 /// The polygon as an OFF file of one face, its points mapped by `embed`.
@@ -90,7 +95,7 @@ std::vector<std::array<std::uint32_t, 3>> triangles_of(const Mesh& mesh) {
 /// winding number there.
 void expect_tiles(const Polygon2& polygon,
                   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::mt19937_64& rng,
-                  const std::string& what) {
+                  const std::string& what, int samples = 400) {
   SCOPED_TRACE(what);
   ASSERT_EQ(triangles.size(), polygon.cycle.size() - 2);
   for (const auto& t : triangles) {
@@ -107,19 +112,35 @@ void expect_tiles(const Polygon2& polygon,
       upper[k] = std::max(upper[k], q[k]);
     }
   }
+  // Each triangle's box: a point outside it is neither inside the triangle nor on a side
+  // (exact comparisons), which spares the rational orientations for most triangles.
+  std::vector<std::array<Point2, 2>> boxes;
+  for (const auto& t : triangles) {
+    std::array<Point2, 2> box{polygon.points[t[0]], polygon.points[t[0]]};
+    for (const std::uint32_t c : t) {
+      for (int k = 0; k < 2; ++k) {
+        box[0][k] = std::min(box[0][k], polygon.points[c][k]);
+        box[1][k] = std::max(box[1][k], polygon.points[c][k]);
+      }
+    }
+    boxes.push_back(box);
+  }
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int checked = 0;
   int inside = 0;
-  for (int sample = 0; sample < 400; ++sample) {
+  for (int sample = 0; sample < samples; ++sample) {
     Point2 q;
-    for (int k = 0; k < 2; ++k)  // 2^-12 steps: exact sums with the integers
+    for (int k = 0; k < 2; ++k)  // 2^-12 steps: exact sums with the integers (below 2^40)
       q[k] =
           lower[k] + std::ldexp(std::floor(std::ldexp(unit(rng), 12) * (upper[k] - lower[k])), -12);
     const std::optional<int> winding = testing::winding_number_oracle(polygon, q);
     if (!winding) continue;
     int covering = 0;
     bool on_a_side = false;
-    for (const auto& t : triangles) {
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      const auto& box = boxes[i];
+      if (q[0] < box[0][0] || q[0] > box[1][0] || q[1] < box[0][1] || q[1] > box[1][1]) continue;
+      const auto& t = triangles[i];
       const Point2 &a = polygon.points[t[0]], &b = polygon.points[t[1]], &c = polygon.points[t[2]];
       const Sign s0 = testing::orientation_oracle(a, b, q);
       const Sign s1 = testing::orientation_oracle(b, c, q);
@@ -132,7 +153,7 @@ void expect_tiles(const Polygon2& polygon,
     ++checked;
     inside += covering;
   }
-  EXPECT_GT(checked, 300);
+  EXPECT_GT(checked, samples * 3 / 4);
   EXPECT_GT(inside, 0);
 }
 
@@ -169,6 +190,202 @@ TEST(Polygons, PlanarPolygonsBecomeTrianglesThatTileThem) {
       }
     }
   }
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+/// The polygons of one family, of about `corners` corners.
+struct Family {
+  std::string name;
+  std::function<Polygon2(std::mt19937_64&, int corners)> make;
+};
+
+std::vector<Family> families() {
+  return {
+      {"convex", [](std::mt19937_64& rng, int n) { return testing::convex_polygon(rng, n); }},
+      {"star", [](std::mt19937_64& rng, int n) { return testing::star_polygon(rng, n, false); }},
+      {"star with corners inside edges",
+       [](std::mt19937_64& rng, int n) { return testing::star_polygon(rng, n, true); }},
+      {"comb", [](std::mt19937_64& rng, int n) { return testing::comb_polygon(rng, n / 4); }},
+      {"star with holes",
+       [](std::mt19937_64& rng, int n) { return testing::holed_star_polygon(rng, n); }},
+  };
+}
+
+/// Scale factors that put the polygon's coordinates near 2^0, 2^1000 (the largest below
+/// it), 2^-1000 and among the subnormals (every one below 2^-1022), all exactly: the
+/// embeddings' coordinates are integers below 2^bits, bits at most 52.
+std::vector<std::pair<std::string, double>> scales_for(const Polygon2& polygon) {
+  double largest = 0;
+  for (const Point2& q : polygon.points)
+    largest = std::max(largest, std::abs(q[0]) + std::abs(q[1]));
+  int bits = 0;
+  std::frexp(largest, &bits);  // largest < 2^bits
+  return {{"2^0", 1.0},
+          {"2^1000", std::ldexp(1.0, 1000 - bits)},
+          {"2^-1000", std::ldexp(1.0, -1000)},
+          {"subnormal", std::ldexp(1.0, -1022 - bits)}};
+}
+
+/// The number of pairs of corners the cycle joins more often one way than the other: its
+/// boundary edges, a bridge walked both ways not among them.
+std::size_t boundary_edges(const Polygon2& polygon) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> net;
+  const std::size_t n = polygon.cycle.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t a = polygon.cycle[k];
+    const std::uint32_t b = polygon.cycle[(k + 1) % n];
+    net[{std::min(a, b), std::max(a, b)}] += a < b ? 1 : -1;
+  }
+  return static_cast<std::size_t>(
+      std::count_if(net.begin(), net.end(), [](const auto& entry) { return entry.second != 0; }));
+}
+
+TEST(Polygons, LargePolygonsOfEveryFamilyBecomeTrianglesThatTileThem) {
+  std::mt19937_64 rng =
+      testing::seeded_engine("Polygons.LargePolygonsOfEveryFamilyBecomeTrianglesThatTileThem");
+  for (const int size : {10, 100, 1000, 10000, 100000}) {
+    for (const auto& [family, make] : families()) {
+      const Polygon2 polygon = make(rng, size);
+      const auto scales = scales_for(polygon);
+      // Every plane and scale up to 1000 corners; above, one (the seed picks).
+      std::vector<std::pair<std::size_t, std::size_t>> cases;
+      for (std::size_t e = 0; e < 3; ++e) {
+        for (std::size_t k = 0; k < scales.size(); ++k)
+          cases.emplace_back(e, k);
+      }
+      std::shuffle(cases.begin(), cases.end(), rng);
+      cases.resize(size <= 1000 ? cases.size() : 1);
+      for (const auto& [e, k] : cases) {
+        const auto [plane, embed] = embeddings(scales[k].second)[e];
+        const std::string what = family + " of " + std::to_string(polygon.cycle.size()) +
+                                 " corners in " + plane + " at scale " + scales[k].first;
+        const LoadedMesh loaded = read_off(polygon_off(polygon, embed), "p.off", {});
+        EXPECT_EQ(loaded.split_polygons, 1u) << what;
+        EXPECT_TRUE(loaded.notes.empty()) << what << ": " << loaded.notes.front();
+        EXPECT_EQ(loaded.numbering.file_faces,
+                  std::vector<std::size_t>(loaded.mesh.faces.size(), 0))
+            << what;
+        // Each sample point costs a pass over the edges and the triangles: fewer for the
+        // largest polygons.
+        expect_tiles(polygon, triangles_of(loaded.mesh), rng, what, size <= 1000 ? 400 : 40);
+        if (size <= 1000) {
+          const MeshCheck check = check_mesh(loaded.mesh);
+          EXPECT_EQ(check.degenerate_faces.count, 0u) << what;
+          EXPECT_EQ(check.unbalanced_edges.count, boundary_edges(polygon)) << what;
+        }
+      }
+    }
+  }
+}
+
+/// The polygon whose first four points are the corners of a square, counter-clockwise,
+/// with every edge of its cycle from one of them to the next cut into `pieces` edges by
+/// new points (appended): the same region, with many corners when `pieces` is large.
+/// Coordinates are multiplied by `pieces`, so that the cuts fall on integers.
+Polygon2 with_square_sides_cut(const Polygon2& polygon, int pieces) {
+  Polygon2 cut;
+  for (const Point2& q : polygon.points)
+    cut.points.push_back({q[0] * pieces, q[1] * pieces});
+  const std::size_t n = polygon.cycle.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t a = polygon.cycle[k];
+    const std::uint32_t b = polygon.cycle[(k + 1) % n];
+    cut.cycle.push_back(a);
+    if (a >= 4 || b != (a + 1) % 4) continue;
+    for (int t = 1; t < pieces; ++t) {
+      const Point2& p = cut.points[a];
+      const Point2& q = cut.points[b];
+      cut.points.push_back({p[0] + (q[0] - p[0]) / pieces * t, p[1] + (q[1] - p[1]) / pieces * t});
+      cut.cycle.push_back(static_cast<std::uint32_t>(cut.points.size() - 1));
+    }
+  }
+  return cut;
+}
+
+TEST(Polygons, AHoleTouchingTheOutsideAtACornerIsSplit) {
+  // The square [0, 8]^2 less the triangle (0, 0), (2, 4), (4, 2), walked from corner 0
+  // around the outside, then around the hole back to corner 0: the hole touches the
+  // outside there. With few corners ear clipping splits it; with many, the sweep
+  // triangulation declines a corner walked four ways, and ear clipping splits it, each
+  // certified like any other.
+  const Polygon2 notched{{{0, 0}, {8, 0}, {8, 8}, {0, 8}, {4, 2}, {2, 4}}, {0, 1, 2, 3, 0, 5, 4}};
+  std::mt19937_64 rng = testing::seeded_engine("Polygons.AHoleTouchingTheOutsideAtACornerIsSplit");
+  for (const int pieces : {1, 8}) {
+    const Polygon2 polygon = with_square_sides_cut(notched, pieces);
+    for (const auto& [plane, embed] : embeddings(1.0)) {
+      const LoadedMesh loaded = read_off(polygon_off(polygon, embed), "notch.off", {});
+      EXPECT_TRUE(loaded.notes.empty()) << plane;
+      expect_tiles(polygon, triangles_of(loaded.mesh), rng,
+                   "notch of " + std::to_string(polygon.cycle.size()) + " corners in " + plane);
+    }
+  }
+}
+
+TEST(Polygons, LoopsThatTouchOrOverlapAreRefused) {
+  // The square [0, 8]^2 (corners 0 to 3) and points inside it and beside it; each
+  // polygon as written and with the square's sides cut into 8 edges each (more corners
+  // than ear clipping is used for: the sweeps).
+  const std::vector<Point2> points = {{0, 0}, {8, 0}, {8, 8}, {0, 8}, {4, 2},  {2, 4},
+                                      {3, 3}, {3, 5}, {5, 5}, {5, 3}, {16, 8}, {8, 16}};
+  const std::vector<Point2> two_holes = {{0, 0}, {8, 0}, {8, 8}, {0, 8}, {5, 5}, {5, 6},
+                                         {6, 6}, {6, 5}, {3, 5}, {2, 5}, {2, 6}, {3, 6}};
+  const std::vector<std::pair<std::string, Polygon2>> refused = {
+      // An inner loop turning as the outer one, joined at corner 0: wound around twice.
+      {"nested", {points, {0, 1, 2, 3, 0, 4, 5}}},
+      // Two loops joined at corner 2 (a figure eight): tiled only by n - 4 triangles.
+      {"figure eight", {points, {0, 1, 2, 10, 11, 2, 3}}},
+      // A keyhole whose bridge runs through the hole (and its corner (3, 3)).
+      {"bridge across the hole", {points, {0, 1, 2, 3, 0, 8, 9, 6, 7, 8}}},
+      // Two holes whose bridges cross each other.
+      {"bridges that cross", {two_holes, {0, 1, 8, 9, 10, 11, 8, 1, 2, 3, 0, 4, 5, 6, 7, 4}}},
+  };
+  const std::vector<std::pair<std::string, Polygon2>> split = {
+      // The same corners as a keyhole with its bridge beside the hole.
+      {"keyhole", {points, {0, 1, 2, 3, 0, 6, 7, 8, 9, 6}}},
+      // The two holes with bridges that do not cross.
+      {"two holes", {two_holes, {0, 1, 2, 3, 10, 11, 8, 9, 10, 3, 0, 4, 5, 6, 7, 4}}},
+  };
+  std::mt19937_64 rng = testing::seeded_engine("Polygons.LoopsThatTouchOrOverlapAreRefused");
+  for (const int pieces : {1, 8}) {
+    for (const auto& [name, written] : refused) {
+      const Polygon2 polygon = with_square_sides_cut(written, pieces);
+      const std::string error = error_of(
+          [&] { (void)read_off(polygon_off(polygon, embeddings(1.0)[0].second), "t.off", {}); });
+      EXPECT_NE(error.find("face 0: a face of " + std::to_string(polygon.cycle.size()) +
+                           " corners whose edges cross"),
+                std::string::npos)
+          << name << ": " << error;
+    }
+    for (const auto& [name, written] : split) {
+      const Polygon2 polygon = with_square_sides_cut(written, pieces);
+      const LoadedMesh loaded =
+          read_off(polygon_off(polygon, embeddings(1.0)[0].second), "t.off", {});
+      expect_tiles(polygon, triangles_of(loaded.mesh), rng,
+                   name + " of " + std::to_string(polygon.cycle.size()) + " corners");
+    }
+  }
+}
+
+TEST(Polygons, ALargeSelfCrossingPolygonIsRefused) {
+  // A convex polygon of 10^5 corners with two neighbours swapped: the edges into and out
+  // of the pair are the crossing diagonals of a convex quadrilateral. The sweep refuses
+  // each projection before any triangle is made (ear clipping would take minutes).
+  std::mt19937_64 rng = testing::seeded_engine("Polygons.ALargeSelfCrossingPolygonIsRefused");
+  Polygon2 polygon = testing::convex_polygon(rng, 100000);
+  std::swap(polygon.cycle[500], polygon.cycle[501]);
+  const std::string error = error_of(
+      [&] { (void)read_off(polygon_off(polygon, embeddings(1.0)[0].second), "big.off", {}); });
+  EXPECT_NE(error.find("big.off:100003: face 0: a face of 100000 corners whose edges cross"),
+            std::string::npos)
+      << error.substr(0, 200);
 }
 
 TEST(Polygons, RepeatedCornersAndLinesAreHandled) {
@@ -208,15 +425,6 @@ TEST(Polygons, OffThePlaneByOneStepIsSplitOverItsProjectionWithANote) {
       expect_tiles(polygon, triangles_of(loaded.mesh), rng, "one corner lifted");
     }
   }
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(Polygons, SelfCrossingPolygonsAreRefusedOrMadeFansOnRequest) {
