@@ -20,16 +20,17 @@ get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 # What each library may include besides itself (its targets' dependencies). ccd_files is
 # the one room of ccd/ that is a library of its own (src/files/, include/exactgeo/ccd/files/):
 # CCD reads no files, so only it may include io.
-set(kLibraries predicates parallel io boxes mesh ccd ccd_files inside remesh)
+set(kLibraries predicates parallel io boxes surface mesh ccd ccd_files inside remesh)
 set(kAllowed_predicates "")
 set(kAllowed_parallel "")
 set(kAllowed_io "")
 set(kAllowed_boxes predicates)
-set(kAllowed_mesh predicates io boxes parallel)
-set(kAllowed_ccd predicates boxes parallel)
-set(kAllowed_ccd_files ccd predicates io)
-set(kAllowed_inside predicates boxes mesh parallel)
-set(kAllowed_remesh predicates boxes ccd mesh)
+set(kAllowed_surface predicates)
+set(kAllowed_mesh predicates io boxes surface parallel)
+set(kAllowed_ccd predicates boxes surface parallel)
+set(kAllowed_ccd_files ccd predicates surface io)
+set(kAllowed_inside predicates boxes surface mesh parallel)
+set(kAllowed_remesh predicates boxes surface ccd mesh)
 
 set(violations "")
 

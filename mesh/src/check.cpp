@@ -233,7 +233,7 @@ std::optional<std::string> surface_problem(const MeshCheck& check, EdgeRule rule
   const auto vertex_text = [&](std::size_t v) { return numbering.vertex(v); };
   const auto face_text = [&](std::size_t f) { return numbering.face(f); };
   const auto edge_text = [&](const Edge& e) {
-    return vertex_text(e.first).append("-").append(vertex_text(e.second));
+    return vertex_text(e[0]).append("-").append(vertex_text(e[1]));
   };
   std::vector<std::string> problems;
   if (check.faces == 0) {

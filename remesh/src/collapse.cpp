@@ -19,6 +19,7 @@
 
 #include "box_pairs.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
 #include "operation_checks.hpp"
@@ -101,7 +102,7 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
       if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
       Triangle tri = s.triangles[t];
       std::replace(tri.begin(), tri.end(), b, a);
-      if (zero_area(at(tri[0]), at(tri[1]), at(tri[2]))) {
+      if (collinear(at(tri[0]), at(tri[1]), at(tri[2]))) {
         return topology("a triangle around the merged vertex would have zero area");
       }
       std::sort(tri.begin(), tri.end());

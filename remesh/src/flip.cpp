@@ -102,7 +102,7 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
 }
 
 std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
-  const EdgeTriangles table(surface);
+  const EdgeTriangles table = edge_triangles(surface);
   std::vector<Outcome> outcomes(edges.size());
   // 1. Topology.
   std::vector<FlipPlan> plans;

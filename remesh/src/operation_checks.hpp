@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 
 namespace exactgeo::remesh::checks {
@@ -32,7 +33,7 @@ inline bool finite(const Point3& p) noexcept {
 }
 
 inline bool has_zero_area(const Surface& s, const Triangle& t) noexcept {
-  return zero_area(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+  return collinear(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
 /// The refusal of an operation whose new triangle `made` would turn over in the plane of
@@ -82,44 +83,10 @@ inline std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, 
   return std::nullopt;
 }
 
-/// The triangles on every edge of a surface: each triangle's sides bucketed by their
-/// smaller vertex (a counting sort, linear in the triangles), so that one edge is looked
-/// up in its smaller end's few sides, not by a scan of every triangle per operation.
-class EdgeTriangles {
- public:
-  explicit EdgeTriangles(const Surface& s) : first_(s.vertices.size() + 1, 0) {
-    for (const Triangle& t : s.triangles) {
-      for (int k = 0; k < 3; ++k)
-        ++first_[std::min(t[k], t[(k + 1) % 3]) + 1];
-    }
-    for (std::size_t v = 1; v < first_.size(); ++v)
-      first_[v] += first_[v - 1];
-    sides_.resize(3 * s.triangles.size());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-      const Triangle& tri = s.triangles[t];
-      for (int k = 0; k < 3; ++k) {
-        const Edge e = edge_of(tri[k], tri[(k + 1) % 3]);
-        sides_[next[e[0]]++] = {e[1], t};  // in triangle order within each bucket
-      }
-    }
-  }
-
-  /// The triangles with corners a and b, in triangle order.
-  std::vector<std::size_t> on(VertexIndex a, VertexIndex b) const {
-    const Edge e = edge_of(a, b);
-    std::vector<std::size_t> found;
-    if (e[0] + std::size_t{1} >= first_.size()) return found;  // no such vertex
-    for (std::size_t i = first_[e[0]]; i < first_[e[0] + 1]; ++i) {
-      if (sides_[i].first == e[1]) found.push_back(sides_[i].second);
-    }
-    return found;
-  }
-
- private:
-  std::vector<std::size_t> first_;  ///< per vertex: where its sides start in sides_
-  std::vector<std::pair<VertexIndex, std::size_t>> sides_;  ///< (larger end, triangle)
-};
+/// The triangles on every edge of a surface (surface/triangle_surface.hpp).
+inline EdgeTriangles edge_triangles(const Surface& s) {
+  return EdgeTriangles(s.triangles, s.vertices.size());
+}
 
 /// The closed box of points.
 template <class Points>

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
 
@@ -86,7 +87,7 @@ class Pass {
       refused = false;
       const std::vector<Point3> p = targets();
       for (const Triangle& t : surface_.triangles) {
-        if (!zero_area(p[t[0]], p[t[1]], p[t[2]])) continue;
+        if (!collinear(p[t[0]], p[t[1]], p[t[2]])) continue;
         for (const VertexIndex c : t) {
           if (move_of_[c] == kNone) continue;
           refuse(move_of_[c], Verdict::refused_topology,

@@ -15,6 +15,7 @@
 
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
 #include "pass_schedule.hpp"
@@ -110,7 +111,7 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
   const auto& p = surface.vertices;
   // On the edge's line: only strictly between its ends, where nothing moves.
   bool between = false;
-  if (zero_area(p[a], p[b], at)) {
+  if (collinear(p[a], p[b], at)) {
     between = at != p[a] && at != p[b];
     for (int k = 0; k < 3; ++k)
       between =
@@ -123,7 +124,7 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
   for (std::size_t i = 0; i < plan.on_edge.size(); ++i) {
     const Triangle& old = surface.triangles[plan.on_edge[i]];
     const VertexIndex c = third_corner(old, a, b);
-    if (zero_area(p[a], p[c], at) || zero_area(p[b], p[c], at)) {
+    if (collinear(p[a], p[c], at) || collinear(p[b], p[c], at)) {
       return topology("a triangle of the split would have zero area");
     }
     // At a point of the old triangle's plane off the edge, outside the triangle's angle
@@ -184,7 +185,7 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
 }
 
 std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits) {
-  const EdgeTriangles table(surface);
+  const EdgeTriangles table = edge_triangles(surface);
   std::vector<Outcome> outcomes(splits.size());
   // 1. Topology.
   std::vector<SplitPlan> plans;

@@ -25,7 +25,6 @@
 namespace exactgeo::remesh {
 namespace {
 
-using testing::as_mesh;
 
 /// The collapse of ab to `to` made without any check: b replaced by a, both at `to`, the
 /// triangles of the edge removed.
@@ -95,7 +94,7 @@ TEST(Collapses, AnEndStateThatIntersectsIsRefusedByTheMotion) {
     if (one.applied()) {
       ++applied;
       ASSERT_FALSE(intersects(surface)) << "trial " << trial;
-      ASSERT_EQ(mesh::check_mesh(as_mesh(surface)).zero_area_faces.count, 0u) << trial;
+      ASSERT_EQ(mesh::check_mesh(mesh::mesh_of(surface)).zero_area_faces.count, 0u) << trial;
     }
   }
   std::cout << intersecting_end_states << " of 1500 collapses end intersecting, all refused; "

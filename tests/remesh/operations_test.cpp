@@ -17,7 +17,6 @@
 namespace exactgeo::remesh {
 namespace {
 
-using testing::as_mesh;
 
 /// n x n squares of side 1 in z = 0 (vertex (i, j) is i + (n + 1) j), each split along
 /// its diagonal (i, j)-(i+1, j+1), turning counter-clockwise seen from +z; then a large

@@ -27,7 +27,6 @@
 namespace exactgeo::remesh {
 namespace {
 
-using testing::as_mesh;
 using testing::crumple;
 using testing::stack;
 
@@ -156,7 +155,7 @@ TEST(RandomOperations, KeepTheStackIntersectionFree) {
     }
     ++tally[name + " " + std::string(to_string(outcome.verdict))];
     if (!outcome.applied()) continue;
-    const mesh::Mesh m = as_mesh(surface);
+    const mesh::Mesh m = mesh::mesh_of(surface);
     const mesh::SelfIntersections found =
         mesh::find_self_intersections(m, 1, mesh::CoplanarOverlap::intersecting);
     ASSERT_TRUE(found.intersecting.empty())
@@ -207,7 +206,7 @@ void expect_passes_agree(Surface& surface, const Pass& pass_of, const Alone& alo
         EXPECT_EQ(single.blocker.has_value(), done[i].blocker.has_value()) << "operation " << i;
       }
     }
-    const mesh::Mesh m = as_mesh(surface);
+    const mesh::Mesh m = mesh::mesh_of(surface);
     ASSERT_TRUE(mesh::find_self_intersections(m, 1, mesh::CoplanarOverlap::intersecting)
                     .intersecting.empty())
         << "pass " << pass;

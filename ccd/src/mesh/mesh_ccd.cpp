@@ -52,21 +52,6 @@ void check_positions(std::span<const double> positions, std::size_t vertex_count
   }
 }
 
-std::vector<Edge> unique_edges(std::span<const Triangle> faces) {
-  std::vector<Edge> edges;
-  edges.reserve(3 * faces.size());
-  for (const Triangle& f : faces) {
-    for (int i = 0; i < 3; ++i) {
-      const VertexIndex a = f[i];
-      const VertexIndex b = f[(i + 1) % 3];
-      edges.push_back({std::min(a, b), std::max(a, b)});
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  return edges;
-}
-
 Point3 position(std::span<const double> positions, VertexIndex v) noexcept {
   return {positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]};
 }
@@ -91,7 +76,7 @@ struct MeshCcd::State {
   State(std::size_t count, std::span<const Triangle> triangles)
       : vertex_count(count),
         faces(triangles.begin(), triangles.end()),
-        edges(unique_edges(faces)),
+        edges(edges_of(faces, count)),
         broad_phase(vertex_count, faces, edges) {}
 
   std::size_t vertex_count;

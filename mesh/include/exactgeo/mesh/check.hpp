@@ -13,6 +13,7 @@
 #include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/surface/triangle_surface.hpp"
 
 namespace exactgeo::mesh {
 
@@ -29,7 +30,7 @@ struct Examples {
   }
 };
 
-using Edge = std::pair<VertexIndex, VertexIndex>;  ///< smaller index first
+using exactgeo::Edge;  // surface/triangle_surface.hpp: smaller index first
 
 struct Box {
   Point3 lower;

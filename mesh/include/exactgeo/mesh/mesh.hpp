@@ -13,6 +13,7 @@
 
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/point.hpp"
+#include "exactgeo/surface/triangle_surface.hpp"
 
 namespace exactgeo::mesh {
 
@@ -40,6 +41,16 @@ struct Mesh {
   std::vector<Point3> vertices;
   std::vector<Face> faces;
 };
+
+/// A triangle surface as a mesh of triangles (the finder and the checks take a Mesh).
+inline Mesh mesh_of(const TriangleSurface& surface) {
+  Mesh m;
+  m.vertices = surface.vertices;
+  m.faces.reserve(surface.triangles.size());
+  for (const Triangle& t : surface.triangles)
+    m.faces.push_back(make_triangle(t[0], t[1], t[2]));
+  return m;
+}
 
 /// The patch of a quad, or the degenerate patch {a, b, c, c} of a triangle.
 /// Precondition: every corner index is in range.

@@ -1,33 +1,30 @@
 #pragma once
 
-// The surface that collision-safe operations change: a triangle mesh, possibly of several
+// The surface that collision-safe operations change: a triangle surface (the libraries'
+// shared picture of one, exactgeo/surface/triangle_surface.hpp), possibly of several
 // components, some of whose vertices may be fixed (static obstacles, never moved, removed
 // or re-connected by an operation). Operations keep it intersection free: each is applied
 // only when the motion it stands for meets nothing (operations.hpp).
 
-#include <array>
 #include <cstddef>
-#include <optional>
-#include <span>
 #include <vector>
 
 #include "exactgeo/predicates/point.hpp"
+#include "exactgeo/surface/triangle_surface.hpp"
 
 namespace exactgeo::remesh {
 
+using exactgeo::Edge;         // surface/triangle_surface.hpp
+using exactgeo::edge_of;      // ...
 using exactgeo::kNoVertex;    // predicates/point.hpp
+using exactgeo::third_corner;  // surface/triangle_surface.hpp
+using exactgeo::Triangle;     // ...
 using exactgeo::VertexIndex;  // predicates/point.hpp
-using Triangle = std::array<VertexIndex, 3>;
-/// An edge with its smaller vertex first.
-using Edge = std::array<VertexIndex, 2>;
+using exactgeo::walks;        // surface/triangle_surface.hpp
 
-inline Edge edge_of(VertexIndex a, VertexIndex b) noexcept {
-  return a < b ? Edge{a, b} : Edge{b, a};
-}
-
-struct Surface {
-  std::vector<Point3> vertices;
-  std::vector<Triangle> triangles;
+/// A triangle surface and which of its vertices are fixed. Written like the surface it is:
+/// Surface{vertices, triangles} or Surface{vertices, triangles, fixed}.
+struct Surface : TriangleSurface {
   /// One flag per vertex (or empty: none fixed). A triangle with a fixed corner belongs
   /// to an obstacle: it is never flipped, split or collapsed.
   std::vector<bool> fixed{};
@@ -41,14 +38,5 @@ struct Surface {
   /// The unique edges of the triangles, sorted.
   std::vector<Edge> edges() const;
 };
-
-/// A triangle's corner other than a and b. Precondition: a and b are corners of t.
-VertexIndex third_corner(const Triangle& t, VertexIndex a, VertexIndex b) noexcept;
-
-/// Whether the triangle is a, b, c in this cyclic order (a walks to b).
-bool walks(const Triangle& t, VertexIndex a, VertexIndex b) noexcept;
-
-/// All three points on one line (or at one point), exactly: a triangle of zero area.
-bool zero_area(const Point3& p, const Point3& q, const Point3& r) noexcept;
 
 }  // namespace exactgeo::remesh

@@ -36,14 +36,14 @@
 
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/predicates/point.hpp"
+#include "exactgeo/surface/triangle_surface.hpp"
 
 namespace exactgeo::ccd {
 
+using exactgeo::Edge;         // surface/triangle_surface.hpp: smaller vertex first
 using exactgeo::FaceIndex;    // predicates/point.hpp
+using exactgeo::Triangle;     // surface/triangle_surface.hpp
 using exactgeo::VertexIndex;  // predicates/point.hpp
-using Triangle = std::array<VertexIndex, 3>;
-/// An edge with its smaller vertex first.
-using Edge = std::array<VertexIndex, 2>;
 
 struct VertexFacePair {
   VertexIndex vertex = 0;

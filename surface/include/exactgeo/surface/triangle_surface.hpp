@@ -1,0 +1,64 @@
+#pragma once
+
+// A triangle surface, as every library that works on one sees it: the positions of its
+// vertices and its triangles, each three vertex indices (corner order gives its facing),
+// with the edges they make and which triangles meet at each. Mesh CCD takes the triangles
+// (ccd::MeshCcd), the remesher changes the surface (remesh::Surface adds which vertices
+// are fixed), the self-intersection finder checks it (mesh::find_self_intersections), and
+// exactgeo-cloth simulates it: one picture of a surface for all of them. (mesh::Mesh, the
+// point-in-volume mesh, also holds quads.)
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo {
+
+/// Three vertex indices, in the order that gives the triangle its facing.
+using Triangle = std::array<VertexIndex, 3>;
+/// An edge: two vertex indices, the smaller first.
+using Edge = std::array<VertexIndex, 2>;
+
+inline Edge edge_of(VertexIndex a, VertexIndex b) noexcept {
+  return a < b ? Edge{a, b} : Edge{b, a};
+}
+
+struct TriangleSurface {
+  std::vector<Point3> vertices;
+  std::vector<Triangle> triangles;
+};
+
+/// A triangle's corner other than a and b. Precondition: a and b are corners of t.
+VertexIndex third_corner(const Triangle& t, VertexIndex a, VertexIndex b) noexcept;
+
+/// Whether the triangle is a, b, c in this cyclic order (a walks to b).
+bool walks(const Triangle& t, VertexIndex a, VertexIndex b) noexcept;
+
+/// The triangles' edges, each once, sorted. `vertex_count` bounds the indices (a counting
+/// sort by the smaller end: linear in the triangles).
+std::vector<Edge> edges_of(std::span<const Triangle> triangles, std::size_t vertex_count);
+
+/// The triangles at every edge, found from the edge's smaller end: each triangle's sides
+/// bucketed by their smaller vertex (a counting sort, linear in the triangles), so that
+/// one edge is looked up among its smaller end's few sides.
+class EdgeTriangles {
+ public:
+  /// Precondition: every index below vertex_count.
+  EdgeTriangles(std::span<const Triangle> triangles, std::size_t vertex_count);
+
+  /// The triangles with corners a and b, in triangle order (none for indices out of range).
+  std::vector<std::size_t> on(VertexIndex a, VertexIndex b) const;
+
+ private:
+  std::vector<std::size_t> first_;  ///< per vertex: where its sides start in sides_
+  struct Side {
+    VertexIndex other;  ///< the larger end
+    std::size_t triangle;
+  };
+  std::vector<Side> sides_;
+};
+
+}  // namespace exactgeo
