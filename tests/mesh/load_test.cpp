@@ -79,7 +79,9 @@ std::string error_of(const std::function<void()>& f) {
 #define EXPECT_MESSAGE_HAS(message, ...)                                                        \
   do {                                                                                          \
     const std::string message_ = (message);                                                     \
-    for (const std::string_view part_ : std::initializer_list<std::string_view>{__VA_ARGS__}) { \
+    /* Strings, not views: a part may be a temporary (std::to_string) of this statement. */    \
+    const std::initializer_list<std::string> parts_ = {__VA_ARGS__};                           \
+    for (const std::string& part_ : parts_) {                                                   \
       EXPECT_NE(message_.find(part_), std::string::npos)                                        \
           << "message: " << message_ << "\nlacks: " << part_;                                   \
     }                                                                                           \
