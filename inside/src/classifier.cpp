@@ -202,12 +202,8 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   // With the boundary's corners too: a zero-area face dropped from the surface may still
   // carry a boundary edge, and the ray that answers a point outside the box must miss it.
   for (const BoundaryEdge& e : s.boundary) {
-    for (const VertexIndex v : {e.from, e.to}) {
-      for (int i = 0; i < 3; ++i) {
-        s.box.lower[i] = std::min(s.box.lower[i], s.mesh.vertices[v][i]);
-        s.box.upper[i] = std::max(s.box.upper[i], s.mesh.vertices[v][i]);
-      }
-    }
+    s.box.add(s.mesh.vertices[e.from]);
+    s.box.add(s.mesh.vertices[e.to]);
   }
   s.faces = surface_faces(s.mesh);
   s.frame = internal::UnitFrame(s.mesh, s.box);

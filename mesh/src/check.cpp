@@ -149,12 +149,9 @@ MeshCheck check_mesh(const Mesh& mesh) {
       continue;
     }
     if (!check.bounding_box) {
-      check.bounding_box = Box{p, p};
-      continue;
-    }
-    for (std::size_t k = 0; k < 3; ++k) {
-      check.bounding_box->lower[k] = std::min(check.bounding_box->lower[k], p[k]);
-      check.bounding_box->upper[k] = std::max(check.bounding_box->upper[k], p[k]);
+      check.bounding_box = Box::of(p);
+    } else {
+      check.bounding_box->add(p);
     }
   }
 

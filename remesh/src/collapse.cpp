@@ -17,7 +17,7 @@
 #include <variant>
 #include <vector>
 
-#include "box_pairs.hpp"
+#include "exactgeo/boxes/point_groups.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
@@ -165,8 +165,8 @@ struct Reach {
         break;
       }
     }
-    internal::overlapping_groups<4, 3>(points, swept, s.triangles,
-                                       [&](std::size_t, std::size_t t) { reached[t] = true; });
+    boxes::overlapping_groups<4, 3>(points, swept, s.triangles,
+                                    [&](std::size_t, std::size_t t) { reached[t] = true; });
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       if (!reached[t]) continue;

@@ -88,26 +88,6 @@ inline EdgeTriangles edge_triangles(const Surface& s) {
   return EdgeTriangles(s.triangles, s.vertices.size());
 }
 
-/// The closed box of points.
-template <class Points>
-std::array<Point3, 2> box_of(const Points& points) {
-  std::array<Point3, 2> box{*points.begin(), *points.begin()};
-  for (const Point3& q : points) {
-    for (int k = 0; k < 3; ++k) {
-      box[0][k] = std::min(box[0][k], q[k]);
-      box[1][k] = std::max(box[1][k], q[k]);
-    }
-  }
-  return box;
-}
-
-inline bool boxes_meet(const std::array<Point3, 2>& x, const std::array<Point3, 2>& y) noexcept {
-  for (int k = 0; k < 3; ++k) {
-    if (x[1][k] < y[0][k] || y[1][k] < x[0][k]) return false;
-  }
-  return true;
-}
-
 /// x, y, z of every point in turn (ccd::StepPositions' layout).
 inline std::vector<double> flat(const std::vector<Point3>& points) {
   std::vector<double> out;

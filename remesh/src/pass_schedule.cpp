@@ -2,7 +2,8 @@
 
 #include <algorithm>
 
-#include "box_pairs.hpp"
+#include "exactgeo/boxes/point_groups.hpp"
+#include "region_points.hpp"
 
 namespace exactgeo::remesh::internal {
 
@@ -18,7 +19,7 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
   }
   std::vector<std::vector<std::size_t>> near(regions.size());  // regions whose boxes meet
   const RegionPoints boxed(points, regions);
-  overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
+  boxes::overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
     if (operation_of[x] == operation_of[y]) return;
     near[x].push_back(y);
     near[y].push_back(x);

@@ -3,33 +3,12 @@
 #include <algorithm>
 #include <vector>
 
+#include "exactgeo/boxes/exact_box.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 
 namespace exactgeo::remesh {
 
 namespace {
-
-/// The closed box of some points (the corners of a primitive at both ends of the step).
-struct SweptBox {
-  Point3 lower{};
-  Point3 upper{};
-
-  explicit SweptBox(const Point3& p) : lower(p), upper(p) {}
-
-  void add(const Point3& p) noexcept {
-    for (int k = 0; k < 3; ++k) {
-      lower[k] = std::min(lower[k], p[k]);
-      upper[k] = std::max(upper[k], p[k]);
-    }
-  }
-
-  bool meets(const SweptBox& other) const noexcept {
-    for (int k = 0; k < 3; ++k) {
-      if (upper[k] < other.lower[k] || other.upper[k] < lower[k]) return false;
-    }
-    return true;
-  }
-};
 
 class Step {
  public:
@@ -53,8 +32,9 @@ class Step {
     return merged_ && v == (*merged_)[1] ? (*merged_)[0] : v;
   }
 
-  SweptBox box(std::initializer_list<VertexIndex> corners) const {
-    SweptBox box(t0_[*corners.begin()]);
+  /// The box of the corners at t0 and t1: it holds the primitive all through the step.
+  boxes::ExactBox box(std::initializer_list<VertexIndex> corners) const {
+    boxes::ExactBox box = boxes::ExactBox::of(t0_[*corners.begin()]);
     for (const VertexIndex v : corners) {
       box.add(t0_[v]);
       box.add(t1_[v]);
@@ -100,11 +80,11 @@ std::optional<Blocker> first_collision(const Surface& surface, std::span<const M
   for (const Move& m : moves) {
     if (step.moving(m.vertex)) movers.push_back(m.vertex);
   }
-  const auto collision = [&](VertexIndex v, const Triangle& t, const SweptBox& t_box) {
+  const auto collision = [&](VertexIndex v, const Triangle& t, const boxes::ExactBox& t_box) {
     return !shares(v, t) && t_box.meets(step.box({v})) && step.vertex_face_collides(v, t);
   };
   for (const Triangle& t : surface.triangles) {
-    const SweptBox t_box = step.box({t[0], t[1], t[2]});
+    const boxes::ExactBox t_box = step.box({t[0], t[1], t[2]});
     if (step.moving(t[0]) || step.moving(t[1]) || step.moving(t[2])) {
       for (VertexIndex v = 0; v < surface.vertices.size(); ++v) {
         if (!used[v] || !collision(v, t, t_box)) continue;
@@ -128,13 +108,13 @@ std::optional<Blocker> first_collision(const Surface& surface, std::span<const M
   }
   std::sort(moving_edges.begin(), moving_edges.end());
   moving_edges.erase(std::unique(moving_edges.begin(), moving_edges.end()), moving_edges.end());
-  std::vector<SweptBox> moving_boxes;
+  std::vector<boxes::ExactBox> moving_boxes;
   for (const Edge& a : moving_edges)
     moving_boxes.push_back(step.box({a[0], a[1]}));
   for (const Triangle& t : surface.triangles) {
     for (int k = 0; k < 3; ++k) {
       const Edge b = edge_of(t[k], t[(k + 1) % 3]);
-      const SweptBox b_box = step.box({b[0], b[1]});
+      const boxes::ExactBox b_box = step.box({b[0], b[1]});
       const VertexIndex b0 = step.as(b[0]), b1 = step.as(b[1]);
       for (std::size_t i = 0; i < moving_edges.size(); ++i) {
         const Edge& a = moving_edges[i];

@@ -6,9 +6,10 @@
 #include <tuple>
 #include <vector>
 
-#include "box_pairs.hpp"
+#include "exactgeo/boxes/point_groups.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
+#include "region_points.hpp"
 
 namespace exactgeo::remesh {
 
@@ -47,13 +48,6 @@ class Region {
   explicit Region(const std::array<RegionCorner, 4>& corners) {
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
-    for (int k = 0; k < 3; ++k) {
-      lower_[k] = upper_[k] = corners[0].point[k];
-      for (const RegionCorner& c : corners) {
-        lower_[k] = std::min(lower_[k], c.point[k]);
-        upper_[k] = std::max(upper_[k], c.point[k]);
-      }
-    }
     volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
     for (int l = 0; l < 4; ++l) {
       const auto& t = face_opposite(l);
@@ -78,10 +72,6 @@ class Region {
     return std::any_of(corners_.begin(), corners_.end(),
                        [v](const Corner& c) { return c.vertex == v; });
   }
-
-  /// The region's closed box.
-  const Point3& lower() const noexcept { return lower_; }
-  const Point3& upper() const noexcept { return upper_; }
 
   /// x in the closed hull.
   bool holds(const Point3& x) const noexcept {
@@ -119,8 +109,6 @@ class Region {
   }
 
   std::array<Corner, 4> corners_{};
-  Point3 lower_{};
-  Point3 upper_{};
   Sign volume_ = Sign::zero;
   std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
 };
@@ -259,8 +247,8 @@ std::vector<std::optional<Blocker>> first_in_regions(
     std::span<const VertexIndex> partners) {
   const internal::RegionPoints boxed(surface.vertices, regions);
   std::vector<std::vector<std::size_t>> near(regions.size());
-  internal::overlapping_groups<4, 3>(boxed.points, boxed.groups, surface.triangles,
-                                     [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
+  boxes::overlapping_groups<4, 3>(boxed.points, boxed.groups, surface.triangles,
+                                  [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/boxes/exact_box.hpp"
 #include "exactgeo/mesh/loaded_mesh.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
@@ -32,10 +33,7 @@ struct Examples {
 
 using exactgeo::Edge;  // surface/triangle_surface.hpp: smaller index first
 
-struct Box {
-  Point3 lower;
-  Point3 upper;
-};
+using Box = boxes::ExactBox;  ///< a mesh's bounding box (exact doubles)
 
 /// What the checks found about one face (a face can have several of these).
 struct FaceFindings {
