@@ -51,7 +51,7 @@
 #include <vector>
 
 #include "exactgeo/boxes/float_box.hpp"
-#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "step_frames.hpp"

@@ -27,7 +27,7 @@
 
 #include "baseline/box_tree.hpp"
 #include "baseline/mesh_broad_phase.hpp"
-#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "step_frames.hpp"

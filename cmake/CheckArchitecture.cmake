@@ -7,6 +7,9 @@
 #    apps/ and python/ may include every library's public headers.
 # 2. A library's internal/ headers are included only by that library's own files, its own
 #    tests (tests/<library>/) and the benchmarks (bench/ measures internals on purpose).
+# 3. Inside ccd/, a file of one room includes headers of its own room and of the rooms below
+#    it only (kCcdRoomOrder below), so that no two rooms depend on each other; every file
+#    of ccd/ is in a room.
 #
 # Every violation is listed with its file and line; any violation fails the run.
 
@@ -32,6 +35,52 @@ set(kAllowed_ccd_files ccd predicates surface io)
 set(kAllowed_inside predicates boxes surface mesh parallel)
 set(kAllowed_remesh predicates boxes surface ccd mesh)
 
+# The rooms of ccd/ (docs/architecture.md, "ccd/"), lowest first; rooms between the same
+# two "<" are peers and may not include each other. common holds what every room speaks
+# and shares; dispatch (ccd.hpp) chooses among the methods of pair, separation and
+# baselines; mesh runs the dispatch on pairs of a mesh; files is exactgeo::ccd_files.
+set(kCcdRoomOrder "common < pair, separation, baselines < dispatch < mesh, files")
+# A room's files are ccd/src/<room>/ and ccd/include/exactgeo/ccd/<room>/, except pair's,
+# which has the top of include/exactgeo/ccd/: its internal/ and the public headers listed
+# here, with the other rooms' public headers that keep a short name (ccd.hpp is the
+# dispatch's). A header at the top that no list names is in no room.
+set(kCcdTopHeaders_common queries.hpp result.hpp)
+set(kCcdTopHeaders_pair root_parity.hpp)
+set(kCcdTopHeaders_dispatch ccd.hpp)
+
+set(kCcdRooms "")
+string(REPLACE "<" ";" levels "${kCcdRoomOrder}")
+set(level 0)
+foreach(peers IN LISTS levels)
+  string(REPLACE "," ";" peers "${peers}")
+  foreach(room IN LISTS peers)
+    string(STRIP "${room}" room)
+    list(APPEND kCcdRooms ${room})
+    set(kCcdLevel_${room} ${level})
+  endforeach()
+  math(EXPR level "${level} + 1")
+endforeach()
+
+# The room of a file of ccd/, given by its path inside ccd/ (src/pair/x.cpp,
+# include/exactgeo/ccd/internal/y.hpp); "" for a file in no room.
+function(ccd_room_of path out)
+  set(room "")
+  if(path MATCHES "^(src|include/exactgeo/ccd)/([a-z_]+)/")
+    if(CMAKE_MATCH_2 IN_LIST kCcdRooms)
+      set(room "${CMAKE_MATCH_2}")
+    elseif(CMAKE_MATCH_1 STREQUAL "include/exactgeo/ccd" AND CMAKE_MATCH_2 STREQUAL "internal")
+      set(room pair)
+    endif()
+  elseif(path MATCHES "^include/exactgeo/ccd/([^/]+)$")
+    foreach(candidate IN LISTS kCcdRooms)
+      if(CMAKE_MATCH_1 IN_LIST kCcdTopHeaders_${candidate})
+        set(room "${candidate}")
+      endif()
+    endforeach()
+  endif()
+  set(${out} "${room}" PARENT_SCOPE)
+endfunction()
+
 set(violations "")
 
 # The folder a file belongs to (predicates, ccd, ..., tests/<x>, bench, apps, python).
@@ -51,6 +100,14 @@ foreach(relative IN LISTS sources)
     continue()
   endif()
   owner_of("${relative}" owner)
+  set(room "")
+  if(owner STREQUAL "ccd" OR owner STREQUAL "ccd_files")
+    string(REGEX REPLACE "^ccd/" "" inside_ccd "${relative}")
+    ccd_room_of("${inside_ccd}" room)
+    if(room STREQUAL "")
+      list(APPEND violations "${relative}: is in no room of ccd")
+    endif()
+  endif()
   file(STRINGS "${ROOT}/${relative}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[\"<]exactgeo/")
   file(READ "${ROOT}/${relative}" content)
   foreach(line IN LISTS lines)
@@ -82,12 +139,24 @@ foreach(relative IN LISTS sources)
         list(APPEND violations "${where}: ${owner} may not include ${library}: ${line}")
       endif()
     endif()
+    # Rule 3: a room of ccd includes only its own room and the rooms below it.
+    if(NOT room STREQUAL "" AND (library STREQUAL "ccd" OR library STREQUAL "ccd_files"))
+      string(REGEX MATCH "exactgeo/ccd/[^\">]+" header "${line}")
+      ccd_room_of("include/${header}" included)
+      if(included STREQUAL "")
+        list(APPEND violations "${where}: ccd room ${room} includes a header in no room: ${line}")
+      elseif(NOT included STREQUAL room AND NOT kCcdLevel_${included} LESS kCcdLevel_${room})
+        list(APPEND violations
+             "${where}: ccd room ${room} may not include room ${included}: ${line}")
+      endif()
+    endif()
   endforeach()
 endforeach()
 
 if(violations)
   list(LENGTH violations count)
   string(REPLACE ";" "\n  " listed "${violations}")
-  message(FATAL_ERROR "${count} include rule violation(s) (docs/architecture.md):\n  ${listed}")
+  message(FATAL_ERROR "${count} include rule violation(s) (docs/architecture.md; the rooms of "
+                      "ccd, lowest first: ${kCcdRoomOrder}):\n  ${listed}")
 endif()
 message(STATUS "include rules hold")

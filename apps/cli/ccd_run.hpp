@@ -52,8 +52,8 @@ struct CcdRun {
 /// Runs every query of `files` with `options`. Each file is run `repeat` times and its time
 /// is the fastest pass (on a shared machine the least disturbed one); the answers do not
 /// depend on the pass. With `time_each`, one more pass times each query on its own (each
-/// time then includes one reading of the clock, about 20-30 ns here), for the distribution
-/// of query times. `progress` counts the queries done after each file.
+/// time then includes one reading of the clock, small against a query but not nothing),
+/// for the distribution of query times. `progress` counts the queries done after each file.
 CcdRun run_queries(const std::vector<ccd::QueryFile>& files, const ccd::Options& options,
                    int repeat, bool time_each, ProgressLine& progress);
 

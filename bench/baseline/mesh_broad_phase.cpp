@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/kernel/error_free.hpp"
 

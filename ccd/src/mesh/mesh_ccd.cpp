@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 
@@ -133,7 +133,7 @@ struct ScaledStep {
 
 /// `positions`, or both ends scaled to magnitude 1 by one power of two, stored in `unit`,
 /// when they are far from it and the scaling is exact for them and for the separation
-/// (internal/unit_magnitude.hpp).
+/// (common/internal/unit_magnitude.hpp).
 ScaledStep at_unit_magnitude(const StepPositions& positions, double min_separation,
                              std::vector<double>& unit) {
   const double largest = std::max(internal::largest_magnitude(positions.t0),
@@ -249,7 +249,7 @@ MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
   // A step far from magnitude 1 is brought there once for all its pairs, both ends by
-  // one power of two (internal/unit_magnitude.hpp); no answer or time changes.
+  // one power of two (common/internal/unit_magnitude.hpp); no answer or time changes.
   std::vector<double> unit;
   const ScaledStep scaled_step = at_unit_magnitude(positions, options.min_separation, unit);
   const StepPositions& scaled = scaled_step.positions;

@@ -1,7 +1,5 @@
 #include "exactgeo/ccd/separation/internal/exact_roots.hpp"
 
-#include <gmpxx.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -7,11 +7,11 @@
 #include <cstdint>
 #include <optional>
 
-#include "exactgeo/ccd/internal/culling.hpp"
-#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/common/internal/closest_direction.hpp"
 #include "exactgeo/ccd/separation/internal/bounded_double.hpp"
 #include "exactgeo/ccd/separation/internal/exact_roots.hpp"
 #include "exactgeo/ccd/separation/internal/features.hpp"
+#include "exactgeo/predicates/kernel/power_of_two.hpp"
 
 namespace exactgeo::ccd::internal {
 
@@ -62,7 +62,7 @@ bool boxes_apart(const QueryPoints& x, int split, double delta) noexcept {
 Vector3 unit_scaled(const Vector3& n) noexcept {
   int e = 0;
   std::frexp(std::max({std::fabs(n[0]), std::fabs(n[1]), std::fabs(n[2])}), &e);
-  const PowerOfTwo scale(1 - e);  // largest in [2^(e-1), 2^e): to [1, 2)
+  const kernel::PowerOfTwo scale(1 - e);  // largest in [2^(e-1), 2^e): to [1, 2)
   return {scale(n[0]), scale(n[1]), scale(n[2])};
 }
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "ccd/query_transforms.hpp"
-#include "exactgeo/ccd/internal/culling.hpp"
+#include "exactgeo/ccd/common/internal/closest_direction.hpp"
 #include "exactgeo/ccd/queries.hpp"
 #include "support/generators.hpp"
 
@@ -21,7 +21,7 @@ namespace exactgeo::ccd {
 /// The smallest distance over the step, estimated in plain doubles from samples (only to
 /// place δ near it: the oracle decides): at each sampled time, the length of the point of
 /// the slice of corner differences (a triangle or a parallelogram) closest to the origin,
-/// as the culling's closest_direction finds it.
+/// as closest_direction finds it.
 template <class Query>
 inline double sampled_distance(Query q, int samples) {
   const std::array<Point3*, 8> p = points(q);

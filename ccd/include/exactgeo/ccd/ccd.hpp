@@ -21,12 +21,18 @@
 //
 // Preconditions: finite coordinates. Every function is noexcept, keeps no state and is
 // safe to call from many threads.
+//
+// The answer's words (Result, DecidedBy, TimeInterval) are result.hpp's, included here.
+// This header and src/dispatch/ccd.cpp are the room above the methods: pair/ (exact,
+// parity), separation/ and baselines/ each decide queries without knowing of the others,
+// and the dispatch chooses among them (docs/architecture.md, "ccd/").
 
 #include <cstdint>
 #include <optional>
 #include <string_view>
 
 #include "exactgeo/ccd/queries.hpp"
+#include "exactgeo/ccd/result.hpp"
 
 namespace exactgeo::ccd {
 
@@ -44,31 +50,6 @@ std::string_view to_string(Method m) noexcept;
 /// The method whose name (to_string) is exactly `name`; nullopt for any other string.
 std::optional<Method> parse_method(std::string_view name) noexcept;
 
-/// What decided a query.
-enum class DecidedBy : std::uint8_t {
-  culled,            ///< exact, parity: the corner images provably do not surround the origin
-  parity,            ///< the root parity count (for exact: a boundary root or odd parity)
-  subdivision,       ///< exact: even parity, decided by splitting time
-  depth_limit,       ///< exact: even parity, a piece left undecided at the depth limit (reported
-                     ///< as a collision)
-  cubic,             ///< the cubic baseline
-  polynomials,       ///< exact: the coplanarity cubic and the slice's side quartics, split in
-                     ///< time, proved a root or its absence (no parity computed)
-  separation,        ///< exact with min_separation > 0: the distance's polynomial conditions in
-                     ///< bounded doubles on pieces of the step
-  separation_roots,  ///< exact with min_separation > 0: exact roots of those conditions
-  box_test,          ///< double with min_separation > 0: the per-axis box test, plain doubles
-                     ///< (baselines/separation_box.hpp)
-};
-
-std::string_view to_string(DecidedBy s) noexcept;
-
-/// A closed time interval within the step [0, 1].
-struct TimeInterval {
-  double start = 0.0;
-  double end = 1.0;
-};
-
 struct Options {
   Method method = Method::exact;
   /// exact only: also return an interval of at most this width that contains the earliest
@@ -84,15 +65,6 @@ struct Options {
   double min_separation = 0.0;
   /// cubic only: the distance tolerance (cubic.hpp).
   double cubic_tolerance = 1e-6;
-};
-
-struct Result {
-  bool collision = false;
-  DecidedBy decided_by = DecidedBy::parity;
-  /// exact: the deepest split visited (0 when no splitting was needed).
-  std::uint8_t depth = 0;
-  /// exact with time_of_impact_width set and a collision: the earliest root's interval.
-  std::optional<TimeInterval> time_of_impact;
 };
 
 /// Whether `delta` may be Options::min_separation: finite and >= 0.

@@ -106,36 +106,71 @@ template <class Formula, Grouping grouping, std::size_t N>
   return rational_sign<Formula>(in, parameter);
 }
 
+/// A bound on a formula's rounding error fixed once for a set of inputs (a static filter,
+/// StaticDet3Signs), which ExactSigns::sign tries before its per-sign filter.
+struct StaticBound {
+  double value;
+};
+/// No static bound: the per-sign filter comes first.
+struct NoStaticBound {};
+/// No cheap proof of zero: nothing between the filter and sign_after_filter.
+struct NoZeroProof {
+  constexpr bool operator()() const noexcept { return false; }
+};
+
 class ExactSigns : public NamedSigns<ExactSigns> {
  public:
   explicit ExactSigns(StageCounts* counts = nullptr) noexcept : counts_(counts) {}
 
-  /// The filter, then expansions, then rationals: the first stage that decides.
-  template <class Formula, Grouping grouping, std::size_t N>
-  Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
-    if (const auto f = internal::evaluate_filter<Formula, grouping>(in, parameter); f.certified)
-        [[likely]] {
-      count_filter();
-      return sign_of(f.value);
+  /// Every exact sign, in the one place where its stages are written: the first that
+  /// decides answers, and is counted under its name (StageCounts).
+  ///
+  ///   1. filter     a static bound first where the caller has one (`ahead`), then the
+  ///                 formula in double certified by its own bound (filter.hpp); where
+  ///                 neither certifies, the caller's cheap proof of zero (`proves_zero`),
+  ///                 then a group of inputs that vanishes;
+  ///   2. expansion  exact floating-point expansions (expansion_sign, exact_stages.hpp);
+  ///   3. rational   dyadic rationals (rational_sign), which always answer.
+  ///
+  /// The hot path is the first compare, inline with one predictable branch. What follows a
+  /// static bound that does not certify runs out of line (sign_behind_static_bound: this
+  /// same sequence without it), so that the one compare stays small enough to inline; what
+  /// follows the filter runs out of line too (sign_after_filter), so that the exact stages'
+  /// stack never enlarges the hot path's frame.
+  template <class Formula, Grouping grouping, std::size_t N, class Ahead = NoStaticBound,
+            class ZeroProof = NoZeroProof>
+  Sign sign(const Offsets<N>& in, int parameter = 0, Ahead ahead = {},
+            ZeroProof proves_zero = {}) const noexcept {
+    static_assert(std::is_same_v<Ahead, StaticBound> || std::is_same_v<Ahead, NoStaticBound>);
+    if constexpr (std::is_same_v<Ahead, StaticBound>) {
+      const double value = Formula::evaluate(rounded(in), parameter);
+      if (std::fabs(value) > ahead.value) [[likely]] {
+        count_filter();
+        return sign_of(value);
+      }
+      return sign_behind_static_bound<Formula, grouping>(in, parameter, proves_zero);
+    } else {
+      if (const auto f = internal::evaluate_filter<Formula, grouping>(in, parameter); f.certified)
+          [[likely]] {
+        count_filter();
+        return sign_of(f.value);
+      }
+      if (proves_zero()) {
+        count_filter();
+        return Sign::zero;
+      }
+      return sign_after_filter<Formula, grouping>(in, parameter, counts_);
     }
-    return sign_after_filter<Formula, grouping>(in, parameter, counts_);
   }
 
+  /// sign() with a cheap exact proof of zero, consulted only where the filter cannot
+  /// decide, so a volume that is clearly nonzero never pays for it.
   template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
   Sign sign_unless_zero(const Offsets<N>& in, ZeroProof proves_zero) const noexcept {
-    if (const auto f = internal::evaluate_filter<Formula, grouping>(in, 0); f.certified)
-        [[likely]] {
-      count_filter();
-      return sign_of(f.value);
-    }
-    if (proves_zero()) {
-      count_filter();
-      return Sign::zero;
-    }
-    return sign_after_filter<Formula, grouping>(in, 0, counts_);
+    return sign<Formula, grouping>(in, 0, NoStaticBound{}, proves_zero);
   }
 
-  /// Records one sign decided by a filter (this policy's, or StaticDet3Signs').
+  /// Records one sign decided by a filter.
   void count_filter() const noexcept {
     if (counts_) ++counts_->filter;
   }
@@ -148,6 +183,13 @@ class ExactSigns : public NamedSigns<ExactSigns> {
   }
 
  private:
+  /// The per-sign filter and the exact stages, where a static bound did not certify.
+  template <class Formula, Grouping grouping, std::size_t N, class ZeroProof>
+  [[gnu::noinline]] Sign sign_behind_static_bound(const Offsets<N>& in, int parameter,
+                                                  ZeroProof proves_zero) const noexcept {
+    return sign<Formula, grouping>(in, parameter, NoStaticBound{}, proves_zero);
+  }
+
   StageCounts* counts_;
 };
 
@@ -193,7 +235,8 @@ Det3Bounds det3_bounds(const Offsets<N>& vectors, const Vector3& direction) noex
 
 /// ExactSigns behind a static filter for det3 signs (Det3Bounds): the one compare that
 /// replaces the per-sign maxima where the bound certifies, the full exact policy
-/// elsewhere. Only for signs whose inputs are among the vectors the bounds were made for.
+/// elsewhere (ExactSigns::sign with the bound ahead of its stages). Only for signs whose
+/// inputs are among the vectors the bounds were made for.
 class StaticDet3Signs : public NamedSigns<StaticDet3Signs> {
  public:
   StaticDet3Signs(const ExactSigns& exact, const Det3Bounds& bounds) noexcept
@@ -203,12 +246,7 @@ class StaticDet3Signs : public NamedSigns<StaticDet3Signs> {
   Sign sign(const Offsets<N>& in, int parameter = 0) const noexcept {
     if constexpr (std::is_same_v<Formula, Det3Formula> && grouping != Grouping::by_projected_axis) {
       const double bound = grouping == Grouping::by_axis ? bounds_.by_axis : bounds_.by_vector;
-      const double value = Formula::evaluate(rounded(in), parameter);
-      if (std::fabs(value) > bound) [[likely]] {
-        exact_.count_filter();
-        return sign_of(value);
-      }
-      return exact_sign<Formula, grouping>(in, parameter);
+      return exact_.sign<Formula, grouping>(in, parameter, StaticBound{bound});
     } else {
       return exact_.sign<Formula, grouping>(in, parameter);
     }
@@ -225,13 +263,6 @@ class StaticDet3Signs : public NamedSigns<StaticDet3Signs> {
   }
 
  private:
-  /// Where the static bound cannot certify: the per-sign filter and the exact stages, out
-  /// of line, so that the one compare above stays small enough to inline.
-  template <class Formula, Grouping grouping, std::size_t N>
-  [[gnu::noinline]] Sign exact_sign(const Offsets<N>& in, int parameter) const noexcept {
-    return exact_.sign<Formula, grouping>(in, parameter);
-  }
-
   ExactSigns exact_;
   Det3Bounds bounds_;
 };

@@ -19,7 +19,8 @@
 #include <array>
 #include <optional>
 
-#include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/result.hpp"
+#include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::ccd::internal {
 

@@ -34,7 +34,8 @@
 
 #include <optional>
 
-#include "exactgeo/ccd/ccd.hpp"
+#include "exactgeo/ccd/queries.hpp"
+#include "exactgeo/ccd/result.hpp"
 
 namespace exactgeo::ccd::internal {
 

@@ -1,10 +1,10 @@
-// Bringing coordinates to magnitude 1 (internal/unit_magnitude.hpp): the largest magnitude,
-// which values are left alone, and the scaling itself against GMP: every value multiplied
-// by one and the same power of two, the largest landing in [1/2, 1), exactly (scaling back
-// gives the input), and refused exactly when some value would lose bits below the normal
-// range.
+// Bringing coordinates to magnitude 1 (common/internal/unit_magnitude.hpp): the largest
+// magnitude, which values are left alone, and the scaling itself against GMP: every value
+// multiplied by one and the same power of two, the largest landing in [1/2, 1), exactly
+// (scaling back gives the input), and refused exactly when some value would lose bits below
+// the normal range.
 
-#include "exactgeo/ccd/internal/unit_magnitude.hpp"
+#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
