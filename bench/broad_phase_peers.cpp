@@ -7,7 +7,7 @@
 //
 // Two steps: FRAME0 moved by A mean edge lengths at most per coordinate (uniform, seeded
 // with S; default 0.2), or FRAME0 to FRAME1; then the first step's t1 moved on by a new
-// random motion (seed S + 1). Quads are split into two triangles (bench/step_frames.hpp).
+// random motion (seed S + 1). Quads are split into two triangles (bench/mesh_step.hpp).
 //
 // Every peer gets exactly exactgeo's boxes: each vertex's swept box rounded outward to
 // float in the step's scale, made by the library's own sweep (ccd::internal::sweep_vertices),
@@ -51,10 +51,10 @@
 #include <vector>
 
 #include "exactgeo/boxes/float_box.hpp"
-#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
-#include "step_frames.hpp"
+#include "mesh_step.hpp"
 
 #if defined(EXACTGEO_PEER_CGAL)
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
@@ -82,7 +82,7 @@ using boxes::FloatBox;
 using ccd::Edge;
 using ccd::Triangle;
 using ccd::VertexFacePair;
-using ccd::bench::Frames;
+using ccd::bench::MeshStep;
 using ccd::internal::EdgeIndexPair;
 
 // ---------------------------------------------------------------------------------------
@@ -113,12 +113,12 @@ FloatBox primitive_box(const std::array<VertexIndex, N>& corners,
   return box;
 }
 
-Step make_step(const MeshView& mesh, const Frames& frames) {
+Step make_step(const MeshView& mesh, const MeshStep& mesh_step) {
   Step s;
   s.mesh = mesh;
-  s.positions = {frames.t0, frames.t1};
-  s.largest = std::max(ccd::internal::largest_magnitude(frames.t0),
-                       ccd::internal::largest_magnitude(frames.t1));
+  s.positions = {mesh_step.t0, mesh_step.t1};
+  s.largest = std::max(kernel::largest_magnitude(mesh_step.t0),
+                       kernel::largest_magnitude(mesh_step.t1));
   ccd::internal::sweep_vertices(s.positions, s.largest, 0.0, 1, s.swept);
   for (const Edge& e : mesh.edges)
     s.edge.push_back(primitive_box(e, s.swept.box));
@@ -847,9 +847,9 @@ int main(int argc, char** argv) {
   if (peers.empty() || peers[0] != "exactgeo") peers.insert(peers.begin(), "exactgeo");
   if (scene.empty()) scene = paths[0];
 
-  const std::optional<Frames> loaded = ccd::bench::load_frames(paths, motion, 0.0, seed);
+  const std::optional<MeshStep> loaded = ccd::bench::load_step(paths, motion, 0.0, seed);
   if (!loaded) usage("frames differ in vertex count");
-  const Frames following = ccd::bench::moved_on(*loaded, motion, 0.0, seed + 1);
+  const MeshStep following = ccd::bench::moved_on(*loaded, motion, 0.0, seed + 1);
   const ccd::MeshCcd connectivity(loaded->t0.size() / 3, loaded->faces);
   const MeshView mesh{connectivity.vertex_count(), connectivity.faces(), connectivity.edges()};
   const Step first = make_step(mesh, *loaded);

@@ -27,17 +27,17 @@
 
 #include "baseline/box_tree.hpp"
 #include "baseline/mesh_broad_phase.hpp"
-#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
-#include "step_frames.hpp"
+#include "mesh_step.hpp"
 #include "sweep_and_prune.hpp"
 
 namespace {
 
 using namespace exactgeo;
 
-using ccd::bench::Frames;
+using ccd::bench::MeshStep;
 
 double seconds(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -56,17 +56,17 @@ struct StructureComparison {
   StructureTime tree;
 };
 
-StructureComparison compare_structures(const ccd::MeshCcd& mesh, const Frames& frames) {
+StructureComparison compare_structures(const ccd::MeshCcd& mesh, const MeshStep& mesh_step) {
   using ccd::bench::baseline::swept_box;
   using ccd::bench::baseline::SweptBox;
   std::vector<SweptBox> vertices, edges, faces;
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
     vertices.push_back(
-        swept_box(std::array<std::uint32_t, 1>{v}, v, frames.t0.data(), frames.t1.data()));
+        swept_box(std::array<std::uint32_t, 1>{v}, v, mesh_step.t0.data(), mesh_step.t1.data()));
   for (std::uint32_t e = 0; e < mesh.edges().size(); ++e)
-    edges.push_back(swept_box(mesh.edges()[e], e, frames.t0.data(), frames.t1.data()));
+    edges.push_back(swept_box(mesh.edges()[e], e, mesh_step.t0.data(), mesh_step.t1.data()));
   for (std::uint32_t f = 0; f < mesh.faces().size(); ++f)
-    faces.push_back(swept_box(mesh.faces()[f], f, frames.t0.data(), frames.t1.data()));
+    faces.push_back(swept_box(mesh.faces()[f], f, mesh_step.t0.data(), mesh_step.t1.data()));
 
   StructureComparison c;
   if (edges.size() <= 40000) {
@@ -139,7 +139,7 @@ BroadPhaseComparison compare_broad_phases(const ccd::MeshCcd& mesh, const ccd::S
   // has from its magnitude check; here it is found inside the timed region, as the
   // baseline finds it.
   const auto largest = [](const ccd::StepPositions& f) {
-    return std::max(ccd::internal::largest_magnitude(f.t0), ccd::internal::largest_magnitude(f.t1));
+    return std::max(kernel::largest_magnitude(f.t0), kernel::largest_magnitude(f.t1));
   };
   library.candidates(first, largest(first), threads);
   baseline.candidates(first, threads);  // its standing trees, as a MeshCcd would keep them
@@ -205,16 +205,16 @@ int main(int argc, char** argv) {
   }
   if (paths.empty() || paths.size() > 2) usage("one or two mesh files expected");
 
-  const std::optional<Frames> loaded = ccd::bench::load_frames(paths, motion, standing, seed);
+  const std::optional<MeshStep> loaded = ccd::bench::load_step(paths, motion, standing, seed);
   if (!loaded) usage("frames differ in vertex count");
-  const Frames& frames = *loaded;
+  const MeshStep& mesh_step = *loaded;
 
-  const ccd::StepPositions view{frames.t0, frames.t1};
+  const ccd::StepPositions view{mesh_step.t0, mesh_step.t1};
   const ccd::MeshCcdOptions options{method, std::nullopt, threads};
   ccd::MeshCcdResult best, second;
   double best_total = INFINITY;
   for (int r = 0; r < repeat; ++r) {
-    ccd::MeshCcd mesh(frames.t0.size() / 3, frames.faces);
+    ccd::MeshCcd mesh(mesh_step.t0.size() / 3, mesh_step.faces);
     const ccd::MeshCcdResult result = mesh.step(view, options);
     const double total = result.broad_phase_seconds + result.narrow_phase_seconds;
     if (total < best_total) {
@@ -224,15 +224,15 @@ int main(int argc, char** argv) {
     }
   }
   // The following step: from FRAME1 on by a new random motion, or the same frames again.
-  const Frames following =
-      paths.size() == 1 ? ccd::bench::moved_on(frames, motion, standing, seed + 1) : frames;
+  const MeshStep following =
+      paths.size() == 1 ? ccd::bench::moved_on(mesh_step, motion, standing, seed + 1) : mesh_step;
   const BroadPhaseComparison broad =
-      compare_broad_phases(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), view,
+      compare_broad_phases(ccd::MeshCcd(mesh_step.t0.size() / 3, mesh_step.faces), view,
                            ccd::StepPositions{following.t0, following.t1}, threads, repeat);
 
   std::optional<StructureComparison> structures;
   if (compare)
-    structures = compare_structures(ccd::MeshCcd(frames.t0.size() / 3, frames.faces), frames);
+    structures = compare_structures(ccd::MeshCcd(mesh_step.t0.size() / 3, mesh_step.faces), mesh_step);
 
   const std::size_t collisions = best.vertex_face.size() + best.edge_edge.size();
   std::printf(
@@ -245,7 +245,7 @@ int main(int argc, char** argv) {
       "\"next_step_candidates\": %zu, \"next_step_baseline_broad_phase_seconds\": %.6g, "
       "\"next_step_broad_phase_seconds\": %.6g, \"next_step_rebuilt\": %s, "
       "\"broad_phase_speedup\": %.4g, \"same_candidates_as_baseline\": %s",
-      paths[0].c_str(), frames.faces.size(), frames.t0.size() / 3,
+      paths[0].c_str(), mesh_step.faces.size(), mesh_step.t0.size() / 3,
       std::string(ccd::to_string(method)).c_str(), threads, motion, standing,
       best.vertex_face_candidates, best.edge_edge_candidates, best.vertex_face.size(),
       best.edge_edge.size(), best.broad_phase_seconds, best.narrow_phase_seconds,

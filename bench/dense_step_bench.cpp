@@ -113,14 +113,8 @@ std::string megabytes(std::size_t bytes) {
 int main(int argc, char** argv) try {
   const Options options = parse(argc, argv);
   const mesh::LoadedMesh loaded = mesh::load_mesh(options.mesh);
-  std::vector<double> positions;
-  for (const Point3& p : loaded.mesh.vertices)
-    positions.insert(positions.end(), p.begin(), p.end());
-  std::vector<ccd::Triangle> faces;
-  for (const mesh::Face& f : loaded.mesh.faces) {
-    faces.push_back({f.corners[0], f.corners[1], f.corners[2]});
-    if (!f.is_triangle()) faces.push_back({f.corners[0], f.corners[2], f.corners[3]});
-  }
+  const std::vector<double> positions = ccd::flat_positions(loaded.mesh.vertices);
+  const std::vector<ccd::Triangle> faces = mesh::triangle_surface_of(loaded.mesh).triangles;
   const std::size_t vertex_count = loaded.mesh.vertices.size();
   std::cout << "| triangles | degrees | scale | threads | candidates | collisions | step ms | "
                "ns / candidate | peak MB | resident before MB | peak MB, list held |\n"

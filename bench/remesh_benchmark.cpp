@@ -93,10 +93,8 @@ void SmoothingBatch(benchmark::State& state) {
 
 void SmoothingAsOneMeshCcdStep(benchmark::State& state) {
   const Scene start = scene(3, static_cast<int>(state.range(0)));
-  std::vector<double> t0, t1;
-  for (const Point3& p : start.surface.vertices)
-    t0.insert(t0.end(), p.begin(), p.end());
-  t1 = t0;
+  const std::vector<double> t0 = exactgeo::ccd::flat_positions(start.surface.vertices);
+  std::vector<double> t1 = t0;
   for (const Move& m : start.moves) {
     for (int k = 0; k < 3; ++k)
       t1[3 * m.vertex + k] = m.to[k];
@@ -157,9 +155,7 @@ void CoarseningPass(benchmark::State& state) {
 void CoarseningAsOneMeshCcdStep(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const Scene start = scene(3, n);
-  std::vector<double> t0;
-  for (const Point3& p : start.surface.vertices)
-    t0.insert(t0.end(), p.begin(), p.end());
+  const std::vector<double> t0 = exactgeo::ccd::flat_positions(start.surface.vertices);
   std::vector<double> t1 = t0;
   for (const Collapse& c : coarsening(start, 3, n)) {
     for (int k = 0; k < 3; ++k)

@@ -68,13 +68,13 @@ ExitCode run_ccd_mesh(const CcdMeshOptions& options, std::ostream& out, std::ost
 
   std::optional<ccd::MeshCcd> mesh_ccd;
   try {
-    mesh_ccd.emplace(mesh0.vertices.size(), triangles_of(mesh0));
+    mesh_ccd.emplace(mesh0.vertices.size(), mesh::triangle_surface_of(mesh0).triangles);
   } catch (const std::invalid_argument& e) {
     return fail(options.frame0 + ": " + e.what());
   }
 
-  const std::vector<double> positions0 = flat_positions(mesh0.vertices);
-  const std::vector<double> positions1 = flat_positions(mesh1.vertices);
+  const std::vector<double> positions0 = ccd::flat_positions(mesh0.vertices);
+  const std::vector<double> positions1 = ccd::flat_positions(mesh1.vertices);
   ccd::MeshCcdOptions ccd_options;
   ccd_options.method = options.method;
   if (options.time_of_impact) ccd_options.time_of_impact_width = options.time_of_impact_width;

@@ -116,26 +116,4 @@ std::optional<std::array<LoadedMesh, 2>> load_frames(const FrameFiles& files,
   return frames;
 }
 
-/// The faces as triangles, in face order; a quad (c0, c1, c2, c3) becomes (c0, c1, c2) and
-/// (c0, c2, c3).
-std::vector<ccd::Triangle> triangles_of(const mesh::Mesh& mesh) {
-  std::vector<ccd::Triangle> triangles;
-  triangles.reserve(mesh.faces.size());
-  for (const mesh::Face& f : mesh.faces) {
-    const auto& c = f.corners;
-    triangles.push_back({c[0], c[1], c[2]});
-    if (!f.is_triangle()) triangles.push_back({c[0], c[2], c[3]});
-  }
-  return triangles;
-}
-
-/// x, y, z of vertex 0, then of vertex 1, ... (StepPositions' layout).
-std::vector<double> flat_positions(const std::vector<Point3>& vertices) {
-  std::vector<double> flat;
-  flat.reserve(3 * vertices.size());
-  for (const Point3& p : vertices)
-    flat.insert(flat.end(), p.begin(), p.end());
-  return flat;
-}
-
 }  // namespace exactgeo::cli

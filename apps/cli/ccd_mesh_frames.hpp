@@ -30,11 +30,4 @@ struct FrameFiles {
 std::optional<std::array<mesh::LoadedMesh, 2>> load_frames(const FrameFiles& files,
                                                            std::string& problem);
 
-/// The faces as triangles, in face order; a quad (c0, c1, c2, c3) becomes (c0, c1, c2) and
-/// (c0, c2, c3).
-std::vector<ccd::Triangle> triangles_of(const mesh::Mesh& mesh);
-
-/// x, y, z of vertex 0, then of vertex 1, ... (StepPositions' layout).
-std::vector<double> flat_positions(const std::vector<Point3>& vertices);
-
 }  // namespace exactgeo::cli

@@ -105,7 +105,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                   "defined\n");
     return ExitCode::input_error;
   }
-  progress.phase("classifying");
+  progress.task("classifying");
   const std::optional<double> points_bytes = file_size(options.points);
 
   Tally tally;

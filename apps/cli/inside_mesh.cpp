@@ -72,7 +72,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
   const std::string source = mesh::mesh_source_name(options.path);
   std::optional<LoadedMesh> kept;
   try {
-    if (progress) progress->phase("reading " + source);
+    if (progress) progress->task("reading " + source);
     LoadedMesh loaded = load_mesh(options.path, options.load);
     numbering = loaded.numbering;
     for (const std::string& note : loaded.notes) {
@@ -86,7 +86,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       });
     }
     if (progress) {
-      progress->phase("building the search structure (" + grouped(loaded.mesh.faces.size()) +
+      progress->task("building the search structure (" + grouped(loaded.mesh.faces.size()) +
                       " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
     }
     const Clock::time_point start = Clock::now();
@@ -142,7 +142,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     return std::nullopt;
   }
   if (options.self_intersection_check) {
-    if (progress && !beside.valid()) progress->phase("looking for faces that intersect");
+    if (progress && !beside.valid()) progress->task("looking for faces that intersect");
     TimedCheck check;
     try {
       check = beside.valid() ? beside.get() : check_self_intersections(built.mesh(), 1);

@@ -86,7 +86,7 @@ struct InsideMesh {
 /// that intersect: on such a mesh, by the parity rule, a warning on `err` says that the
 /// labels are those of the parity solid (the winding rules label overlapping parts for
 /// what they are, and say nothing). nullopt once an error is on `err` ("exactgeo inside: ...").
-/// `progress`, when given, shows each phase.
+/// `progress`, when given, shows each task.
 std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, std::ostream& err,
                                             ProgressLine* progress = nullptr);
 

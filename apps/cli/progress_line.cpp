@@ -60,7 +60,7 @@ ProgressLine::~ProgressLine() {
   clear();
 }
 
-void ProgressLine::phase(std::string_view what) {
+void ProgressLine::task(std::string_view what) {
   if (!enabled_) return;
   start_ = Clock::now();
   std::string text(what);

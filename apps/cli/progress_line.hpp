@@ -35,11 +35,11 @@ class ProgressLine {
   ProgressLine(const ProgressLine&) = delete;
   ProgressLine& operator=(const ProgressLine&) = delete;
 
-  /// A phase of the run without a count ("reading the mesh..."); it stays until the next
+  /// A task of the run without a count ("reading the mesh..."); it stays until the next
   /// update. The rate of the counts that follow is measured from here.
-  void phase(std::string_view what);
+  void task(std::string_view what);
   /// The count so far; redrawn at most ten times a second. The rate counts from the last
-  /// phase, or from construction.
+  /// task, or from construction.
   void count(std::uint64_t done, std::optional<std::uint64_t> total,
              std::optional<double> fraction = std::nullopt);
   /// Erases the line (also done on destruction).

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 #include "exactgeo/predicates/kernel/error_free.hpp"
 
 namespace exactgeo::ccd::bench::baseline {
 
-using internal::largest_magnitude;
+using kernel::largest_magnitude;
 
 namespace {
 

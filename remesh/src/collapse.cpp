@@ -27,7 +27,7 @@
 
 namespace exactgeo::remesh {
 
-using namespace checks;  // operation_checks.hpp
+using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 
 namespace {
 
@@ -291,7 +291,7 @@ class CollapsePass {
     std::vector<Point3> start(reach.vertices.size());
     for (std::size_t i = 0; i < start.size(); ++i)
       start[i] = surface_.vertices[reach.vertices[i]];
-    const std::vector<double> t0 = flat(start);
+    const std::vector<double> t0 = ccd::flat_positions(start);
     for (bool changed = true; changed;) {
       changed = false;
       std::vector<Point3> end = start;
@@ -299,7 +299,7 @@ class CollapsePass {
         const std::size_t k = owner_[reach.vertices[i]];
         if (k != kNone && live(k)) end[i] = plans_[k].to;
       }
-      const std::vector<double> t1 = flat(end);
+      const std::vector<double> t1 = ccd::flat_positions(end);
       const ccd::MeshCcdResult step = mesh_ccd.step({t0, t1});
       const auto& global = reach.vertices;  // a reached vertex's index in the surface
       for (const ccd::VertexFacePair& pair : step.vertex_face) {

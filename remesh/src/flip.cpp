@@ -17,7 +17,7 @@
 
 namespace exactgeo::remesh {
 
-using namespace checks;  // operation_checks.hpp
+using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 
 namespace {
 

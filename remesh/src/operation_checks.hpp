@@ -16,7 +16,7 @@
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 
-namespace exactgeo::remesh::checks {
+namespace exactgeo::remesh::internal {
 
 inline Outcome topology(std::string reason) {
   return {Verdict::refused_topology, std::move(reason), std::nullopt, std::nullopt};
@@ -88,13 +88,4 @@ inline EdgeTriangles edge_triangles(const Surface& s) {
   return EdgeTriangles(s.triangles, s.vertices.size());
 }
 
-/// x, y, z of every point in turn (ccd::StepPositions' layout).
-inline std::vector<double> flat(const std::vector<Point3>& points) {
-  std::vector<double> out;
-  out.reserve(3 * points.size());
-  for (const Point3& p : points)
-    out.insert(out.end(), p.begin(), p.end());
-  return out;
-}
-
-}  // namespace exactgeo::remesh::checks
+}  // namespace exactgeo::remesh::internal

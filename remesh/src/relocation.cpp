@@ -12,7 +12,6 @@
 
 namespace exactgeo::remesh {
 
-using checks::flat;  // operation_checks.hpp
 
 namespace {
 
@@ -100,9 +99,9 @@ class Pass {
 
   void refuse_collisions() {
     ccd::MeshCcd mesh_ccd(surface_.vertices.size(), surface_.triangles);
-    const std::vector<double> t0 = flat(surface_.vertices);
+    const std::vector<double> t0 = ccd::flat_positions(surface_.vertices);
     for (;;) {
-      const std::vector<double> t1 = flat(targets());
+      const std::vector<double> t1 = ccd::flat_positions(targets());
       const ccd::MeshCcdResult step = mesh_ccd.step({t0, t1});
       if (!step.collision()) return;
       const auto hit = [&](VertexIndex v, const Blocker& blocker) {

@@ -41,7 +41,7 @@ TEST(ProgressLine, WritesNothingWhenDisabled) {
   std::ostringstream err;
   {
     ProgressLine line(err, false, "points");
-    line.phase("building");
+    line.task("building");
     line.count(5, 10);
     line.clear();
   }
@@ -52,7 +52,7 @@ TEST(ProgressLine, RewritesOneLineAndErasesItAtTheEnd) {
   std::ostringstream err;
   {
     ProgressLine line(err, true, "points");
-    line.phase("building the search structure (6 faces)");
+    line.task("building the search structure (6 faces)");
     line.count(10, 10);  // finished: drawn whatever the time since the last drawing
   }
   const std::string text = err.str();

@@ -9,7 +9,7 @@
 
 #include "exactgeo/ccd/baselines/cubic.hpp"
 #include "exactgeo/ccd/baselines/separation_box.hpp"
-#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 #include "exactgeo/ccd/internal/exact_method.hpp"
 #include "exactgeo/ccd/root_parity.hpp"
 #include "exactgeo/ccd/separation/internal/min_separation.hpp"
@@ -87,7 +87,7 @@ Result dispatch_as_given(const Query& query, const Options& options, ParityFn pa
           {}};
 }
 
-/// The query at magnitude 1 (common/internal/unit_magnitude.hpp: why, and when), with the
+/// The query at magnitude 1 (predicates/kernel/unit_magnitude.hpp: why, and when), with the
 /// separation scaled alike (distances scale with the coordinates), or nullopt when it is
 /// near 1 already or cannot be scaled exactly.
 template <class Query>
@@ -98,7 +98,7 @@ std::optional<std::pair<Query, Options>> at_unit_magnitude(const Query& query,
   const auto coordinates = std::bit_cast<std::array<double, 24>>(query);
   std::copy(coordinates.begin(), coordinates.end(), x.begin());
   x[24] = options.min_separation;
-  if (!internal::scale_to_unit_magnitude(x)) return std::nullopt;
+  if (!kernel::scale_to_unit_magnitude(x)) return std::nullopt;
   std::array<double, 24> scaled;
   std::copy(x.begin(), x.begin() + 24, scaled.begin());
   Options o = options;

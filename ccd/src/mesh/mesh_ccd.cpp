@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 #include "exactgeo/ccd/mesh/internal/broad_phase.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 
@@ -133,20 +133,20 @@ struct ScaledStep {
 
 /// `positions`, or both ends scaled to magnitude 1 by one power of two, stored in `unit`,
 /// when they are far from it and the scaling is exact for them and for the separation
-/// (common/internal/unit_magnitude.hpp).
+/// (predicates/kernel/unit_magnitude.hpp).
 ScaledStep at_unit_magnitude(const StepPositions& positions, double min_separation,
                              std::vector<double>& unit) {
-  const double largest = std::max(internal::largest_magnitude(positions.t0),
-                                  internal::largest_magnitude(positions.t1));
+  const double largest = std::max(kernel::largest_magnitude(positions.t0),
+                                  kernel::largest_magnitude(positions.t1));
   const ScaledStep as_given{positions, largest, min_separation};
-  if (internal::near_unit_magnitude(largest)) return as_given;
+  if (kernel::near_unit_magnitude(largest)) return as_given;
   unit.assign(positions.t0.begin(), positions.t0.end());
   unit.insert(unit.end(), positions.t1.begin(), positions.t1.end());
-  if (!internal::scale_to_unit_magnitude(unit, largest)) return as_given;
+  if (!kernel::scale_to_unit_magnitude(unit, largest)) return as_given;
   int exponent = 0;  // the scaling took largest to its significand in [1/2, 1), exactly
   const double significand = std::frexp(largest, &exponent);
-  const double separation = internal::PowerOfTwo(-exponent)(min_separation);
-  if (internal::PowerOfTwo(exponent)(separation) != min_separation) return as_given;
+  const double separation = kernel::PowerOfTwo(-exponent)(min_separation);
+  if (kernel::PowerOfTwo(exponent)(separation) != min_separation) return as_given;
   const std::span<const double> both(unit);
   return {{both.first(positions.t0.size()), both.subspan(positions.t0.size())},
           significand,
@@ -249,7 +249,7 @@ MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions
   MeshCcdResult result;
   const auto broad_start = std::chrono::steady_clock::now();
   // A step far from magnitude 1 is brought there once for all its pairs, both ends by
-  // one power of two (common/internal/unit_magnitude.hpp); no answer or time changes.
+  // one power of two (predicates/kernel/unit_magnitude.hpp); no answer or time changes.
   std::vector<double> unit;
   const ScaledStep scaled_step = at_unit_magnitude(positions, options.min_separation, unit);
   const StepPositions& scaled = scaled_step.positions;
@@ -313,6 +313,14 @@ MeshCcdResult MeshCcd::step(const StepPositions& positions, const MeshCcdOptions
   std::sort(result.edge_edge.begin(), result.edge_edge.end());
   result.narrow_phase_seconds = narrow_share * walk_seconds + seconds_since(gather_start);
   return result;
+}
+
+std::vector<double> flat_positions(std::span<const Point3> points) {
+  std::vector<double> flat;
+  flat.reserve(3 * points.size());
+  for (const Point3& p : points)
+    flat.insert(flat.end(), p.begin(), p.end());
+  return flat;
 }
 
 MeshCcdResult find_collisions(std::span<const Triangle> faces, const StepPositions& positions,

@@ -52,6 +52,21 @@ inline Mesh mesh_of(const TriangleSurface& surface) {
   return m;
 }
 
+/// A mesh as a triangle surface, for the triangle-only products (mesh CCD, the remesher):
+/// each quad (c0, c1, c2, c3) split into (c0, c1, c2) and (c0, c2, c3), in face order.
+/// The split chooses a diagonal, so the surface is the quad's only where the quad is flat.
+inline TriangleSurface triangle_surface_of(const Mesh& mesh) {
+  TriangleSurface s;
+  s.vertices = mesh.vertices;
+  s.triangles.reserve(mesh.faces.size());
+  for (const Face& f : mesh.faces) {
+    const auto& c = f.corners;
+    s.triangles.push_back({c[0], c[1], c[2]});
+    if (!f.is_triangle()) s.triangles.push_back({c[0], c[2], c[3]});
+  }
+  return s;
+}
+
 /// The patch of a quad, or the degenerate patch {a, b, c, c} of a triangle.
 /// Precondition: every corner index is in range.
 inline BilinearPatch patch_of(const Mesh& mesh, const Face& face) noexcept {

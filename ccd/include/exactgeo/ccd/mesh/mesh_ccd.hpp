@@ -59,11 +59,15 @@ struct EdgeEdgePair {
 };
 
 /// Positions at both ends of the step: x, y, z of vertex 0, then of vertex 1, ...
-/// (3 * vertex_count doubles each, finite).
+/// (3 * vertex_count doubles each, finite). Flat doubles rather than points, so that a
+/// simulator's arrays (numpy, Eigen, a solver's state) are read where they lie, uncopied.
 struct StepPositions {
   std::span<const double> t0;
   std::span<const double> t1;
 };
+
+/// The points in StepPositions' layout: x, y, z of the first point, then of the second, ...
+std::vector<double> flat_positions(std::span<const Point3> points);
 
 struct MeshCcdOptions {
   /// exact (every root) or parity (odd root counts and boundary roots); the other methods

@@ -15,7 +15,7 @@
 //
 // So when the largest extent X of the box of the faces' corners lies outside
 // [2^-64, 2^64] (the window in which CCD leaves its queries as they are too,
-// ccd/internal/unit_magnitude.hpp), the rays see the vertices and the query point
+// predicates/kernel/unit_magnitude.hpp), the rays see the vertices and the query point
 // multiplied by 2^-e, X in [2^(e-1), 2^e): every offset of a point of the box then lies
 // below 1 in magnitude, as for a mesh of size 1, and a sign's group maxima fall out of the
 // filters' guards only where they would at size 1 (a point within 2^-96 of a face's
@@ -40,15 +40,13 @@
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/kernel/power_of_two.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 #include "exactgeo/predicates/point.hpp"
 
 namespace exactgeo::inside::internal {
 
 class UnitFrame {
  public:
-  static constexpr double kWindowLow = 0x1p-64;
-  static constexpr double kWindowHigh = 0x1p64;
-
   /// Off: the rays see the mesh as given.
   UnitFrame() = default;
 
@@ -57,10 +55,8 @@ class UnitFrame {
     double extent = 0.0;  // infinite when the box is wider than DBL_MAX
     for (int i = 0; i < 3; ++i)
       extent = std::fmax(extent, box.upper[i] - box.lower[i]);
-    if (extent == 0.0 || (extent >= kWindowLow && extent <= kWindowHigh)) return;
-    int e = 1025;  // for an infinite extent: every finite one is below 2^1025
-    if (std::isfinite(extent)) std::frexp(extent, &e);  // extent in [2^(e-1), 2^e)
-    exponent_ = -e;
+    if (kernel::near_unit_magnitude(extent)) return;
+    exponent_ = -kernel::unit_exponent(extent);  // extent 2^exponent_ in [1/2, 1)
     scale_ = kernel::ExactPowerOfTwo(exponent_);
     std::vector<Point3> vertices(mesh.vertices.size());
     std::vector<char> exact(mesh.vertices.size());

@@ -1,10 +1,10 @@
-// Bringing coordinates to magnitude 1 (common/internal/unit_magnitude.hpp): the largest
+// Bringing coordinates to magnitude 1 (predicates/kernel/unit_magnitude.hpp): the largest
 // magnitude, which values are left alone, and the scaling itself against GMP: every value
 // multiplied by one and the same power of two, the largest landing in [1/2, 1), exactly
 // (scaling back gives the input), and refused exactly when some value would lose bits below
 // the normal range.
 
-#include "exactgeo/ccd/common/internal/unit_magnitude.hpp"
+#include "exactgeo/predicates/kernel/unit_magnitude.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@
 #include "support/generators.hpp"
 #include "support/seed.hpp"
 
-namespace exactgeo::ccd::internal {
+namespace exactgeo::kernel {
 namespace {
 
 using testing::Rng;
@@ -34,7 +34,7 @@ mpq_class times_power_of_two(const mpq_class& x, int k) {
 }
 
 /// The k with largest 2^-k in [1/2, 1) (largest > 0), checked exactly.
-int unit_exponent(double largest) {
+int expected_unit_exponent(double largest) {
   const int k = std::ilogb(largest) + 1;
   const mpq_class scaled = times_power_of_two(mpq_class(largest), -k);
   EXPECT_TRUE(scaled >= mpq_class(1, 2) && scaled < 1) << largest;
@@ -64,7 +64,8 @@ void expect_scaled_as_exact(const std::vector<double>& values) {
     EXPECT_EQ(scaled, values) << "values near magnitude 1 are left alone";
     return;
   }
-  const int k = unit_exponent(largest);
+  const int k = expected_unit_exponent(largest);
+  EXPECT_EQ(unit_exponent(largest), k) << largest;
   bool exact = true;
   for (const double x : values)
     exact = exact && exactly_scalable(x, k);
@@ -90,6 +91,19 @@ TEST(UnitMagnitude, LargestMagnitudeIsTheLargestAbsoluteValue) {
             std::numeric_limits<double>::max());
   EXPECT_EQ(largest_magnitude(std::vector<double>{-std::numeric_limits<double>::denorm_min()}),
             std::numeric_limits<double>::denorm_min());
+}
+
+/// The exponent that brings a magnitude to [1/2, 1), at the ends of the range; an infinite
+/// extent (a box wider than the largest double) lies above every finite one.
+TEST(UnitMagnitude, UnitExponentBringsTheLargestToOneHalfOrAbove) {
+  EXPECT_EQ(unit_exponent(1.0), 1);
+  EXPECT_EQ(unit_exponent(0.5), 0);
+  EXPECT_EQ(unit_exponent(std::nextafter(1.0, 0.0)), 0);
+  EXPECT_EQ(unit_exponent(std::numeric_limits<double>::max()), 1024);
+  EXPECT_EQ(unit_exponent(std::numeric_limits<double>::denorm_min()), -1073);
+  EXPECT_EQ(unit_exponent(INFINITY), 1025);
+  EXPECT_EQ(kUnitWindowLow, 0x1p-64);
+  EXPECT_EQ(kUnitWindowHigh, 0x1p64);
 }
 
 TEST(UnitMagnitude, ValuesNearOneAreLeftAlone) {
@@ -171,4 +185,4 @@ TEST(UnitMagnitude, RandomValuesAgreeWithGmp) {
 }
 
 }  // namespace
-}  // namespace exactgeo::ccd::internal
+}  // namespace exactgeo::kernel
