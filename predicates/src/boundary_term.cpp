@@ -171,6 +171,17 @@ bool on_segment(const Point3& p, const Point3& a, const Point3& b) noexcept {
   return signs.dot3(pa, pb) != Sign::positive;
 }
 
+/// Does x lie on the open ray from p away from `apex` (the direction -apex)? Exact: X = x - p
+/// parallel to the apex direction (X x apex = 0) and pointing against it (X.apex < 0).
+bool on_ray(const Point3& p, const Vector3& apex, const Point3& x) noexcept {
+  const kernel::ExactSigns signs;
+  const Offset px = Offset::between(p, x), direction = Offset::vector(apex);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (signs.cross2(axis, px, direction) != Sign::zero) return false;
+  }
+  return signs.dot3(px, direction) == Sign::negative;
+}
+
 /// The half angle atan2(num, den) over the box num x den, or why there is none.
 template <class Stage>
 std::optional<typename Stage::Number> half_angle(const Stage& stage,
@@ -195,8 +206,21 @@ std::optional<typename Stage::Number> half_angle(const Stage& stage,
     return side == Sign::positive ? stage.corner_angles(stage.with_lower_zero(num, +1), den)
                                   : stage.corner_angles(stage.with_upper_zero(num, -1), den);
   }
-  // The box holds the origin.
-  why = on_segment(p, a, b) ? BoundaryTermKind::point_on_edge : BoundaryTermKind::undecided;
+  // The box holds the origin. Exactly 0/0 is a degenerate ray or point, never a lack of
+  // precision: with unit vectors a', b', c' (c' = apex's), num = 0 makes them coplanar and
+  // den = 0 makes |a' + b' + c'| = 1 (den / (|A||B||C|) = (|a' + b' + c'|^2 - 1) / 2); of the
+  // unit vectors c' = s - a' - b' (s a unit vector), the only ones are -a' and -b' (the
+  // unit circles about 0 and a' + b' meet at a' and b'). So two of them are opposite: the
+  // point lies inside the edge (a' = -b', or on an end), or an end lies on the ray (a' or
+  // b' = -c'), which then meets the edge: cast the next one, as when it crosses the edge.
+  // Any other origin in the box is rounding, which a finer stage removes.
+  if (on_segment(p, a, b)) {
+    why = BoundaryTermKind::point_on_edge;
+  } else if (on_ray(p, apex, a) || on_ray(p, apex, b)) {
+    why = BoundaryTermKind::ray_on_edge;
+  } else {
+    why = BoundaryTermKind::undecided;
+  }
   return std::nullopt;
 }
 

@@ -201,6 +201,65 @@ TEST_P(BoundaryTermScales, RaysNearABoundaryEdge) {
   EXPECT_GT(tally.cases, 150u);
 }
 
+/// Rays through an end of a boundary edge (a dyadic step along the ray, so the end lies on
+/// it exactly), the edge's other end anywhere: every term along it is 0/0 at that edge, a
+/// ray that meets the edge, never a precision to refine (once: undecided after 2048 bits,
+/// where the edges of a dropped zero-area face left the ray unflagged). The next ray of
+/// the sequence is enclosed, and holds the solid-angle oracle's w - S.
+TEST_P(BoundaryTermScales, RaysThroughAnEndOfAnEdgeMeetTheEdge) {
+  const int k = GetParam();
+  testing::Rng rng = testing::seeded_engine("boundary-term-ray-through-end");
+  Tally tally;
+  for (int i = 0; i < 200; ++i) {
+    const std::size_t ray = static_cast<std::size_t>(testing::uniform_int(rng, 0, 3));
+    const Vector3 r = ray_direction(ray);
+    const Point3 p = testing::integer_point(rng, 8);
+    const double s = testing::uniform_int(rng, 1, 64) / 4.0;
+    const Point3 on_ray{p[0] + s * r[0], p[1] + s * r[1], p[2] + s * r[2]};  // exact
+    Triangle t{on_ray, testing::integer_point(rng, 8), testing::integer_point(rng, 8)};
+    std::rotate(t.begin(), t.begin() + i % 3, t.end());  // the end at every corner
+    const Triangle scaled_t = scaled(t, k);
+    const Point3 scaled_p = testing::scaled(p, k);
+    for (const unsigned bits : kBoundaryTermPrecisions) {
+      const BoundaryTerm term = boundary_term(scaled_p, r, scaled_t, kTriangleBoundary, bits);
+      // p on the face's plane is possible, on an edge only where the point is on it.
+      ASSERT_TRUE(term.kind == BoundaryTermKind::ray_on_edge ||
+                  term.kind == BoundaryTermKind::point_on_edge)
+          << hex(scaled_p) << " ray " << ray << ", " << bits << " bits";
+    }
+    expect_certified(scaled_p, scaled_t, tally);
+  }
+  EXPECT_GT(tally.cases, 150u);
+  EXPECT_EQ(tally.never, 0u);
+}
+
+/// The reproducer: an open triangle and, apart from it, a collinear (zero-area) triangle
+/// whose edges are in the boundary chain, the first ray from (1, 1, 1) passing exactly
+/// through its corner (9, 5/2, 41/32).
+TEST(BoundaryTerm, ARayThroughTheCornerOfACollinearTriangleMeetsItsEdge) {
+  const std::vector<Point3> v{{0, 0, 0},        {4, 0, 0},        {0, 4, 0},
+                              {9, 2.5, 1.28125}, {10, 2.5, 1.28125}, {11, 2.5, 1.28125}};
+  const std::vector<BoundaryEdge> chain{{0, 1, 1}, {1, 2, 1}, {2, 0, 1},
+                                        {3, 4, 1}, {4, 5, 1}, {5, 3, 1}};
+  const Point3 p{1, 1, 1};
+  for (const unsigned bits : kBoundaryTermPrecisions) {
+    EXPECT_EQ(boundary_term(p, ray_direction(0), v, chain, bits).kind,
+              BoundaryTermKind::ray_on_edge)
+        << bits << " bits";
+  }
+  // Along the next ray the collinear loop adds nothing: w - S is the open triangle's.
+  const Vector3 r = ray_direction(1);
+  const BoundaryTerm next = boundary_term(p, r, v, chain, 53);
+  ASSERT_EQ(next.kind, BoundaryTermKind::enclosed);
+  const Triangle t{v[0], v[1], v[2]};
+  const RayTriangleHit hit = testing::ray_triangle_oracle(p, r, t[0], t[1], t[2]);
+  ASSERT_TRUE(hit.kind == RayTriangle::miss || hit.kind == RayTriangle::interior);
+  const double crossings = hit.kind == RayTriangle::interior ? to_int(hit.turn) : 0;
+  const double w_minus_s = testing::generalized_winding_oracle(p, std::span(&t, 1), crossings);
+  EXPECT_LE(next.turns.lower, std::nextafter(w_minus_s, 1.0));
+  EXPECT_GE(next.turns.upper, std::nextafter(w_minus_s, -1.0));
+}
+
 INSTANTIATE_TEST_SUITE_P(Scales, BoundaryTermScales, ::testing::Values(0, 1000, -1000),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            const int k = param_info.param;
