@@ -1,8 +1,7 @@
 #pragma once
 
-// What the operations share (operations.cpp, collapse.cpp, batch_relocation.cpp): the
-// outcomes of a refusal, the topology checks of an edge, closed boxes, and positions as
-// MeshCcd takes them.
+// What the operations share (relocation.cpp, collapse.cpp, flip.cpp, split.cpp): the
+// outcomes of a refusal, the topology checks of an edge, the edge-triangle table.
 
 #include <algorithm>
 #include <array>
