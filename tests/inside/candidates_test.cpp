@@ -15,7 +15,6 @@
 
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
-#include "exactgeo/inside/internal/float_frame.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
 #include "support/seed.hpp"
@@ -226,30 +225,6 @@ TEST(EmbreeCandidates, OriginsOnAxisAlignedFacesWhoseCoordinatesAreNotFloats) {
     }
     EXPECT_GE(touched, 400u);  // every origin lies on at least one face
   }
-}
-
-TEST(FloatFrame, BoundsEncloseTheMappedValueWithPadding) {
-  auto rng = testing::seeded_engine("inside.float_frame");
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::uniform_int_distribution<int> exponent(-1070, 1020);
-  for (int trial = 0; trial < 2000; ++trial) {
-    const int e = exponent(rng);
-    const double x = std::ldexp(unit(rng), e), y = std::ldexp(unit(rng), e);
-    const Point3 lower{std::min(x, y), -1, 0}, upper{std::max(x, y), 1, 0};
-    const internal::FloatFrame frame(lower, upper);
-    for (const double v : {x, y, lower[0] / 2 + upper[0] / 2}) {
-      const double mapped = frame.map(0, v);
-      EXPECT_LT(std::fabs(mapped), 2.0) << std::hexfloat << v;
-      EXPECT_LE(static_cast<double>(frame.lower_bound(0, v)), mapped - internal::FloatFrame::kPad);
-      EXPECT_GE(static_cast<double>(frame.upper_bound(0, v)), mapped + internal::FloatFrame::kPad);
-      EXPECT_LE(std::fabs(static_cast<double>(frame.origin(0, v)) - mapped), 0x1p-24);
-    }
-  }
-  // A box spanning more than DBL_MAX still maps into [-2, 2].
-  const double big = 0x1.fffffffffffffp+1023;
-  const internal::FloatFrame huge({-big, 0, 0}, {big, 0, 0});
-  EXPECT_LT(std::fabs(huge.map(0, big)), 2.0);
-  EXPECT_LT(std::fabs(huge.map(0, -big)), 2.0);
 }
 
 }  // namespace

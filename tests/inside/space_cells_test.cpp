@@ -64,7 +64,7 @@ Tally check_cells(const std::string& name, const Mesh& mesh, std::mt19937_64& rn
   // The reference: rays for every point, every face a candidate (brute force) for the
   // small meshes; Embree's candidates for Spot, where brute force costs a pass over all
   // 2,928 faces per probe (they are checked against brute force in candidates_test.cpp,
-  // known_truth_test.cpp and unit_frame_test.cpp).
+  // classifier_test.cpp and unit_frame_test.cpp).
   const CandidateSearch reference =
       mesh.faces.size() < 1000 ? CandidateSearch::brute_force : CandidateSearch::embree;
   const Classifier rays(

@@ -1,7 +1,8 @@
 // Mesh checks: counts, edges (boundary, non-manifold, odd, orientation), exact degenerate
 // faces and non-planar quads, components, and the classification message, on meshes built
 // here: cubes (whole, flipped, open, glued, perturbed by one ulp), an octahedron, degenerate
-// faces, bad indices and coordinates, and the same facts at scales 2^±1000 and subnormal.
+// faces, bad indices and coordinates, and the same facts at scales 2^±1000 and subnormal;
+// and the self-intersection message, in the file's numbering.
 
 #include "exactgeo/mesh/check.hpp"
 #include "mesh/hexahedron.hpp"
@@ -446,6 +447,31 @@ TEST(MeshCheck, SameFactsAtEveryScale) {
     // collinear, the fourth off the line; 4: the same with a quad's first three corners.
     EXPECT_EQ(c.degenerate_faces.first, (std::vector<std::size_t>{0, 2}));
   }
+}
+
+TEST(MeshCheck, SelfIntersectionProblemNamesThePairsInTheFilesNumbering) {
+  EXPECT_EQ(self_intersection_problem(SelfIntersections{}, {}), std::nullopt);
+  SelfIntersections found;
+  found.intersecting = {{1, 2}, {1, 5}};
+  found.undecided = {{2, 3}};
+  // OBJ numbers faces from 1.
+  EXPECT_EQ(self_intersection_problem(found, FileNumbering{1, {}}),
+            "2 pairs of faces intersect (first: 2-3, 2-6); 1 pair undecided (first: 3-4) (faces "
+            "numbered from 1, as in the file)");
+  // Mesh faces 1 and 2 are the triangles of the file's face 1: the pair is named 1-1.
+  SelfIntersections split;
+  split.intersecting = {{1, 2}};
+  EXPECT_EQ(self_intersection_problem(split, FileNumbering{0, {0, 1, 1}}),
+            "1 pair of faces intersects (first: 1-1) (faces numbered from 0; the triangles of a "
+            "split polygon by its number)");
+  // More pairs than are named.
+  SelfIntersections many;
+  for (std::size_t f = 1; f <= 7; ++f)
+    many.undecided.push_back({0, f});
+  const auto message = self_intersection_problem(many, {});
+  ASSERT_TRUE(message.has_value());
+  EXPECT_NE(message->find("7 pairs undecided"), std::string::npos) << *message;
+  EXPECT_EQ(message->find("0-6"), std::string::npos) << *message;  // only the first few
 }
 
 }  // namespace

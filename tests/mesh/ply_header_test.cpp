@@ -1,7 +1,10 @@
-// The PLY header: a line that is no PLY keyword is skipped only when it cannot be a layout
-// line written wrong. Every header line's keyword miscased or misspelt, in ASCII and both
-// binary byte orders, gives the file's mesh bit for bit or an error naming that line, never
-// a different mesh; unknown lines before properties are refused, with the line.
+// The PLY header (ply_header.hpp), read by the PLY reader: a line that is no PLY keyword is
+// skipped only when it cannot be a layout line written wrong, and said in a note. Every
+// header line's keyword miscased or misspelt, in ASCII and both binary byte orders, gives
+// the file's mesh bit for bit or an error naming that line, never a different mesh; unknown
+// lines before properties are refused, with the line; every malformed header is refused
+// naming its line. And parse_ply_header itself: the elements, properties, types (under
+// both of PLY 1.0's names, with the sizes the format gives them), where the data begins.
 
 #include <gtest/gtest.h>
 
@@ -9,18 +12,27 @@
 #include <array>
 #include <bit>
 #include <cctype>
+#include <cstddef>
 #include <cstdint>
 #include <random>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "../../mesh/src/ply_header.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/ply_reader.hpp"
+#include "mesh/mesh_io.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::mesh {
 namespace {
+
+using test_io::cat;  // the readers' fixture and PLY writers (mesh_io.hpp)
+using test_io::mesh_io;
+using test_io::ply_header;
+using test_io::put;
 
 constexpr std::array<const char*, 3> kFormats = {"ascii", "binary_little_endian",
                                                  "binary_big_endian"};
@@ -39,13 +51,6 @@ struct PlyFile {
     return s + data;
   }
 };
-
-template <class T>
-void put(std::string& out, T value, bool big_endian) {
-  auto raw = std::bit_cast<std::array<char, sizeof(T)>>(value);
-  if (big_endian != (std::endian::native == std::endian::big)) std::reverse(raw.begin(), raw.end());
-  out.append(raw.data(), raw.size());
-}
 
 /// The file in `format`, with `extra_rows` rows of one float in an element "extra" between
 /// the vertices and the face (0: no such element).
@@ -284,6 +289,144 @@ TEST(PlyHeader, MessagesSayWhatWasMeant) {
   const LoadedMesh m = read_ply(file.text(), "t.ply", {});
   ASSERT_EQ(m.notes.size(), 1u);
   EXPECT_EQ(m.notes[0].rfind("t.ply:9: skipped header line 'COMMENT from a scanner'", 0), 0u);
+}
+
+// ---------------------------------------------------------------------------------------
+// Lines of no keyword, and the header's errors
+
+TEST_F(mesh_io, PlyHeaderLinesOfNoKeywordAreSkippedAndSaid) {
+  // Exporters write lines such as "Created by ..." into the header (assimp-testmodels'
+  // Wuson.ply): nothing the data's layout depends on, so they are skipped, and listed.
+  std::string text = ply_header("ascii", 3, 1);
+  text.insert(text.find("element vertex"), "Created by an exporter 2.1\n");
+  text.insert(text.find("end_header"), "  \nunits millimetre\n");
+  text += "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const LoadedMesh m = load("wuson.ply", text);
+  EXPECT_TRUE(m.mesh.faces == std::vector<Face>{make_triangle(0, 1, 2)});
+  ASSERT_EQ(m.notes.size(), 2u);
+  EXPECT_MESSAGE_HAS(m.notes[0],
+                     "wuson.ply:3: skipped header line 'Created by an exporter 2.1': not a PLY "
+                     "keyword, and nothing the data's layout depends on");
+  EXPECT_MESSAGE_HAS(m.notes[1], "wuson.ply:11: skipped header line 'units millimetre'");
+  // The same in binary: the data still starts right after end_header.
+  std::string bin = ply_header("binary_little_endian", 3, 1);
+  bin.insert(bin.find("element vertex"), "Created by an exporter\n");
+  for (const float x : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+    put(bin, x, false);
+  put(bin, std::uint8_t{3}, false);
+  for (const std::int32_t i : {0, 1, 2})
+    put(bin, i, false);
+  const LoadedMesh b = load("wuson_bin.ply", bin);
+  EXPECT_EQ(b.mesh.vertices[1], (Point3{1, 0, 0}));
+  EXPECT_EQ(b.notes.size(), 1u);
+  EXPECT_TRUE(load("plain.ply", ply_header("ascii", 3, 1) + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+                  .notes.empty());
+}
+
+TEST_F(mesh_io, PlyHeaderErrors) {
+  EXPECT_MESSAGE_HAS(load_error("magic.ply", "PLY\n"), "magic.ply:1:", "'ply'");
+  EXPECT_MESSAGE_HAS(load_error("ver.ply", "ply\nformat ascii 2.0\n"), "ver.ply:2:", "'2.0'");
+  EXPECT_MESSAGE_HAS(load_error("fmt.ply", "ply\nformat binary 1.0\n"), "fmt.ply:2:", "'binary'");
+  EXPECT_MESSAGE_HAS(load_error("end.ply", "ply\nformat ascii 1.0\nelement vertex 0\n"),
+                     "end.ply:3:", "end_header");
+  EXPECT_MESSAGE_HAS(load_error("nofmt.ply", "ply\nelement vertex 0\nend_header\n"),
+                     "nofmt.ply:3:", "format");
+  EXPECT_MESSAGE_HAS(load_error("type.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 1\n"
+                                "property real x\n"),
+                     "type.ply:4:", "'real'");
+  EXPECT_MESSAGE_HAS(load_error("prop.ply", "ply\nformat ascii 1.0\nproperty float x\n"),
+                     "prop.ply:3:", "before any element");
+  EXPECT_MESSAGE_HAS(load_error("cnt.ply", "ply\nformat ascii 1.0\nelement vertex -1\n"),
+                     "cnt.ply:3:", "negative");
+  // An unknown line is skipped (below); the header must still end.
+  EXPECT_MESSAGE_HAS(load_error("key.ply", "ply\nformat ascii 1.0\nfoo bar\n"),
+                     "key.ply:3:", "end_header");
+  EXPECT_MESSAGE_HAS(load_error("noz.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                "property float y\nelement face 0\n"
+                                "property list uchar int vertex_indices\nend_header\n"),
+                     "noz.ply:3:", "property z is missing");
+  EXPECT_MESSAGE_HAS(load_error("flist.ply", ply_header("ascii", 3, 1, "float", "uchar float")),
+                     "flist.ply:8:", "integer type");
+  EXPECT_MESSAGE_HAS(load_error("fcount.ply", ply_header("ascii", 3, 1, "float", "float int")),
+                     "fcount.ply:8:", "count type");
+  EXPECT_MESSAGE_HAS(load_error("noface.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 0\n"
+                                "property float x\nproperty float y\n"
+                                "property float z\nend_header\n"),
+                     "noface.ply", "no 'face' element");
+  EXPECT_MESSAGE_HAS(load_error("dup.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 0\n"
+                                "property float x\nproperty float x\n"),
+                     "dup.ply:5:", "second property");
+}
+
+// ---------------------------------------------------------------------------------------
+// parse_ply_header itself
+
+TEST(PlyHeader, TheParsedHeaderGivesTheLayoutAndWhereTheDataBegins) {
+  const std::string header =
+      "ply\r\nformat binary_big_endian 1.0\ncomment made by hand\nelement vertex 3\n"
+      "property float32 x\nproperty double y\nproperty uchar z\nelement face 2\n"
+      "property list uint8 int32 vertex_indices\nend_header\n";
+  const internal::PlyHeader h = internal::parse_ply_header(header + "\x01\x02", "h.ply");
+  EXPECT_EQ(h.format, internal::PlyFormat::binary_big_endian);
+  EXPECT_EQ(h.data_offset, header.size());
+  EXPECT_EQ(h.data_line, 11u);
+  EXPECT_TRUE(h.skipped.empty());
+  ASSERT_EQ(h.elements.size(), 2u);
+  const internal::PlyElement& vertex = h.elements[0];
+  EXPECT_EQ(vertex.name, "vertex");
+  EXPECT_EQ(vertex.count, 3u);
+  EXPECT_EQ(vertex.line, 4u);
+  ASSERT_EQ(vertex.properties.size(), 3u);
+  EXPECT_EQ(vertex.properties[0].name, "x");
+  EXPECT_EQ(vertex.properties[0].type, internal::PlyType::float32);
+  EXPECT_EQ(vertex.properties[1].type, internal::PlyType::float64);
+  EXPECT_EQ(vertex.properties[2].type, internal::PlyType::uint8);
+  EXPECT_EQ(vertex.properties[2].line, 7u);
+  EXPECT_FALSE(vertex.properties[0].is_list);
+  const internal::PlyElement& face = h.elements[1];
+  EXPECT_EQ(face.count, 2u);
+  ASSERT_EQ(face.properties.size(), 1u);
+  EXPECT_TRUE(face.properties[0].is_list);
+  EXPECT_EQ(face.properties[0].name, "vertex_indices");
+  EXPECT_EQ(face.properties[0].count_type, internal::PlyType::uint8);
+  EXPECT_EQ(face.properties[0].type, internal::PlyType::int32);
+  for (const auto& [format, name] :
+       {std::pair{internal::PlyFormat::ascii, "ply ascii"},
+        std::pair{internal::PlyFormat::binary_little_endian, "ply binary little endian"},
+        std::pair{internal::PlyFormat::binary_big_endian, "ply binary big endian"}}) {
+    EXPECT_EQ(internal::ply_format_name(format), name);
+  }
+}
+
+TEST(PlyHeader, EveryScalarTypeUnderBothNamesWithItsSize) {
+  // PLY 1.0's eight scalar types, each under its first name and its sized one.
+  struct Scalar {
+    const char* name;
+    const char* sized;
+    std::size_t bytes;
+    bool integer;
+  };
+  const Scalar scalars[] = {{"char", "int8", 1, true},      {"uchar", "uint8", 1, true},
+                            {"short", "int16", 2, true},    {"ushort", "uint16", 2, true},
+                            {"int", "int32", 4, true},      {"uint", "uint32", 4, true},
+                            {"float", "float32", 4, false}, {"double", "float64", 8, false}};
+  for (const Scalar& scalar : scalars) {
+    for (const char* spelling : {scalar.name, scalar.sized}) {
+      const std::string header =
+          cat("ply\nformat ascii 1.0\nelement thing 1\nproperty ", spelling, " t\nend_header\n");
+      const internal::PlyHeader h = internal::parse_ply_header(header, "t.ply");
+      ASSERT_EQ(h.elements.size(), 1u);
+      ASSERT_EQ(h.elements[0].properties.size(), 1u);
+      const internal::PlyType type = h.elements[0].properties[0].type;
+      EXPECT_EQ(internal::ply_type_size(type), scalar.bytes) << spelling;
+      EXPECT_EQ(internal::ply_type_name(type), scalar.name) << spelling;
+      EXPECT_EQ(internal::ply_type_is_integer(type), scalar.integer) << spelling;
+    }
+  }
 }
 
 }  // namespace

@@ -1,31 +1,27 @@
-// The parts of a polygon's triangulation, tested directly (mesh/src/, internal): the
-// certificate that triangles tile a polygon's projection, in both forms (sweeps, and pair
-// by pair for few corners), on hand-made triangle sets it must refuse (overlapping ears
-// of a crossing polygon, a flipped triangle, a boundary chain that is not the polygon's,
-// loops wound around twice, a bridge across an edge) and ones it must accept; the
-// sweep that finds a walk's region and its turn; and the sweep triangulation, which must
-// take every family of polygons the tests generate without the ear clipping fallback.
+// The plane sweep that finds whether a polygon's walk bounds a region in one projection
+// and how it turns (polygon_sweep.hpp, internal): walks whose edges touch or overlap
+// (bridges across a hole, a spike's foot inside an edge, edges on one line that overlap,
+// bridges that cross) are refused, a keyhole and a spike walked there and back are taken;
+// and its exact test of two segments against an oracle in rationals, on every pair of
+// segments of a small integer grid's points, whatever the order given.
 
+#include "../../mesh/src/polygon_sweep.hpp"
+
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <optional>
 #include <random>
-#include <string>
 #include <vector>
 
-#include "../../mesh/src/polygon_certificate.hpp"
-#include "../../mesh/src/polygon_monotone.hpp"
-#include "../../mesh/src/polygon_sweep.hpp"
 #include "../../mesh/src/polygon_walk.hpp"
-#include "support/polygon_oracle.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::mesh::internal {
 namespace {
 
-using testing::Polygon2;
+using Point2 = std::array<double, 2>;
 
 /// Points of the (x, y) plane at z = 0, seen along z (axis 2).
 std::vector<Point3> in_plane(const std::vector<std::array<double, 2>>& points) {
@@ -35,123 +31,12 @@ std::vector<Point3> in_plane(const std::vector<std::array<double, 2>>& points) {
   return vertices;
 }
 
-std::vector<Face> triangles(const std::vector<std::array<VertexIndex, 3>>& corners) {
-  std::vector<Face> faces;
-  for (const auto& [a, b, c] : corners)
-    faces.push_back(make_triangle(a, b, c));
-  return faces;
-}
-
 /// region_turn for these corners along z.
 std::optional<Sign> turn_of(const std::vector<VertexIndex>& corners,
                             const std::vector<Point3>& vertices) {
   const PolygonWalk walk = walk_of(corners);
   const Projection plane(2);
   return region_turn(walk, sweep_order(walk, vertices, plane), vertices, plane);
-}
-
-TEST(PolygonCertificate, OverlappingEarsOfACrossingPolygonAreRefused) {
-  // The polygon of Polygons.EarsThatOverlapAreCaught: every triangle turns alike, the
-  // boundary chain is the polygon's, and (1, 2, 3) overlaps (0, 1, 3); its edges cross.
-  const std::vector<Point3> v = in_plane({{0, 0}, {20, 17}, {0, 12}, {6, 13}, {0, 16}});
-  const std::vector<VertexIndex> corners{0, 1, 2, 3, 4};
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 3, 4}}), v, 2));
-  EXPECT_EQ(turn_of(corners, v), std::nullopt);
-}
-
-TEST(PolygonCertificate, ATilingIsAcceptedAndAFlippedTriangleRefused) {
-  // A dart: corner 3 is reflex. The fan from corner 0 has the boundary chain and the
-  // count right, but (0, 2, 3) turns the other way.
-  const std::vector<Point3> v = in_plane({{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}});
-  const std::vector<VertexIndex> corners{0, 1, 2, 3, 4};
-  EXPECT_TRUE(triangles_tile_polygon(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 3, 4}}), v, 2));
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}), v, 2));
-  // Walked the other way round: the same triangles reversed, turning clockwise.
-  const std::vector<VertexIndex> backwards{4, 3, 2, 1, 0};
-  EXPECT_EQ(turn_of(backwards, v), Sign::negative);
-  EXPECT_TRUE(
-      triangles_tile_polygon(backwards, triangles({{3, 2, 1}, {3, 1, 0}, {4, 3, 0}}), v, 2));
-  EXPECT_FALSE(
-      triangles_tile_polygon(backwards, triangles({{1, 2, 3}, {0, 1, 3}, {0, 3, 4}}), v, 2));
-  // Seen along x the dart is a segment: no region.
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 3, 4}}), v, 0));
-}
-
-TEST(PolygonCertificate, ABoundaryChainThatIsNotThePolygonsIsRefused) {
-  const std::vector<Point3> v = in_plane({{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}, {0, 4}});
-  const std::vector<VertexIndex> corners{0, 1, 2, 3, 4};
-  // Vertex 5 lies where corner 4 does: the same tiling in the plane, but its boundary
-  // runs through a vertex that is not the polygon's.
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 3, 5}}), v, 2));
-  // Two triangles over one diagonal and a third over the other: the chains differ.
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 1, 3}}), v, 2));
-  // One triangle too few, though each is fine.
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{1, 2, 3}, {0, 1, 3}}), v, 2));
-}
-
-TEST(PolygonCertificate, LoopsWoundAroundTwiceAreRefused) {
-  // The square [0, 8]^2 and a triangle inside it turning the same way, joined at corner
-  // 0. The fan from corner 4 over the square and the inner triangle: n - 2 triangles,
-  // each counter-clockwise, whose boundary is the walk's; but the inner triangle is
-  // covered twice, where the walk winds around twice.
-  const std::vector<Point3> v = in_plane({{0, 0}, {8, 0}, {8, 8}, {0, 8}, {4, 2}, {2, 4}});
-  const std::vector<VertexIndex> nested{0, 1, 2, 3, 0, 4, 5};
-  EXPECT_EQ(turn_of(nested, v), std::nullopt);
-  EXPECT_FALSE(triangles_tile_polygon(
-      nested, triangles({{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 4, 5}}), v, 2));
-  // The inner loop turned round is a hole touching the outside at corner 0: tiled.
-  const std::vector<VertexIndex> notched{0, 1, 2, 3, 0, 5, 4};
-  EXPECT_EQ(turn_of(notched, v), Sign::positive);
-  EXPECT_TRUE(triangles_tile_polygon(
-      notched, triangles({{0, 1, 4}, {1, 2, 4}, {2, 5, 4}, {2, 3, 5}, {3, 0, 5}}), v, 2));
-}
-
-TEST(PolygonCertificate, AFigureEightIsRefusedForItsTriangleCount) {
-  // A square and a triangle beside it, joined at corner 2: three triangles tile it, two
-  // fewer than n - 2, which ear clipping (and so every reader so far) never makes.
-  const std::vector<Point3> v = in_plane({{0, 0}, {8, 0}, {8, 8}, {0, 8}, {16, 8}, {8, 16}});
-  const std::vector<VertexIndex> corners{0, 1, 2, 4, 5, 2, 3};
-  EXPECT_EQ(turn_of(corners, v), Sign::positive);
-  EXPECT_FALSE(triangles_tile_polygon(corners, triangles({{0, 1, 2}, {0, 2, 3}, {2, 4, 5}}), v, 2));
-  // The sweep triangulation declines it (corner 2 has two ways in and two out).
-  const PolygonWalk walk = walk_of(corners);
-  const Projection plane(2);
-  std::vector<Face> out;
-  EXPECT_FALSE(
-      triangulate_by_sweep(walk, sweep_order(walk, v, plane), v, plane, Sign::positive, {}, out));
-  EXPECT_TRUE(out.empty());
-}
-
-TEST(PolygonCertificate, BothFormsRefuseABridgeThatCrossesAnEdge) {
-  // The square [0, 8]^2 less the hole [3, 5] x [2, 5], tiled by 8 triangles, none of them
-  // on a bridge. As a keyhole with its bridge from (0, 0) to (3, 2) the walk is tiled by
-  // them; with its bridge to (5, 5), across the hole's edge at (3, 3), it is refused by
-  // the sweep and by the pairwise form alike, though the triangles still tile the region.
-  const std::vector<Point3> v =
-      in_plane({{0, 0}, {8, 0}, {8, 8}, {0, 8}, {3, 2}, {3, 5}, {5, 5}, {5, 2}});
-  const std::vector<Face> tiling = triangles(
-      {{0, 1, 7}, {0, 7, 4}, {1, 2, 6}, {1, 6, 7}, {2, 3, 5}, {2, 5, 6}, {3, 0, 4}, {3, 4, 5}});
-  const Projection plane(2);
-  const std::vector<VertexIndex> beside{0, 1, 2, 3, 0, 4, 5, 6, 7, 4};
-  const std::vector<VertexIndex> across{0, 1, 2, 3, 0, 6, 7, 4, 5, 6};
-  EXPECT_TRUE(triangles_tile_polygon(beside, tiling, v, 2));
-  EXPECT_TRUE(few_triangles_tile(beside, tiling, v, plane, Sign::positive));
-  EXPECT_FALSE(triangles_tile_polygon(across, tiling, v, 2));
-  EXPECT_FALSE(few_triangles_tile(across, tiling, v, plane, Sign::positive));
-  // The pairwise form refuses what the sweep form refuses in the other tests, too.
-  const std::vector<Point3> dart = in_plane({{0, 0}, {4, 0}, {4, 4}, {2, 1}, {0, 4}});
-  const std::vector<VertexIndex> corners{0, 1, 2, 3, 4};
-  EXPECT_TRUE(few_triangles_tile(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 3, 4}}), dart, plane,
-                                 Sign::positive));
-  EXPECT_FALSE(few_triangles_tile(corners, triangles({{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}), dart,
-                                  plane, Sign::positive));
-  EXPECT_FALSE(few_triangles_tile(corners, triangles({{1, 2, 3}, {0, 1, 3}, {0, 1, 3}}), dart,
-                                  plane, Sign::positive));
-  const std::vector<Point3> square = in_plane({{0, 0}, {8, 0}, {8, 8}, {0, 8}, {4, 2}, {2, 4}});
-  EXPECT_FALSE(
-      few_triangles_tile(std::vector<VertexIndex>{0, 1, 2, 3, 0, 4, 5},
-                         triangles({{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 4, 5}}), square,
-                         plane, Sign::positive));
 }
 
 TEST(PolygonSweep, EdgesThatTouchOrOverlapAreRefused) {
@@ -192,58 +77,61 @@ TEST(PolygonSweep, EdgesThatTouchOrOverlapAreRefused) {
   EXPECT_EQ(turn_of({0, 1, 2, 3, 10, 11, 8, 9, 10, 3, 0, 4, 5, 6, 7, 4}, x), Sign::positive);
 }
 
-/// Every family of polygons the tests generate, of about n corners.
-std::vector<std::pair<std::string, Polygon2>> family_polygons(std::mt19937_64& rng, int n) {
-  return {{"convex", testing::convex_polygon(rng, n)},
-          {"star", testing::star_polygon(rng, n, false)},
-          {"star with corners inside edges", testing::star_polygon(rng, n, true)},
-          {"comb", testing::comb_polygon(rng, std::max(2, n / 4))},
-          {"star with holes", testing::holed_star_polygon(rng, n)}};
+/// Whether the closed segments [a0, a1] and [b0, b1] of the plane (neither of zero length)
+/// share a point other than an endpoint of both, in rationals: their lines' meeting point
+/// by Cramer's rule, or, on one line, the overlap of their parameter intervals.
+bool meet_improperly_oracle(const Point2& a0, const Point2& a1, const Point2& b0,
+                            const Point2& b1) {
+  const auto q = [](double x) { return mpq_class(x); };
+  const mpq_class dax = q(a1[0]) - q(a0[0]), day = q(a1[1]) - q(a0[1]);
+  const mpq_class dbx = q(b1[0]) - q(b0[0]), dby = q(b1[1]) - q(b0[1]);
+  const mpq_class ex = q(b0[0]) - q(a0[0]), ey = q(b0[1]) - q(a0[1]);
+  const mpq_class det = dax * dby - day * dbx;
+  if (det != 0) {
+    // a0 + s da = b0 + t db.
+    const mpq_class s = (ex * dby - ey * dbx) / det, t = (ex * day - ey * dax) / det;
+    if (s < 0 || s > 1 || t < 0 || t > 1) return false;
+    const bool end_of_a = s == 0 || s == 1, end_of_b = t == 0 || t == 1;
+    return !(end_of_a && end_of_b);
+  }
+  if (ex * day - ey * dax != 0) return false;  // parallel, on two lines
+  // One line: b's ends at parameters of a's, a = [0, 1]; the overlap is a point or more.
+  const mpq_class len = dax * dax + day * day;
+  const mpq_class t0 = (ex * dax + ey * day) / len;
+  const mpq_class t1 = t0 + (dbx * dax + dby * day) / len;
+  const mpq_class lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+  const mpq_class from = lo > 0 ? lo : mpq_class(0), to = hi < 1 ? hi : mpq_class(1);
+  if (from > to) return false;
+  return from < to;  // more than one point; a single common point is an end of both
 }
 
-TEST(PolygonSweep, EveryFamilyIsTriangulatedWithoutTheFallback) {
-  std::mt19937_64 rng =
-      testing::seeded_engine("PolygonSweep.EveryFamilyIsTriangulatedWithoutTheFallback");
-  // (Polygons.LargePolygonsOfEveryFamilyBecomeTrianglesThatTileThem loads them up to 10^5
-  // corners, where the quadratic fallback would take minutes.)
-  for (const int n : {10, 1000, 10000}) {
-    for (const auto& [name, polygon] : family_polygons(rng, n)) {
-      const std::vector<Point3> v = in_plane(polygon.points);
-      for (const bool backwards : {false, true}) {
-        // Along z in the plane z = 0; along x in the plane x = 0 with y and z taking x
-        // and y swapped: a mirror image, which turns the other way.
-        for (const int axis : {2, 0}) {
-          std::vector<Point3> seen = v;
-          if (axis == 0) {
-            for (Point3& p : seen)
-              p = {0.0, p[1], p[0]};  // seen along x: (u, v) = (y, z)
-          }
-          const bool clockwise = backwards != (axis == 0);
-          std::vector<VertexIndex> corners(polygon.cycle.begin(), polygon.cycle.end());
-          if (backwards) std::reverse(corners.begin(), corners.end());
-          const std::string what = name + " of " + std::to_string(corners.size()) +
-                                   " corners along axis " + std::to_string(axis) +
-                                   (backwards ? ", walked backwards" : "");
-          const PolygonWalk walk = walk_of(corners);
-          const Projection plane(axis);
-          const std::vector<std::uint32_t> order = sweep_order(walk, seen, plane);
-          std::vector<std::uint32_t> below;
-          const std::optional<Sign> turn = region_turn(walk, order, seen, plane, &below);
-          ASSERT_EQ(turn, clockwise ? Sign::negative : Sign::positive) << what;
-          // With the certificate's record of the edge below each corner, as the reader
-          // runs it, and searching its own status.
-          std::vector<Face> recorded;
-          ASSERT_TRUE(triangulate_by_sweep(walk, order, seen, plane, *turn, below, recorded))
-              << what;
-          EXPECT_EQ(recorded.size() + 2, corners.size()) << what;
-          EXPECT_TRUE(triangles_tile_polygon(corners, recorded, seen, axis)) << what;
-          std::vector<Face> searched;
-          ASSERT_TRUE(triangulate_by_sweep(walk, order, seen, plane, *turn, {}, searched)) << what;
-          EXPECT_TRUE(triangles_fit(walk, searched, seen, plane, *turn)) << what;
-        }
-      }
-    }
+TEST(PolygonSweep, SegmentsMeetImproperlyAsTheOracleSays) {
+  // Segments between the points of a 4 x 4 grid: crossings, ends inside other segments,
+  // overlaps and touching ends in every arrangement.
+  auto rng = testing::seeded_engine("mesh.polygon_sweep.segments");
+  std::uniform_int_distribution<int> coordinate(0, 3);
+  const Projection plane(2);
+  int improper = 0, proper = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::array<Point2, 4> p;
+    for (Point2& q : p)
+      q = {double(coordinate(rng)), double(coordinate(rng))};
+    if (p[0] == p[1] || p[2] == p[3]) continue;
+    const bool want = meet_improperly_oracle(p[0], p[1], p[2], p[3]);
+    // Each segment from its earlier end in sweep order to its later one.
+    std::array<Point3, 4> v;
+    for (std::size_t k = 0; k < 4; ++k)
+      v[k] = {p[k][0], p[k][1], 0.0};
+    if (plane.before(v[1], v[0])) std::swap(v[0], v[1]);
+    if (plane.before(v[3], v[2])) std::swap(v[2], v[3]);
+    ASSERT_EQ(segments_meet_improperly(v[0], v[1], v[2], v[3], plane), want)
+        << "(" << p[0][0] << ", " << p[0][1] << ")-(" << p[1][0] << ", " << p[1][1] << ") and ("
+        << p[2][0] << ", " << p[2][1] << ")-(" << p[3][0] << ", " << p[3][1] << ")";
+    ASSERT_EQ(segments_meet_improperly(v[2], v[3], v[0], v[1], plane), want);
+    (want ? improper : proper) += 1;
   }
+  EXPECT_GT(improper, 1000);
+  EXPECT_GT(proper, 1000);
 }
 
 }  // namespace

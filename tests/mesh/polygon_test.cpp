@@ -1,14 +1,16 @@
-// Faces of more than four corners. A planar simple polygon (concave, with corners inside
-// straight edges, with a hole written through a bridge) becomes triangles that cover it
-// exactly: checked against exact rational oracles that know nothing of the reader (every
-// triangle turns as the polygon does, their areas add up to the polygon's, and at random
-// points the number of triangles covering the point is the polygon's winding number
-// there), for polygons in three different planes and at 2^0, 2^+-1000 and subnormal
-// scales. Large polygons of every family (convex, star-shaped, with corners inside
-// straight edges, comb-shaped, with many holes through bridges), from 10 to 10^5 corners,
-// are checked the same way. A polygon off its plane by one coordinate step is split over
-// its projection, with a note; a self-crossing one is refused, naming the file's face, or
-// made a fan on request; every message names faces as the file numbers them.
+// Faces of more than four corners, as the readers take them (polygon.hpp). A planar simple
+// polygon (concave, with corners inside straight edges, with a hole written through a
+// bridge) becomes triangles that cover it exactly: checked against exact rational oracles
+// that know nothing of the reader (every triangle turns as the polygon does, their areas
+// add up to the polygon's, and at random points the number of triangles covering the point
+// is the polygon's winding number there), for polygons in three different planes and at
+// 2^0, 2^+-1000 and subnormal scales. Large polygons of every family (convex, star-shaped,
+// with corners inside straight edges, comb-shaped, with many holes through bridges), from
+// 10 to 10^5 corners, are checked the same way. A polygon off its plane by one coordinate
+// step is split over its projection, with a note; a self-crossing one is refused, naming
+// the file's face, or made a fan on request; every message names faces as the file numbers
+// them; every reader splits. And FileFaces directly: faces kept or split in place, the
+// file's face numbers, zero-based indices checked, a file without faces refused.
 
 #include <gtest/gtest.h>
 
@@ -23,15 +25,23 @@
 #include <utility>
 #include <vector>
 
+#include "../../mesh/src/polygon.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/obj_reader.hpp"
 #include "exactgeo/mesh/off_reader.hpp"
+#include "mesh/mesh_io.hpp"
+#include "mesh/polygon_tiling.hpp"
 #include "support/polygon_oracle.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::mesh {
 namespace {
+
+using test_io::mesh_io;  // the readers' fixture and PLY writer (mesh_io.hpp)
+using test_io::put;
+using test_io::to_ply;
+using test_polygons::expect_tiles;
 
 using testing::keyhole_polygon;
 using testing::Point2;
@@ -87,74 +97,6 @@ std::vector<std::array<std::uint32_t, 3>> triangles_of(const Mesh& mesh) {
     triangles.push_back({f.corners[0], f.corners[1], f.corners[2]});
   }
   return triangles;
-}
-
-/// The certificate that `triangles` tile the polygon (in its own (x, y) coordinates):
-/// each turns as the polygon does, strictly; their areas add up; at random points
-/// (dyadic, off every edge) the triangles covering the point number the polygon's
-/// winding number there.
-void expect_tiles(const Polygon2& polygon,
-                  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::mt19937_64& rng,
-                  const std::string& what, int samples = 400) {
-  SCOPED_TRACE(what);
-  ASSERT_EQ(triangles.size(), polygon.cycle.size() - 2);
-  for (const auto& t : triangles) {
-    ASSERT_EQ(testing::orientation_oracle(polygon.points[t[0]], polygon.points[t[1]],
-                                          polygon.points[t[2]]),
-              Sign::positive);  // the generators' polygons turn counter-clockwise
-  }
-  ASSERT_TRUE(testing::areas_add_up(polygon, triangles));
-  Point2 lower = polygon.points[0];
-  Point2 upper = lower;
-  for (const Point2& q : polygon.points) {
-    for (int k = 0; k < 2; ++k) {
-      lower[k] = std::min(lower[k], q[k]);
-      upper[k] = std::max(upper[k], q[k]);
-    }
-  }
-  // Each triangle's box: a point outside it is neither inside the triangle nor on a side
-  // (exact comparisons), which spares the rational orientations for most triangles.
-  std::vector<std::array<Point2, 2>> boxes;
-  for (const auto& t : triangles) {
-    std::array<Point2, 2> box{polygon.points[t[0]], polygon.points[t[0]]};
-    for (const std::uint32_t c : t) {
-      for (int k = 0; k < 2; ++k) {
-        box[0][k] = std::min(box[0][k], polygon.points[c][k]);
-        box[1][k] = std::max(box[1][k], polygon.points[c][k]);
-      }
-    }
-    boxes.push_back(box);
-  }
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  int checked = 0;
-  int inside = 0;
-  for (int sample = 0; sample < samples; ++sample) {
-    Point2 q;
-    for (int k = 0; k < 2; ++k)  // 2^-12 steps: exact sums with the integers (below 2^40)
-      q[k] =
-          lower[k] + std::ldexp(std::floor(std::ldexp(unit(rng), 12) * (upper[k] - lower[k])), -12);
-    const std::optional<int> winding = testing::winding_number_oracle(polygon, q);
-    if (!winding) continue;
-    int covering = 0;
-    bool on_a_side = false;
-    for (std::size_t i = 0; i < triangles.size(); ++i) {
-      const auto& box = boxes[i];
-      if (q[0] < box[0][0] || q[0] > box[1][0] || q[1] < box[0][1] || q[1] > box[1][1]) continue;
-      const auto& t = triangles[i];
-      const Point2 &a = polygon.points[t[0]], &b = polygon.points[t[1]], &c = polygon.points[t[2]];
-      const Sign s0 = testing::orientation_oracle(a, b, q);
-      const Sign s1 = testing::orientation_oracle(b, c, q);
-      const Sign s2 = testing::orientation_oracle(c, a, q);
-      on_a_side = on_a_side || s0 == Sign::zero || s1 == Sign::zero || s2 == Sign::zero;
-      covering += s0 == Sign::positive && s1 == Sign::positive && s2 == Sign::positive;
-    }
-    if (on_a_side) continue;
-    ASSERT_EQ(covering, *winding) << "at (" << q[0] << ", " << q[1] << ")";
-    ++checked;
-    inside += covering;
-  }
-  EXPECT_GT(checked, samples * 3 / 4);
-  EXPECT_GT(inside, 0);
 }
 
 TEST(Polygons, PlanarPolygonsBecomeTrianglesThatTileThem) {
@@ -479,6 +421,101 @@ TEST(Polygons, MessagesNameTheFilesFaces) {
       closed_surface_problem(check_mesh(plain.mesh), plain).value_or("");
   EXPECT_NE(plain_problem.find("(first: 1)"), std::string::npos) << plain_problem;
   EXPECT_EQ(plain_problem.find("split polygon"), std::string::npos) << plain_problem;
+}
+
+// ---------------------------------------------------------------------------------------
+// In every reader
+
+TEST_F(mesh_io, PolygonsAreSplitInEveryReader) {
+  // A convex pentagon and a concave hexagon, flat: triangles, no option needed. (Their
+  // tiling is checked against exact oracles above.)
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nf 1 2 3 4 5\n";
+  const LoadedMesh pentagon = load("p.obj", obj);
+  EXPECT_EQ(pentagon.split_polygons, 1u);
+  EXPECT_EQ(pentagon.mesh.faces.size(), 3u);
+
+  const std::string off = "OFF\n5 2 0\n0 0 0\n1 0 0\n2 1 0\n1 2 0\n0 1 0\n3 0 1 2\n5 0 1 2 3 4\n";
+  const LoadedMesh two = load("p.off", off);
+  EXPECT_EQ(two.mesh.faces.size(), 4u);
+  EXPECT_EQ(two.numbering.file_faces, (std::vector<std::size_t>{0, 1, 1, 1}));
+  // The pentagram's edges cross: refused at its line, with the way out.
+  const std::string star = "OFF\n5 1 0\n0 10 0\n6 -8 0\n-10 3 0\n10 3 0\n-6 -8 0\n5 0 1 2 3 4\n";
+  EXPECT_MESSAGE_HAS(load_error("s.off", star), "s.off:8: face 0:", "cross", "--split-polygons");
+
+  Mesh mesh;
+  // An L: corner 1 is its inner corner; seen from corner 0, the end of an arm, the
+  // other arm is hidden behind it.
+  mesh.vertices = {{4, 1, 0}, {1, 1, 0}, {1, 4, 0}, {0, 4, 0}, {0, 0, 0}, {4, 0, 0}};
+  mesh.faces = {make_triangle(0, 1, 5)};
+  std::string ply = to_ply(mesh, {"binary_little_endian"});
+  // Turn the triangle into the hexagon 0 1 2 3 4 5: count byte 6, then three more indices.
+  const std::size_t face_at = ply.size() - (1 + 3 * 4 + 2);
+  ply[face_at] = 6;
+  std::string extra;
+  for (const std::int32_t i : {2, 3, 4})
+    put(extra, i, false);
+  ply.insert(face_at + 1 + 2 * 4, extra);  // after corners 0 1: 0 1 2 3 4 5
+  const LoadedMesh hex = load("h.ply", ply);
+  EXPECT_EQ(hex.split_polygons, 1u);
+  EXPECT_EQ(hex.mesh.faces.size(), 4u);
+  // Not the fan from corner 0, whose first two triangles lie outside the L.
+  for (const Face& f : hex.mesh.faces) {
+    EXPECT_FALSE(f == make_triangle(0, 1, 2) || f == make_triangle(0, 2, 3));
+  }
+  // A binary file has no lines: the face is named alone.
+  std::string crossed = ply;
+  std::swap(crossed[face_at + 1 + 2 * 4], crossed[face_at + 1 + 4 * 4]);  // 0 1 4 3 2 5
+  EXPECT_MESSAGE_HAS(load_error("x.ply", crossed), "x.ply: face 0:", "cross", "--split-polygons");
+}
+
+// ---------------------------------------------------------------------------------------
+// The readers' faces, directly (polygon.hpp)
+
+TEST(Polygons, FileFacesKeepTrianglesAndQuadsAndSplitTheRestInPlace) {
+  LoadedMesh out;
+  out.mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {3, 1, 0}, {1, 2, 0}, {-1, 1, 0}};
+  internal::FileFaces faces;
+  const std::vector<VertexIndex> two{0, 1};
+  EXPECT_EQ(faces.add(two, 1, out), "a face needs at least 3 corners, this one has 2");
+  const std::vector<VertexIndex> triangle{0, 1, 2}, pentagon{0, 1, 2, 3, 4}, quad{0, 1, 2, 3};
+  EXPECT_EQ(faces.add(triangle, 2, out), std::nullopt);
+  EXPECT_EQ(faces.add(pentagon, 3, out), std::nullopt);
+  EXPECT_EQ(faces.add(quad, 4, out), std::nullopt);
+  faces.finish(out, "f.off", {});
+  // The pentagon's three triangles where it stood, between the triangle and the quad.
+  ASSERT_EQ(out.mesh.faces.size(), 5u);
+  EXPECT_TRUE(out.mesh.faces[0] == make_triangle(0, 1, 2));
+  EXPECT_TRUE(out.mesh.faces[4] == make_quad(0, 1, 2, 3));
+  EXPECT_EQ(out.split_polygons, 1u);
+  EXPECT_EQ(out.numbering.file_faces, (std::vector<std::size_t>{0, 1, 1, 1, 2}));
+  Polygon2 polygon;
+  for (const Point3& v : out.mesh.vertices)
+    polygon.points.push_back({v[0], v[1]});
+  polygon.cycle = {0, 1, 2, 3, 4};
+  std::vector<std::array<std::uint32_t, 3>> split;
+  for (std::size_t f = 1; f < 4; ++f) {
+    const Face& t = out.mesh.faces[f];
+    split.push_back({t.corners[0], t.corners[1], t.corners[2]});
+  }
+  auto rng = testing::seeded_engine("Polygons.FileFaces");
+  expect_tiles(polygon, split, rng, "the pentagon");
+}
+
+TEST(Polygons, ZeroBasedIndicesAndFilesWithoutFaces) {
+  EXPECT_EQ(internal::zero_based_index_problem(0, 3), std::nullopt);
+  EXPECT_EQ(internal::zero_based_index_problem(2, 3), std::nullopt);
+  EXPECT_EQ(internal::zero_based_index_problem(3, 3),
+            "vertex index 3 is out of range: valid: 0..2");
+  EXPECT_EQ(internal::zero_based_index_problem(-1, 3),
+            "vertex index -1 is out of range: valid: 0..2");
+  EXPECT_EQ(internal::zero_based_index_problem(0, 0),
+            "vertex index 0 is out of range: the file has no vertices");
+  LoadedMesh none;
+  EXPECT_EQ(error_of([&] { internal::require_faces(none, "n.off"); }),
+            "n.off: the mesh has no faces");
+  none.mesh.vertices = {{0, 0, 0}};
+  EXPECT_EQ(error_of([&] { internal::require_faces(none, "n.off"); }),
+            "n.off: the mesh has no faces: 1 vertex only, a point cloud (or lines), not a surface");
 }
 
 }  // namespace

@@ -9,25 +9,50 @@
 // number of faces per edge; the default rule is nonzero, or parity where faces are not
 // oriented alike.
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
+#include <ostream>
+#include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/fill_rule.hpp"
+#include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/load.hpp"
+#include "exactgeo/mesh/off_reader.hpp"
+#include "exactgeo/predicates/bilinear_patch.hpp"
+#include "exactgeo/predicates/ray_directions.hpp"
+#include "exactgeo/predicates/ray_triangle.hpp"
+#include "inside/polycube.hpp"
+#include "inside/scaled_cube.hpp"
+#include "mesh/hexahedron.hpp"
 #include "support/generators.hpp"
 #include "support/hexahedron.hpp"
+#include "support/polygon_oracle.hpp"
+#include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
+#include "support/solid_angle_oracle.hpp"
 
-namespace exactgeo::inside {
+namespace exactgeo::inside::winding {
 namespace {
 
 using mesh::Mesh;
@@ -90,18 +115,6 @@ constexpr std::array kRules{FillRule::nonzero, FillRule::parity, FillRule::posit
 std::string text(const Point3& p) {
   return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) +
          ")";
-}
-
-TEST(FillRule, NamesRoundTripAndOthersAreRefused) {
-  for (const FillRule rule : kRules)
-    EXPECT_EQ(parse_fill_rule(to_string(rule)), rule);
-  EXPECT_EQ(parse_fill_rule("even-odd"), std::nullopt);
-  EXPECT_EQ(parse_fill_rule(""), std::nullopt);
-  EXPECT_TRUE(holds(FillRule::nonzero, -2));
-  EXPECT_FALSE(holds(FillRule::parity, -2));
-  EXPECT_TRUE(holds(FillRule::parity, -3));
-  EXPECT_FALSE(holds(FillRule::positive, -1));
-  EXPECT_TRUE(holds(FillRule::positive, 2));
 }
 
 /// Random boxes on a small integer grid (overlapping, nested, duplicated, sharing faces,
@@ -242,7 +255,7 @@ TEST(WindingNumber, UnorientedMeshesAreForParityOnly) {
 }
 
 /// An open box is refused by parity, as not closed; the winding rules take it as an open
-/// surface (tests/inside/open_surface_test.cpp checks its labels).
+/// surface (the open_surface section below checks its labels).
 TEST(WindingNumber, OpenMeshesAreRefusedByParityOnly) {
   Mesh mesh = boxes_mesh({{{0, 0, 0}, {1, 1, 1}, 1}});
   mesh.faces.pop_back();
@@ -266,4 +279,4 @@ TEST(WindingNumber, OpenMeshesAreRefusedByParityOnly) {
 }
 
 }  // namespace
-}  // namespace exactgeo::inside
+}  // namespace exactgeo::inside::winding

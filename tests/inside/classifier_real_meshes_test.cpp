@@ -4,26 +4,50 @@
 // patches, points one ulp off them); the meshes in negative/ are refused with the right
 // reasons.
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <optional>
+#include <ostream>
 #include <random>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
+#include "exactgeo/mesh/off_reader.hpp"
+#include "exactgeo/predicates/bilinear_patch.hpp"
+#include "exactgeo/predicates/ray_directions.hpp"
+#include "exactgeo/predicates/ray_triangle.hpp"
+#include "inside/polycube.hpp"
+#include "inside/scaled_cube.hpp"
+#include "mesh/hexahedron.hpp"
+#include "support/generators.hpp"
 #include "support/hexahedron.hpp"
+#include "support/polygon_oracle.hpp"
+#include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
+#include "support/solid_angle_oracle.hpp"
 
-namespace exactgeo::inside {
+namespace exactgeo::inside::real_meshes {
 namespace {
 
 using mesh::Face;
@@ -245,4 +269,4 @@ TEST(RealMeshes, SharedNegativeMeshesAreRefusedForTheRightReason) {
 }
 
 }  // namespace
-}  // namespace exactgeo::inside
+}  // namespace exactgeo::inside::real_meshes

@@ -1,3 +1,9 @@
+// The exact classifier (classifier.hpp) against truths that do not come from it, one file
+// per theme: this one (known truth), classifier_winding_test.cpp (winding numbers and fill
+// rules), classifier_open_surface_test.cpp, classifier_zero_area_test.cpp,
+// classifier_unused_vertices_test.cpp, classifier_polygon_faces_test.cpp and
+// classifier_real_meshes_test.cpp.
+//
 // Point-in-volume classification against solids whose truth is known exactly from their
 // construction: random polycubes (voxel occupancy decides every half-integer lattice
 // point), the same split into triangles, moved to skew patches by dyadic offsets (voxel
@@ -19,8 +25,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <ostream>
 #include <random>
@@ -28,21 +36,30 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
+#include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
+#include "exactgeo/mesh/load.hpp"
+#include "exactgeo/mesh/off_reader.hpp"
 #include "exactgeo/predicates/bilinear_patch.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "exactgeo/predicates/ray_triangle.hpp"
 #include "inside/polycube.hpp"
+#include "inside/scaled_cube.hpp"
 #include "mesh/hexahedron.hpp"
+#include "support/generators.hpp"
+#include "support/hexahedron.hpp"
+#include "support/polygon_oracle.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
+#include "support/solid_angle_oracle.hpp"
 
-namespace exactgeo::inside {
+namespace exactgeo::inside::known_truth {
 namespace {
 
 using mesh::Face;
@@ -1102,4 +1119,4 @@ TEST(KnownTruthSolid, TetrahedronOfTriangles) {
 }
 
 }  // namespace
-}  // namespace exactgeo::inside
+}  // namespace exactgeo::inside::known_truth
