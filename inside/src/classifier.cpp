@@ -84,8 +84,8 @@ struct Classifier::State {
   std::optional<internal::SpaceCells> cells;
   /// The vertices the exact rays see: the mesh's, or the mesh's brought to magnitude 1.
   internal::UnitFrame frame;
-  /// The boundary of an open surface (empty for a closed one), taken before the faces of
-  /// zero area were dropped, so that slivers closing T-junctions leave none.
+  /// The boundary of an open surface (empty for a closed one): the kept faces', the
+  /// surface being open with the faces of zero area counted (Classifier's constructor).
   std::vector<BoundaryEdge> boundary;
 
   PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
@@ -189,8 +189,15 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   }
   State& s = *state_;
   // Parity counts crossings modulo 2 on a closed surface, whatever the orientations.
+  // Closed or open is decided with the faces of zero area (a sliver closing a T-junction
+  // leaves no boundary); an open surface's boundary is then the kept faces' alone, since a
+  // dropped face is not surface: a point on its edges is labelled as on a closed mesh,
+  // and its edges ask nothing of the rays (their solid angles sum to zero off their line).
   if (rule != FillRule::parity) s.boundary = mesh::boundary_chain(mesh);
   s.mesh = without_zero_area_faces(std::move(mesh), check);
+  if (!s.boundary.empty() && check.zero_area_faces.count > 0) {
+    s.boundary = mesh::boundary_chain(s.mesh);
+  }
   s.zero_area_faces = check.zero_area_faces;
   s.rule = rule;
   s.oriented = check.unbalanced_edges.count == 0;
@@ -199,12 +206,6 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   // box, and both need every point they are asked about to lie in it (classify answers
   // the points outside it first). The checks leave a face of nonzero area, so it exists.
   s.box = *internal::corner_box(s.mesh);
-  // With the boundary's corners too: a zero-area face dropped from the surface may still
-  // carry a boundary edge, and the ray that answers a point outside the box must miss it.
-  for (const BoundaryEdge& e : s.boundary) {
-    s.box.add(s.mesh.vertices[e.from]);
-    s.box.add(s.mesh.vertices[e.to]);
-  }
   s.faces = surface_faces(s.mesh);
   s.frame = internal::UnitFrame(s.mesh, s.box);
   // Spans in the frame the rays use: the same for the exact signs (a power of two changes
