@@ -6,6 +6,11 @@
 // points beyond an end) whose end state the exact self-intersection finder (a coplanar
 // overlap with area counting) finds intersecting must all be refused, one by one and in
 // a pass, and the applied ones must leave the stack intersection free.
+//
+// And under a second sheet (two_sheets.hpp, at 2^0 and 2^+-1000): a collapse to a point
+// through or onto the sheet above is refused and one a step short of it applied; a
+// collapse to a raised point whose end state is intersection free, but whose triangles
+// sweep through a small triangle lying between, is refused naming one of its corners.
 
 #include <gtest/gtest.h>
 
@@ -20,11 +25,17 @@
 #include "exactgeo/remesh/operations.hpp"
 #include "remesh/stacked_sheets.hpp"
 #include "remesh/surface_mesh.hpp"
+#include "remesh/two_sheets.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::remesh {
 namespace {
 
+using testing::expect_intersection_free;
+using testing::kInner;
+using testing::kTopTriangleFirst;
+using testing::Operations;
+using testing::sheets;
 
 /// The collapse of ab to `to` made without any check: b replaced by a, both at `to`, the
 /// triangles of the edge removed.
@@ -101,6 +112,44 @@ TEST(Collapses, AnEndStateThatIntersectsIsRefusedByTheMotion) {
             << applied << " applied\n";
   EXPECT_GT(intersecting_end_states, 100);  // the test has something to refuse
   EXPECT_GT(applied, 300);
+}
+
+TEST_P(Operations, CollapseStopsAtTheSheetAbove) {
+  const double s = scale();
+  Surface surface = sheets(4, 1.0, s);
+  const VertexIndex a = kInner, b = kInner + 1;  // (1, 1) and (2, 1), both inner
+  const Point3 through{1.5 * s, s, 1.5 * s};
+  const Outcome refused = collapse_edge(surface, a, b, through);
+  EXPECT_EQ(refused.verdict, Verdict::refused_collision) << refused.reason;
+  EXPECT_EQ(surface.triangles.size(), 33u);
+  const Outcome touching = collapse_edge(surface, a, b, {1.5 * s, s, s});
+  EXPECT_EQ(touching.verdict, Verdict::refused_collision) << touching.reason;
+  const Outcome applied = collapse_edge(surface, a, b, {1.5 * s, s, just_below(1.0)});
+  ASSERT_TRUE(applied.applied()) << applied.reason;
+  EXPECT_EQ(surface.triangles.size(), 31u);  // the edge's two triangles gone
+  EXPECT_TRUE(surface.triangles_around(b).empty());
+  expect_intersection_free(surface, "the collapse");
+}
+
+TEST_P(Operations, ACollapseCannotSweepOverATriangle) {
+  const double s = scale();
+  // A small triangle lies flat just above the grid, at height 1/8. Collapsing the inner
+  // edge (1, 1)-(2, 1) to the raised point (1.5, 1, 1/2) makes a tent over it: the end
+  // state is intersection free (the triangle sits in the gap under the tent), but the
+  // triangles rising from the grid to the tent sweep through it.
+  Surface surface = sheets(4, 1.0, s);
+  surface.vertices[kTopTriangleFirst] = {1.5 * s, 1.25 * s, 0.125 * s};
+  surface.vertices[kTopTriangleFirst + 1] = {1.5625 * s, 1.25 * s, 0.125 * s};
+  surface.vertices[kTopTriangleFirst + 2] = {1.5 * s, 1.3125 * s, 0.125 * s};
+  const Outcome refused = collapse_edge(surface, kInner, kInner + 1, {1.5 * s, s, 0.5 * s});
+  EXPECT_EQ(refused.verdict, Verdict::refused_collision) << refused.reason;
+  ASSERT_TRUE(refused.blocker.has_value());
+  EXPECT_EQ(refused.blocker->kind, Blocker::Kind::vertex) << refused.reason;
+  EXPECT_GE(refused.blocker->corners[0], kTopTriangleFirst);
+  // The same collapse to a point in the grid's plane moves nothing over the triangle.
+  const Outcome flat = collapse_edge(surface, kInner, kInner + 1, {1.5 * s, s, 0.0});
+  EXPECT_TRUE(flat.applied()) << flat.reason;
+  expect_intersection_free(surface, "the flat collapse");
 }
 
 }  // namespace

@@ -6,6 +6,11 @@
 // apart and facing as before, as a single flip and in a pass. The quadrilateral's corner
 // a is a sheet corner: the operation's own edges are its only ones, so no region test
 // can see it lying inside the other new triangle.
+//
+// And under a second sheet (two_sheets.hpp, at 2^0 and 2^+-1000): a flip sweeps the
+// closed tetrahedron of its four corners, so a vertex of the sheet on its new face or one
+// ulp inside refuses it (named) and one ulp outside does not; an edge running through the
+// tetrahedron, both ends outside it, refuses it too.
 
 #include <gtest/gtest.h>
 
@@ -17,14 +22,20 @@
 
 #include "exactgeo/remesh/operations.hpp"
 #include "remesh/flat_sheet.hpp"
+#include "remesh/two_sheets.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::remesh {
 namespace {
 
+using testing::expect_intersection_free;
 using testing::facing_oracle;
 using testing::flat_overlap;
+using testing::kInner;
+using testing::kTopTriangleFirst;
+using testing::Operations;
 using testing::points_of;
+using testing::sheets;
 
 /// Two triangles abc and bad on edge ab (vertices 0, 1; c = 2, d = 3).
 Surface two_triangles(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
@@ -127,6 +138,57 @@ TEST(FlatFlips, TheRefusalNamesTheReflexCorner) {
   EXPECT_EQ(flip.blocker->corners[0], 0u) << flip.reason;
   EXPECT_NE(flip.reason.find("would turn new triangle 2 0 3 over"), std::string::npos)
       << flip.reason;
+}
+
+TEST_P(Operations, FlipSweepsTheTetrahedronOfItsCorners) {
+  const double s = scale();
+  // Lift the grid's vertex (2, 1) so that flipping the diagonal (1, 1)-(2, 2) sweeps a
+  // tetrahedron, and put a vertex of the upper sheet's triangle on its new face, one ulp
+  // inside it and one ulp outside it.
+  const VertexIndex a = kInner, b = kInner + 6, c = kInner + 1, d = kInner + 5;
+  for (const int nudge : {0, -1, +1}) {
+    Surface surface = sheets(4, 1.0, s);
+    surface.vertices[c][2] = s;  // (2, 1, 1): triangle a b c rises
+    // The new face (c, a, d) spans c = (2, 1, 1), a = (1, 1, 0), d = (1, 2, 0): the plane
+    // z = x - 1 + ... ; the tetrahedron's fourth corner b = (2, 2, 0) lies below it.
+    // Its centroid (4/3, 4/3, 1/3) is not a double: take the point at weights (1/4,
+    // 1/2, 1/4) of c, a, d: (1.25, 1.25, 0.25), exactly on the face.
+    Point3 x{1.25 * s, 1.25 * s, 0.25 * s};
+    if (nudge != 0) x[2] = std::nextafter(x[2], nudge < 0 ? 0.0 : HUGE_VAL);
+    // The upper triangle's first corner moves down to x; the triangle stays above the grid.
+    surface.vertices[kTopTriangleFirst] = x;
+    surface.vertices[kTopTriangleFirst + 1] = {4 * s, 8 * s, 4 * s};
+    surface.vertices[kTopTriangleFirst + 2] = {-4 * s, 2 * s, 4 * s};
+    expect_intersection_free(surface, "setting up");
+    const Outcome flip = flip_edge(surface, a, b);
+    if (nudge <= 0) {  // on the new face, or inside the tetrahedron
+      EXPECT_EQ(flip.verdict, Verdict::refused_collision) << "nudge " << nudge;
+      ASSERT_TRUE(flip.blocker.has_value());
+      EXPECT_EQ(flip.blocker->kind, Blocker::Kind::vertex) << flip.reason;
+      EXPECT_EQ(flip.blocker->corners[0], kTopTriangleFirst);
+    } else {
+      ASSERT_TRUE(flip.applied()) << flip.reason;
+      EXPECT_FALSE(surface.triangles_on_edge(c, d).empty());
+      expect_intersection_free(surface, "the flip");
+    }
+  }
+}
+
+TEST_P(Operations, AnEdgeThroughTheFlipsTetrahedronIsMet) {
+  const double s = scale();
+  // The tetrahedron of FlipSweepsTheTetrahedronOfItsCorners; an edge of the upper
+  // triangle runs through it from face to new face, (1, 1, 1/4) to (2, 2, 1/4), both ends
+  // outside it and above the grid.
+  Surface surface = sheets(4, 1.0, s);
+  surface.vertices[kInner + 1][2] = s;
+  surface.vertices[kTopTriangleFirst] = {s, s, 0.25 * s};
+  surface.vertices[kTopTriangleFirst + 1] = {1.5 * s, 4 * s, 4 * s};
+  surface.vertices[kTopTriangleFirst + 2] = {2 * s, 2 * s, 0.25 * s};
+  expect_intersection_free(surface, "setting up");
+  const Outcome flip = flip_edge(surface, kInner, kInner + 6);
+  EXPECT_EQ(flip.verdict, Verdict::refused_collision) << flip.reason;
+  ASSERT_TRUE(flip.blocker.has_value());
+  EXPECT_EQ(flip.blocker->kind, Blocker::Kind::edge) << flip.reason;
 }
 
 INSTANTIATE_TEST_SUITE_P(Planes, FlatFlips,

@@ -4,6 +4,12 @@
 // point of a half-integer grid around them: applied exactly when the rational oracle finds
 // the split surface without overlap, zero area or a turned triangle (or the point lies
 // strictly inside the edge, where nothing moves), as a single split and in a pass.
+//
+// And under a second sheet (two_sheets.hpp, at 2^0 and 2^+-1000): a split point lifted
+// through or onto the sheet is refused and one just under it applied; a rounded midpoint a
+// hair off the edge, inside its other triangle, is applied (alone, lifted and in a pass);
+// a split whose new triangle passes through a neighbour with all its corners among the
+// split's is refused.
 
 #include <gtest/gtest.h>
 
@@ -15,13 +21,18 @@
 
 #include "exactgeo/remesh/operations.hpp"
 #include "remesh/flat_sheet.hpp"
+#include "remesh/two_sheets.hpp"
 
 namespace exactgeo::remesh {
 namespace {
 
+using testing::expect_intersection_free;
 using testing::facing_oracle;
 using testing::flat_overlap;
+using testing::kInner;
+using testing::Operations;
 using testing::points_of;
+using testing::sheets;
 using testing::TrianglePoints;
 
 /// The split of edge ab (vertices 0 and 1) at `at` made without any check: each triangle
@@ -127,6 +138,88 @@ TEST(FlatSplits, APointBeyondTheOppositeCornerIsRefusedNamingIt) {
   EXPECT_NE(split.reason.find("over, flat in the plane of the triangle it replaces"),
             std::string::npos)
       << split.reason;
+}
+
+TEST_P(Operations, SplitPokingThroughTheSheetIsRefused) {
+  const double s = scale();
+  // The upper sheet one unit in 2^20 above the grid: a split point lifted more pokes
+  // through it.
+  const double h = std::ldexp(1.0, -20);
+  Surface surface = sheets(4, h, s);
+  const VertexIndex a = kInner, b = kInner + 6;  // the diagonal (1, 1)-(2, 2)
+  const Point3 mid{1.5 * s, 1.5 * s, 0.0};
+  const Outcome poking = split_edge(surface, a, b, {mid[0], mid[1], 2 * h * s});
+  EXPECT_EQ(poking.verdict, Verdict::refused_collision) << poking.reason;
+  ASSERT_TRUE(poking.blocker.has_value());
+  EXPECT_EQ(poking.blocker->kind, Blocker::Kind::triangle);
+  const Outcome touching = split_edge(surface, a, b, {mid[0], mid[1], h * s});
+  EXPECT_EQ(touching.verdict, Verdict::refused_collision) << touching.reason;
+  // Just under the sheet: the thin region between the old and the new triangles is empty.
+  Surface lifted = surface;
+  const Outcome under = split_edge(lifted, a, b, {mid[0], mid[1], just_below(h)});
+  ASSERT_TRUE(under.applied()) << under.reason;
+  EXPECT_EQ(lifted.triangles.size(), 35u);
+  expect_intersection_free(lifted, "the lifted split");
+  // Exactly on the edge: nothing moves.
+  const Outcome on_edge = split_edge(surface, a, b, mid);
+  ASSERT_TRUE(on_edge.applied()) << on_edge.reason;
+  ASSERT_TRUE(on_edge.new_vertex.has_value());
+  EXPECT_EQ(surface.vertices[*on_edge.new_vertex], mid);
+  expect_intersection_free(surface, "the split on the edge");
+}
+
+TEST_P(Operations, SplitOffTheEdgeIntoItsOtherTriangleIsApplied) {
+  // A rounded midpoint a hair off the diagonal (1, 1)-(2, 2), inside the triangle with
+  // corner (2, 1): the other triangle's region reaches into that triangle, which the
+  // split replaces too, so it is no obstacle (the partner corner), and the four new
+  // triangles tile the old two.
+  const double s = scale();
+  Surface surface = sheets(4, 1.0, s);
+  const VertexIndex a = kInner, b = kInner + 6;
+  const Point3 off{1.5 * s, std::nextafter(1.5 * s, 0.0), 0.0};
+  const Outcome split = split_edge(surface, a, b, off);
+  ASSERT_TRUE(split.applied()) << split.reason;
+  EXPECT_EQ(surface.triangles.size(), 35u);
+  expect_intersection_free(surface, "the split off the edge");
+  // Lifted by one ulp of the height as well: still inside the thin space under the sheet.
+  Surface lifted = sheets(4, 1.0, s);
+  const Outcome up = split_edge(lifted, a, b, {off[0], off[1], std::ldexp(s, -60)});
+  ASSERT_TRUE(up.applied()) << up.reason;
+  expect_intersection_free(lifted, "the lifted split off the edge");
+  // And in a pass.
+  Surface passed = sheets(4, 1.0, s);
+  const std::vector<Outcome> outcomes = split_edges(passed, std::array{Split{a, b, off}});
+  ASSERT_TRUE(outcomes.front().applied()) << outcomes.front().reason;
+  EXPECT_EQ(passed.triangles, surface.triangles);
+}
+
+TEST_P(Operations, SplitThroughANeighbourOfBothOppositeCornersIsRefused) {
+  // Found by the random operations (seed 101): edge ab = 4-5 with opposite corners c = 0
+  // and d = 3, and a triangle a d c beside it. The lifted midpoint's new triangle b m c
+  // passes through a d c; only its corners are all among a, b, c, d, and it is not the
+  // split's own: its region must test it.
+  const double s = scale();
+  Surface surface;
+  for (const Point3& p :
+       {Point3{0x1.9p-2, 0x1.74p+0, 0x1.2p-3}, Point3{0x1.b8p-2, 0x1.76p+0, 0x1.2p-3},
+        Point3{0x1.8p-1, 0x1.8p+0, 0x1.1p-2}, Point3{0x1.24p-1, 0x1.7ap+0, 0x1.38p-2},
+        Point3{0x1.48p-2, 0x1.7ap+0, 0x1.18p-2}, Point3{0x1p-1, 0x1.78p+0, 0x1.88p-3}}) {
+    surface.vertices.push_back({s * p[0], s * p[1], s * p[2]});
+  }
+  surface.triangles = {{0, 4, 5}, {3, 5, 4}, {1, 5, 2}, {4, 0, 3}, {5, 1, 0}, {5, 3, 2}};
+  expect_intersection_free(surface, "setting up");
+  const Point3 m{s * 0x1.a4p-2, s * 0x1.79p+0, s * 0x1.56p-2};
+  const Outcome split = split_edge(surface, 4, 5, m);
+  EXPECT_EQ(split.verdict, Verdict::refused_collision) << split.reason;
+  ASSERT_TRUE(split.blocker.has_value());
+  Surface forced = surface;  // what the split would have made
+  forced.vertices.push_back(m);
+  forced.triangles[0] = {0, 4, 6};
+  forced.triangles.push_back({0, 6, 5});
+  forced.triangles[1] = {3, 5, 6};
+  forced.triangles.push_back({3, 6, 4});
+  EXPECT_FALSE(testing::sheets_meeting(forced).intersecting.empty())
+      << "the refused split would have made an intersection";
 }
 
 INSTANTIATE_TEST_SUITE_P(Planes, FlatSplits,
