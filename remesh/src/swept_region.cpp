@@ -187,9 +187,10 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   const Region region(corners);
   const auto& p = surface.vertices;
   // The operation's own elements: those of the region's corners only, and the partner's
-  // vertex d, edges ad and bd and triangle abd (a, b: the first two corners). Not any
-  // element whose corners are among a, b, c, d: a triangle acd next to the split is not
-  // the operation's.
+  // triangle abd (a, b: the first two corners), which the split replaces. Not its corner d
+  // or its edges ad and bd, which stay (in the new triangles amd and mbd): the region must
+  // not hold them beyond the corners they share with it, nor must any triangle at d (a
+  // triangle acd next to the split is not the operation's).
   const VertexIndex edge_a = corners[0].vertex, edge_b = corners[1].vertex;
   const auto on_other_side = [&](VertexIndex v) {  // a corner of triangle abd
     return v == edge_a || v == edge_b || v == partner;
@@ -205,18 +206,13 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   };
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
-    if (region.is_corner(v) || (has_partner && v == partner)) continue;
+    if (region.is_corner(v)) continue;
     const bool inside = region.flat() ? region.holds(p[v]) : beyond[i] == 0;
     if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
   }
   for (const Edge& e : near.edges) {
     if ((beyond_of(e[0]) & beyond_of(e[1])) != 0) continue;          // beyond one face: apart
     if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
-    // ad or bd: d and an end of the edge.
-    if (has_partner && (e[0] == partner || e[1] == partner) && on_other_side(e[0]) &&
-        on_other_side(e[1])) {
-      continue;
-    }
     if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
       return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
     }

@@ -57,10 +57,11 @@ struct RegionCorner {
 ///
 /// `partner`: a split of an inner edge ab at a point m off the edge sweeps two regions,
 /// hull(a, b, c, m) and hull(a, b, d, m) (a and b: the first two corners); the edge's
-/// other triangle abd, its edges ad and bd and its corner d are replaced too, so they are
-/// no obstacle to the first region: d is its partner. (Other elements with corners among
-/// a, b, c, d, such as a neighbouring triangle acd, are tested.) Whether the new triangles
-/// of the two sides meet each other is then the split's own exact check.
+/// other triangle abd is replaced too, so it is no obstacle to the first region: d is its
+/// partner. Its corner d and its edges ad and bd stay (in the new triangles amd and mbd)
+/// and are tested, as is every other element with corners among a, b, c, d, such as a
+/// neighbouring triangle acd. Whether the new triangles of the two sides meet each other
+/// is then the split's own exact check.
 ///
 /// Preconditions: finite coordinates; no three of the region's corners collinear.
 std::optional<Blocker> first_in_region(const Surface& surface,
