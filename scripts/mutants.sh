@@ -153,6 +153,17 @@ MUTANTS = [
      "predicates/src/boundary_term_filter.cpp",
      "num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);",
      "(void)num;", ["predicates_tests", "inside_tests"]),
+    # An exact 0/0 at an edge: a ray through its end is cast again, never refined.
+    ("boundary_ray_through_an_end_refined",
+     "predicates/src/boundary_term.cpp",
+     "} else if (on_ray(p, apex, a) || on_ray(p, apex, b)) {",
+     "} else if (false) {", ["predicates_tests", "inside_tests"]),
+    # remesh: a split's partner is only its other triangle; its corner and edges are tested.
+    ("swept_region_partner_corner_skipped",
+     "remesh/src/swept_region.cpp",
+     "    if (region.is_corner(v)) continue;",
+     "    if (region.is_corner(v) || (has_partner && v == partner)) continue;",
+     ["remesh_tests"]),
     ("boundary_intervals_not_widened",
      "predicates/src/double_interval.hpp",
      "return std::nextafter(x, -std::numeric_limits<double>::infinity());",
