@@ -5,11 +5,11 @@
 //                    [--list] [--write DIR]
 //
 // Each step turns MESH (quads split into two triangles) as a rigid body by D degrees about
-// the vertical axis (tests/support/turned_step.hpp: millions of candidate pairs, no
+// the vertical axis (exactgeo/testbed/turned_step.hpp: millions of candidate pairs, no
 // collision), scaled by 2^K. Every row is a fresh MeshCcd's first step (exact method),
 // so it builds its trees, on T threads; its peak resident memory is read from the moment
 // before the step (the mesh and both frames already resident) to its end
-// (tests/support/resident_memory.hpp). With --list, each row also gives the peak of
+// (exactgeo/testbed/resident_memory.hpp). With --list, each row also gives the peak of
 // MeshCcd::candidates on the same step (a fresh MeshCcd, same threads): the candidate
 // list that a step holding all its candidates would hold, as the library's step did before
 // it decided them in batches. Prints a markdown table. With --write, also writes
@@ -29,8 +29,8 @@
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
-#include "resident_memory.hpp"
-#include "turned_step.hpp"
+#include "exactgeo/testbed/resident_memory.hpp"
+#include "exactgeo/testbed/turned_step.hpp"
 
 namespace {
 
@@ -121,22 +121,22 @@ int main(int argc, char** argv) try {
             << "|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const double degrees : options.degrees) {
     if (!options.write_dir.empty()) {
-      const testing::TurnedStep step = testing::turned_step(positions, degrees);
+      const testbed::TurnedStep step = testbed::turned_step(positions, degrees);
       const std::string stem = options.write_dir + "/turned-" + std::to_string(degrees);
       write_obj(stem + "-0.obj", step.t0, faces);
       write_obj(stem + "-1.obj", step.t1, faces);
     }
     for (const int scale : options.scales) {
-      const testing::TurnedStep step = testing::turned_step(positions, degrees, scale);
+      const testbed::TurnedStep step = testbed::turned_step(positions, degrees, scale);
       for (const unsigned threads : options.threads) {
         ccd::MeshCcdOptions o;
         o.threads = threads;
         const auto peak_of = [&](const auto& run) {
-          if (!testing::reset_peak_resident_memory())
+          if (!testbed::reset_peak_resident_memory())
             throw std::runtime_error("the peak resident memory cannot be reset here");
-          const std::size_t before = testing::peak_resident_memory().value_or(0);
+          const std::size_t before = testbed::peak_resident_memory().value_or(0);
           run();
-          return std::pair{before, testing::peak_resident_memory().value_or(0)};
+          return std::pair{before, testbed::peak_resident_memory().value_or(0)};
         };
         ccd::MeshCcdResult r;
         const auto [before, peak] = peak_of([&] {

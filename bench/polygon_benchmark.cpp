@@ -6,7 +6,7 @@
 //
 // Each benchmark's time is the polygon's load (manual time); it reports the time per
 // corner of both loads and their ratio (polygon / triangles). The polygons are the test
-// suite's generators (tests/support/polygon_oracle.hpp) with a fixed seed.
+// suite's generators (exactgeo/testbed/polygons.hpp) with a fixed seed.
 
 #include <benchmark/benchmark.h>
 
@@ -17,12 +17,12 @@
 #include <string>
 
 #include "exactgeo/mesh/obj_reader.hpp"
-#include "support/polygon_oracle.hpp"
+#include "exactgeo/testbed/polygons.hpp"
 
 namespace {
 
 using namespace exactgeo;
-using testing::Polygon2;
+using testbed::Polygon2;
 
 void append_number(std::string& text, double x) {
   char buffer[32];
@@ -84,15 +84,15 @@ void load_polygon(benchmark::State& state,
 }
 
 void Convex(benchmark::State& state) {
-  load_polygon(state, [](std::mt19937_64& rng, int n) { return testing::convex_polygon(rng, n); });
+  load_polygon(state, [](std::mt19937_64& rng, int n) { return testbed::convex_polygon(rng, n); });
 }
 void Star(benchmark::State& state) {
   load_polygon(state,
-               [](std::mt19937_64& rng, int n) { return testing::star_polygon(rng, n, false); });
+               [](std::mt19937_64& rng, int n) { return testbed::star_polygon(rng, n, false); });
 }
 void Comb(benchmark::State& state) {
   load_polygon(state,
-               [](std::mt19937_64& rng, int n) { return testing::comb_polygon(rng, n / 4); });
+               [](std::mt19937_64& rng, int n) { return testbed::comb_polygon(rng, n / 4); });
 }
 
 BENCHMARK(Convex)

@@ -10,6 +10,8 @@
 # 3. Inside ccd/, a file of one room includes headers of its own room and of the rooms below
 #    it only (kCcdRoomOrder below), so that no two rooms depend on each other; every file
 #    of ccd/ is in a room.
+# 4. testbed/ (what the tests and the benchmarks generate and measure) is included only by
+#    tests/ and bench/: no library, no app, no Python module depends on it.
 #
 # Every violation is listed with its file and line; any violation fails the run.
 
@@ -23,7 +25,7 @@ get_filename_component(ROOT "${ROOT}" ABSOLUTE)
 # What each library may include besides itself (its targets' dependencies). ccd_files is
 # the one room of ccd/ that is a library of its own (src/files/, include/exactgeo/ccd/files/):
 # CCD reads no files, so only it may include io.
-set(kLibraries predicates parallel io boxes surface mesh ccd ccd_files inside remesh)
+set(kLibraries predicates parallel io boxes surface mesh ccd ccd_files inside remesh testbed)
 set(kAllowed_predicates "")
 set(kAllowed_parallel "")
 set(kAllowed_io "")
@@ -34,6 +36,7 @@ set(kAllowed_ccd predicates boxes surface parallel)
 set(kAllowed_ccd_files ccd predicates surface io)
 set(kAllowed_inside predicates boxes surface mesh parallel)
 set(kAllowed_remesh predicates boxes surface ccd mesh)
+set(kAllowed_testbed "")
 
 # The rooms of ccd/ (docs/architecture.md, "ccd/"), lowest first; rooms between the same
 # two "<" are peers and may not include each other. common holds what every room speaks
@@ -138,6 +141,10 @@ foreach(relative IN LISTS sources)
       if(NOT library IN_LIST kAllowed_${owner})
         list(APPEND violations "${where}: ${owner} may not include ${library}: ${line}")
       endif()
+    endif()
+    # Rule 4: testbed stays with the tests and the benchmarks.
+    if(library STREQUAL "testbed" AND NOT owner MATCHES "^(tests/.*|bench|testbed)$")
+      list(APPEND violations "${where}: ${owner} may not include testbed (tests and benchmarks only): ${line}")
     endif()
     # Rule 3: a room of ccd includes only its own room and the rooms below it.
     if(NOT room STREQUAL "" AND (library STREQUAL "ccd" OR library STREQUAL "ccd_files"))

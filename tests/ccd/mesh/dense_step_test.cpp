@@ -2,8 +2,8 @@
 // phase finds them, so a step's peak memory does not grow with its candidate count.
 //
 // The steps turn the bundled Spot mesh (23,424 triangles) as a rigid body about the
-// vertical axis (support/turned_step.hpp): the candidates grow with the angle (the tests
-// ask for fewer than 100 thousand at half a degree, more than 5 million at 80 degrees),
+// vertical axis (exactgeo/testbed/turned_step.hpp): the candidates grow with the angle (the
+// tests ask for fewer than 100 thousand at half a degree, more than 5 million at 80 degrees),
 // and there is no collision, by an argument independent of the code (the motion is an
 // invertible linear map at every time), which the exact method must confirm on every pair.
 
@@ -15,8 +15,8 @@
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/mesh/load.hpp"
-#include "support/resident_memory.hpp"
-#include "support/turned_step.hpp"
+#include "exactgeo/testbed/resident_memory.hpp"
+#include "exactgeo/testbed/turned_step.hpp"
 
 namespace exactgeo::ccd {
 namespace {
@@ -47,14 +47,14 @@ struct MeasuredStep {
 /// A fresh MeshCcd's first step on Spot turned by `degrees`, at 2^scale_exponent, on two
 /// threads, with the peak resident memory from just before the step to its end.
 MeasuredStep turned_spot(const Spot& spot, double degrees, int scale_exponent = 0) {
-  const testing::TurnedStep step = testing::turned_step(spot.positions, degrees, scale_exponent);
+  const testbed::TurnedStep step = testbed::turned_step(spot.positions, degrees, scale_exponent);
   MeshCcd ccd(spot.positions.size() / 3, spot.faces);
   MeshCcdOptions options;
   options.threads = 2;
   MeasuredStep measured;
-  EXPECT_TRUE(testing::reset_peak_resident_memory()) << "/proc/self/clear_refs is not writable";
+  EXPECT_TRUE(testbed::reset_peak_resident_memory()) << "/proc/self/clear_refs is not writable";
   measured.result = ccd.step({step.t0, step.t1}, options);
-  measured.peak_bytes = testing::peak_resident_memory().value_or(0);
+  measured.peak_bytes = testbed::peak_resident_memory().value_or(0);
   return measured;
 }
 
@@ -96,7 +96,7 @@ TEST(DenseSteps, CandidatesAreTheSameAtEveryMagnitude) {
   }
   // Every candidate is handed to the narrow phase once: the counts are those of the
   // collected list. Last, as that list is the memory the steps above never hold.
-  const testing::TurnedStep step = testing::turned_step(spot.positions, 20.0);
+  const testbed::TurnedStep step = testbed::turned_step(spot.positions, 20.0);
   MeshCcd ccd(spot.positions.size() / 3, spot.faces);
   const MeshCcdCandidates listed = ccd.candidates({step.t0, step.t1});
   EXPECT_EQ(listed.vertex_face.size(), at_one.result.vertex_face_candidates);

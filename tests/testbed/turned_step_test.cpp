@@ -2,7 +2,7 @@
 // the step at 2^+-1000 the same step, bit for bit, even for coordinates far below the
 // mesh's size. No code of the library is called here.
 
-#include "support/turned_step.hpp"
+#include "exactgeo/testbed/turned_step.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,8 +17,8 @@
 
 namespace {
 
-using exactgeo::testing::turned_step;
-using exactgeo::testing::TurnedStep;
+using exactgeo::testbed::turned_step;
+using exactgeo::testbed::TurnedStep;
 
 /// Random points in [-1, 1]^3, some with coordinates of 1e-12 or less.
 std::vector<double> random_positions(exactgeo::testing::Rng& rng, std::size_t n) {
@@ -33,7 +33,7 @@ std::vector<double> random_positions(exactgeo::testing::Rng& rng, std::size_t n)
 }
 
 TEST(TurnedStep, IsTheSameStepAtEveryMagnitude) {
-  auto rng = exactgeo::testing::seeded_engine("support.turned-step.magnitudes");
+  auto rng = exactgeo::testing::seeded_engine("testbed.turned-step.magnitudes");
   const std::vector<double> xyz = random_positions(rng, 400);
   const TurnedStep at_one = turned_step(xyz, 37.0);
   for (const int k : {1000, -1000}) {
@@ -46,7 +46,7 @@ TEST(TurnedStep, IsTheSameStepAtEveryMagnitude) {
 }
 
 TEST(TurnedStep, TurnsEveryVertexAboutTheVerticalAxis) {
-  auto rng = exactgeo::testing::seeded_engine("support.turned-step.turn");
+  auto rng = exactgeo::testing::seeded_engine("testbed.turned-step.turn");
   const std::vector<double> xyz = random_positions(rng, 400);
   const TurnedStep step = turned_step(xyz, 80.0);
   // The axis passes through the centre of the bounding box; the turn keeps each vertex's

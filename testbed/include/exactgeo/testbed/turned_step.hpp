@@ -28,7 +28,7 @@
 #include <span>
 #include <vector>
 
-namespace exactgeo::testing {
+namespace exactgeo::testbed {
 
 struct TurnedStep {
   std::vector<double> t0;
@@ -76,4 +76,4 @@ inline TurnedStep turned_step(std::span<const double> positions, double degrees,
   return step;
 }
 
-}  // namespace exactgeo::testing
+}  // namespace exactgeo::testbed

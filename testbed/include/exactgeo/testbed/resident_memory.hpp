@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-namespace exactgeo::testing {
+namespace exactgeo::testbed {
 
 /// Sets the peak back to the current resident set; false when the system does not allow it.
 inline bool reset_peak_resident_memory() {
@@ -34,4 +34,4 @@ inline std::optional<std::size_t> peak_resident_memory() {
   return std::nullopt;
 }
 
-}  // namespace exactgeo::testing
+}  // namespace exactgeo::testbed
