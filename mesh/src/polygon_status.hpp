@@ -5,9 +5,12 @@
 // O(log n)) whose nodes sit in one array, 64 bytes each, recycled as items leave. It is
 // what std::set does for the sweeps, with the memory a sweep over a million edges can
 // afford to walk: a descent reads one cache line per level, and the nodes stay together.
-// Items are compared only by `Below` (strict: a below b), only at insertion, and only
-// with items already there.
+// Each node also knows its neighbours below and above (a threaded tree, in an array of
+// its own), so that stepping to a neighbour, which the sweeps do at every corner, reads
+// one entry instead of climbing the tree. Items are compared only by `Below` (strict: a
+// below b), only at insertion, and only with items already there.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -27,35 +30,21 @@ class SweepStatus {
   Item& operator[](Handle h) { return nodes_[h].item; }
 
   /// The top item, or kNone.
-  Handle last() const { return root_ == kNone ? kNone : extreme(root_, 1); }
+  Handle last() const { return top_; }
 
   /// The item just below h, or kNone.
-  Handle previous(Handle h) const {
-    const Node& n = nodes_[h];
-    if (n.child[0] != kNone) return extreme(n.child[0], 1);
-    Handle child = h;
-    for (Handle up = n.parent; up != kNone; child = up, up = nodes_[up].parent) {
-      if (nodes_[up].child[1] == child) return up;
-    }
-    return kNone;
-  }
+  Handle previous(Handle h) const { return neighbours_[h][0]; }
 
   /// The item just above h, or kNone.
-  Handle next(Handle h) const {
-    const Node& n = nodes_[h];
-    if (n.child[1] != kNone) return extreme(n.child[1], 0);
-    Handle child = h;
-    for (Handle up = n.parent; up != kNone; child = up, up = nodes_[up].parent) {
-      if (nodes_[up].child[0] == child) return up;
-    }
-    return kNone;
-  }
+  Handle next(Handle h) const { return neighbours_[h][1]; }
 
   /// Inserts the item where `Below` puts it, searching from the root.
   Handle insert(const Item& item) {
     const Handle h = allocate(item);
     if (root_ == kNone) {
       root_ = h;
+      top_ = h;
+      neighbours_[h] = {kNone, kNone};
       return h;
     }
     Handle at = root_;
@@ -80,7 +69,7 @@ class SweepStatus {
   /// that place (two comparisons); else inserts nothing and returns kNone.
   Handle try_insert_below(const Item& item, Handle above) {
     if (root_ == kNone) return above == kNone ? insert(item) : kNone;
-    const Handle under = above == kNone ? extreme(root_, 1) : previous(above);
+    const Handle under = above == kNone ? top_ : previous(above);
     if ((above != kNone && !below_(item, nodes_[above].item)) ||
         (under != kNone && !below_(nodes_[under].item, item))) {
       return kNone;
@@ -97,7 +86,10 @@ class SweepStatus {
 
   /// Removes h; returns the item that was just above it (kNone: none).
   Handle erase(Handle h) {
-    const Handle above = next(h);
+    const auto [under, above] = neighbours_[h];
+    if (under != kNone) neighbours_[under][1] = above;
+    if (above != kNone) neighbours_[above][0] = under;
+    if (top_ == h) top_ = under;
     // Rotate h down until it is a leaf, the child of higher priority up each time.
     for (;;) {
       const Node& n = nodes_[h];
@@ -126,12 +118,6 @@ class SweepStatus {
     std::uint32_t priority;
   };
 
-  Handle extreme(Handle h, int side) const {
-    while (nodes_[h].child[side] != kNone)
-      h = nodes_[h].child[side];
-    return h;
-  }
-
   Handle allocate(const Item& item) {
     // A fixed sequence of priorities (xorshift): the same tree on every run.
     seed_ ^= seed_ << 13;
@@ -140,6 +126,7 @@ class SweepStatus {
     const Node node{item, {kNone, kNone}, kNone, static_cast<std::uint32_t>(seed_ >> 32)};
     if (free_.empty()) {
       nodes_.push_back(node);
+      neighbours_.push_back({kNone, kNone});
       return static_cast<Handle>(nodes_.size() - 1);
     }
     const Handle h = free_.back();
@@ -149,9 +136,17 @@ class SweepStatus {
   }
 
   /// h (new, a leaf) as parent's child on `side`, then up while its priority is higher.
+  /// A new leaf left of its parent lies just below it, between it and the parent's old
+  /// neighbour below (right of it: just above it); rotations keep the order.
   void attach(Handle h, Handle parent, int side) {
     nodes_[parent].child[side] = h;
     nodes_[h].parent = parent;
+    const Handle beyond = neighbours_[parent][side];  // the parent's old neighbour that side
+    neighbours_[h][side] = beyond;
+    neighbours_[h][1 - side] = parent;
+    neighbours_[parent][side] = h;
+    if (beyond != kNone) neighbours_[beyond][1 - side] = h;
+    if (top_ == parent && side == 1) top_ = h;
     while (nodes_[h].parent != kNone && nodes_[nodes_[h].parent].priority < nodes_[h].priority)
       rotate_up(h);
   }
@@ -176,8 +171,10 @@ class SweepStatus {
 
   Below below_;
   std::vector<Node> nodes_;
+  std::vector<std::array<Handle, 2>> neighbours_;  // below, above
   std::vector<Handle> free_;
   Handle root_ = kNone;
+  Handle top_ = kNone;
   std::uint64_t seed_ = 0x9e3779b97f4a7c15ull;
 };
 
