@@ -43,6 +43,15 @@ function(exactgeo_library name)
     set_target_properties(${target} PROPERTIES OUTPUT_NAME ${target})
     # Build-only: the warnings (and -Werror) are ours, not an installed consumer's.
     target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:exactgeo_warnings>)
+    # Position-independent code (the libraries are built so when the Python module links
+    # them) lets GCC assume that any function with external linkage may be replaced at
+    # load time, and so it neither inlines nor calls directly a function defined in the
+    # same file; the command line paid for that in its per-point calls. Nothing of ours is
+    # meant to be replaced at load time (the libraries are static by default), so the
+    # assumption buys nothing.
+    if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      target_compile_options(${target} PRIVATE -fno-semantic-interposition)
+    endif()
   else()
     add_library(${target} INTERFACE)
     set(scope INTERFACE)
