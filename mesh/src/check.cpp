@@ -16,12 +16,24 @@ bool is_finite(const Point3& p) noexcept {
   return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
 }
 
-/// One use of an undirected edge by a face: `forward` when the face walks it from the
-/// smaller index to the larger one.
+/// One use of an undirected edge by a face, `forward` when the face walks it from the
+/// smaller index to the larger one, packed into one integer that sorts by the edge and
+/// then backward before forward: (smaller << 33) | (larger << 1) | forward. (Sorting
+/// std::array edges compared them through memcmp, a call per comparison: a tenth of a
+/// large mesh's classifier build.)
 struct EdgeUse {
-  Edge edge;
-  bool forward;
+  std::uint64_t key;
   std::size_t face;
+
+  EdgeUse(VertexIndex a, VertexIndex b, std::size_t f) noexcept
+      : key(std::uint64_t{std::min(a, b)} << 33 | std::uint64_t{std::max(a, b)} << 1 |
+            std::uint64_t{a < b}),
+        face(f) {}
+  std::uint64_t edge_key() const noexcept { return key >> 1; }
+  bool forward() const noexcept { return (key & 1) != 0; }
+  Edge edge() const noexcept {
+    return {static_cast<VertexIndex>(key >> 33), static_cast<VertexIndex>(key >> 1)};
+  }
 };
 
 /// Union-find over vertices, with path halving and union by size.
@@ -71,21 +83,20 @@ bool repeated_corner(const Face& face) noexcept {
 }
 
 void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
-    return a.edge < b.edge || (a.edge == b.edge && a.forward < b.forward);
-  });
+  std::sort(uses.begin(), uses.end(),
+            [](const EdgeUse& a, const EdgeUse& b) { return a.key < b.key; });
   bool every_edge_twice = !uses.empty();
   bool opposite_directions = true;
   for (std::size_t begin = 0; begin < uses.size();) {
     std::size_t end = begin + 1;
-    while (end < uses.size() && uses[end].edge == uses[begin].edge)
+    while (end < uses.size() && uses[end].edge_key() == uses[begin].edge_key())
       ++end;
     const std::size_t count = end - begin;
-    const Edge& edge = uses[begin].edge;
+    const Edge edge = uses[begin].edge();
     const auto forward =
         static_cast<std::size_t>(std::count_if(uses.begin() + static_cast<std::ptrdiff_t>(begin),
                                                uses.begin() + static_cast<std::ptrdiff_t>(end),
-                                               [](const EdgeUse& use) { return use.forward; }));
+                                               [](const EdgeUse& use) { return use.forward(); }));
     if (2 * forward != count) check.unbalanced_edges.add(edge);
     if (2 * forward >= count + 2 || 2 * forward + 2 <= count) check.misoriented_edges.add(edge);
     if (count == 1) check.boundary_edges.add(edge);
@@ -98,7 +109,8 @@ void check_edges(std::vector<EdgeUse>& uses, MeshCheck& check) {
     if (count % 2 == 1) check.odd_edges.add(edge);
     if (count != 2) every_edge_twice = false;
     // Sorted with backward before forward: two uses in opposite directions differ.
-    if (count == 2 && uses[begin].forward == uses[begin + 1].forward) opposite_directions = false;
+    if (count == 2 && uses[begin].forward() == uses[begin + 1].forward())
+      opposite_directions = false;
     begin = end;
   }
   if (every_edge_twice) check.consistently_oriented = opposite_directions;
@@ -179,7 +191,7 @@ MeshCheck check_mesh(const Mesh& mesh) {
       all_finite = all_finite && finite[a];
       components.unite(a, b);
       // A repeated corner makes a zero-length "edge": it joins nothing, so it is not counted.
-      if (a != b) uses.push_back({{std::min(a, b), std::max(a, b)}, a < b, f});
+      if (a != b) uses.emplace_back(a, b, f);
     }
 
     FaceFindings& findings = check.face_findings[f];
