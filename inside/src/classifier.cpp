@@ -193,7 +193,11 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   // leaves no boundary); an open surface's boundary is then the kept faces' alone, since a
   // dropped face is not surface: a point on its edges is labelled as on a closed mesh,
   // and its edges ask nothing of the rays (their solid angles sum to zero off their line).
-  if (rule != FillRule::parity) s.boundary = mesh::boundary_chain(mesh);
+  // The chain is the unbalanced edges, so a surface the check found balanced has none
+  // (and is spared a second sort of every edge).
+  if (rule != FillRule::parity && check.unbalanced_edges.count > 0) {
+    s.boundary = mesh::boundary_chain(mesh);
+  }
   s.mesh = without_zero_area_faces(std::move(mesh), check);
   if (!s.boundary.empty() && check.zero_area_faces.count > 0) {
     s.boundary = mesh::boundary_chain(s.mesh);
