@@ -73,7 +73,7 @@ class SpaceCells {
   const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
 
   static constexpr std::size_t kCellsPerFace = 16;
-  static constexpr std::size_t kMinCells = std::size_t{1} << 16;  // 40^3
+  static constexpr std::size_t kMinCells = std::size_t{1} << 18;  // 64^3
   static constexpr std::size_t kMaxCells = std::size_t{1} << 21;  // 128^3
 
  private:
