@@ -193,10 +193,14 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
 CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
   CLI::App* sub = app.add_subcommand(
       "inside",
-      "Classify points against a closed quad/triangle mesh, exactly: one word per point "
-      "(inside, outside or boundary), in input order. POINTS is text (three numbers per line: "
-      "decimal or hexfloat, separated by spaces and/or commas; '#' comments), raw "
-      "little-endian float64 triples (f64), or a NumPy .npy array of shape (n, 3), float64.");
+      "Classify points against a quad/triangle mesh, exactly: one word per point, in input "
+      "order: inside, outside, boundary (on a face) or undecided. A closed mesh holds the "
+      "points its winding number and --rule say; an open one (holes, boundary edges) those "
+      "where its generalized winding number w is at least 1/2 in magnitude (--rule positive: "
+      "w >= 1/2), certified, and undecided where w is exactly 1/2 or too close to it to "
+      "settle. POINTS is text (three numbers per line: decimal or hexfloat, separated by "
+      "spaces and/or commas; '#' comments), raw little-endian float64 triples (f64), or a "
+      "NumPy .npy array of shape (n, 3), float64.");
   sub->add_option("mesh", options.mesh.path,
                   "OBJ, OFF, PLY or STL (exact), or any format assimp reads; - for standard "
                   "input (with --format and a POINTS file)")
@@ -243,14 +247,16 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       "for points on the surface");
   winding->excludes(json);
   add_weld_flag(*sub, options.mesh.load.weld);
-  add_split_polygons_flag(*sub, options.mesh.load.split_polygons);
+  add_split_polygons_flag(*sub, options.mesh.load.split_polygons, " instead of refusing the mesh");
   sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,
                 "with --rule parity: accept edges shared by 4, 6, ... faces (parity is still "
                 "defined; the winding rules accept edges used as often in each direction)");
   sub->add_flag("!--no-self-intersection-check", options.mesh.self_intersection_check,
                 "skip looking for faces that intersect (exact; about as long as building the "
-                "search structure). On a mesh whose faces intersect the labels are those of the "
-                "parity solid, and without the check nothing says so");
+                "search structure). It matters under --rule parity, where faces that intersect "
+                "make the labels those of the parity solid and the check warns; under nonzero "
+                "and positive, intersections change no winding number, and the check only "
+                "counts them for --json");
   sub->add_flag("!--no-space-cells", options.mesh.space_cells,
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");
