@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/seconds.hpp"
+#include "exactgeo/inside/self_intersection_warning.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
@@ -87,7 +88,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     }
     if (progress) {
       progress->task("building the search structure (" + grouped(loaded.mesh.faces.size()) +
-                      " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
+                     " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
     }
     const Clock::time_point start = Clock::now();
     if (options.float_rays) {
@@ -153,17 +154,15 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     }
     built.self = std::move(check.found);
     built.self_intersection_seconds = check.seconds;
+    // Intersections change labels by parity only (the float ray baseline counts parity).
     const bool parity = options.float_rays || built.classifier->rule() == inside::FillRule::parity;
-    const auto problem = mesh::self_intersection_problem(*built.self, numbering);
-    if (problem && parity) {
-      if (progress) progress->clear();
-      err << "exactgeo inside: warning: " << source << ": " << *problem
-          << ": the labels are those of the parity solid (inside where rays cross the surface "
-             "an odd number of times), which is not the solid such faces were meant to bound"
-          << (built.classifier && built.classifier->oriented()
-                  ? "; --rule nonzero labels overlapping parts as their union"
-                  : "")
-          << "\n";
+    if (parity) {
+      const bool oriented = built.classifier && built.classifier->oriented();
+      for (const std::string& warning : inside::self_intersection_warnings(
+               *built.self, numbering, oriented, inside::kCommandLineNames)) {
+        if (progress) progress->clear();
+        err << "exactgeo inside: warning: " << source << ": " << warning << "\n";
+      }
     }
   }
   return built;

@@ -19,6 +19,7 @@
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
+#include "exactgeo/inside/self_intersection_warning.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "mesh_object.hpp"
@@ -198,11 +199,9 @@ ClassifierObject build(const MeshObject& mesh, const py::object& rule, bool allo
         "(rule='parity')");
   }
   if (self) {
-    if (const auto problem = mesh::self_intersection_problem(*self, mesh.loaded.numbering)) {
-      warn(*problem +
-           ": the labels are those of the parity solid (inside where rays cross the surface "
-           "an odd number of times), which is not the solid such faces were meant to bound" +
-           (built->oriented() ? "; rule='nonzero' labels overlapping parts as their union" : ""));
+    for (const std::string& warning : inside::self_intersection_warnings(
+             *self, mesh.loaded.numbering, built->oriented(), inside::kPythonNames)) {
+      warn(warning);
     }
   }
   return {std::move(*built), workers};

@@ -357,6 +357,36 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;
 }
 
+// Spot's control mesh: coarse, its quads far from planar, some neighbours bent through
+// each other. By parity the intersecting pairs and the undecided ones are each said on
+// their own, the undecided ones with what they are (all ten are neighbours) and what to
+// do, in the file's numbering.
+TEST_F(InsideCommand, SaysWhatUndecidedFacePairsAreAndWhatToDo) {
+  write_file(dir_ / "points.txt", "0 0 0\n");
+  InsideCommandOptions options;
+  options.mesh.path = kMeshes + "spot/spot_control_mesh.obj";
+  options.mesh.rule = inside::FillRule::parity;
+  const Outcome outcome = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+  const std::string prefix = "exactgeo inside: warning: " + options.mesh.path + ": ";
+  EXPECT_NE(outcome.err.find(prefix + "8 pairs of faces intersect (first: 61-72, "),
+            std::string::npos)
+      << outcome.err;
+  const std::size_t at = outcome.err.find(prefix + "10 pairs undecided (first: 37-38, 38-39, ");
+  ASSERT_NE(at, std::string::npos) << outcome.err;
+  const std::string undecided = outcome.err.substr(at, outcome.err.find('\n', at) - at);
+  for (const char* part :
+       {"could not decide (10 of the 10 share a corner)", "cannot tell touching from crossing",
+        "If they only touch, the labels are right", "--rule nonzero labels by winding numbers",
+        "`exactgeo info --mark OUT.ply` colours these faces magenta"}) {
+    EXPECT_NE(undecided.find(part), std::string::npos) << part << " in " << undecided;
+  }
+  // By the default rule, intersections change no label: nothing is said about them.
+  options.mesh.rule = std::nullopt;
+  const Outcome nonzero = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(nonzero.err.find("undecided"), std::string::npos) << nonzero.err;
+}
+
 /// A cube of quads in OBJ with corners `lower` + `size` (0 or 1 per axis), its faces
 /// counter-clockwise seen from outside (`reversed`: from inside), vertices numbered from
 /// `first`; `flip_first` turns the first face alone.
