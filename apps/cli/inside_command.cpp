@@ -16,6 +16,7 @@
 #include "cli/inside_mesh.hpp"
 #include "cli/mesh_load_options.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/seconds.hpp"
 #include "cli/slice_command.hpp"
 #include "cli/threads_option.hpp"
@@ -219,6 +220,7 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
          "boundary)")
       ->check(CLI::IsMember({"exact", "double", "embree"}));
   add_threads_option(*sub, options.mesh.threads);
+  add_progress_flag(*sub, options.progress_asked);
   sub->add_option_function<std::string>(
          "--points-format",
          [&options](const std::string& f) { options.points_format = io::parse_point_format(f); },

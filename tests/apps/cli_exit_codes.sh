@@ -270,6 +270,25 @@ expect_in "inside error names the line" "$message" '<stdin>:1: expected 3 coordi
 message=$(printf '0 0 0\n' | "$exe" inside "$meshes/negative/corner_with_hole.off" 2>&1 >/dev/null)
 expect_in "inside open mesh note" "$message" 'corner_with_hole.off: the surface is open (4 edges run more often one way than the other): inside where its generalized winding number'
 
+# Progress: nothing on a standard error that is not a terminal, unless --progress asks for
+# it; then plain lines (no carriage returns or terminal escapes), the labels unchanged.
+message=$(printf '%b' "$points" | "$exe" inside "$cube" 2>&1 >/dev/null)
+if [ -n "$message" ]; then
+  echo "FAIL: inside without --progress wrote to a standard error that is no terminal: $message"
+  failures=$((failures + 1))
+fi
+message=$(printf '%b' "$points" | "$exe" inside --progress "$cube" 2>&1 >/dev/null)
+expect_in "inside --progress" "$message" "reading $cube..." 'classifying...' '3 points'
+if [ "$(printf '%s' "$message" | tr -d -c '\r\033' | wc -c)" != 0 ]; then
+  echo "FAIL: inside --progress off a terminal wrote carriage returns or escapes: $message"
+  failures=$((failures + 1))
+fi
+labels=$(printf '%b' "$points" | "$exe" inside --progress "$cube" 2>/dev/null | tr '\n' ' ')
+if [ "$labels" != "inside outside boundary " ]; then
+  echo "FAIL: inside --progress labels on the cube: '$labels'"
+  failures=$((failures + 1))
+fi
+
 # inside, binary points (tests/apps/inside_command_test.cpp has the formats in depth): f64
 # on stdin, 24 zero bytes a point; (0, 0, 0) is the cube's centre.
 zeros24='\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0'
@@ -616,5 +635,9 @@ expect 2 "ccd --per-query unwritable" "" ccd --per-query /nonexistent/dir/q.csv 
 message=$("$exe" ccd --per-query /nonexistent/dir/q.csv "$unit" 2>&1 >/dev/null)
 expect_in "ccd --per-query unwritable message" "$message" \
   "exactgeo ccd: --per-query: cannot write '/nonexistent/dir/q.csv'"
+
+# ccd --progress off a terminal: the count of queries, as lines.
+message=$("$exe" ccd --progress "$unit" 2>&1 >/dev/null)
+expect_in "ccd --progress" "$message" ' queries (100.0%)'
 
 exit $((failures > 0))

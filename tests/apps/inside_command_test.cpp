@@ -278,7 +278,7 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   options.mesh.path = kMeshes + "cgal/cube_quad.off";
   write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 0 0\n");
   const Outcome quiet = run_file(options, dir_ / "points.txt");
-  options.progress = true;
+  options.progress = ProgressMode::terminal;
   const Outcome shown = run_file(options, dir_ / "points.txt");
   EXPECT_EQ(shown.code, ExitCode::success) << shown.err;
   EXPECT_EQ(shown.out, quiet.out);
@@ -299,6 +299,21 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   const Outcome piped = run_stdin(options, "0.5 0.5 0.5\n");
   EXPECT_NE(piped.err.find("1 points"), std::string::npos) << piped.err;
   EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
+  // --progress off a terminal (a log, a notebook): the same stages and count, a line each,
+  // nothing erased.
+  options.progress = ProgressMode::lines;
+  const Outcome logged = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(logged.out, quiet.out);
+  EXPECT_EQ(logged.err.rfind("reading " + options.mesh.path +
+                                 "...\nbuilding the search "
+                                 "structure (6 faces) and looking for faces that intersect...\n"
+                                 "classifying...\n2 points (100.0%)",
+                             0),
+            0u)
+      << logged.err;
+  EXPECT_EQ(logged.err.back(), '\n');
+  EXPECT_EQ(logged.err.find('\r'), std::string::npos) << logged.err;
+  EXPECT_EQ(logged.err.find('\033'), std::string::npos) << logged.err;
 }
 
 // Two unit cubes, the second moved by 1/2 along every axis: six pairs of faces cross. By
