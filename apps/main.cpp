@@ -12,6 +12,7 @@
 #include "cli/ccd_mesh_command.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/info_command.hpp"
+#include "cli/inside_batch.hpp"
 #include "cli/inside_command.hpp"
 #include "cli/predicate_command.hpp"
 #include "cli/progress_line.hpp"
@@ -82,6 +83,9 @@ int main(int argc, char** argv) {
   if (inside_command.parsed()) {
     inside.progress =
         exactgeo::cli::progress_mode(inside.progress_asked, isatty(STDERR_FILENO) != 0);
+    if (!inside.output_dir.empty()) {
+      return to_int(exactgeo::cli::run_inside_batch(inside, std::cout, std::cerr));
+    }
     return with_input(inside.points, "inside", [&](std::istream& in, const std::string& source) {
       return exactgeo::cli::run_inside(inside, in, source, std::cout, std::cerr);
     });

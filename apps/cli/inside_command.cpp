@@ -263,9 +263,23 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");
 
+  // A data set: one labels file per mesh (cli/inside_batch.hpp).
+  CLI::Option* output_dir = sub->add_option(
+      "--output-dir", options.output_dir,
+      "classify against every mesh MESH names and write each mesh's labels (one a line) to "
+      "DIR/NAME.labels.txt, whole or not at all: MESH a folder (its mesh files, in every "
+      "subfolder, their relative paths kept), a .txt list of mesh paths (one a line, relative "
+      "to the list's folder; '#' comments) or one mesh; POINTS a file for every mesh, or a "
+      "pattern where {mesh} is each mesh's path without its extension ({mesh}.points.npy). "
+      "Prints a line per mesh (--json: a JSON object per line); a mesh that fails is "
+      "reported and the others go on (exit code 2 at the end, nothing printed)");
+  output_dir->type_name("DIR");
+  for (const char* name : {"--winding", "--labels"})
+    output_dir->excludes(sub->get_option(name));
+
   // A cross-section picture instead of labels (cli/slice_options.hpp).
   CLI::Option* slice = add_slice_options(*sub, options.slice);
-  for (const char* name : {"points", "--labels", "--points-format", "--winding"}) {
+  for (const char* name : {"points", "--labels", "--points-format", "--winding", "--output-dir"}) {
     slice->excludes(sub->get_option(name));
   }
   return *sub;

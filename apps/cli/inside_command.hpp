@@ -34,6 +34,10 @@ struct InsideCommandOptions {
   bool progress_asked = false;  ///< --progress
   /// How progress shows on `err` (the binary sets it: progress_mode(progress_asked, terminal))
   ProgressMode progress = ProgressMode::off;
+  /// --output-dir: `mesh.path` names a batch of meshes (a folder, a .txt list, or one
+  /// mesh), `points` a points file or pattern, and each mesh's labels go to a file there
+  /// (cli/inside_batch.hpp).
+  std::string output_dir;
   /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
   /// are read (cli/slice_command.hpp).
   SliceOptions slice;

@@ -636,6 +636,39 @@ message=$("$exe" ccd --per-query /nonexistent/dir/q.csv "$unit" 2>&1 >/dev/null)
 expect_in "ccd --per-query unwritable message" "$message" \
   "exactgeo ccd: --per-query: cannot write '/nonexistent/dir/q.csv'"
 
+# inside --output-dir: a labels file per mesh; exit 2 when one fails (after the others),
+# and nothing run, nothing on stdout, when the meshes cannot be listed.
+mkdir -p "$scratch/set/sub"
+cp "$cube" "$scratch/set/cube.off"
+cp "$cube" "$scratch/set/sub/cube.off"
+printf '%b' "$points" >"$scratch/set_points.txt"
+expect 0 "inside --output-dir" "" inside "$scratch/set" "$scratch/set_points.txt" \
+  --output-dir "$scratch/set_labels"
+for f in cube sub/cube; do
+  labels=$(tr '\n' ' ' <"$scratch/set_labels/$f.labels.txt")
+  if [ "$labels" != "inside outside boundary " ]; then
+    echo "FAIL: inside --output-dir labels of $f: '$labels'"
+    failures=$((failures + 1))
+  fi
+done
+printf 'OFF\n3 1 0\n' >"$scratch/set/broken.off"
+expect 2 "inside --output-dir with a broken mesh" "" inside "$scratch/set" \
+  "$scratch/set_points.txt" --output-dir "$scratch/set_labels2"
+if [ -e "$scratch/set_labels2/broken.labels.txt" ] || [ ! -e "$scratch/set_labels2/cube.labels.txt" ]; then
+  echo "FAIL: inside --output-dir with a broken mesh: wrong files written"
+  failures=$((failures + 1))
+fi
+expect 2 "inside --output-dir, no list" "" inside "$scratch/no-such-list.txt" \
+  "$scratch/set_points.txt" --output-dir "$scratch/set_labels3"
+expect 2 "inside --output-dir, points on stdin" "0 0 0\n" inside "$scratch/set" \
+  --output-dir "$scratch/set_labels3"
+expect 2 "inside --output-dir with --winding" "" inside "$scratch/set" "$scratch/set_points.txt" \
+  --output-dir "$scratch/set_labels3" --winding
+if [ -e "$scratch/set_labels3" ]; then
+  echo "FAIL: inside --output-dir refused but wrote $scratch/set_labels3"
+  failures=$((failures + 1))
+fi
+
 # ccd --progress off a terminal: the count of queries, as lines.
 message=$("$exe" ccd --progress "$unit" 2>&1 >/dev/null)
 expect_in "ccd --progress" "$message" ' queries (100.0%)'
