@@ -68,8 +68,10 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
   mesh::FileNumbering numbering;
   // The self-intersection check runs beside the build, which keeps one core busy, on a
   // copy of the mesh (the build takes the original), on the threads asked for; with one
-  // thread asked for, after the build.
+  // thread asked for, after the build, on a copy all the same: the classifier's mesh lacks
+  // the faces of zero area, and the pairs must be named by the file's face numbers.
   std::future<TimedCheck> beside;
+  std::optional<mesh::Mesh> check_after;
   const std::string source = mesh::mesh_source_name(options.path);
   std::optional<LoadedMesh> kept;
   try {
@@ -85,6 +87,8 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {
         return check_self_intersections(copy, threads);
       });
+    } else if (options.self_intersection_check) {
+      check_after = loaded.mesh;
     }
     if (progress) {
       progress->task("building the search structure (" + grouped(loaded.mesh.faces.size()) +
@@ -146,7 +150,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     if (progress && !beside.valid()) progress->task("looking for faces that intersect");
     TimedCheck check;
     try {
-      check = beside.valid() ? beside.get() : check_self_intersections(built.mesh(), 1);
+      check = beside.valid() ? beside.get() : check_self_intersections(*check_after, 1);
     } catch (const std::exception& e) {  // memory or threads running out
       err << "exactgeo inside: " << source << ": cannot look for faces that intersect: " << e.what()
           << "\n";

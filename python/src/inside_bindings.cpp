@@ -176,7 +176,9 @@ ClassifierObject build(const MeshObject& mesh, const py::object& rule, bool allo
     py::gil_scoped_release release;
     built.emplace(std::move(copy), options);
     if (built->rule() == inside::FillRule::parity) {
-      self = mesh::find_self_intersections(built->mesh(), workers);
+      // On the mesh as given: the classifier's lacks the faces of zero area, and the pairs
+      // are named by the file's face numbers.
+      self = mesh::find_self_intersections(mesh.loaded.mesh, workers);
     }
   } catch (const std::invalid_argument& e) {
     // The command line's message, in the file's own numbering, saying which.

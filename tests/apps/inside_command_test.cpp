@@ -372,6 +372,38 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;
 }
 
+// The same two cubes after a flat pillow (two triangles on three collinear points, zero
+// area, dropped by the classifier): the pairs are named by the file's face numbers (each
+// shifted by the pillow's two faces), on two threads and on one, where the check once ran
+// on the classifier's mesh without the pillow and named the wrong faces.
+TEST_F(InsideCommand, IntersectingFacesAreNamedAsTheFileNumbersThemAfterFacesOfZeroArea) {
+  std::string obj = "v 5 0 0\nv 6 0 0\nv 7 0 0\nf 1 2 3\nf 1 3 2\n";
+  for (const double offset : {0.0, 0.5})
+    for (int c = 0; c < 8; ++c)
+      obj += "v " + std::to_string((c & 1) + offset) + " " +
+             std::to_string(((c >> 1) & 1) + offset) + " " +
+             std::to_string(((c >> 2) & 1) + offset) + "\n";
+  for (const int first : {4, 12})
+    for (const auto& q : testing::kHexahedronFaces)
+      obj += "f " + std::to_string(q[0] + first) + " " + std::to_string(q[1] + first) + " " +
+             std::to_string(q[2] + first) + " " + std::to_string(q[3] + first) + "\n";
+  write_file(dir_ / "pillow_and_cubes.obj", obj);
+  write_file(dir_ / "points.txt", "0.25 0.25 0.25\n");
+  InsideCommandOptions options;
+  options.mesh.path = (dir_ / "pillow_and_cubes.obj").string();
+  options.mesh.rule = inside::FillRule::parity;
+  for (const unsigned threads : {2u, 1u}) {
+    options.mesh.threads = threads;
+    const Outcome outcome = run_file(options, dir_ / "points.txt");
+    ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+    EXPECT_NE(outcome.err.find("2 faces of zero area (first: 1, 2) bound nothing"),
+              std::string::npos)
+        << outcome.err;
+    EXPECT_NE(outcome.err.find("6 pairs of faces intersect (first: 4-11, "), std::string::npos)
+        << "threads " << threads << ": " << outcome.err;
+  }
+}
+
 // Spot's control mesh: coarse, its quads far from planar, some neighbours bent through
 // each other. By parity the intersecting pairs and the undecided ones are each said on
 // their own, the undecided ones with what they are (all ten are neighbours) and what to
