@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/inside_mesh.hpp"
+#include "cli/json.hpp"
 #include "cli/mesh_load_options.hpp"
 #include "cli/progress_line.hpp"
 #include "cli/progress_option.hpp"
@@ -94,16 +95,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   ProgressLine progress(err, options.progress, "points");
   const std::optional<InsideMesh> built = build_inside_mesh(options.mesh, err, &progress);
   if (!built) return ExitCode::input_error;
-  if (options.winding && !built->classifier->oriented()) {
+  // Against an open surface --winding prints the generalized winding number, a real number.
+  const bool real_windings = options.winding && built->classifier->open();
+  if (options.winding && !real_windings && !built->classifier->oriented()) {
     progress.clear();
     err << "exactgeo inside: " << mesh::mesh_source_name(options.mesh.path)
-        << (built->classifier->open()
-                ? ": no integer winding numbers: the surface is open, and its generalized "
-                  "winding numbers are real numbers (the labels, without --winding, are "
-                  "certified from them)\n"
-                : ": no winding numbers: the faces are not oriented alike (some edge is used "
-                  "more often in one direction than in the other), so only parity labels are "
-                  "defined\n");
+        << ": no winding numbers: the faces are not oriented alike (some edge is used more "
+           "often in one direction than in the other), so only parity labels are defined\n";
     return ExitCode::input_error;
   }
   progress.task("classifying");
@@ -117,6 +115,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   std::span<const Point3> block;
   std::vector<inside::Location> locations;
   std::vector<std::optional<std::int64_t>> windings;
+  std::vector<std::optional<Enclosure>> bounds;
   std::vector<inside::Location> kept;
   std::string text;
   const auto read_block = [&] {
@@ -128,7 +127,12 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
-      if (options.winding) {
+      if (real_windings) {
+        // No labels: --winding prints the values, and the counts (--json) are refused with it.
+        bounds.resize(block.size());
+        built->generalized_winding_numbers(block, bounds, options.mesh.arithmetic,
+                                           options.mesh.threads);
+      } else if (options.winding) {
         windings.resize(block.size());
         built->winding_numbers(block, windings, options.mesh.arithmetic, options.mesh.threads);
         for (std::size_t i = 0; i < block.size(); ++i)
@@ -140,6 +144,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       tally.points += block.size();
       text.clear();
       for (std::size_t i = 0; i < block.size(); ++i) {
+        if (real_windings) {
+          // A double between the certified bounds, which are at most about 2^-40 apart.
+          const std::optional<Enclosure>& w = bounds[i];
+          text.append(w ? shortest(w->lower + (w->upper - w->lower) / 2) : "boundary");
+          text.push_back('\n');
+          continue;
+        }
         const inside::Location l = locations[i];
         tally.by_location.add(l);
         if (!print_labels) continue;
@@ -245,8 +256,9 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       ->check(CLI::IsMember({"nonzero", "parity", "positive"}));
   CLI::Option* winding = sub->add_flag(
       "--winding", options.winding,
-      "print each point's winding number (an integer, exact) instead of its label; boundary "
-      "for points on the surface");
+      "print each point's winding number (an integer, exact) instead of its label; against an "
+      "open surface its generalized winding number (a decimal within about 2^-41 of the true "
+      "value, certified); boundary for points on the surface");
   winding->excludes(json);
   add_weld_flag(*sub, options.mesh.load.weld);
   add_split_polygons_flag(*sub, options.mesh.load.split_polygons, " instead of refusing the mesh");

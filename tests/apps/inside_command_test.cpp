@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli/inside_command.hpp"
+#include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "support/generators.hpp"
 #include "support/hexahedron.hpp"
@@ -460,6 +461,38 @@ std::string obj_cube(double lower, double size, int first, bool reversed = false
 
 // --winding prints the integers; the rules label by them (a shell in a shell alike: w = 2
 // in the middle; a cube inside out: w = -1); the JSON says which rule labelled.
+// Against an open surface --winding prints the generalized winding number: the open box
+// (top face missing) holds 5/6 at its centre and 1/2 at the missing face's centre; above
+// the hole at height 1/2, w = 4 asin(1/2) / 4 pi = 1/6. The value printed is the midpoint
+// of the classifier's certified bounds, in the shortest decimal that reads back to it.
+TEST_F(InsideCommand, WindingAgainstAnOpenSurfaceIsTheGeneralizedWindingNumber) {
+  write_file(dir_ / "open_box.obj",
+             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+             "f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n0.5 0.5 1\n0.5 0.5 1.5\n0.5 0.5 0\n");
+  InsideCommandOptions options;
+  options.mesh.path = (dir_ / "open_box.obj").string();
+  options.winding = true;
+  const Outcome r = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(r.code, ExitCode::success) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<std::string> printed;
+  for (std::string line; std::getline(lines, line);)
+    printed.push_back(line);
+  ASSERT_EQ(printed.size(), 4u) << r.out;
+  const std::vector<double> truth{5.0 / 6.0, 0.5, 1.0 / 6.0};
+  const inside::Classifier classifier(mesh::load_mesh(options.mesh.path).mesh);
+  const std::vector<Point3> points{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}, {0.5, 0.5, 1.5}};
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const double w = std::stod(printed[i]);
+    EXPECT_NEAR(w, truth[i], 1e-12) << printed[i];
+    const auto bounds = classifier.generalized_winding_number(points[i]);
+    ASSERT_TRUE(bounds);
+    EXPECT_EQ(w, bounds->lower + (bounds->upper - bounds->lower) / 2) << printed[i];
+  }
+  EXPECT_EQ(printed[3], "boundary");
+}
+
 TEST_F(InsideCommand, WindingNumbersAndRules) {
   write_file(dir_ / "nested.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9));
   write_file(dir_ / "cavity.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9, /*reversed=*/true));
