@@ -12,8 +12,10 @@
 #include "cli/ccd_mesh_command.hpp"
 #include "cli/exit_code.hpp"
 #include "cli/info_command.hpp"
+#include "cli/inside_batch.hpp"
 #include "cli/inside_command.hpp"
 #include "cli/predicate_command.hpp"
+#include "cli/progress_line.hpp"
 #include "exactgeo/version.hpp"
 
 namespace {
@@ -72,14 +74,18 @@ int main(int argc, char** argv) {
         });
   }
   if (ccd_command.parsed()) {
-    ccd.progress = isatty(STDERR_FILENO) != 0;
+    ccd.progress = exactgeo::cli::progress_mode(ccd.progress_asked, isatty(STDERR_FILENO) != 0);
     return to_int(exactgeo::cli::run_ccd(ccd, std::cout, std::cerr));
   }
   if (ccd_mesh_command.parsed()) {
     return to_int(exactgeo::cli::run_ccd_mesh(ccd_mesh, std::cout, std::cerr));
   }
   if (inside_command.parsed()) {
-    inside.progress = isatty(STDERR_FILENO) != 0;
+    inside.progress =
+        exactgeo::cli::progress_mode(inside.progress_asked, isatty(STDERR_FILENO) != 0);
+    if (!inside.output_dir.empty()) {
+      return to_int(exactgeo::cli::run_inside_batch(inside, std::cout, std::cerr));
+    }
     return with_input(inside.points, "inside", [&](std::istream& in, const std::string& source) {
       return exactgeo::cli::run_inside(inside, in, source, std::cout, std::cerr);
     });

@@ -7,6 +7,7 @@
 
 #include "cli/ccd_method_option.hpp"
 #include "cli/number_option.hpp"
+#include "cli/progress_option.hpp"
 
 namespace exactgeo::cli {
 
@@ -45,6 +46,7 @@ CLI::App& add_ccd_command(CLI::App& app, CcdCommandOptions& options) {
       "query's own time, in all and by deciding stage). Exit code 1 when a false negative "
       "is found.");
   sub->add_option("paths", options.paths, "query files or directories")->required();
+  add_progress_flag(*sub, options.progress_asked);
   add_ccd_method_option(*sub, options.ccd.method,
                         {ccd::Method::exact, ccd::Method::parity, ccd::Method::plain_double,
                          ccd::Method::rational, ccd::Method::cubic},

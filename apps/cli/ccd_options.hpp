@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/progress_line.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/files/query_files.hpp"
 
@@ -26,7 +27,9 @@ struct CcdCommandOptions {
   /// --min-separation as given; checked_ccd_options reads it.
   std::optional<std::string> min_separation;
   bool json = false;
-  bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
+  bool progress_asked = false;  ///< --progress
+  /// How progress shows on `err` (the binary sets it: progress_mode(progress_asked, terminal))
+  ProgressMode progress = ProgressMode::off;
   std::vector<std::string> paths;
 };
 

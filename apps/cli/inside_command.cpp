@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "cli/inside_mesh.hpp"
+#include "cli/json.hpp"
 #include "cli/mesh_load_options.hpp"
 #include "cli/progress_line.hpp"
+#include "cli/progress_option.hpp"
 #include "cli/seconds.hpp"
 #include "cli/slice_command.hpp"
 #include "cli/threads_option.hpp"
@@ -93,16 +95,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   ProgressLine progress(err, options.progress, "points");
   const std::optional<InsideMesh> built = build_inside_mesh(options.mesh, err, &progress);
   if (!built) return ExitCode::input_error;
-  if (options.winding && !built->classifier->oriented()) {
+  // Against an open surface --winding prints the generalized winding number, a real number.
+  const bool real_windings = options.winding && built->classifier->open();
+  if (options.winding && !real_windings && !built->classifier->oriented()) {
     progress.clear();
     err << "exactgeo inside: " << mesh::mesh_source_name(options.mesh.path)
-        << (built->classifier->open()
-                ? ": no integer winding numbers: the surface is open, and its generalized "
-                  "winding numbers are real numbers (the labels, without --winding, are "
-                  "certified from them)\n"
-                : ": no winding numbers: the faces are not oriented alike (some edge is used "
-                  "more often in one direction than in the other), so only parity labels are "
-                  "defined\n");
+        << ": no winding numbers: the faces are not oriented alike (some edge is used more "
+           "often in one direction than in the other), so only parity labels are defined\n";
     return ExitCode::input_error;
   }
   progress.task("classifying");
@@ -116,6 +115,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
   std::span<const Point3> block;
   std::vector<inside::Location> locations;
   std::vector<std::optional<std::int64_t>> windings;
+  std::vector<std::optional<Enclosure>> bounds;
   std::vector<inside::Location> kept;
   std::string text;
   const auto read_block = [&] {
@@ -127,7 +127,12 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     for (read_block(); !block.empty(); read_block()) {
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
-      if (options.winding) {
+      if (real_windings) {
+        // No labels: --winding prints the values, and the counts (--json) are refused with it.
+        bounds.resize(block.size());
+        built->generalized_winding_numbers(block, bounds, options.mesh.arithmetic,
+                                           options.mesh.threads);
+      } else if (options.winding) {
         windings.resize(block.size());
         built->winding_numbers(block, windings, options.mesh.arithmetic, options.mesh.threads);
         for (std::size_t i = 0; i < block.size(); ++i)
@@ -139,6 +144,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       tally.points += block.size();
       text.clear();
       for (std::size_t i = 0; i < block.size(); ++i) {
+        if (real_windings) {
+          // A double between the certified bounds, which are at most about 2^-40 apart.
+          const std::optional<Enclosure>& w = bounds[i];
+          text.append(w ? shortest(w->lower + (w->upper - w->lower) / 2) : "boundary");
+          text.push_back('\n');
+          continue;
+        }
         const inside::Location l = locations[i];
         tally.by_location.add(l);
         if (!print_labels) continue;
@@ -193,10 +205,14 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
 CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
   CLI::App* sub = app.add_subcommand(
       "inside",
-      "Classify points against a closed quad/triangle mesh, exactly: one word per point "
-      "(inside, outside or boundary), in input order. POINTS is text (three numbers per line: "
-      "decimal or hexfloat, separated by spaces and/or commas; '#' comments), raw "
-      "little-endian float64 triples (f64), or a NumPy .npy array of shape (n, 3), float64.");
+      "Classify points against a quad/triangle mesh, exactly: one word per point, in input "
+      "order: inside, outside, boundary (on a face) or undecided. A closed mesh holds the "
+      "points its winding number and --rule say; an open one (holes, boundary edges) those "
+      "where its generalized winding number w is at least 1/2 in magnitude (--rule positive: "
+      "w >= 1/2), certified, and undecided where w is exactly 1/2 or too close to it to "
+      "settle. POINTS is text (three numbers per line: decimal or hexfloat, separated by "
+      "spaces and/or commas; '#' comments), raw little-endian float64 triples (f64), or a "
+      "NumPy .npy array of shape (n, 3), float64.");
   sub->add_option("mesh", options.mesh.path,
                   "OBJ, OFF, PLY or STL (exact), or any format assimp reads; - for standard "
                   "input (with --format and a POINTS file)")
@@ -215,6 +231,7 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
          "boundary)")
       ->check(CLI::IsMember({"exact", "double", "embree"}));
   add_threads_option(*sub, options.mesh.threads);
+  add_progress_flag(*sub, options.progress_asked);
   sub->add_option_function<std::string>(
          "--points-format",
          [&options](const std::string& f) { options.points_format = io::parse_point_format(f); },
@@ -239,25 +256,42 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       ->check(CLI::IsMember({"nonzero", "parity", "positive"}));
   CLI::Option* winding = sub->add_flag(
       "--winding", options.winding,
-      "print each point's winding number (an integer, exact) instead of its label; boundary "
-      "for points on the surface");
+      "print each point's winding number (an integer, exact) instead of its label; against an "
+      "open surface its generalized winding number (a decimal within about 2^-41 of the true "
+      "value, certified); boundary for points on the surface");
   winding->excludes(json);
   add_weld_flag(*sub, options.mesh.load.weld);
-  add_split_polygons_flag(*sub, options.mesh.load.split_polygons);
+  add_split_polygons_flag(*sub, options.mesh.load.split_polygons, " instead of refusing the mesh");
   sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,
                 "with --rule parity: accept edges shared by 4, 6, ... faces (parity is still "
                 "defined; the winding rules accept edges used as often in each direction)");
   sub->add_flag("!--no-self-intersection-check", options.mesh.self_intersection_check,
                 "skip looking for faces that intersect (exact; about as long as building the "
-                "search structure). On a mesh whose faces intersect the labels are those of the "
-                "parity solid, and without the check nothing says so");
+                "search structure). It matters under --rule parity, where faces that intersect "
+                "make the labels those of the parity solid and the check warns; under nonzero "
+                "and positive, intersections change no winding number, and the check only "
+                "counts them for --json");
   sub->add_flag("!--no-space-cells", options.mesh.space_cells,
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");
 
+  // A data set: one labels file per mesh (cli/inside_batch.hpp).
+  CLI::Option* output_dir = sub->add_option(
+      "--output-dir", options.output_dir,
+      "classify against every mesh MESH names and write each mesh's labels (one a line) to "
+      "DIR/NAME.labels.txt, whole or not at all: MESH a folder (its mesh files, in every "
+      "subfolder, their relative paths kept), a .txt list of mesh paths (one a line, relative "
+      "to the list's folder; '#' comments) or one mesh; POINTS a file for every mesh, or a "
+      "pattern where {mesh} is each mesh's path without its extension ({mesh}.points.npy). "
+      "Prints a line per mesh (--json: a JSON object per line); a mesh that fails is "
+      "reported and the others go on (exit code 2 at the end, nothing printed)");
+  output_dir->type_name("DIR");
+  for (const char* name : {"--winding", "--labels"})
+    output_dir->excludes(sub->get_option(name));
+
   // A cross-section picture instead of labels (cli/slice_options.hpp).
   CLI::Option* slice = add_slice_options(*sub, options.slice);
-  for (const char* name : {"points", "--labels", "--points-format", "--winding"}) {
+  for (const char* name : {"points", "--labels", "--points-format", "--winding", "--output-dir"}) {
     slice->excludes(sub->get_option(name));
   }
   return *sub;

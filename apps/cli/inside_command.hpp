@@ -11,6 +11,7 @@
 
 #include "cli/exit_code.hpp"
 #include "cli/inside_mesh.hpp"
+#include "cli/progress_line.hpp"
 #include "cli/slice_options.hpp"
 #include "exactgeo/io/point_reader.hpp"
 
@@ -30,7 +31,13 @@ struct InsideCommandOptions {
   bool labels = false;  ///< with json: the labels too, in input order
   /// Print each point's winding number instead of its label ("boundary" on the surface).
   bool winding = false;
-  bool progress = false;  ///< a progress line on `err` (the binary sets it for a terminal)
+  bool progress_asked = false;  ///< --progress
+  /// How progress shows on `err` (the binary sets it: progress_mode(progress_asked, terminal))
+  ProgressMode progress = ProgressMode::off;
+  /// --output-dir: `mesh.path` names a batch of meshes (a folder, a .txt list, or one
+  /// mesh), `points` a points file or pattern, and each mesh's labels go to a file there
+  /// (cli/inside_batch.hpp).
+  std::string output_dir;
   /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
   /// are read (cli/slice_command.hpp).
   SliceOptions slice;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cli/seconds.hpp"
+#include "exactgeo/inside/self_intersection_warning.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/load.hpp"
@@ -67,8 +68,10 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
   mesh::FileNumbering numbering;
   // The self-intersection check runs beside the build, which keeps one core busy, on a
   // copy of the mesh (the build takes the original), on the threads asked for; with one
-  // thread asked for, after the build.
+  // thread asked for, after the build, on a copy all the same: the classifier's mesh lacks
+  // the faces of zero area, and the pairs must be named by the file's face numbers.
   std::future<TimedCheck> beside;
+  std::optional<mesh::Mesh> check_after;
   const std::string source = mesh::mesh_source_name(options.path);
   std::optional<LoadedMesh> kept;
   try {
@@ -84,10 +87,12 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {
         return check_self_intersections(copy, threads);
       });
+    } else if (options.self_intersection_check) {
+      check_after = loaded.mesh;
     }
     if (progress) {
       progress->task("building the search structure (" + grouped(loaded.mesh.faces.size()) +
-                      " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
+                     " faces)" + (beside.valid() ? " and looking for faces that intersect" : ""));
     }
     const Clock::time_point start = Clock::now();
     if (options.float_rays) {
@@ -145,7 +150,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     if (progress && !beside.valid()) progress->task("looking for faces that intersect");
     TimedCheck check;
     try {
-      check = beside.valid() ? beside.get() : check_self_intersections(built.mesh(), 1);
+      check = beside.valid() ? beside.get() : check_self_intersections(*check_after, 1);
     } catch (const std::exception& e) {  // memory or threads running out
       err << "exactgeo inside: " << source << ": cannot look for faces that intersect: " << e.what()
           << "\n";
@@ -153,17 +158,15 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     }
     built.self = std::move(check.found);
     built.self_intersection_seconds = check.seconds;
+    // Intersections change labels by parity only (the float ray baseline counts parity).
     const bool parity = options.float_rays || built.classifier->rule() == inside::FillRule::parity;
-    const auto problem = mesh::self_intersection_problem(*built.self, numbering);
-    if (problem && parity) {
-      if (progress) progress->clear();
-      err << "exactgeo inside: warning: " << source << ": " << *problem
-          << ": the labels are those of the parity solid (inside where rays cross the surface "
-             "an odd number of times), which is not the solid such faces were meant to bound"
-          << (built.classifier && built.classifier->oriented()
-                  ? "; --rule nonzero labels overlapping parts as their union"
-                  : "")
-          << "\n";
+    if (parity) {
+      const bool oriented = built.classifier && built.classifier->oriented();
+      for (const std::string& warning : inside::self_intersection_warnings(
+               *built.self, numbering, oriented, inside::kCommandLineNames)) {
+        if (progress) progress->clear();
+        err << "exactgeo inside: warning: " << source << ": " << warning << "\n";
+      }
     }
   }
   return built;

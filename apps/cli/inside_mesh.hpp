@@ -80,6 +80,14 @@ struct InsideMesh {
                        unsigned threads) const {
     inside::winding_number_batch(*classifier, points, windings, arithmetic, threads);
   }
+
+  /// The generalized winding numbers of `points` as certified bounds (nullopt on the
+  /// surface). The classifier only (inside::generalized_winding_number_batch).
+  void generalized_winding_numbers(std::span<const Point3> points,
+                                   std::span<std::optional<Enclosure>> bounds,
+                                   Arithmetic arithmetic, unsigned threads) const {
+    inside::generalized_winding_number_batch(*classifier, points, bounds, arithmetic, threads);
+  }
 };
 
 /// Loads the mesh, builds its classifier and (unless the options skip it) looks for faces

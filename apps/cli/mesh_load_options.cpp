@@ -18,9 +18,10 @@ void add_weld_flag(CLI::App& sub, bool& weld, std::string_view more) {
 
 void add_split_polygons_flag(CLI::App& sub, bool& split_polygons, std::string_view more) {
   sub.add_flag("--split-polygons", split_polygons,
-               "make a face of more than four corners whose edges cross the fan of triangles "
-               "from its first corner (other polygons are always split, exactly)" +
-                   std::string(more));
+               "split a face of more than four corners whose edges cross into the fan of "
+               "triangles from its first corner" +
+                   std::string(more) +
+                   " (other faces of more than four corners are always split, exactly)");
 }
 
 }  // namespace exactgeo::cli

@@ -23,9 +23,10 @@ void add_mesh_format_option(CLI::App& sub, std::string& format);
 /// equal coordinates, then `more`; `weld` must outlive the parse.
 void add_weld_flag(CLI::App& sub, bool& weld, std::string_view more = {});
 
-/// Registers `--split-polygons` (mesh::LoadOptions::split_polygons), described as making
-/// the faces of more than four corners whose edges cross triangle fans, then `more`;
-/// `split_polygons` must outlive the parse.
+/// Registers `--split-polygons` (mesh::LoadOptions::split_polygons), described as splitting
+/// a face of more than four corners whose edges cross into a triangle fan, then `more` (what
+/// happens without it: " instead of refusing the file"), then that other such faces are
+/// always split; `split_polygons` must outlive the parse.
 void add_split_polygons_flag(CLI::App& sub, bool& split_polygons, std::string_view more = {});
 
 }  // namespace exactgeo::cli

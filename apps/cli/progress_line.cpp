@@ -53,39 +53,62 @@ std::string progress_text(std::uint64_t done, std::optional<std::uint64_t> total
   return text;
 }
 
-ProgressLine::ProgressLine(std::ostream& err, bool enabled, std::string unit)
-    : err_(err), enabled_(enabled), unit_(std::move(unit)) {}
+ProgressMode progress_mode(bool asked, bool terminal) noexcept {
+  if (terminal) return ProgressMode::terminal;
+  return asked ? ProgressMode::lines : ProgressMode::off;
+}
+
+ProgressLine::ProgressLine(std::ostream& err, ProgressMode mode, std::string unit)
+    : err_(err), mode_(mode), unit_(std::move(unit)) {}
 
 ProgressLine::~ProgressLine() {
   clear();
 }
 
 void ProgressLine::task(std::string_view what) {
-  if (!enabled_) return;
+  if (mode_ == ProgressMode::off) return;
+  clear();  // as lines: the task before ends with its latest count
   start_ = Clock::now();
   std::string text(what);
   text.append("...");
   draw(text);
+  counted_ = false;
 }
 
 void ProgressLine::count(std::uint64_t done, std::optional<std::uint64_t> total,
                          std::optional<double> fraction) {
-  if (!enabled_) return;
+  if (mode_ == ProgressMode::off) return;
   const Clock::time_point now = Clock::now();
   const bool finished = total && done >= *total;
-  if (shown_ && !finished && now - last_draw_ < std::chrono::milliseconds(100)) return;
-  last_draw_ = now;
+  const auto interval = mode_ == ProgressMode::terminal ? std::chrono::milliseconds(100)
+                                                        : std::chrono::milliseconds(1000);
   const double seconds = std::chrono::duration<double>(now - start_).count();
-  draw(progress_text(done, total, fraction, seconds, unit_));
+  std::string text = progress_text(done, total, fraction, seconds, unit_);
+  if (counted_ && !finished && now - last_draw_ < interval) {
+    if (mode_ == ProgressMode::lines) held_ = std::move(text);
+    return;
+  }
+  last_draw_ = now;
+  counted_ = true;
+  held_.clear();
+  draw(text);
 }
 
 void ProgressLine::clear() {
-  if (!enabled_ || !shown_) return;
+  if (mode_ == ProgressMode::lines && !held_.empty()) {
+    draw(held_);
+    held_.clear();
+  }
+  if (mode_ != ProgressMode::terminal || !shown_) return;
   err_ << "\r\033[K" << std::flush;
   shown_ = false;
 }
 
 void ProgressLine::draw(const std::string& text) {
+  if (mode_ == ProgressMode::lines) {
+    err_ << text << "\n" << std::flush;
+    return;
+  }
   err_ << "\r\033[K" << text << std::flush;  // erase the rest of a longer earlier line
   shown_ = true;
 }

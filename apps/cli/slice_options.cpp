@@ -37,7 +37,8 @@ CLI::Option* add_slice_options(CLI::App& sub, SliceOptions& slice) {
              "draw a cross-section instead of reading POINTS: the plane AXIS=VALUE (AXIS x, y "
              "or z; VALUE decimal or hexfloat, read exactly), written to --image. Each pixel "
              "shows the exact label of its centre: inside sky blue, outside white, boundary "
-             "vermillion; the mesh's cross-section curve is drawn over it in black. The "
+             "vermillion, undecided reddish purple; the mesh's cross-section curve is drawn "
+             "over it in black. The "
              "picture spans the mesh's box in the other two axes, grown by 1/32 of its longer "
              "side; to the right and up: x and y for z=..., y and z for x=..., x and z for "
              "y=...")

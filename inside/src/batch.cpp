@@ -49,6 +49,16 @@ void winding_number_batch(const Classifier& classifier, std::span<const Point3> 
       });
 }
 
+void generalized_winding_number_batch(const Classifier& classifier, std::span<const Point3> points,
+                                      std::span<std::optional<Enclosure>> windings,
+                                      Arithmetic arithmetic, unsigned threads) {
+  classify_in_blocks(
+      points, windings, threads,
+      [&classifier, arithmetic, scratch = ClassifierScratch{}](const Point3& point) mutable {
+        return classifier.generalized_winding_number(point, arithmetic, scratch);
+      });
+}
+
 void classify_batch(const FloatRayParity& baseline, std::span<const Point3> points,
                     std::span<Location> locations, unsigned threads) {
   classify_in_blocks(points, locations, threads,

@@ -8,6 +8,7 @@
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/inside/internal/open_label.hpp"
+#include "exactgeo/inside/internal/open_winding.hpp"
 #include "exactgeo/inside/internal/space_cells.hpp"
 #include "exactgeo/inside/internal/unit_frame.hpp"
 #include "exactgeo/mesh/boundary_chain.hpp"
@@ -168,6 +169,34 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
   });
 }
 
+/// The generalized winding number's bounds, rays cast as for its label.
+std::optional<Enclosure> Classifier::open_winding_number(const State& s, const Point3& point,
+                                                         Arithmetic arithmetic,
+                                                         ClassifierScratch& scratch) {
+  const auto value = [&](std::int64_t crossings, const Vector3& ray) {
+    return internal::open_winding(crossings, point, ray, s.mesh.vertices, s.boundary, arithmetic);
+  };
+  using internal::OpenWindingKind;
+  if (internal::strictly_outside(s.box, point)) {
+    const internal::OpenWinding w = value(0, internal::ray_away_from(s.box, point));
+    // A ray that leaves the box behind meets no edge: never ray_on_edge.
+    if (w.kind == OpenWindingKind::on_edge) return std::nullopt;
+    return w.w;
+  }
+  const RayOrigin origin(s, point);
+  return kernel::with_signs(arithmetic, [&](const auto& signs) -> std::optional<Enclosure> {
+    for (std::size_t k = 0; k < max_rays(arithmetic); ++k) {
+      const SignedRayCount count = count_ray(s, signs, arithmetic, origin, k, scratch);
+      if (count.kind == RayCount::origin_on_face) return std::nullopt;
+      if (count.kind == RayCount::degenerate) continue;
+      const internal::OpenWinding w = value(count.total, ray_direction(k));
+      if (w.kind == OpenWindingKind::on_edge) return std::nullopt;
+      if (w.kind == OpenWindingKind::enclosed) return w.w;
+    }
+    return Enclosure{0.0, 0.0};  // plain double only (see kPlainDoubleDirections), as classify
+  });
+}
+
 /// The same, points outside the box and in labelled space cells answered first.
 std::optional<std::int64_t> Classifier::signed_count(const State& s, const Point3& point,
                                                      Arithmetic arithmetic,
@@ -286,6 +315,22 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
 Location Classifier::location_of(const std::optional<std::int64_t>& winding) const noexcept {
   if (!winding) return Location::boundary;
   return holds(state_->rule, *winding) ? Location::inside : Location::outside;
+}
+
+std::optional<Enclosure> Classifier::generalized_winding_number(const Point3& point,
+                                                                Arithmetic arithmetic) const {
+  ClassifierScratch scratch;
+  return generalized_winding_number(point, arithmetic, scratch);
+}
+
+std::optional<Enclosure> Classifier::generalized_winding_number(const Point3& point,
+                                                                Arithmetic arithmetic,
+                                                                ClassifierScratch& scratch) const {
+  if (open()) return open_winding_number(*state_, point, arithmetic, scratch);
+  const std::optional<std::int64_t> w = winding_number(point, arithmetic, scratch);
+  if (!w) return std::nullopt;
+  const auto exact = static_cast<double>(*w);  // |w| is at most the faces a ray crosses
+  return Enclosure{exact, exact};
 }
 
 std::optional<std::int64_t> Classifier::winding_number(const Point3& point,

@@ -1,10 +1,13 @@
 #include "assimp_reader.hpp"
 
 #include <assimp/scene.h>
+#include <algorithm>
 #include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <exception>
+#include <fstream>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -163,6 +166,30 @@ void require_supported(const Assimp::Importer& importer, const std::string& sour
   }
 }
 
+/// The first bytes of a zip archive.
+constexpr std::string_view kZipSignature{"PK\x03\x04", 4};
+
+/// The AMF format allows the file to be a zip archive holding the XML, which assimp's AMF
+/// importer does not open (it fails on the archive's bytes with an XML parser's message):
+/// said in the file's terms instead, with the way out.
+void refuse_zipped_amf(const std::string& source, const std::string& extension,
+                       std::string_view first_bytes) {
+  if (extension != "amf" || first_bytes.substr(0, kZipSignature.size()) != kZipSignature) return;
+  fail(source,
+       "a zip-compressed AMF file (it starts with the zip signature PK\\3\\4), which "
+       "assimp reads only uncompressed: unzip the XML it holds (unzip -p FILE > plain.amf) "
+       "and read that");
+}
+
+/// The first `n` bytes of the file at `path` (fewer if it is shorter).
+std::string first_bytes(const std::string& path, std::size_t n) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(n, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(n));
+  bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return bytes;
+}
+
 /// `read` runs the importer; its exceptions and failures become InputErrors naming `source`.
 template <class Read>
 LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
@@ -203,6 +230,7 @@ LoadedMesh read_with_assimp(const std::string& path, const std::string& extensio
   Assimp::Importer importer;
   require_supported(importer, path, extension);
   require_readable(path);  // the same message as for the other formats
+  refuse_zipped_amf(path, extension, first_bytes(path, kZipSignature.size()));
   return read_scene(importer, path, extension, options,
                     [&] { return importer.ReadFile(path, 0u); });
 }
@@ -211,6 +239,7 @@ LoadedMesh read_with_assimp_from_memory(const std::string& bytes, const std::str
                                         const std::string& extension, const LoadOptions& options) {
   Assimp::Importer importer;
   require_supported(importer, source, extension);
+  refuse_zipped_amf(source, extension, bytes);
   return read_scene(importer, source, extension, options, [&] {
     return importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0u, extension.c_str());
   });

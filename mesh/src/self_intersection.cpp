@@ -153,6 +153,19 @@ SelfIntersections find_self_intersections(const Mesh& mesh, unsigned threads,
   decide_pending();
   std::sort(result.intersecting.begin(), result.intersecting.end());
   std::sort(result.undecided.begin(), result.undecided.end());
+  for (const FacePair& pair : result.undecided) {
+    const Face& a = mesh.faces[pair.first];
+    const Face& b = mesh.faces[pair.second];
+    const auto end = [](const Face& f) {
+      return f.corners.begin() + static_cast<std::ptrdiff_t>(f.size());
+    };
+    const auto shared = [&](VertexIndex v) {
+      return std::find(b.corners.begin(), end(b), v) != end(b);
+    };
+    if (std::any_of(a.corners.begin(), end(a), shared)) {
+      ++result.undecided_neighbours;
+    }
+  }
   return result;
 }
 

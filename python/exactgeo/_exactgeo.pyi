@@ -1,7 +1,7 @@
 # Type stub of the compiled extension (python/src); tests/python/test_package.py checks
 # that it names exactly what the module defines.
 from os import PathLike
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, List, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -45,9 +45,16 @@ class Classifier:
     def rule(self) -> str: ...
     @property
     def threads(self) -> int: ...
+    @overload
     def winding_numbers(
-        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None
-    ) -> npt.NDArray[np.int32]: ...
+        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None,
+        bounds: Literal[False] = False
+    ) -> npt.NDArray[np.int32] | npt.NDArray[np.float64]: ...
+    @overload
+    def winding_numbers(
+        self, points: _Points, *, method: str = "exact", threads: Optional[int] = None,
+        bounds: Literal[True]
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
     def classify(
         self, points: _Points, *, method: str = "exact", threads: Optional[int] = None,
         first_row: int = 0

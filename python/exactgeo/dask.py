@@ -13,20 +13,26 @@ pickled or sent over the network, only the mesh path. The cache is keyed by the 
 path, its content hash and the loading options, so a mesh file that changes between
 computations is loaded again. The path must name the same file on every worker (a shared
 or copied file system).
+
+For a data set of many meshes, `classify_meshes` runs one task per mesh and writes one
+labels file per mesh:
+
+    >>> results = exactgeo.dask.classify_meshes("/shared/shapes", grid, "/shared/labels")
 """
 
 import hashlib
 import os
 import threading
-from typing import Dict, Iterable, Optional, Tuple
+from typing import Dict, Iterable, List, Optional, Tuple, Union
 
 import dask
 import dask.array as da
 import numpy as np
 
-from . import Classifier, edge_edge_ccd, load_mesh, read_ccd_queries, vertex_face_ccd
+from . import (BOUNDARY, INSIDE, OUTSIDE, UNDECIDED, Classifier, edge_edge_ccd, load_mesh,
+               read_ccd_queries, vertex_face_ccd)
 
-__all__ = ["classify", "ccd_files", "worker_cache"]
+__all__ = ["classify", "classify_meshes", "ccd_files", "worker_cache"]
 
 
 class _ClassifierCache:
@@ -120,6 +126,124 @@ def classify(mesh_path, points, *, method: str = "exact", threads: int = 1, weld
     return points.map_blocks(_classify_block, os.fspath(mesh_path), method, threads,
                              (weld, split_polygons, allow_non_manifold, rule), drop_axis=1,
                              dtype=np.int8, meta=np.empty((0,), np.int8))
+
+
+#: The extensions a folder's files are taken as meshes by (lower case): the formats read
+#: exactly, then assimp's common ones.
+MESH_EXTENSIONS = (".obj", ".off", ".ply", ".stl", ".glb", ".gltf", ".fbx", ".dae", ".3ds",
+                   ".amf", ".3mf")
+LABELS_SUFFIX = ".labels.npy"
+
+
+def _mesh_outputs(meshes, output_dir: str) -> List[Tuple[str, str]]:
+    """(mesh path, labels file) for every mesh: a file as given, a folder's mesh files
+    (MESH_EXTENSIONS, walked recursively, sorted), each labels file named after the mesh,
+    under the folder's relative path for a folder's meshes. Two meshes whose labels files
+    would be one are refused before anything runs."""
+    pairs: List[Tuple[str, str]] = []
+    for given in map(os.fspath, [meshes] if isinstance(meshes, (str, os.PathLike)) else meshes):
+        if os.path.isdir(given):
+            found = sorted(os.path.join(root, name) for root, _, names in os.walk(given)
+                           for name in names if os.path.splitext(name)[1].lower()
+                           in MESH_EXTENSIONS)
+            if not found:
+                raise ValueError(f"{given}: no mesh file in this folder (extensions: "
+                                 f"{', '.join(MESH_EXTENSIONS)})")
+            for path in found:
+                relative = os.path.splitext(os.path.relpath(path, given))[0]
+                pairs.append((path, os.path.join(output_dir, relative + LABELS_SUFFIX)))
+        else:
+            stem = os.path.splitext(os.path.basename(given))[0]
+            pairs.append((given, os.path.join(output_dir, stem + LABELS_SUFFIX)))
+    seen: Dict[str, str] = {}
+    for mesh, labels in pairs:
+        if labels in seen:
+            raise ValueError(f"{seen[labels]} and {mesh} would both write {labels}: give "
+                             "their folder instead (labels files then keep the folders' "
+                             "relative paths)")
+        seen[labels] = mesh
+    return pairs
+
+
+def _classify_mesh_to_file(mesh_path: str, labels_path: str, points, method: str,
+                           threads: int, options: Tuple[bool, bool, bool, Optional[str]]) -> dict:
+    """One mesh's task: its labels written whole to `labels_path` (int8 .npy, in the
+    points' order), or nothing written and the error returned."""
+    weld, split_polygons, allow_non_manifold, rule = options
+    summary = {"mesh": mesh_path, "labels": None}
+    try:
+        if isinstance(points, str):  # a pattern: this mesh's own points file
+            points = np.load(points.format(mesh=os.path.splitext(mesh_path)[0]))
+        mesh = load_mesh(mesh_path, weld=weld, split_polygons=split_polygons)
+        classifier = Classifier(mesh, rule=rule, allow_non_manifold=allow_non_manifold)
+        labels = classifier.classify(points, method=method, threads=threads)
+        os.makedirs(os.path.dirname(labels_path) or ".", exist_ok=True)
+        temporary = f"{labels_path}.{os.getpid()}.{threading.get_ident()}.tmp"
+        try:
+            with open(temporary, "wb") as f:
+                np.save(f, labels)
+            os.replace(temporary, labels_path)
+        finally:
+            if os.path.exists(temporary):
+                os.remove(temporary)
+    except Exception as e:  # noqa: BLE001 - reported per mesh, the others go on
+        summary["error"] = f"{type(e).__name__}: {e}"
+        return summary
+    summary["labels"] = labels_path
+    summary["points"] = int(len(labels))
+    for name, value in (("inside", INSIDE), ("outside", OUTSIDE), ("boundary", BOUNDARY),
+                        ("undecided", UNDECIDED)):
+        summary[name] = int(np.count_nonzero(labels == value))
+    return summary
+
+
+def classify_meshes(meshes, points: Union[str, np.ndarray], output_dir, *,
+                    method: str = "exact", threads: int = 1, weld: bool = False,
+                    split_polygons: bool = False, allow_non_manifold: bool = False,
+                    rule: Optional[str] = None, errors: str = "raise") -> List[dict]:
+    """Classifies points against every mesh of a data set, one task per mesh, and writes
+    one labels file per mesh: what `exactgeo.dask.classify` does for one large mesh and
+    point set, for many meshes.
+
+    meshes: mesh files and/or folders (every file with an extension of MESH_EXTENSIONS,
+        in every subfolder, sorted), readable by every worker.
+    points: the same (n, 3) points for every mesh (an array, sent to the workers once),
+        or a pattern naming each mesh's own .npy points file, "{mesh}" standing for the
+        mesh's path without its extension: "{mesh}.points.npy" reads chair.points.npy for
+        chair.obj.
+    output_dir: where the labels go: for each mesh an int8 .npy array (OUTSIDE, INSIDE,
+        BOUNDARY, UNDECIDED) in the points' order, named after the mesh with the suffix
+        ".labels.npy" (chair.obj: chair.labels.npy), a folder's meshes under their path
+        relative to it (so that a data set's many model.obj files do not collide). Each
+        file is written whole or not at all. It must be writable by every worker.
+    method, threads, weld, split_polygons, allow_non_manifold, rule: as for classify.
+    errors: "raise" (default): once every mesh has been tried, a ValueError naming each
+        mesh that failed and why (the other meshes' files are written); "report": no
+        exception, the failures are in the returned list.
+
+    Returns one dict per mesh, in order: "mesh", "labels" (the file, None when it failed),
+    "points" and the count of each label, or "error" (the exception's type and message).
+    """
+    if errors not in ("raise", "report"):
+        raise ValueError(f"errors must be 'raise' or 'report', not {errors!r}")
+    output_dir = os.fspath(output_dir)
+    pairs = _mesh_outputs(meshes, output_dir)
+    if not isinstance(points, str):
+        points = np.asarray(points)
+        if points.ndim != 2 or points.shape[1] != 3:
+            raise ValueError(f"points must have shape (n, 3), got {points.shape}")
+        points = dask.delayed(points, pure=True)  # one copy in the graph, not one per mesh
+    options = (weld, split_polygons, allow_non_manifold, rule)
+    tasks = [dask.delayed(_classify_mesh_to_file, pure=False)(mesh, labels, points, method,
+                                                                threads, options)
+             for mesh, labels in pairs]
+    results = list(dask.compute(*tasks))
+    failed = [r for r in results if "error" in r]
+    if failed and errors == "raise":
+        written = f" (the others' labels are in {output_dir})" if len(failed) < len(results) else ""
+        raise ValueError(f"{len(failed)} of {len(results)} meshes failed{written}: " +
+                         "; ".join(f"{r['mesh']}: {r['error']}" for r in failed))
+    return results
 
 
 _COUNTS = ("queries", "positives", "truth_positives", "false_positives", "false_negatives")

@@ -7,8 +7,10 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "arrays.hpp"
@@ -17,6 +19,7 @@
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
+#include "exactgeo/inside/self_intersection_warning.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
 #include "mesh_object.hpp"
@@ -78,24 +81,10 @@ py::array_t<bool> contains(const ClassifierObject& classifier, const py::object&
 /// The winding numbers of `points` as int32, kOnSurface for points on a face.
 constexpr std::int32_t kOnSurface = std::numeric_limits<std::int32_t>::min();
 
-py::array_t<std::int32_t> winding_numbers(const ClassifierObject& object,
-                                          const py::object& points_in, const std::string& method,
-                                          const std::optional<int>& threads) {
-  const inside::Classifier& classifier = object.classifier;
-  if (classifier.open()) {
-    throw py::value_error(
-        "no integer winding numbers: the surface is open, and its generalized winding "
-        "numbers are real numbers (classify() labels points by them, certified)");
-  }
-  if (!classifier.oriented()) {
-    throw py::value_error(
-        "no winding numbers: the mesh's faces are not oriented alike (some edge is used more "
-        "often in one direction than in the other); only rule='parity' labels are defined");
-  }
-  const Doubles points = coordinates(points_in, "points", {-1, 3});
-  const Arithmetic arithmetic = arithmetic_named(method);
-  const unsigned workers = threads_for(object, threads);
-  const std::span<const Point3> rows = points_of(points);
+/// The winding numbers of `rows` of a closed oriented surface, as int32 (kOnSurface on a face).
+py::array_t<std::int32_t> integer_windings(const inside::Classifier& classifier,
+                                           std::span<const Point3> rows, Arithmetic arithmetic,
+                                           unsigned workers) {
   std::vector<std::optional<std::int64_t>> windings(rows.size());
   {
     py::gil_scoped_release release;
@@ -113,6 +102,54 @@ py::array_t<std::int32_t> winding_numbers(const ClassifierObject& object,
     data[i] = w ? static_cast<std::int32_t>(*w) : kOnSurface;
   }
   return out;
+}
+
+/// Bounds certain to hold the generalized winding numbers of `rows` (NaN on the surface).
+std::pair<py::array_t<double>, py::array_t<double>> winding_bounds(
+    const inside::Classifier& classifier, std::span<const Point3> rows, Arithmetic arithmetic,
+    unsigned workers) {
+  std::vector<std::optional<Enclosure>> windings(rows.size());
+  {
+    py::gil_scoped_release release;
+    inside::generalized_winding_number_batch(classifier, rows, windings, arithmetic, workers);
+  }
+  const auto n = static_cast<py::ssize_t>(windings.size());
+  py::array_t<double> lower(n), upper(n);
+  double* low = lower.mutable_data();
+  double* high = upper.mutable_data();
+  for (std::size_t i = 0; i < windings.size(); ++i) {
+    low[i] = windings[i] ? windings[i]->lower : std::numeric_limits<double>::quiet_NaN();
+    high[i] = windings[i] ? windings[i]->upper : std::numeric_limits<double>::quiet_NaN();
+  }
+  return {std::move(lower), std::move(upper)};
+}
+
+/// Classifier.winding_numbers: int32 against a closed surface, float64 against an open
+/// one, or (lower, upper) float64 bounds for either with bounds=True.
+py::object winding_numbers(const ClassifierObject& object, const py::object& points_in,
+                           const std::string& method, const std::optional<int>& threads,
+                           bool bounds) {
+  const inside::Classifier& classifier = object.classifier;
+  if (!classifier.open() && !classifier.oriented()) {
+    throw py::value_error(
+        "no winding numbers: the mesh's faces are not oriented alike (some edge is used more "
+        "often in one direction than in the other); only rule='parity' labels are defined");
+  }
+  const Doubles points = coordinates(points_in, "points", {-1, 3});
+  const Arithmetic arithmetic = arithmetic_named(method);
+  const unsigned workers = threads_for(object, threads);
+  const std::span<const Point3> rows = points_of(points);
+  if (!bounds && !classifier.open()) return integer_windings(classifier, rows, arithmetic, workers);
+  auto [lower, upper] = winding_bounds(classifier, rows, arithmetic, workers);
+  if (bounds) return py::make_tuple(std::move(lower), std::move(upper));
+  // One double between the bounds: their midpoint (NaN stays NaN).
+  py::array_t<double> value(lower.size());
+  double* data = value.mutable_data();
+  for (py::ssize_t i = 0; i < lower.size(); ++i) {
+    const double low = lower.at(i), high = upper.at(i);
+    data[i] = low + (high - low) / 2;
+  }
+  return value;
 }
 
 std::optional<inside::FillRule> rule_named(const py::object& name) {
@@ -139,7 +176,9 @@ ClassifierObject build(const MeshObject& mesh, const py::object& rule, bool allo
     py::gil_scoped_release release;
     built.emplace(std::move(copy), options);
     if (built->rule() == inside::FillRule::parity) {
-      self = mesh::find_self_intersections(built->mesh(), workers);
+      // On the mesh as given: the classifier's lacks the faces of zero area, and the pairs
+      // are named by the file's face numbers.
+      self = mesh::find_self_intersections(mesh.loaded.mesh, workers);
     }
   } catch (const std::invalid_argument& e) {
     // The command line's message, in the file's own numbering, saying which.
@@ -162,11 +201,9 @@ ClassifierObject build(const MeshObject& mesh, const py::object& rule, bool allo
         "(rule='parity')");
   }
   if (self) {
-    if (const auto problem = mesh::self_intersection_problem(*self, mesh.loaded.numbering)) {
-      warn(*problem +
-           ": the labels are those of the parity solid (inside where rays cross the surface "
-           "an odd number of times), which is not the solid such faces were meant to bound" +
-           (built->oriented() ? "; rule='nonzero' labels overlapping parts as their union" : ""));
+    for (const std::string& warning : inside::self_intersection_warnings(
+             *self, mesh.loaded.numbering, built->oriented(), inside::kPythonNames)) {
+      warn(warning);
     }
   }
   return {std::move(*built), workers};
@@ -222,13 +259,26 @@ parity, when faces intersect (the labels are then those of the parity solid).)do
           "threads", [](const ClassifierObject& c) { return c.threads; },
           "The threads calls use when they name none (0: all hardware threads).")
       .def("winding_numbers", &winding_numbers, py::arg("points"), py::kw_only(),
-           py::arg("method") = "exact", py::arg("threads") = py::none(),
-           R"doc(The winding number of every point: an int32 array, exact.
+           py::arg("method") = "exact", py::arg("threads") = py::none(), py::arg("bounds") = false,
+           R"doc(The winding number of every point.
 
-ON_SURFACE (the smallest int32) for points on a face, where none is defined. Arguments as
-for classify. Raises ValueError when the faces are not oriented alike (a mesh accepted by
-rule="parity" only) or the surface is open (its generalized winding numbers are not
-integers).)doc")
+Against a closed surface: an int32 array, exact; ON_SURFACE (the smallest int32) for
+points on a face, where none is defined.
+
+Against an open surface (holes, boundary edges): the generalized winding number w, a
+float64 array (the sum of the faces' signed solid angles over 4 pi: the crossings of a ray
+plus a term over the boundary, docs/inside.md "Open surfaces"): the midpoint of the
+certified bounds below, which are at most about 2**-40 apart (wider only for a point
+within rounding of a boundary edge's line); NaN for points on the surface (a face or a
+boundary edge). classify() labels by it: INSIDE where |w| >= 1/2.
+
+bounds=True returns (lower, upper), two float64 arrays with lower <= w <= upper for
+every point, certified (method "exact"), for a closed surface or an open one (closed:
+lower == upper == the winding number); NaN on the surface. With method "double" the two
+are equal and not certified.
+
+Other arguments as for classify. Raises ValueError when the faces of a closed surface are
+not oriented alike (a mesh accepted by rule="parity" only).)doc")
       .def("classify", &classify, py::arg("points"), py::kw_only(), py::arg("method") = "exact",
            py::arg("threads") = py::none(), py::arg("first_row") = 0,
            R"doc(The location of every point: an int8 array of OUTSIDE, INSIDE, BOUNDARY (and

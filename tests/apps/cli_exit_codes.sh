@@ -270,6 +270,25 @@ expect_in "inside error names the line" "$message" '<stdin>:1: expected 3 coordi
 message=$(printf '0 0 0\n' | "$exe" inside "$meshes/negative/corner_with_hole.off" 2>&1 >/dev/null)
 expect_in "inside open mesh note" "$message" 'corner_with_hole.off: the surface is open (4 edges run more often one way than the other): inside where its generalized winding number'
 
+# Progress: nothing on a standard error that is not a terminal, unless --progress asks for
+# it; then plain lines (no carriage returns or terminal escapes), the labels unchanged.
+message=$(printf '%b' "$points" | "$exe" inside "$cube" 2>&1 >/dev/null)
+if [ -n "$message" ]; then
+  echo "FAIL: inside without --progress wrote to a standard error that is no terminal: $message"
+  failures=$((failures + 1))
+fi
+message=$(printf '%b' "$points" | "$exe" inside --progress "$cube" 2>&1 >/dev/null)
+expect_in "inside --progress" "$message" "reading $cube..." 'classifying...' '3 points'
+if [ "$(printf '%s' "$message" | tr -d -c '\r\033' | wc -c)" != 0 ]; then
+  echo "FAIL: inside --progress off a terminal wrote carriage returns or escapes: $message"
+  failures=$((failures + 1))
+fi
+labels=$(printf '%b' "$points" | "$exe" inside --progress "$cube" 2>/dev/null | tr '\n' ' ')
+if [ "$labels" != "inside outside boundary " ]; then
+  echo "FAIL: inside --progress labels on the cube: '$labels'"
+  failures=$((failures + 1))
+fi
+
 # inside, binary points (tests/apps/inside_command_test.cpp has the formats in depth): f64
 # on stdin, 24 zero bytes a point; (0, 0, 0) is the cube's centre.
 zeros24='\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0'
@@ -476,15 +495,20 @@ out=$(printf '0.2 0.2 0.2\n3 3 3\n1 0 0\n' | "$exe" inside "$scratch/sliver.obj"
 expect_in "inside zero-area note" "$(cat "$scratch/sliver.err")" \
   "sliver.obj: 1 face of zero area (first: 6) bounds nothing: dropped (faces numbered from 1, as in the file)"
 # An open box (its top face z = 1 missing): the centre of the missing face has w = 1/2
-# exactly, undecided; deep inside is inside, above the hole outside; --winding is refused.
+# exactly, undecided; deep inside is inside, above the hole outside; --winding prints w.
 printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n' >"$scratch/openbox.obj"
 out=$(printf '0.5 0.5 0.1\n0.5 0.5 1\n0.5 0.5 1.5\n' | "$exe" inside "$scratch/openbox.obj" 2>/dev/null | tr '\n' ' ')
 [ "$out" = "inside undecided outside " ] || { echo "FAIL: inside on an open box: '$out'"; failures=$((failures + 1)); }
 json=$(printf '0.5 0.5 0.1\n0.5 0.5 1\n' | "$exe" inside --json "$scratch/openbox.obj" 2>/dev/null)
 expect_in "inside --json open box" "$json" '"inside": 1' '"undecided": 1' '"rule": "nonzero"'
-expect 2 "inside --winding open box" "0.5 0.5 0.1\n" inside --winding "$scratch/openbox.obj"
-message=$(printf '0.5 0.5 0.1\n' | "$exe" inside --winding "$scratch/openbox.obj" 2>&1 >/dev/null)
-expect_in "inside --winding open box message" "$message" "no integer winding numbers: the surface is open"
+# Above the hole at height 1/2 the missing square subtends 4 asin(1/2): w = 1/6; the
+# missing face's centre 1/2; on the bottom face no value.
+out=$(printf '0.5 0.5 1.5\n0.5 0.5 1\n0.5 0.5 0\n' | "$exe" inside --winding "$scratch/openbox.obj" 2>/dev/null | tr '\n' ' ')
+if ! printf '%s' "$out" | awk '{ d1 = $1 - 1/6; d2 = $2 - 0.5; if (d1 < 0) d1 = -d1; if (d2 < 0) d2 = -d2
+                                 exit !(NF == 3 && d1 < 1e-12 && d2 < 1e-12 && $3 == "boundary") }'; then
+  echo "FAIL: inside --winding on an open box: '$out'"
+  failures=$((failures + 1))
+fi
 expect 2 "inside --rule parity open box" "0.5 0.5 0.1\n" inside --rule parity "$scratch/openbox.obj"
 # A PLY header line of no keyword (exporters write "Created by ..."): skipped, and said.
 printf 'ply\nformat ascii 1.0\nCreated by an exporter\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n' >"$scratch/created.ply"
@@ -616,5 +640,42 @@ expect 2 "ccd --per-query unwritable" "" ccd --per-query /nonexistent/dir/q.csv 
 message=$("$exe" ccd --per-query /nonexistent/dir/q.csv "$unit" 2>&1 >/dev/null)
 expect_in "ccd --per-query unwritable message" "$message" \
   "exactgeo ccd: --per-query: cannot write '/nonexistent/dir/q.csv'"
+
+# inside --output-dir: a labels file per mesh; exit 2 when one fails (after the others),
+# and nothing run, nothing on stdout, when the meshes cannot be listed.
+mkdir -p "$scratch/set/sub"
+cp "$cube" "$scratch/set/cube.off"
+cp "$cube" "$scratch/set/sub/cube.off"
+printf '%b' "$points" >"$scratch/set_points.txt"
+expect 0 "inside --output-dir" "" inside "$scratch/set" "$scratch/set_points.txt" \
+  --output-dir "$scratch/set_labels"
+for f in cube sub/cube; do
+  labels=$(tr '\n' ' ' <"$scratch/set_labels/$f.labels.txt")
+  if [ "$labels" != "inside outside boundary " ]; then
+    echo "FAIL: inside --output-dir labels of $f: '$labels'"
+    failures=$((failures + 1))
+  fi
+done
+printf 'OFF\n3 1 0\n' >"$scratch/set/broken.off"
+expect 2 "inside --output-dir with a broken mesh" "" inside "$scratch/set" \
+  "$scratch/set_points.txt" --output-dir "$scratch/set_labels2"
+if [ -e "$scratch/set_labels2/broken.labels.txt" ] || [ ! -e "$scratch/set_labels2/cube.labels.txt" ]; then
+  echo "FAIL: inside --output-dir with a broken mesh: wrong files written"
+  failures=$((failures + 1))
+fi
+expect 2 "inside --output-dir, no list" "" inside "$scratch/no-such-list.txt" \
+  "$scratch/set_points.txt" --output-dir "$scratch/set_labels3"
+expect 2 "inside --output-dir, points on stdin" "0 0 0\n" inside "$scratch/set" \
+  --output-dir "$scratch/set_labels3"
+expect 2 "inside --output-dir with --winding" "" inside "$scratch/set" "$scratch/set_points.txt" \
+  --output-dir "$scratch/set_labels3" --winding
+if [ -e "$scratch/set_labels3" ]; then
+  echo "FAIL: inside --output-dir refused but wrote $scratch/set_labels3"
+  failures=$((failures + 1))
+fi
+
+# ccd --progress off a terminal: the count of queries, as lines.
+message=$("$exe" ccd --progress "$unit" 2>&1 >/dev/null)
+expect_in "ccd --progress" "$message" ' queries (100.0%)'
 
 exit $((failures > 0))

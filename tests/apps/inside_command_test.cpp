@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "cli/inside_command.hpp"
+#include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "support/generators.hpp"
 #include "support/hexahedron.hpp"
@@ -278,7 +279,7 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   options.mesh.path = kMeshes + "cgal/cube_quad.off";
   write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 0 0\n");
   const Outcome quiet = run_file(options, dir_ / "points.txt");
-  options.progress = true;
+  options.progress = ProgressMode::terminal;
   const Outcome shown = run_file(options, dir_ / "points.txt");
   EXPECT_EQ(shown.code, ExitCode::success) << shown.err;
   EXPECT_EQ(shown.out, quiet.out);
@@ -299,6 +300,21 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   const Outcome piped = run_stdin(options, "0.5 0.5 0.5\n");
   EXPECT_NE(piped.err.find("1 points"), std::string::npos) << piped.err;
   EXPECT_EQ(piped.err.find('%'), std::string::npos) << piped.err;
+  // --progress off a terminal (a log, a notebook): the same stages and count, a line each,
+  // nothing erased.
+  options.progress = ProgressMode::lines;
+  const Outcome logged = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(logged.out, quiet.out);
+  EXPECT_EQ(logged.err.rfind("reading " + options.mesh.path +
+                                 "...\nbuilding the search "
+                                 "structure (6 faces) and looking for faces that intersect...\n"
+                                 "classifying...\n2 points (100.0%)",
+                             0),
+            0u)
+      << logged.err;
+  EXPECT_EQ(logged.err.back(), '\n');
+  EXPECT_EQ(logged.err.find('\r'), std::string::npos) << logged.err;
+  EXPECT_EQ(logged.err.find('\033'), std::string::npos) << logged.err;
 }
 
 // Two unit cubes, the second moved by 1/2 along every axis: six pairs of faces cross. By
@@ -357,6 +373,68 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;
 }
 
+// The same two cubes after a flat pillow (two triangles on three collinear points, zero
+// area, dropped by the classifier): the pairs are named by the file's face numbers (each
+// shifted by the pillow's two faces), on two threads and on one, where the check once ran
+// on the classifier's mesh without the pillow and named the wrong faces.
+TEST_F(InsideCommand, IntersectingFacesAreNamedAsTheFileNumbersThemAfterFacesOfZeroArea) {
+  std::string obj = "v 5 0 0\nv 6 0 0\nv 7 0 0\nf 1 2 3\nf 1 3 2\n";
+  for (const double offset : {0.0, 0.5})
+    for (int c = 0; c < 8; ++c)
+      obj += "v " + std::to_string((c & 1) + offset) + " " +
+             std::to_string(((c >> 1) & 1) + offset) + " " +
+             std::to_string(((c >> 2) & 1) + offset) + "\n";
+  for (const int first : {4, 12})
+    for (const auto& q : testing::kHexahedronFaces)
+      obj += "f " + std::to_string(q[0] + first) + " " + std::to_string(q[1] + first) + " " +
+             std::to_string(q[2] + first) + " " + std::to_string(q[3] + first) + "\n";
+  write_file(dir_ / "pillow_and_cubes.obj", obj);
+  write_file(dir_ / "points.txt", "0.25 0.25 0.25\n");
+  InsideCommandOptions options;
+  options.mesh.path = (dir_ / "pillow_and_cubes.obj").string();
+  options.mesh.rule = inside::FillRule::parity;
+  for (const unsigned threads : {2u, 1u}) {
+    options.mesh.threads = threads;
+    const Outcome outcome = run_file(options, dir_ / "points.txt");
+    ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+    EXPECT_NE(outcome.err.find("2 faces of zero area (first: 1, 2) bound nothing"),
+              std::string::npos)
+        << outcome.err;
+    EXPECT_NE(outcome.err.find("6 pairs of faces intersect (first: 4-11, "), std::string::npos)
+        << "threads " << threads << ": " << outcome.err;
+  }
+}
+
+// Spot's control mesh: coarse, its quads far from planar, some neighbours bent through
+// each other. By parity the intersecting pairs and the undecided ones are each said on
+// their own, the undecided ones with what they are (all ten are neighbours) and what to
+// do, in the file's numbering.
+TEST_F(InsideCommand, SaysWhatUndecidedFacePairsAreAndWhatToDo) {
+  write_file(dir_ / "points.txt", "0 0 0\n");
+  InsideCommandOptions options;
+  options.mesh.path = kMeshes + "spot/spot_control_mesh.obj";
+  options.mesh.rule = inside::FillRule::parity;
+  const Outcome outcome = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+  const std::string prefix = "exactgeo inside: warning: " + options.mesh.path + ": ";
+  EXPECT_NE(outcome.err.find(prefix + "8 pairs of faces intersect (first: 61-72, "),
+            std::string::npos)
+      << outcome.err;
+  const std::size_t at = outcome.err.find(prefix + "10 pairs undecided (first: 37-38, 38-39, ");
+  ASSERT_NE(at, std::string::npos) << outcome.err;
+  const std::string undecided = outcome.err.substr(at, outcome.err.find('\n', at) - at);
+  for (const char* part :
+       {"could not decide (10 of the 10 share a corner)", "cannot tell touching from crossing",
+        "If they only touch, the labels are right", "--rule nonzero labels by winding numbers",
+        "`exactgeo info --mark OUT.ply` colours these faces magenta"}) {
+    EXPECT_NE(undecided.find(part), std::string::npos) << part << " in " << undecided;
+  }
+  // By the default rule, intersections change no label: nothing is said about them.
+  options.mesh.rule = std::nullopt;
+  const Outcome nonzero = run_file(options, dir_ / "points.txt");
+  EXPECT_EQ(nonzero.err.find("undecided"), std::string::npos) << nonzero.err;
+}
+
 /// A cube of quads in OBJ with corners `lower` + `size` (0 or 1 per axis), its faces
 /// counter-clockwise seen from outside (`reversed`: from inside), vertices numbered from
 /// `first`; `flip_first` turns the first face alone.
@@ -383,6 +461,38 @@ std::string obj_cube(double lower, double size, int first, bool reversed = false
 
 // --winding prints the integers; the rules label by them (a shell in a shell alike: w = 2
 // in the middle; a cube inside out: w = -1); the JSON says which rule labelled.
+// Against an open surface --winding prints the generalized winding number: the open box
+// (top face missing) holds 5/6 at its centre and 1/2 at the missing face's centre; above
+// the hole at height 1/2, w = 4 asin(1/2) / 4 pi = 1/6. The value printed is the midpoint
+// of the classifier's certified bounds, in the shortest decimal that reads back to it.
+TEST_F(InsideCommand, WindingAgainstAnOpenSurfaceIsTheGeneralizedWindingNumber) {
+  write_file(dir_ / "open_box.obj",
+             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+             "f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n0.5 0.5 1\n0.5 0.5 1.5\n0.5 0.5 0\n");
+  InsideCommandOptions options;
+  options.mesh.path = (dir_ / "open_box.obj").string();
+  options.winding = true;
+  const Outcome r = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(r.code, ExitCode::success) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<std::string> printed;
+  for (std::string line; std::getline(lines, line);)
+    printed.push_back(line);
+  ASSERT_EQ(printed.size(), 4u) << r.out;
+  const std::vector<double> truth{5.0 / 6.0, 0.5, 1.0 / 6.0};
+  const inside::Classifier classifier(mesh::load_mesh(options.mesh.path).mesh);
+  const std::vector<Point3> points{{0.5, 0.5, 0.5}, {0.5, 0.5, 1}, {0.5, 0.5, 1.5}};
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const double w = std::stod(printed[i]);
+    EXPECT_NEAR(w, truth[i], 1e-12) << printed[i];
+    const auto bounds = classifier.generalized_winding_number(points[i]);
+    ASSERT_TRUE(bounds);
+    EXPECT_EQ(w, bounds->lower + (bounds->upper - bounds->lower) / 2) << printed[i];
+  }
+  EXPECT_EQ(printed[3], "boundary");
+}
+
 TEST_F(InsideCommand, WindingNumbersAndRules) {
   write_file(dir_ / "nested.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9));
   write_file(dir_ / "cavity.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9, /*reversed=*/true));

@@ -40,7 +40,7 @@ TEST(ProgressText, NoRateBeforeAnyTimeHasPassed) {
 TEST(ProgressLine, WritesNothingWhenDisabled) {
   std::ostringstream err;
   {
-    ProgressLine line(err, false, "points");
+    ProgressLine line(err, ProgressMode::off, "points");
     line.task("building");
     line.count(5, 10);
     line.clear();
@@ -51,7 +51,7 @@ TEST(ProgressLine, WritesNothingWhenDisabled) {
 TEST(ProgressLine, RewritesOneLineAndErasesItAtTheEnd) {
   std::ostringstream err;
   {
-    ProgressLine line(err, true, "points");
+    ProgressLine line(err, ProgressMode::terminal, "points");
     line.task("building the search structure (6 faces)");
     line.count(10, 10);  // finished: drawn whatever the time since the last drawing
   }
@@ -62,6 +62,30 @@ TEST(ProgressLine, RewritesOneLineAndErasesItAtTheEnd) {
       << text;
   EXPECT_EQ(text.substr(text.size() - 4), "\r\033[K");  // erased on destruction
   EXPECT_EQ(text.find('\n'), std::string::npos);        // never a new line
+}
+
+TEST(ProgressLine, TheModeIsTheTerminalsOrAskedFor) {
+  EXPECT_EQ(progress_mode(false, true), ProgressMode::terminal);
+  EXPECT_EQ(progress_mode(true, true), ProgressMode::terminal);
+  EXPECT_EQ(progress_mode(true, false), ProgressMode::lines);
+  EXPECT_EQ(progress_mode(false, false), ProgressMode::off);
+}
+
+TEST(ProgressLine, AsLinesForALogEveryUpdateIsALineAndTheLastCountIsKept) {
+  std::ostringstream err;
+  {
+    ProgressLine line(err, ProgressMode::lines, "points");
+    line.task("reading mesh.obj");
+    line.count(5, std::nullopt);  // the first count of a task: written at once
+    line.count(6, std::nullopt);  // within the second: held back
+    line.count(7, std::nullopt);
+    line.clear();  // the end: the latest count is written
+    line.clear();  // once
+    line.task("classifying");
+    line.count(9, 9);
+  }
+  EXPECT_EQ(err.str(),
+            "reading mesh.obj...\n5 points\n7 points\nclassifying...\n9 / 9 points (100.0%)\n");
 }
 
 }  // namespace

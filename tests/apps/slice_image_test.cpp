@@ -16,6 +16,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/inside_command.hpp"
@@ -178,7 +179,7 @@ void expect_pixels_are_labels(const Outcome& outcome, const fs::path& png, const
   ASSERT_EQ(image.width, grid.width);
   ASSERT_EQ(image.height, grid.height);
   const inside::Classifier classifier(m);
-  std::array<double, 3> counts{};
+  std::array<double, 4> counts{};
   std::size_t outline = 0;
   for (std::size_t row = 0; row < grid.height; ++row) {
     for (std::size_t column = 0; column < grid.width; ++column) {
@@ -197,6 +198,7 @@ void expect_pixels_are_labels(const Outcome& outcome, const fs::path& png, const
   EXPECT_EQ(json_number(outcome.out, "inside"), counts[1]) << outcome.out;
   EXPECT_EQ(json_number(outcome.out, "outside"), counts[0]) << outcome.out;
   EXPECT_EQ(json_number(outcome.out, "boundary"), counts[2]) << outcome.out;
+  EXPECT_EQ(json_number(outcome.out, "undecided"), counts[3]) << outcome.out;
   EXPECT_EQ(json_number(outcome.out, "outline"), double(outline)) << outcome.out;
   EXPECT_GT(outline, 0u);
 }
@@ -317,6 +319,98 @@ TEST_F(SliceImage, AFaceInThePlaneShowsItsPointsAsBoundary) {
   EXPECT_EQ(pixel_at(image, 16, 16), colour_of(PixelKind::boundary));
   EXPECT_GT(json_number(outcome.out, "boundary"), 0.5 * 32 * 32);
   EXPECT_EQ(json_number(outcome.out, "inside"), 0);
+}
+
+TEST_F(SliceImage, AnOpenBoxCutAtItsMissingFaceShowsUndecidedPixels) {
+  // The unit cube without its top face (z = 1): from a point of the plane z = 1 inside the
+  // hole the five other faces fill half of the sphere, so w = 1/2 exactly, which no
+  // precision settles. The picture has its own colour for those pixels.
+  mesh::Mesh box = hexahedron(testing::unit_cube_corners());
+  box.faces.erase(box.faces.begin() + 1);  // {4, 5, 7, 6}, z = upper
+  const fs::path path = mesh_file(box, "open_box.obj");
+  const Outcome outcome = run(path.string(), "z=1", 16);
+  ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+  const RgbImage image = read_png(dir_ / "slice.png");
+  EXPECT_EQ(pixel_at(image, 8, 8), colour_of(PixelKind::undecided));
+  EXPECT_EQ(colour_of(PixelKind::undecided), (Rgb{204, 121, 167}));
+  EXPECT_GT(json_number(outcome.out, "undecided"), 0.5 * 16 * 16) << outcome.out;
+  EXPECT_EQ(json_number(outcome.out, "inside"), 0) << outcome.out;
+}
+
+/// The text of docs/inside.md, where the picture's colours and JSON keys are documented.
+std::string inside_docs() {
+  std::ifstream in(std::string(EXACTGEO_DOCS_DIR) + "/inside.md");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The rows of the Markdown table whose header row is `header`, up to its first blank line.
+std::vector<std::string> table_rows(const std::string& text, const std::string& header) {
+  std::vector<std::string> rows;
+  std::size_t at = text.find(header);
+  if (at == std::string::npos) return rows;
+  at = text.find('\n', at);
+  for (std::size_t end = text.find('\n', at + 1); end != std::string::npos;
+       at = end, end = text.find('\n', at + 1)) {
+    std::string line = text.substr(at + 1, end - at - 1);
+    line.erase(0, line.find_first_not_of(' '));
+    if (line.empty() || line[0] != '|') break;
+    rows.push_back(line);
+  }
+  return rows;
+}
+
+TEST(SliceDocs, TheColourTableHasEveryPixelKindInItsColour) {
+  const std::vector<std::string> rows = table_rows(inside_docs(), "| pixel | colour | RGB |");
+  ASSERT_FALSE(rows.empty()) << "no colour table in docs/inside.md";
+  // Each kind's row is found by what it says; its last cell is the colour's RGB.
+  const std::vector<std::pair<PixelKind, std::string>> kinds{{PixelKind::inside, "`inside`"},
+                                                             {PixelKind::outside, "`outside`"},
+                                                             {PixelKind::boundary, "`boundary`"},
+                                                             {PixelKind::undecided, "`undecided`"},
+                                                             {PixelKind::outline, "cross-section"}};
+  for (const auto& [kind, says] : kinds) {
+    const Rgb c = colour_of(kind);
+    const std::string rgb = "| " + std::to_string(c.red) + ", " + std::to_string(c.green) + ", " +
+                            std::to_string(c.blue) + " |";
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const std::string& r) {
+      return r.find(says) != std::string::npos;
+    });
+    ASSERT_NE(row, rows.end()) << "no row for " << says << " in docs/inside.md's colour table";
+    EXPECT_EQ(row->substr(row->size() - rgb.size()), rgb) << *row;
+  }
+  EXPECT_EQ(rows.size(), kinds.size() + 1);  // and the separator row
+}
+
+TEST_F(SliceImage, TheDocsListTheJsonKeysInOrder) {
+  const fs::path path = mesh_file(frustum(), "frustum.obj");
+  const Outcome outcome = run(path.string(), "z=0.5", 16);
+  ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+  // The object's own keys: those at nesting depth 1.
+  std::vector<std::string> keys;
+  int depth = 0;
+  for (std::size_t i = 0; i < outcome.out.size(); ++i) {
+    const char c = outcome.out[i];
+    if (c == '{') ++depth;
+    if (c == '}') --depth;
+    if (c == '"' && depth == 1) {
+      const std::size_t end = outcome.out.find('"', i + 1);
+      if (outcome.out.compare(end, 3, "\": ") == 0)
+        keys.push_back(outcome.out.substr(i + 1, end - i - 1));
+      i = end;
+    }
+  }
+  // "--json` prints them as one object (`image`, `width`, ...)" in docs/inside.md.
+  const std::string docs = inside_docs();
+  const std::size_t start = docs.find("prints them as one\n  object (");
+  ASSERT_NE(start, std::string::npos) << "the slice's JSON keys are no longer listed there";
+  const std::size_t end = docs.find(')', start);
+  std::vector<std::string> listed;
+  for (std::size_t at = docs.find('`', start); at < end; at = docs.find('`', at + 1)) {
+    const std::size_t close = docs.find('`', at + 1);
+    listed.push_back(docs.substr(at + 1, close - at - 1));
+    at = close;
+  }
+  EXPECT_EQ(listed, keys) << outcome.out;
 }
 
 /// Points of the faces' intersection with the plane, sampled densely and independently of

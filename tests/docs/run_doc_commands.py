@@ -9,6 +9,9 @@ Three kinds of fenced blocks are run:
   ```console   a transcript: lines starting with "$ " are run, and the lines after
                each one are its expected output, compared line by line. A line that
                ends in seconds ("0.0039 s") compares only the text before the number;
+               a line that is only "..." stands for any number of lines (none too), so
+               a page can show the part of a long output it talks about, such as the
+               lines of `exactgeo inside --help` for the options it explains;
   ```python    the whole block, by Debian's /usr/bin/python3 with the package of the
                build tree (PYTHONPATH=build/python), which must exit with status 0.
 
@@ -37,6 +40,7 @@ from pathlib import Path
 FENCE = re.compile(r"^```(\w*)\s*$")
 SKIP = re.compile(r"^<!--\s*docs-test:\s*skip:\s*(.*?)\s*-->\s*$")
 SECONDS = re.compile(r"^(.*?)[0-9][0-9.e+-]* s$")
+ELISION = "..."
 NAMED_FILE = re.compile(r"(?<![\w/])((?:scripts|examples|tests/data)/[\w./-]+)")
 TIMEOUT_SECONDS = 300
 
@@ -140,6 +144,36 @@ def same_line(expected, actual):
     return expected.rstrip() == actual.rstrip()
 
 
+def same_lines(expected, actual):
+    """Whether `actual` is `expected` line by line, each "..." line standing for any run
+    of lines. The shown runs between the elisions are found in order, each as early as
+    it can be; the first is anchored at the start and the last at the end (unless an
+    elision comes first or last)."""
+    runs = [[]]
+    for line in expected:
+        if line.strip() == ELISION:
+            runs.append([])
+        else:
+            runs[-1].append(line)
+    if len(runs) == 1:
+        return len(actual) == len(expected) and all(map(same_line, expected, actual))
+
+    def matches_at(run, at):
+        return at + len(run) <= len(actual) and all(map(same_line, run, actual[at:]))
+
+    first, middle, last = runs[0], runs[1:-1], runs[-1]
+    if not matches_at(first, 0):
+        return False
+    at = len(first)
+    for run in middle:
+        while at + len(run) <= len(actual) and not matches_at(run, at):
+            at += 1
+        if not matches_at(run, at):
+            return False
+        at += len(run)
+    return len(actual) - len(last) >= at and matches_at(last, len(actual) - len(last))
+
+
 def run_console(block, cwd, env):
     """Runs each "$ " line and compares its output with the lines that follow it."""
     steps = []
@@ -159,7 +193,7 @@ def run_console(block, cwd, env):
         actual = result.stdout.splitlines()
         while expected and not expected[-1].strip():
             expected.pop()
-        if len(actual) != len(expected) or not all(map(same_line, expected, actual)):
+        if not same_lines(expected, actual):
             shown = "\n".join(actual)
             return f"`{command}` printed\n{shown}\ninstead of\n" + "\n".join(expected)
     return None

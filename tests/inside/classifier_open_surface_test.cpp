@@ -20,9 +20,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <optional>
 #include <ostream>
 #include <random>
@@ -195,13 +197,63 @@ TEST_P(OpenTriangles, LabelsAreThoseOfTheDefinition) {
   EXPECT_GT(tally.compared - tally.inside, tally.compared / 10);
 }
 
+/// Whether `w` (the oracle's w rounded to a double) lies in the certified bounds, which
+/// then hold that double too (rounding to nearest is monotone and keeps doubles), and
+/// the bounds are as narrow as promised.
+::testing::AssertionResult holds(const std::optional<Enclosure>& bounds, double w) {
+  if (!bounds) return ::testing::AssertionFailure() << "no bounds, w = " << w;
+  if (!(bounds->lower <= w && w <= bounds->upper)) {
+    return ::testing::AssertionFailure() << std::hexfloat << "w = " << w << " outside ["
+                                         << bounds->lower << ", " << bounds->upper << "]";
+  }
+  // 2^-40 for the boundary term, then the sum with S rounded outward.
+  if (bounds->upper - bounds->lower > 0x1p-39) {
+    return ::testing::AssertionFailure() << "bounds " << bounds->upper - bounds->lower << " wide";
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST_P(OpenTriangles, GeneralizedWindingNumbersHoldTheDefinitionsValue) {
+  const int k = GetParam();
+  auto rng = testing::seeded_engine("inside.open.triangles.values." + std::to_string(k));
+  std::uniform_real_distribution<double> anywhere(-1.3, 1.3);
+  std::size_t away_from_integers = 0;
+  for (int m = 0; m < 3; ++m) {
+    Mesh mesh = subdivided_octahedron(rng, k);
+    for (int h = 0; h <= m; ++h)
+      mesh.faces.erase(mesh.faces.begin() + 7 * h + 3);
+    const std::vector<Triangle> triangles = triangles_of(mesh);
+    std::vector<Point3> queries;
+    for (int p = 0; p < 60; ++p) {
+      queries.push_back({std::ldexp(anywhere(rng), k), std::ldexp(anywhere(rng), k),
+                         std::ldexp(anywhere(rng), k)});
+    }
+    for (int p = 0; p < 6; ++p)  // beyond the box: no ray, the boundary term alone
+      queries.push_back({std::ldexp(8 * anywhere(rng), k), std::ldexp(anywhere(rng), k), 0.0});
+    const Classifier classifier(mesh);
+    std::vector<std::optional<Enclosure>> batch(queries.size());
+    generalized_winding_number_batch(classifier, queries, batch, Arithmetic::exact, 3);
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      const Point3& p = queries[i];
+      const double w = testing::generalized_winding_oracle(p, triangles);
+      const std::optional<Enclosure> bounds = classifier.generalized_winding_number(p);
+      ASSERT_TRUE(holds(bounds, w)) << "point " << hex(p) << ", mesh " << m;
+      ASSERT_TRUE(batch[i]);
+      EXPECT_EQ(batch[i]->lower, bounds->lower);
+      EXPECT_EQ(batch[i]->upper, bounds->upper);
+      away_from_integers += std::abs(w - std::round(w)) > 0.01;
+    }
+  }
+  EXPECT_GT(away_from_integers, 100u);  // the values are not just the crossings
+}
+
 INSTANTIATE_TEST_SUITE_P(Scales, OpenTriangles, ::testing::Values(0, 1000, -1000),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            const int k = param_info.param;
                            return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
                          });
 
-TEST(OpenPatches, LabelsAreThoseOfTheDecomposition) {
+TEST(OpenPatches, LabelsAndValuesAreThoseOfTheDecomposition) {
   auto rng = testing::seeded_engine("inside.open.patches");
   std::uniform_real_distribution<double> jitter(-0.2, 0.2), anywhere(-0.3, 1.3);
   Tally tally;
@@ -251,8 +303,13 @@ TEST(OpenPatches, LabelsAreThoseOfTheDecomposition) {
         const Location got = classifier.classify(q);
         if (on_surface) {
           ASSERT_EQ(got, Location::boundary) << hex(q);
+          EXPECT_FALSE(classifier.generalized_winding_number(q)) << hex(q);
           continue;
         }
+        // The value itself, whatever ray each side took.
+        ASSERT_TRUE(holds(classifier.generalized_winding_number(q),
+                          testing::decomposed_winding_oracle(q, ray, *crossings, hole)))
+            << "point " << hex(q) << ", cut face " << cut;
         const auto want =
             expected(rule, testing::decomposed_winding_oracle(q, ray, *crossings, hole, 0.5),
                      testing::decomposed_winding_oracle(q, ray, *crossings, hole, -0.5));
@@ -287,6 +344,32 @@ TEST(OpenSurface, WindingNumbersOfExactlyOneHalfAreUndecided) {
     EXPECT_EQ(classifier.classify({0.5, 0.5, std::nextafter(1.0, 0.0)}), Location::inside);
     EXPECT_EQ(classifier.classify({0.5, 0.5, std::nextafter(1.0, 2.0)}), Location::outside);
   }
+}
+
+TEST(OpenSurface, GeneralizedWindingNumbersOfKnownPoints) {
+  const Classifier classifier(open_box());
+  // The five faces seen from the centre: 5/6 of the sphere. The missing face's centre:
+  // half of it. Above the hole at height d, the missing square's own solid angle
+  // 4 asin(1 / (1 + 4 d^2)) over 4 pi (the closed cube's w = 0 there, less the face's
+  // share, which is negative seen from outside).
+  EXPECT_TRUE(holds(classifier.generalized_winding_number({0.5, 0.5, 0.5}), 5.0 / 6.0));
+  EXPECT_TRUE(holds(classifier.generalized_winding_number({0.5, 0.5, 1.0}), 0.5));
+  const double d = 0.75;
+  const double above = std::asin(1.0 / (1.0 + 4 * d * d)) / std::numbers::pi;
+  const auto bounds = classifier.generalized_winding_number({0.5, 0.5, 1.0 + d});
+  ASSERT_TRUE(bounds);
+  EXPECT_NEAR(bounds->lower, above, 1e-15);
+  EXPECT_NEAR(bounds->upper, above, 1e-15);
+  // On a face or a boundary edge: no value.
+  EXPECT_FALSE(classifier.generalized_winding_number({0.25, 0.5, 0.0}));
+  EXPECT_FALSE(classifier.generalized_winding_number({0.25, 0.0, 1.0}));
+  // A closed surface: the integer winding number, exactly.
+  const Classifier closed(testing::scaled_cube(0, false));
+  const auto one = closed.generalized_winding_number({0.5, 0.5, 0.5});
+  ASSERT_TRUE(one);
+  EXPECT_EQ(one->lower, 1.0);
+  EXPECT_EQ(one->upper, 1.0);
+  EXPECT_FALSE(closed.generalized_winding_number({0.5, 0.5, 1.0}));
 }
 
 TEST(OpenSurface, PointsOnTheBoundaryAreBoundary) {

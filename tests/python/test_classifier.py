@@ -156,8 +156,53 @@ def test_an_open_mesh_is_refused_by_parity_and_labelled_by_the_winding_rules():
     far = missing + 2 * (missing - CUBE_VERTICES.mean(axis=0))
     labels = classifier.classify(np.array([deep, missing, far]))
     assert list(labels) == [exactgeo.INSIDE, exactgeo.UNDECIDED, exactgeo.OUTSIDE]
-    with pytest.raises(ValueError, match="the surface is open"):
-        classifier.winding_numbers(np.array([deep]))
+
+
+def square_solid_angle(distance: float) -> float:
+    """The solid angle of the unit square seen from `distance` on its axis."""
+    return 4 * np.arcsin(1 / (1 + 4 * distance * distance))
+
+
+def test_an_open_box_has_its_generalized_winding_numbers():
+    # The unit cube without its face x = 1 (CUBE_QUADS[5]). From the centre the other five
+    # faces fill 5/6 of the sphere; from the missing face's centre, half; from a point on
+    # its axis outside, at distance d from it, w is the missing square's solid angle over
+    # 4 pi (the closed cube's w = 0, less that face's negative share), and below the
+    # opposite face, at distance d from it, minus the square's share seen from d + 1.
+    with pytest.warns(UserWarning, match="the surface is open"):
+        classifier = exactgeo.Classifier(exactgeo.Mesh(CUBE_VERTICES, CUBE_QUADS[:5]))
+    d = 0.375
+    points = np.array([[0.5, 0.5, 0.5], [1.0, 0.5, 0.5], [1 + d, 0.5, 0.5], [-d, 0.5, 0.5],
+                       [0.0, 0.5, 0.5], [1.0, 1.0, 0.5]])
+    truth = np.array([5 / 6, 0.5, square_solid_angle(d) / (4 * np.pi),
+                      -square_solid_angle(1 + d) / (4 * np.pi), np.nan, np.nan])
+    w = classifier.winding_numbers(points)
+    assert w.dtype == np.float64 and w.shape == (6,)
+    np.testing.assert_allclose(w[:4], truth[:4], rtol=0, atol=1e-14)
+    assert np.isnan(w[4:]).all()  # on a face, on a boundary edge
+    lower, upper = classifier.winding_numbers(points, bounds=True)
+    assert (lower[:4] <= w[:4]).all() and (w[:4] <= upper[:4]).all()
+    assert (upper[:4] - lower[:4] <= 2.0**-39).all()
+    # Certified: exactly 1/2 is held, and the labels are read from the values.
+    assert lower[1] <= 0.5 <= upper[1]
+    labels = classifier.classify(points[:4])
+    assert list(labels) == [exactgeo.INSIDE, exactgeo.UNDECIDED, exactgeo.OUTSIDE,
+                            exactgeo.OUTSIDE]
+    assert np.isnan(lower[4:]).all() and np.isnan(upper[4:]).all()
+    # The baseline in plain doubles: one value, near the certified one.
+    low, high = classifier.winding_numbers(points[:4], bounds=True, method="double")
+    assert (low == high).all()
+    np.testing.assert_allclose(low, truth[:4], rtol=0, atol=1e-12)
+
+
+def test_bounds_of_a_closed_surface_are_its_winding_numbers():
+    classifier = cube_classifier()
+    points = np.array([[0.5, 0.5, 0.5], [2.0, 0.5, 0.5], [0.0, 0.5, 0.5]])
+    w = classifier.winding_numbers(points)
+    assert w.dtype == np.int32 and list(w) == [1, 0, exactgeo.ON_SURFACE]
+    lower, upper = classifier.winding_numbers(points, bounds=True)
+    assert list(lower[:2]) == [1.0, 0.0] and list(upper[:2]) == [1.0, 0.0]
+    assert np.isnan(lower[2]) and np.isnan(upper[2])
 
 
 def test_refusals_number_as_the_file_does(tmp_path):

@@ -164,3 +164,67 @@ def test_ccd_files_count_as_the_command_line(client, cli):
                      "false_negatives"):
             assert counts[kind][name] == expected[key][name], (kind, name)
     assert counts["vertex-face"]["queries"] > 0 and counts["edge-edge"]["queries"] > 0
+
+
+def test_classify_meshes_writes_one_labels_file_per_mesh(client, rng, tmp_path):
+    # A data set: two cubes in nested folders (the same file name twice), an open box, and
+    # a broken file. Each good mesh gets its labels file, the same labels as one process
+    # gives; the broken one gets none, and the error names it after every other mesh ran.
+    shapes = tmp_path / "shapes"
+    for folder in ("a", "b"):
+        (shapes / folder).mkdir(parents=True)
+        write_obj(shapes / folder / "model.obj", *subdivided_cube(2))
+    vertices, faces = subdivided_cube(1)
+    write_obj(shapes / "open_box.obj", vertices, faces[:-1])
+    (shapes / "notes.txt").write_text("not a mesh, skipped by its extension\n")
+    points, truth = known_points(rng, 3_000)
+    out = tmp_path / "labels"
+    results = exactgeo.dask.classify_meshes(shapes, points, out)
+    assert [r["mesh"] for r in results] == [str(shapes / "a" / "model.obj"),
+                                            str(shapes / "b" / "model.obj"),
+                                            str(shapes / "open_box.obj")]
+    for folder in ("a", "b"):
+        labels = np.load(out / folder / "model.labels.npy")
+        assert labels.dtype == np.int8 and np.array_equal(labels, truth)
+    with pytest.warns(UserWarning, match="the surface is open"):
+        open_box = exactgeo.Classifier(exactgeo.load_mesh(shapes / "open_box.obj"))
+    assert np.array_equal(np.load(out / "open_box.labels.npy"), open_box.classify(points))
+    assert results[0]["points"] == len(points)
+    assert results[0]["inside"] == np.count_nonzero(truth == exactgeo.INSIDE)
+    assert results[0]["boundary"] == np.count_nonzero(truth == exactgeo.BOUNDARY)
+
+    # A broken mesh: the others are written, then the error names it.
+    (shapes / "broken.off").write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n")
+    again = tmp_path / "again"
+    with pytest.raises(ValueError, match=r"1 of 4 meshes failed .*broken\.off: ValueError: "):
+        exactgeo.dask.classify_meshes(shapes, points, again)
+    assert not (again / "broken.labels.npy").exists()
+    assert (again / "open_box.labels.npy").exists()
+    assert sorted(p.name for p in again.rglob("*")) == ["a", "b", "model.labels.npy",
+                                                        "model.labels.npy", "open_box.labels.npy"]
+    reported = exactgeo.dask.classify_meshes(shapes, points, again, errors="report")
+    assert [r["labels"] is None for r in reported] == [False, False, True, False]
+    assert "broken.off" in reported[2]["error"]
+
+
+def test_classify_meshes_reads_each_meshs_own_points(client, rng, tmp_path):
+    write_obj(tmp_path / "small.obj", *subdivided_cube(1))
+    points, truth = known_points(rng, 500)
+    np.save(tmp_path / "small.points.npy", points)
+    results = exactgeo.dask.classify_meshes([tmp_path / "small.obj"], "{mesh}.points.npy",
+                                            tmp_path / "out")
+    assert results[0]["labels"] == str(tmp_path / "out" / "small.labels.npy")
+    assert np.array_equal(np.load(tmp_path / "out" / "small.labels.npy"), truth)
+
+
+def test_classify_meshes_refuses_names_that_collide_before_running(tmp_path):
+    for folder in ("a", "b"):
+        (tmp_path / folder).mkdir()
+        write_obj(tmp_path / folder / "model.obj", *subdivided_cube(1))
+    with pytest.raises(ValueError, match=r"a/model\.obj and .*b/model\.obj would both write"):
+        exactgeo.dask.classify_meshes([tmp_path / "a" / "model.obj", tmp_path / "b" / "model.obj"],
+                                      np.zeros((1, 3)), tmp_path / "out")
+    assert not (tmp_path / "out").exists()
+    (tmp_path / "empty").mkdir()
+    with pytest.raises(ValueError, match="empty: no mesh file in this folder"):
+        exactgeo.dask.classify_meshes(tmp_path / "empty", np.zeros((1, 3)), tmp_path / "x")

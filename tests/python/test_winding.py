@@ -134,3 +134,22 @@ def test_zero_area_faces_are_dropped_with_a_warning(rng):
                         exactgeo.OUTSIDE)
     expected[-2] = exactgeo.INSIDE  # the line's middle point: inside the cube, off the faces
     assert np.array_equal(classifier.classify(points), expected)
+
+
+def test_intersecting_faces_are_named_as_the_file_numbers_them_after_faces_of_zero_area(tmp_path):
+    # A flat pillow (two triangles on three collinear points: zero area, dropped) before two
+    # overlapping cubes: the pairs are named by the file's face numbers, the pillow's two
+    # faces counted (the check once ran on the mesh without them and named other faces).
+    lines = ["v 5 0 0", "v 6 0 0", "v 7 0 0", "f 1 2 3", "f 1 3 2"]
+    for offset in (0.0, 0.5):
+        lines += [f"v {x + offset} {y + offset} {z + offset}"
+                  for z in (0, 1) for y in (0, 1) for x in (0, 1)]
+    quads = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+    for first in (4, 12):
+        lines += ["f " + " ".join(str(i + first) for i in q) for q in quads]
+    path = tmp_path / "pillow_and_cubes.obj"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.warns(UserWarning) as caught:
+        exactgeo.Classifier(exactgeo.load_mesh(path), rule="parity")
+    said = [str(w.message) for w in caught]
+    assert any("6 pairs of faces intersect (first: 4-11, " in m for m in said), said

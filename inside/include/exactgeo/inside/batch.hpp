@@ -26,6 +26,12 @@ void winding_number_batch(const Classifier& classifier, std::span<const Point3> 
                           std::span<std::optional<std::int64_t>> windings, Arithmetic arithmetic,
                           unsigned threads = 0);
 
+/// Writes generalized_winding_number(points[i]) into windings[i] (nullopt: on the
+/// surface) for every i, the same way; rethrows its std::logic_error likewise.
+void generalized_winding_number_batch(const Classifier& classifier, std::span<const Point3> points,
+                                      std::span<std::optional<Enclosure>> windings,
+                                      Arithmetic arithmetic, unsigned threads = 0);
+
 /// The same with the inexact float ray-casting baseline (float_ray_parity.hpp), for
 /// measuring it against the exact classifier on the same points.
 void classify_batch(const FloatRayParity& baseline, std::span<const Point3> points,

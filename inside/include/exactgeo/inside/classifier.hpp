@@ -95,6 +95,18 @@ class Classifier {
   std::optional<std::int64_t> winding_number(const Point3& point,
                                              Arithmetic arithmetic = Arithmetic::exact) const;
 
+  /// The generalized winding number of `point` (finite coordinates) as bounds certain to
+  /// hold it, or nullopt when the point lies on the surface (a face, or a boundary edge of
+  /// an open surface). On a closed oriented surface it is the winding number (lower ==
+  /// upper); on an open one, w = S + (boundary term) (internal/open_winding.hpp), the
+  /// bounds at most about 2^-40 apart except within rounding of a boundary edge's line.
+  /// Arithmetic::plain_double: lower == upper, not certified. Throws std::logic_error for
+  /// a closed surface whose faces are not oriented alike (no winding number is defined).
+  std::optional<Enclosure> generalized_winding_number(const Point3& point, Arithmetic arithmetic,
+                                                      ClassifierScratch& scratch) const;
+  std::optional<Enclosure> generalized_winding_number(
+      const Point3& point, Arithmetic arithmetic = Arithmetic::exact) const;
+
   /// The location of a point of winding number `winding` by the rule (boundary for
   /// nullopt, a point on the surface).
   Location location_of(const std::optional<std::int64_t>& winding) const noexcept;
@@ -145,6 +157,10 @@ class Classifier {
   /// classify for an open surface.
   static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                 ClassifierScratch& scratch);
+  /// generalized_winding_number for an open surface.
+  static std::optional<Enclosure> open_winding_number(const State& s, const Point3& point,
+                                                      Arithmetic arithmetic,
+                                                      ClassifierScratch& scratch);
   std::unique_ptr<State> state_;
 };
 

@@ -84,7 +84,10 @@ struct FacePair {
 struct SelfIntersections {
   std::vector<FacePair> intersecting;  ///< every intersecting pair, sorted
   std::vector<FacePair> undecided;     ///< every undecided pair, sorted
-  std::size_t candidate_pairs = 0;     ///< pairs whose boxes overlap (given to face_contact)
+  /// The undecided pairs whose faces share a corner (neighbours, the usual case: the edges
+  /// from the shared corner start on the other face).
+  std::size_t undecided_neighbours = 0;
+  std::size_t candidate_pairs = 0;  ///< pairs whose boxes overlap (given to face_contact)
 };
 
 /// face_contact for every pair of non-degenerate faces whose closed bounding boxes
