@@ -265,12 +265,20 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
   sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,
                 "with --rule parity: accept edges shared by 4, 6, ... faces (parity is still "
                 "defined; the winding rules accept edges used as often in each direction)");
-  sub->add_flag("!--no-self-intersection-check", options.mesh.self_intersection_check,
-                "skip looking for faces that intersect (exact; about as long as building the "
-                "search structure). It matters under --rule parity, where faces that intersect "
-                "make the labels those of the parity solid and the check warns; under nonzero "
-                "and positive, intersections change no winding number, and the check only "
-                "counts them for --json");
+  // Faces that intersect: looked for by default only where the labels are the parity
+  // solid's; either flag overrides that.
+  const auto check_flag = [&](const char* name, SelfIntersectionCheck when, const char* help) {
+    return sub->add_flag_callback(
+        name, [&options, when] { options.mesh.self_intersection_check = when; }, help);
+  };
+  CLI::Option* check = check_flag(
+      "--self-intersection-check", SelfIntersectionCheck::always,
+      "look for faces that intersect (exact; about as long as building the search structure) "
+      "also under nonzero and positive, where intersections change no winding number, to "
+      "count them for --json. By default the check runs only where the labels are those of "
+      "the parity solid (--rule parity, or faces not oriented alike), and warns of any");
+  check->excludes(check_flag("--no-self-intersection-check", SelfIntersectionCheck::never,
+                             "do not look for faces that intersect, under parity either"));
   sub->add_flag("!--no-space-cells", options.mesh.space_cells,
                 "cast a ray for every point, also where the certified space cells already "
                 "know the label (for measuring them)");

@@ -69,9 +69,20 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
   // The self-intersection check runs beside the build, which keeps one core busy, on a
   // copy of the mesh (the build takes the original), on the threads asked for; with one
   // thread asked for, after the build, on a copy all the same: the classifier's mesh lacks
-  // the faces of zero area, and the pairs must be named by the file's face numbers.
+  // the faces of zero area, and the pairs must be named by the file's face numbers. By
+  // default it runs only where the labels will be the parity solid's; where the rule is
+  // not given, that is known after the build (faces not oriented alike), so the faces are
+  // kept for it (the classifier keeps every vertex).
+  const bool parity_asked = options.float_rays || options.rule == inside::FillRule::parity;
+  const bool check_now =
+      options.self_intersection_check == SelfIntersectionCheck::always ||
+      (options.self_intersection_check == SelfIntersectionCheck::under_parity && parity_asked);
+  const bool check_if_parity =
+      options.self_intersection_check == SelfIntersectionCheck::under_parity && !options.rule &&
+      !options.float_rays;
   std::future<TimedCheck> beside;
   std::optional<mesh::Mesh> check_after;
+  std::vector<mesh::Face> faces_as_read;
   const std::string source = mesh::mesh_source_name(options.path);
   std::optional<LoadedMesh> kept;
   try {
@@ -83,12 +94,14 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       err << "exactgeo inside: warning: " << note << "\n";
     }
     if (options.path == "-") kept = loaded;  // to explain a refusal: it cannot be read again
-    if (options.self_intersection_check && options.threads != 1) {
+    if (check_now && options.threads != 1) {
       beside = std::async(std::launch::async, [copy = loaded.mesh, threads = options.threads] {
         return check_self_intersections(copy, threads);
       });
-    } else if (options.self_intersection_check) {
+    } else if (check_now) {
       check_after = loaded.mesh;
+    } else if (check_if_parity) {
+      faces_as_read = loaded.mesh.faces;
     }
     if (progress) {
       progress->task("building the search structure (" + grouped(loaded.mesh.faces.size()) +
@@ -146,7 +159,12 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
         << "\n";
     return std::nullopt;
   }
-  if (options.self_intersection_check) {
+  // Intersections change labels by parity only (the float ray baseline counts parity).
+  const bool parity = options.float_rays || built.classifier->rule() == inside::FillRule::parity;
+  if (!check_now && check_if_parity && parity) {
+    check_after = mesh::Mesh{built.mesh().vertices, std::move(faces_as_read)};
+  }
+  if (beside.valid() || check_after) {
     if (progress && !beside.valid()) progress->task("looking for faces that intersect");
     TimedCheck check;
     try {
@@ -158,8 +176,6 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
     }
     built.self = std::move(check.found);
     built.self_intersection_seconds = check.seconds;
-    // Intersections change labels by parity only (the float ray baseline counts parity).
-    const bool parity = options.float_rays || built.classifier->rule() == inside::FillRule::parity;
     if (parity) {
       const bool oriented = built.classifier && built.classifier->oriented();
       for (const std::string& warning : inside::self_intersection_warnings(

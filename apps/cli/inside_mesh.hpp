@@ -25,6 +25,10 @@ namespace exactgeo::cli {
 
 /// What the classifier is built from and how it classifies: the mesh, what its checks
 /// accept, the method and the threads. Nothing about the points or the report.
+/// When `inside` looks for faces that intersect (--self-intersection-check,
+/// --no-self-intersection-check).
+enum class SelfIntersectionCheck : std::uint8_t { under_parity, always, never };
+
 struct InsideMeshOptions {
   std::string path;        ///< a file, or "-" for standard input (with load.format)
   mesh::LoadOptions load;  ///< --format, --weld, --split-polygons
@@ -37,9 +41,10 @@ struct InsideMeshOptions {
   /// The float ray baseline (inside/float_ray_parity.hpp) instead of the classifier.
   bool float_rays = false;
   bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
-  /// Look for faces that intersect (exactly); with the parity rule, warn that the labels
-  /// are those of the parity solid.
-  bool self_intersection_check = true;
+  /// Look for faces that intersect (exactly): by default only where the labels are the
+  /// parity solid's (--rule parity, faces not oriented alike, the float ray baseline),
+  /// which the check then warns of; intersections change no winding number.
+  SelfIntersectionCheck self_intersection_check = SelfIntersectionCheck::under_parity;
   unsigned threads = 0;  ///< 0: one per hardware thread
 };
 

@@ -277,6 +277,7 @@ TEST_F(InsideCommand, F64FromStandardInput) {
 TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
   InsideCommandOptions options;
   options.mesh.path = kMeshes + "cgal/cube_quad.off";
+  options.mesh.self_intersection_check = SelfIntersectionCheck::always;  // a stage of its own
   write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 0 0\n");
   const Outcome quiet = run_file(options, dir_ / "points.txt");
   options.progress = ProgressMode::terminal;
@@ -367,10 +368,62 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
   EXPECT_NE(json.out.find("\"intersecting_face_pairs\": 6, \"undecided_face_pairs\": 0"),
             std::string::npos)
       << json.out;
-  options.mesh.self_intersection_check = false;
+  options.mesh.self_intersection_check = SelfIntersectionCheck::never;
   const Outcome quiet = run_file(options, dir_ / "points.txt");
   EXPECT_EQ(quiet.err, "");
   EXPECT_NE(quiet.out.find("\"intersecting_face_pairs\": null"), std::string::npos) << quiet.out;
+}
+
+// By default faces that intersect are looked for only where the labels are the parity
+// solid's: not under nonzero (the default rule, which no intersection changes) unless
+// asked, and where no rule is given but the faces are not oriented alike, after the build.
+TEST_F(InsideCommand, LooksForIntersectingFacesByDefaultOnlyUnderParity) {
+  std::string obj;
+  for (const double offset : {0.0, 0.5})
+    for (int c = 0; c < 8; ++c)
+      obj += "v " + std::to_string((c & 1) + offset) + " " +
+             std::to_string(((c >> 1) & 1) + offset) + " " +
+             std::to_string(((c >> 2) & 1) + offset) + "\n";
+  std::string turned = obj;  // one face of the second cube turned: not oriented alike
+  for (const int first : {1, 9})
+    for (const auto& q : testing::kHexahedronFaces) {
+      const std::string a = std::to_string(q[0] + first), b = std::to_string(q[1] + first),
+                        c = std::to_string(q[2] + first), d = std::to_string(q[3] + first);
+      obj += "f " + a + " " + b + " " + c + " " + d + "\n";
+      turned += first == 9 && &q == &testing::kHexahedronFaces[0]
+                    ? "f " + d + " " + c + " " + b + " " + a + "\n"
+                    : "f " + a + " " + b + " " + c + " " + d + "\n";
+    }
+  write_file(dir_ / "two_cubes.obj", obj);
+  write_file(dir_ / "two_cubes_turned.obj", turned);
+  write_file(dir_ / "points.txt", "0.25 0.25 0.25\n");
+  for (const unsigned threads : {2u, 1u}) {
+    InsideCommandOptions options;
+    options.json = true;
+    options.mesh.threads = threads;
+    options.mesh.path = (dir_ / "two_cubes.obj").string();
+    const Outcome nonzero = run_file(options, dir_ / "points.txt");
+    EXPECT_EQ(nonzero.err, "");
+    EXPECT_NE(nonzero.out.find("\"intersecting_face_pairs\": null"), std::string::npos)
+        << nonzero.out;
+    options.mesh.self_intersection_check = SelfIntersectionCheck::always;
+    const Outcome asked = run_file(options, dir_ / "points.txt");
+    EXPECT_EQ(asked.err, "") << "under nonzero the count is reported, not warned of";
+    EXPECT_NE(asked.out.find("\"intersecting_face_pairs\": 6"), std::string::npos) << asked.out;
+
+    options.mesh.self_intersection_check = SelfIntersectionCheck::under_parity;
+    options.mesh.path = (dir_ / "two_cubes_turned.obj").string();
+    const Outcome turned_faces = run_file(options, dir_ / "points.txt");
+    EXPECT_NE(turned_faces.out.find("\"intersecting_face_pairs\": 6"), std::string::npos)
+        << turned_faces.out;
+    EXPECT_NE(turned_faces.err.find("6 pairs of faces intersect"), std::string::npos)
+        << turned_faces.err;
+    options.mesh.self_intersection_check = SelfIntersectionCheck::never;
+    const Outcome skipped = run_file(options, dir_ / "points.txt");
+    EXPECT_NE(skipped.out.find("\"intersecting_face_pairs\": null"), std::string::npos)
+        << skipped.out;
+    EXPECT_EQ(skipped.err.find("pairs of faces intersect"), std::string::npos) << skipped.err;
+  }
 }
 
 // The same two cubes after a flat pillow (two triangles on three collinear points, zero
@@ -511,7 +564,7 @@ TEST_F(InsideCommand, WindingNumbersAndRules) {
     EXPECT_EQ(r.err, "") << file;
   }
   options.winding = false;
-  options.mesh.self_intersection_check = false;
+  options.mesh.self_intersection_check = SelfIntersectionCheck::never;
   const std::string both_inside = "inside\ninside\noutside\nboundary\n";
   const std::string middle_out = "outside\ninside\noutside\nboundary\n";
   const std::string all_out = "outside\noutside\noutside\nboundary\n";
