@@ -3,10 +3,13 @@
 // The binary files scripts/inside-peers.py hands to the libigl anchors (little-endian):
 // a mesh as int64 vertex and triangle counts, the vertices as float64 triples and the
 // triangles as int32 triples; points as an int64 count and float64 triples; the answer as
-// one float64 winding number per point. Built only by that script, against a libigl
-// checkout outside this repository (libigl is MPL-2.0 and not packaged for Debian).
+// one float64 winding number per point. A mesh path not ending in .bin is a mesh file
+// (OBJ, OFF, PLY, STL), read by libigl itself as a user of it would
+// (scripts/inside-end-to-end.py). Built only by those scripts, against a libigl checkout
+// outside this repository (libigl is MPL-2.0 and not packaged for Debian).
 
 #include <Eigen/Core>
+#include <igl/read_triangle_mesh.h>
 
 #include <chrono>
 #include <cstdint>
@@ -26,6 +29,10 @@ std::vector<T> read_values(std::ifstream& in, std::int64_t count) {
 }
 
 inline void read_mesh(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& F) {
+  if (path.size() < 4 || path.compare(path.size() - 4, 4, ".bin") != 0) {
+    if (!igl::read_triangle_mesh(path, V, F)) throw std::runtime_error("cannot read " + path);
+    return;
+  }
   std::ifstream in(path, std::ios::binary);
   const auto counts = read_values<std::int64_t>(in, 2);
   const auto vertices = read_values<double>(in, 3 * counts[0]);

@@ -1,0 +1,129 @@
+#!/usr/bin/python3
+"""End to end, as a user times it: `exactgeo inside MESH POINTS.npy --threads 1` as one
+command (reading the mesh, building, the checks that run by default, reading the points,
+classifying, writing the labels) beside libigl's fast winding number doing the same with
+the same file (igl::read_triangle_mesh, its tree, |w| >= 1/2; bench/libigl/), on closed
+meshes, at several point counts. Prints a markdown row per mesh and count: each tool's
+whole-command seconds (the fastest of three runs) and points per second, their ratio, and
+the points on which the labels differ.
+
+Usage:
+  scripts/inside-end-to-end.py --libigl DIR [--points 1000,25000,1000000] [--seed S] MESH...
+
+MESH is a file or a folder (its OFF, OBJ, PLY and STL files, recursively); meshes that
+exactgeo finds open, or refuses, are listed as such and not timed (the goal is closed
+meshes; open ones have their own table in docs/inside.md). Points are uniform in the
+mesh's box grown by 5% on each side. DIR is a libigl checkout (its include/ folder); the
+anchor is built with Debian's g++ and Eigen in a temporary folder. Needs numpy, the built
+module (build/python) and the command line (build/bin/exactgeo), found from this
+script's folder."""
+import argparse
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+import warnings
+
+HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(HERE, "build", "python"))
+
+import numpy as np  # noqa: E402
+
+import exactgeo  # noqa: E402
+
+EXACTGEO = os.path.join(HERE, "build", "bin", "exactgeo")
+EXTENSIONS = (".off", ".obj", ".ply", ".stl")
+REPEATS = 3
+
+
+def mesh_files(paths):
+    for path in paths:
+        if os.path.isdir(path):
+            for root, _, names in sorted(os.walk(path)):
+                for name in sorted(names):
+                    if name.lower().endswith(EXTENSIONS):
+                        yield os.path.join(root, name)
+        else:
+            yield path
+
+
+def fastest(command, env=None):
+    """The whole command's wall time, the fastest of REPEATS runs, and its last output."""
+    best, out = float("inf"), None
+    for _ in range(REPEATS):
+        start = time.perf_counter()
+        out = subprocess.run(command, capture_output=True, check=True, env=env)
+        best = min(best, time.perf_counter() - start)
+    return best, out
+
+
+def build_anchor(libigl, folder):
+    program = os.path.join(folder, "fast_winding_anchor")
+    subprocess.run(["g++", "-O3", "-DNDEBUG", "-std=c++17", "-Wno-deprecated-declarations",
+                    "-I", os.path.join(libigl, "include"), "-I", "/usr/include/eigen3",
+                    os.path.join(HERE, "bench", "libigl", "fast_winding_anchor.cpp"), "-o",
+                    program, "-lpthread"], check=True)
+    return program
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--libigl", required=True)
+    parser.add_argument("--points", default="1000,25000,1000000")
+    parser.add_argument("--seed", type=int, default=7)
+    parser.add_argument("meshes", nargs="+")
+    args = parser.parse_args()
+    counts = [int(n) for n in args.points.split(",")]
+    rng = np.random.default_rng(args.seed)
+    print("| mesh | faces | points | exactgeo s (Mpts/s) | fast WN s (Mpts/s) "
+          "| exactgeo / fast WN speed | labels differ |")
+    print("|---|---|---|---|---|---|---|")
+    totals = {n: [0.0, 0.0] for n in counts}
+    with tempfile.TemporaryDirectory() as folder:
+        anchor = build_anchor(args.libigl, folder)
+        env = {**os.environ, "IGL_NUM_THREADS": "1"}
+        for path in mesh_files(args.meshes):
+            name = os.path.relpath(path)
+            try:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    mesh = exactgeo.load_mesh(path)
+                    exactgeo.Classifier(mesh)  # refused or not
+            except (ValueError, OSError) as e:
+                print(f"| {name} | | | not classified: {str(e)[:60]} | | | |")
+                continue
+            if not mesh.info()["closed"]:
+                print(f"| {name} | {len(np.asarray(mesh.faces))} | | open: not timed | | | |")
+                continue
+            v = np.asarray(mesh.vertices)
+            lower, upper = v.min(0), v.max(0)
+            grow = 0.05 * (upper - lower)
+            for n in counts:
+                points = rng.uniform(lower - grow, upper + grow, (n, 3))
+                npy = os.path.join(folder, "points.npy")
+                np.save(npy, points)
+                binary = os.path.join(folder, "points.bin")
+                with open(binary, "wb") as f:
+                    f.write(struct.pack("<q", n))
+                    f.write(np.ascontiguousarray(points, "<f8").tobytes())
+                answers = os.path.join(folder, "w.bin")
+                ours, out = fastest([EXACTGEO, "inside", path, npy, "--threads", "1"])
+                inside = np.array(out.stdout.split()) == b"inside"
+                theirs, _ = fastest([anchor, path, binary, answers], env)
+                w = np.fromfile(answers, "<f8")
+                differ = int(np.count_nonzero(inside != (np.abs(w) >= 0.5)))
+                totals[n][0] += ours
+                totals[n][1] += theirs
+                print(f"| {name} | {len(np.asarray(mesh.faces))} | {n} | {ours:.3f} "
+                      f"({n / ours / 1e6:.2f}) | {theirs:.3f} ({n / theirs / 1e6:.2f}) "
+                      f"| {theirs / ours:.2f} | {differ} |", flush=True)
+    for n, (ours, theirs) in totals.items():
+        if ours > 0:
+            print(f"| all timed meshes | | {n} each | {ours:.2f} | {theirs:.2f} "
+                  f"| {theirs / ours:.2f} | |")
+
+
+if __name__ == "__main__":
+    main()
