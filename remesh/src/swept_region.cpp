@@ -23,22 +23,23 @@ struct Corner {
 
 /// The closed segment ab meets the closed triangle t outside their shared corners.
 bool edge_meets_triangle(const std::array<Corner, 2>& ab, const std::array<Corner, 3>& t) {
-  std::vector<int> shared_in_t;  // which corners of t the segment shares
+  int shared = 0;  // how many corners of t the segment shares
+  int k = -1;      // the last of them, in t
   int shared_in_ab = -1;
   for (int i = 0; i < 2; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      if (ab[i].vertex != kNoVertex && ab[i].vertex == t[k].vertex) {
-        shared_in_t.push_back(k);
+    for (int j = 0; j < 3; ++j) {
+      if (ab[i].vertex != kNoVertex && ab[i].vertex == t[j].vertex) {
+        ++shared;
+        k = j;
         shared_in_ab = i;
       }
     }
   }
-  if (shared_in_t.size() >= 2) return false;  // an edge of the triangle
-  if (shared_in_t.empty()) {
+  if (shared >= 2) return false;  // an edge of the triangle
+  if (shared == 0) {
     return segment_meets_triangle(*ab[0].point, *ab[1].point, *t[0].point, *t[1].point,
                                   *t[2].point);
   }
-  const int k = shared_in_t[0];
   return segment_meets_triangle_beyond(*t[k].point, *ab[1 - shared_in_ab].point,
                                        *t[(k + 1) % 3].point, *t[(k + 2) % 3].point);
 }
@@ -49,23 +50,78 @@ class Region {
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
     volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
-    for (int l = 0; l < 4; ++l) {
-      const auto& t = face_opposite(l);
-      inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+    if (volume_ != Sign::zero) {
+      for (int l = 0; l < 4; ++l) {
+        const auto& t = face_opposite(l);
+        inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+      }
+      return;
+    }
+    // Flat: the hull is a convex polygon of its plane, whose sides are the corner pairs
+    // with the other two corners strictly on one side (no three corners are collinear),
+    // seen in the shadow on a coordinate plane the region's plane is not perpendicular to.
+    axis_ = *shadow_axis(*corners_[0].point, *corners_[1].point, *corners_[2].point);
+    for (int e = 0; e < 6; ++e) {
+      const auto [i, j] = kPairs[e];
+      Sign side[2]{};
+      int n = 0;
+      for (int k = 0; k < 4; ++k) {
+        if (k != i && k != j)
+          side[n++] =
+              orient2d_along(axis_, *corners_[i].point, *corners_[j].point, *corners_[k].point);
+      }
+      if (side[0] == side[1]) inward_side_[e] = side[0];
     }
   }
 
-  /// Of a tetrahedron's faces, those with x strictly on their far side (bit l: the face
-  /// opposite corner l); 0 for a flat region. Elements whose corners all lie beyond one
-  /// face are apart from the tetrahedron: four signs per vertex spare an element's tests.
+  /// The separating planes x lies strictly beyond, as bits. A tetrahedron: bit l for the
+  /// face opposite corner l, x on its far side. A flat region: bit e for a side of the
+  /// polygon (corner pair e, kPairs) with x's shadow strictly beyond its line (x beyond the
+  /// plane through that side along the shadow axis), bits 6 and 7 for x strictly off the
+  /// region's plane on either side. Each bit names a plane with the whole region on its
+  /// other closed side: an element whose corners all lie strictly beyond one of them is
+  /// apart from the region (and so, by on_plane, when some of them are region corners on it).
   unsigned beyond(const Point3& x) const noexcept {
-    if (volume_ == Sign::zero) return 0;
     unsigned mask = 0;
-    for (int l = 0; l < 4; ++l) {
-      const auto& t = face_opposite(l);
-      if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l]) mask |= 1u << l;
+    if (volume_ != Sign::zero) {
+      for (int l = 0; l < 4; ++l) {
+        const auto& t = face_opposite(l);
+        if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l]) mask |= 1u << l;
+      }
+      return mask;
+    }
+    const Sign off = orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, x);
+    if (off != Sign::zero) return off == Sign::positive ? 1u << 6 : 1u << 7;
+    for (int e = 0; e < 6; ++e) {
+      if (inward_side_[e] == Sign::zero) continue;
+      const auto [i, j] = kPairs[e];
+      if (orient2d_along(axis_, *corners_[i].point, *corners_[j].point, x) == -inward_side_[e])
+        mask |= 1u << e;
     }
     return mask;
+  }
+
+  /// The separating planes of beyond() that region corner k lies on: a tetrahedron's faces
+  /// through it, a flat region's sides through it and its plane (bits 6 and 7). An element
+  /// whose every corner is strictly beyond one such plane or a region corner (by vertex
+  /// index) on it meets the plane only in the hull of those shared corners, and the
+  /// region, on the plane's other closed side, nowhere else: apart, beyond what it shares.
+  unsigned on_plane(int k) const noexcept {
+    if (volume_ != Sign::zero) return 0xFu & ~(1u << k);
+    unsigned mask = (1u << 6) | (1u << 7);
+    for (int e = 0; e < 6; ++e) {
+      if (inward_side_[e] != Sign::zero && (kPairs[e][0] == k || kPairs[e][1] == k))
+        mask |= 1u << e;
+    }
+    return mask;
+  }
+
+  /// Which corner vertex v is (by index), or -1.
+  int corner_of(VertexIndex v) const noexcept {
+    for (int k = 0; k < 4; ++k) {
+      if (corners_[k].vertex != kNoVertex && corners_[k].vertex == v) return k;
+    }
+    return -1;
   }
 
   bool is_corner(VertexIndex v) const noexcept {
@@ -108,9 +164,16 @@ class Region {
     return t;
   }
 
+  static constexpr std::array<std::array<int, 2>, 6> kPairs{
+      {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
   std::array<Corner, 4> corners_{};
   Sign volume_ = Sign::zero;
   std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
+  int axis_ = 0;                  ///< flat: the shadow's axis
+  /// flat: per corner pair, the side of its line the other two corners are on in the
+  /// shadow, or zero when they are on both (the pair is a diagonal, not a side)
+  std::array<Sign, 6> inward_side_{};
 };
 
 /// An edge of the surface crosses or touches one of the region's triangles outside
@@ -196,10 +259,16 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
     return v == edge_a || v == edge_b || v == partner;
   };
   const bool has_partner = partner != kNoVertex;
-  // Each nearby vertex's faces of the tetrahedron it lies beyond (none for a flat region).
+  // Each nearby vertex's separating planes (Region::beyond): those it lies strictly
+  // beyond, and for a region corner those it lies on. An element whose corners have one
+  // in common meets the region at most in the hull of its corners that are the region's
+  // (Region::on_plane): it is passed over, as the tests below would pass it.
   std::vector<unsigned> beyond(near.vertices.size());
-  for (std::size_t i = 0; i < near.vertices.size(); ++i)
-    beyond[i] = region.beyond(p[near.vertices[i]]);
+  for (std::size_t i = 0; i < near.vertices.size(); ++i) {
+    const VertexIndex v = near.vertices[i];
+    const int k = region.corner_of(v);
+    beyond[i] = k >= 0 ? region.on_plane(k) : region.beyond(p[v]);
+  }
   const auto beyond_of = [&](VertexIndex v) {
     const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
     return beyond[static_cast<std::size_t>(it - near.vertices.begin())];
@@ -207,11 +276,13 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
     if (region.is_corner(v)) continue;
-    const bool inside = region.flat() ? region.holds(p[v]) : beyond[i] == 0;
+    // Strictly beyond a separating plane: outside (a tetrahedron's corner is inside
+    // exactly when it is beyond none of its faces).
+    const bool inside = beyond[i] == 0 && (!region.flat() || region.holds(p[v]));
     if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
   }
   for (const Edge& e : near.edges) {
-    if ((beyond_of(e[0]) & beyond_of(e[1])) != 0) continue;          // beyond one face: apart
+    if ((beyond_of(e[0]) & beyond_of(e[1])) != 0) continue;          // beyond one plane: apart
     if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
     if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
       return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
