@@ -4,6 +4,7 @@
 #include <numeric>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/boxes/point_groups.hpp"
@@ -196,6 +197,7 @@ bool pierces(const Region& region, const std::array<Corner, 3>& triangle) {
 
 bool turns_over_in_plane(const std::array<Point3, 3>& old, const std::array<Point3, 3>& made) {
   for (const Point3& q : made) {
+    if (q == old[0] || q == old[1] || q == old[2]) continue;  // a corner: in the plane
     if (orient3d(old[0], old[1], old[2], q) != Sign::zero) return false;
   }
   const int axis = *shadow_axis(old[0], old[1], old[2]);
@@ -336,6 +338,15 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
   };
   const std::array<RegionCorner, 4> px = as_points(x), py = as_points(y);
   const Region rx(px), ry(py);
+  // Apart when one's corners all lie strictly beyond one separating plane of the other
+  // (Region::beyond: the other lies on its other closed side). Most pairs a pass asks
+  // about end here, before the segment-triangle tests.
+  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
+    unsigned common = ~0u;
+    for (const RegionCorner& c : *b_corners)
+      common &= a->beyond(c.point);
+    if (common != 0) return false;
+  }
   for (const auto& [a, b, a_corners] : {std::tuple{&rx, &ry, &px}, std::tuple{&ry, &rx, &py}}) {
     for (const RegionCorner& c : *a_corners) {
       if (b->holds(c.point)) return true;
