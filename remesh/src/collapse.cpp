@@ -14,6 +14,7 @@
 #include <iterator>
 #include <limits>
 #include <set>
+#include <span>
 #include <variant>
 #include <vector>
 
@@ -31,17 +32,33 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 
 namespace {
 
-/// The triangles around every vertex, by index in triangle order.
-using Stars = std::vector<std::vector<std::size_t>>;
-
-Stars stars_of(const Surface& s) {
-  Stars stars(s.vertices.size());
-  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    for (const VertexIndex v : s.triangles[t])
-      stars[v].push_back(t);
+/// The triangles around every vertex, by index in triangle order: one array, bucketed by
+/// vertex (a counting sort; a vector per vertex was a good part of a pass's time).
+class Stars {
+ public:
+  explicit Stars(const Surface& s) : first_(s.vertices.size() + 1, 0) {
+    for (const Triangle& t : s.triangles) {
+      for (const VertexIndex v : t)
+        ++first_[v + 1];
+    }
+    for (std::size_t v = 1; v < first_.size(); ++v)
+      first_[v] += first_[v - 1];
+    triangles_.resize(first_.back());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+      for (const VertexIndex v : s.triangles[t])
+        triangles_[next[v]++] = t;
+    }
   }
-  return stars;
-}
+
+  std::span<const std::size_t> operator[](VertexIndex v) const noexcept {
+    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
+  }
+
+ private:
+  std::vector<std::size_t> first_;
+  std::vector<std::size_t> triangles_;
+};
 
 /// A collapse that passed its topology checks.
 struct CollapsePlan {
@@ -188,7 +205,7 @@ struct Reach {
 class CollapsePass {
  public:
   CollapsePass(const Surface& surface, std::span<const Collapse> collapses)
-      : surface_(surface), stars_(stars_of(surface)), outcomes_(collapses.size()) {
+      : surface_(surface), stars_(surface), outcomes_(collapses.size()) {
     plan(collapses);
   }
 
@@ -340,7 +357,7 @@ class CollapsePass {
 }  // namespace
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
-  const auto planned = plan_collapse(surface, stars_of(surface), a, b, to);
+  const auto planned = plan_collapse(surface, Stars(surface), a, b, to);
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const CollapsePlan& plan = std::get<CollapsePlan>(planned);
   const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};
