@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -217,21 +218,49 @@ bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   return any;
 }
 
-/// The corners of the triangles around v other than v, each once per triangle side: a
-/// neighbour seen once is across a boundary edge.
-std::vector<VertexIndex> ring_sides(const std::vector<remesh::Triangle>& star, VertexIndex v) {
-  std::vector<VertexIndex> sides;
+/// The triangles around every vertex as a pass starts, in one array bucketed by vertex
+/// (a counting sort, where a vector per vertex was a good part of a collapse pass).
+class Stars {
+ public:
+  explicit Stars(const Surface& s) : first_(s.vertices.size() + 1, 0) {
+    for (const remesh::Triangle& t : s.triangles) {
+      for (const VertexIndex v : t)
+        ++first_[v + 1];
+    }
+    for (std::size_t v = 1; v < first_.size(); ++v)
+      first_[v] += first_[v - 1];
+    triangles_.resize(first_.back());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (const remesh::Triangle& t : s.triangles) {
+      for (const VertexIndex v : t)
+        triangles_[next[v]++] = t;
+    }
+  }
+
+  std::span<const remesh::Triangle> operator[](VertexIndex v) const noexcept {
+    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
+  }
+
+ private:
+  std::vector<std::size_t> first_;
+  std::vector<remesh::Triangle> triangles_;
+};
+
+/// The corners of the triangles around v other than v, each once per triangle side, into
+/// `sides` (sorted): a neighbour seen once is across a boundary edge.
+void ring_sides(std::span<const remesh::Triangle> star, VertexIndex v,
+                std::vector<VertexIndex>& sides) {
+  sides.clear();
   for (const remesh::Triangle& t : star) {
     for (const VertexIndex c : t)
       if (c != v) sides.push_back(c);
   }
   std::sort(sides.begin(), sides.end());
-  return sides;
 }
 
-/// The neighbours across boundary edges: those seen once among the ring's sides.
-std::vector<VertexIndex> boundary_neighbours(const std::vector<VertexIndex>& sides) {
-  std::vector<VertexIndex> once;
+/// The neighbours across boundary edges, into `once`: those seen once among the sides.
+void boundary_neighbours(const std::vector<VertexIndex>& sides, std::vector<VertexIndex>& once) {
+  once.clear();
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i;
     while (j < sides.size() && sides[j] == sides[i])
@@ -239,17 +268,24 @@ std::vector<VertexIndex> boundary_neighbours(const std::vector<VertexIndex>& sid
     if (j - i == 1) once.push_back(sides[i]);
     i = j;
   }
-  return once;
 }
+
+/// What collapse_suits reuses from one call to the next.
+struct RingScratch {
+  std::vector<VertexIndex> sides;
+  std::vector<VertexIndex> ends;
+};
 
 /// Whether removing `gone` into `kept` (gone moves to kept's place) suits the sheet: a
 /// boundary end moves only along its boundary edge and is no corner of the outline, no
 /// edge made is longer than it may be, and no triangle turns over in the material.
 bool collapse_suits(const Work& w, const std::vector<double>& size,
-                    const std::vector<remesh::Triangle>& star, VertexIndex kept, VertexIndex gone,
-                    bool boundary_edge) {
-  const std::vector<VertexIndex> sides = ring_sides(star, gone);
-  const std::vector<VertexIndex> ends = boundary_neighbours(sides);
+                    std::span<const remesh::Triangle> star, VertexIndex kept, VertexIndex gone,
+                    bool boundary_edge, RingScratch& scratch) {
+  std::vector<VertexIndex>& sides = scratch.sides;
+  std::vector<VertexIndex>& ends = scratch.ends;
+  ring_sides(star, gone, sides);
+  boundary_neighbours(sides, ends);
   if (ends.empty() == boundary_edge) return false;  // gone on the boundary, or not
   // A boundary end goes only where the outline is straight: its two boundary neighbours
   // on one line with it, up to the rounding of averaged material coordinates (a choice of
@@ -289,18 +325,15 @@ bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   // The triangles around each vertex as the pass starts (collapse_edges defers the
   // collapses whose surroundings another one of the pass changes).
-  std::vector<std::vector<remesh::Triangle>> stars(w.surface.vertices.size());
-  for (const remesh::Triangle& t : w.surface.triangles) {
-    for (const VertexIndex v : t)
-      stars[v].push_back(t);
-  }
+  const Stars stars(w.surface);
+  RingScratch scratch;
   std::vector<remesh::Collapse> collapses;
   for (const auto& [length, e] : wanted) {
     const bool boundary = !e->right;
     VertexIndex kept = e->a, gone = e->b;
-    if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) {
+    if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
-      if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) continue;
+      if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) continue;
     }
     collapses.push_back({kept, gone, w.surface.vertices[kept]});
   }
