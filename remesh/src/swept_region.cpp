@@ -1,6 +1,8 @@
 #include "exactgeo/remesh/swept_region.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <initializer_list>
 #include <numeric>
 #include <span>
 #include <tuple>
@@ -45,6 +47,19 @@ bool edge_meets_triangle(const std::array<Corner, 2>& ab, const std::array<Corne
                                        *t[(k + 1) % 3].point, *t[(k + 2) % 3].point);
 }
 
+/// The coordinate axis the plane of p, q, r is most turned toward, in floating point (a
+/// choice, not a decision), when the shadow of p, q, r along it is a triangle; otherwise
+/// the first axis along which it is (shadow_axis). Precondition: p, q, r not collinear.
+int shadow_axis_of(const Point3& p, const Point3& q, const Point3& r) noexcept {
+  const double ux = q[0] - p[0], uy = q[1] - p[1], uz = q[2] - p[2];
+  const double vx = r[0] - p[0], vy = r[1] - p[1], vz = r[2] - p[2];
+  const std::array<double, 3> n{std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz),
+                                std::fabs(ux * vy - uy * vx)};
+  const int axis = n[0] >= n[1] ? (n[0] >= n[2] ? 0 : 2) : (n[1] >= n[2] ? 1 : 2);
+  if (orient2d_along(axis, p, q, r) != Sign::zero) return axis;
+  return *shadow_axis(p, q, r);
+}
+
 class Region {
  public:
   explicit Region(const std::array<RegionCorner, 4>& corners) {
@@ -56,33 +71,51 @@ class Region {
         const auto& t = face_opposite(l);
         inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
       }
-      return;
     }
-    // Flat: the hull is a convex polygon of its plane, whose sides are the corner pairs
-    // with the other two corners strictly on one side (no three corners are collinear),
-    // seen in the shadow on a coordinate plane the region's plane is not perpendicular to.
-    axis_ = *shadow_axis(*corners_[0].point, *corners_[1].point, *corners_[2].point);
+    // The hull's shadow on a coordinate plane is a convex polygon, whose sides are the
+    // corner pairs with the other two corners on one closed side of their line, not both
+    // on it; the plane along the shadow axis through such a side has the whole hull on
+    // that side. The axis: the one the first three corners' plane is most turned toward
+    // (in floating point, a choice only; its shadow of those three is checked to be a
+    // triangle, so that a flat hull's shadow is its polygon, one to one).
+    axis_ = shadow_axis_of(*corners_[0].point, *corners_[1].point, *corners_[2].point);
     for (int e = 0; e < 6; ++e) {
       const auto [i, j] = kPairs[e];
-      Sign side[2]{};
-      int n = 0;
+      Sign inward = Sign::zero;
+      bool side = true;
+      unsigned on = (1u << i) | (1u << j);
       for (int k = 0; k < 4; ++k) {
-        if (k != i && k != j)
-          side[n++] =
-              orient2d_along(axis_, *corners_[i].point, *corners_[j].point, *corners_[k].point);
+        if (k == i || k == j) continue;
+        const Sign s =
+            orient2d_along(axis_, *corners_[i].point, *corners_[j].point, *corners_[k].point);
+        if (s == Sign::zero) {
+          on |= 1u << k;
+        } else if (inward == Sign::zero) {
+          inward = s;
+        } else if (s != inward) {
+          side = false;
+        }
       }
-      if (side[0] == side[1]) inward_side_[e] = side[0];
+      if (side && inward != Sign::zero) {
+        inward_side_[e] = inward;
+        on_side_[e] = on;
+      }
     }
   }
 
-  /// The separating planes x lies strictly beyond, as bits. A tetrahedron: bit l for the
-  /// face opposite corner l, x on its far side. A flat region: bit e for a side of the
-  /// polygon (corner pair e, kPairs) with x's shadow strictly beyond its line (x beyond the
-  /// plane through that side along the shadow axis), bits 6 and 7 for x strictly off the
-  /// region's plane on either side. Each bit names a plane with the whole region on its
-  /// other closed side: an element whose corners all lie strictly beyond one of them is
-  /// apart from the region (and so, by on_plane, when some of them are region corners on it).
+  /// The separating planes x lies strictly beyond, as bits, each a plane with the whole
+  /// region on its other closed side: bit l (0-3) for the face of a tetrahedron opposite
+  /// corner l; bit 4 + e for a side of the shadow (corner pair e, kPairs), x's shadow
+  /// strictly beyond its line; bits 10 and 11 for a flat region's plane, x strictly off it
+  /// on either side. An element whose corners all lie strictly beyond one of them is apart
+  /// from the region (and so, by on_plane, when some of them are region corners on it).
   unsigned beyond(const Point3& x) const noexcept {
+    const unsigned planes = beyond_planes(x);
+    return planes != 0 && volume_ == Sign::zero ? planes : planes | beyond_sides(x);
+  }
+
+  /// beyond()'s bits of the faces or of a flat region's plane (kPlaneBits).
+  unsigned beyond_planes(const Point3& x) const noexcept {
     unsigned mask = 0;
     if (volume_ != Sign::zero) {
       for (int l = 0; l < 4; ++l) {
@@ -92,27 +125,35 @@ class Region {
       return mask;
     }
     const Sign off = orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, x);
-    if (off != Sign::zero) return off == Sign::positive ? 1u << 6 : 1u << 7;
+    if (off != Sign::zero) mask = off == Sign::positive ? 1u << 10 : 1u << 11;
+    return mask;
+  }
+
+  /// beyond()'s bits of the shadow's sides (kSideBits).
+  unsigned beyond_sides(const Point3& x) const noexcept {
+    unsigned mask = 0;
     for (int e = 0; e < 6; ++e) {
       if (inward_side_[e] == Sign::zero) continue;
       const auto [i, j] = kPairs[e];
       if (orient2d_along(axis_, *corners_[i].point, *corners_[j].point, x) == -inward_side_[e])
-        mask |= 1u << e;
+        mask |= 1u << (4 + e);
     }
     return mask;
   }
 
+  static constexpr unsigned kPlaneBits = 0xFu | (1u << 10) | (1u << 11);
+  static constexpr unsigned kSideBits = 0x3Fu << 4;
+
   /// The separating planes of beyond() that region corner k lies on: a tetrahedron's faces
-  /// through it, a flat region's sides through it and its plane (bits 6 and 7). An element
-  /// whose every corner is strictly beyond one such plane or a region corner (by vertex
-  /// index) on it meets the plane only in the hull of those shared corners, and the
-  /// region, on the plane's other closed side, nowhere else: apart, beyond what it shares.
+  /// through it, the sides' planes through it (its own sides, and a side whose line its
+  /// shadow lies on), a flat region's plane. An element whose every corner is strictly
+  /// beyond one such plane or a region corner (by vertex index) on it meets the plane only
+  /// in the hull of those shared corners, and the region, on the plane's other closed
+  /// side, nowhere else: apart, beyond what it shares.
   unsigned on_plane(int k) const noexcept {
-    if (volume_ != Sign::zero) return 0xFu & ~(1u << k);
-    unsigned mask = (1u << 6) | (1u << 7);
+    unsigned mask = volume_ != Sign::zero ? 0xFu & ~(1u << k) : (1u << 10) | (1u << 11);
     for (int e = 0; e < 6; ++e) {
-      if (inward_side_[e] != Sign::zero && (kPairs[e][0] == k || kPairs[e][1] == k))
-        mask |= 1u << e;
+      if (inward_side_[e] != Sign::zero && (on_side_[e] >> k & 1u) != 0) mask |= 1u << (4 + e);
     }
     return mask;
   }
@@ -140,7 +181,7 @@ class Region {
       return false;
     }
     // A tetrahedron: on no face's far side (the side away from the opposite corner).
-    return beyond(x) == 0;
+    return beyond_planes(x) == 0;
   }
 
   bool flat() const noexcept { return volume_ == Sign::zero; }
@@ -171,10 +212,11 @@ class Region {
   std::array<Corner, 4> corners_{};
   Sign volume_ = Sign::zero;
   std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
-  int axis_ = 0;                  ///< flat: the shadow's axis
-  /// flat: per corner pair, the side of its line the other two corners are on in the
-  /// shadow, or zero when they are on both (the pair is a diagonal, not a side)
+  int axis_ = 0;                  ///< the shadow's axis
+  /// per corner pair, the side of its line the other two corners are on in the shadow, or
+  /// zero when the pair is no side (they are on both sides, or all on the line)
   std::array<Sign, 6> inward_side_{};
+  std::array<unsigned, 6> on_side_{};  ///< per side: the corners on its line, as bits
 };
 
 /// An edge of the surface crosses or touches one of the region's triangles outside
@@ -264,27 +306,53 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   // Each nearby vertex's separating planes (Region::beyond): those it lies strictly
   // beyond, and for a region corner those it lies on. An element whose corners have one
   // in common meets the region at most in the hull of its corners that are the region's
-  // (Region::on_plane): it is passed over, as the tests below would pass it.
-  std::vector<unsigned> beyond(near.vertices.size());
+  // (Region::on_plane): it is passed over, as the tests below would pass it. The faces'
+  // (or a flat region's plane's) first; the shadow's sides only for the elements those
+  // leave (a vertex on a side's line, common on a grid, costs an exact zero).
+  constexpr unsigned kUnknown = ~0u;
+  std::vector<unsigned> planes(near.vertices.size());
+  std::vector<unsigned> sides(near.vertices.size(), kUnknown);
+  std::vector<int> corner(near.vertices.size());
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
-    const int k = region.corner_of(v);
-    beyond[i] = k >= 0 ? region.on_plane(k) : region.beyond(p[v]);
+    corner[i] = region.corner_of(v);
+    planes[i] = corner[i] >= 0 ? region.on_plane(corner[i]) & Region::kPlaneBits
+                               : region.beyond_planes(p[v]);
   }
-  const auto beyond_of = [&](VertexIndex v) {
+  const auto index_of = [&](VertexIndex v) {
     const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
-    return beyond[static_cast<std::size_t>(it - near.vertices.begin())];
+    return static_cast<std::size_t>(it - near.vertices.begin());
+  };
+  const auto sides_of = [&](std::size_t i) {
+    if (sides[i] == kUnknown) {
+      sides[i] = corner[i] >= 0 ? region.on_plane(corner[i]) & Region::kSideBits
+                                : region.beyond_sides(p[near.vertices[i]]);
+    }
+    return sides[i];
+  };
+  // Whether the corners (indices into near.vertices) are all beyond one separating plane.
+  const auto apart = [&](std::initializer_list<std::size_t> at) {
+    unsigned common = ~0u;
+    for (const std::size_t i : at)
+      common &= planes[i];
+    if (common != 0) return true;
+    common = ~0u;
+    for (const std::size_t i : at)
+      common &= sides_of(i);
+    return common != 0;
   };
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
-    if (region.is_corner(v)) continue;
-    // Strictly beyond a separating plane: outside (a tetrahedron's corner is inside
-    // exactly when it is beyond none of its faces).
-    const bool inside = beyond[i] == 0 && (!region.flat() || region.holds(p[v]));
+    if (corner[i] >= 0) continue;
+    // Strictly beyond a separating plane: outside (a tetrahedron's vertex is inside
+    // exactly when it is beyond none of its faces; a flat region's, when it is on its
+    // plane, beyond none of its sides, and in one of its corner triangles).
+    const bool inside =
+        planes[i] == 0 && (!region.flat() || (sides_of(i) == 0 && region.holds(p[v])));
     if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
   }
   for (const Edge& e : near.edges) {
-    if ((beyond_of(e[0]) & beyond_of(e[1])) != 0) continue;          // beyond one plane: apart
+    if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
     if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
     if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
       return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
@@ -292,7 +360,7 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   }
   for (const std::size_t t : near.triangles) {
     const Triangle& c = surface.triangles[t];
-    if ((beyond_of(c[0]) & beyond_of(c[1]) & beyond_of(c[2])) != 0) continue;  // apart
+    if (apart({index_of(c[0]), index_of(c[1]), index_of(c[2])})) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
@@ -344,7 +412,13 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
   for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
     unsigned common = ~0u;
     for (const RegionCorner& c : *b_corners)
-      common &= a->beyond(c.point);
+      common &= a->beyond_planes(c.point);
+    if (common != 0) return false;
+  }
+  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
+    unsigned common = ~0u;
+    for (const RegionCorner& c : *b_corners)
+      common &= a->beyond_sides(c.point);
     if (common != 0) return false;
   }
   for (const auto& [a, b, a_corners] : {std::tuple{&rx, &ry, &px}, std::tuple{&ry, &rx, &py}}) {

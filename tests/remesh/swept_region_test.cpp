@@ -342,6 +342,17 @@ TEST_P(SweptRegions, AnElementAtACornerIsPassedOverOnlyBeyondAPlaneThroughThatCo
   s.vertices[5] = at(2, 8, -1);
   expect_first(s, flip_region(s), kNoVertex, Blocker{Blocker::Kind::triangle, {0, 4, 5}},
                "a triangle at a across the plane");
+  // The square's shadow has sides and diagonals, and only a side separates: a vertex on
+  // either side of the diagonal ab is in the square.
+  s.vertices.push_back(at(8, 9, 8));
+  s.vertices[5] = at(8, 8, 8);
+  s.triangles[2] = {4, 5, 6};
+  for (const auto& [x, y] : {std::pair{1.0, 3.0}, std::pair{3.0, 1.0}}) {
+    s.vertices[4] = at(x, y, 0);
+    expect_first(s, flip_region(s), kNoVertex,
+                 Blocker{Blocker::Kind::vertex, {4, kNoVertex, kNoVertex}},
+                 "a vertex on one side of the square's diagonal ab");
+  }
 }
 
 TEST_P(SweptRegions, RegionsMeetWhenTheyTouchAndNotOneUlpApart) {
