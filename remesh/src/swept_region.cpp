@@ -103,18 +103,14 @@ class Region {
     }
   }
 
-  /// The separating planes x lies strictly beyond, as bits, each a plane with the whole
-  /// region on its other closed side: bit l (0-3) for the face of a tetrahedron opposite
-  /// corner l; bit 4 + e for a side of the shadow (corner pair e, kPairs), x's shadow
-  /// strictly beyond its line; bits 10 and 11 for a flat region's plane, x strictly off it
-  /// on either side. An element whose corners all lie strictly beyond one of them is apart
-  /// from the region (and so, by on_plane, when some of them are region corners on it).
-  unsigned beyond(const Point3& x) const noexcept {
-    const unsigned planes = beyond_planes(x);
-    return planes != 0 && volume_ == Sign::zero ? planes : planes | beyond_sides(x);
-  }
+  // The separating planes a point x lies strictly beyond, as bits, each a plane with the
+  // whole region on its other closed side: bit l (0-3) for the face of a tetrahedron
+  // opposite corner l; bit 4 + e for a side of the shadow (corner pair e, kPairs), x's
+  // shadow strictly beyond its line; bits 10 and 11 for a flat region's plane, x strictly
+  // off it on either side. An element whose corners all lie strictly beyond one of them is
+  // apart from the region (and so, by on_plane, when some of them are region corners on it).
 
-  /// beyond()'s bits of the faces or of a flat region's plane (kPlaneBits).
+  /// The bits of the faces or of a flat region's plane (kPlaneBits).
   unsigned beyond_planes(const Point3& x) const noexcept {
     unsigned mask = 0;
     if (volume_ != Sign::zero) {
@@ -129,7 +125,7 @@ class Region {
     return mask;
   }
 
-  /// beyond()'s bits of the shadow's sides (kSideBits).
+  /// The bits of the shadow's sides (kSideBits).
   unsigned beyond_sides(const Point3& x) const noexcept {
     unsigned mask = 0;
     for (int e = 0; e < 6; ++e) {
@@ -144,7 +140,7 @@ class Region {
   static constexpr unsigned kPlaneBits = 0xFu | (1u << 10) | (1u << 11);
   static constexpr unsigned kSideBits = 0x3Fu << 4;
 
-  /// The separating planes of beyond() that region corner k lies on: a tetrahedron's faces
+  /// The separating planes that region corner k lies on: a tetrahedron's faces
   /// through it, the sides' planes through it (its own sides, and a side whose line its
   /// shadow lies on), a flat region's plane. An element whose every corner is strictly
   /// beyond one such plane or a region corner (by vertex index) on it meets the plane only
