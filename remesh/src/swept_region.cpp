@@ -299,9 +299,9 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
     return v == edge_a || v == edge_b || v == partner;
   };
   const bool has_partner = partner != kNoVertex;
-  // Each nearby vertex's separating planes (Region::beyond): those it lies strictly
-  // beyond, and for a region corner those it lies on. An element whose corners have one
-  // in common meets the region at most in the hull of its corners that are the region's
+  // Each nearby vertex's separating planes (Region::beyond_planes, beyond_sides): those it lies
+  // strictly beyond, and for a region corner those it lies on. An element whose corners have one in
+  // common meets the region at most in the hull of its corners that are the region's
   // (Region::on_plane): it is passed over, as the tests below would pass it. The faces'
   // (or a flat region's plane's) first; the shadow's sides only for the elements those
   // leave (a vertex on a side's line, common on a grid, costs an exact zero).
@@ -403,8 +403,8 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
   const std::array<RegionCorner, 4> px = as_points(x), py = as_points(y);
   const Region rx(px), ry(py);
   // Apart when one's corners all lie strictly beyond one separating plane of the other
-  // (Region::beyond: the other lies on its other closed side). Most pairs a pass asks
-  // about end here, before the segment-triangle tests.
+  // (Region::beyond_planes, beyond_sides: the other lies on its other closed side). Most pairs a
+  // pass asks about end here, before the segment-triangle tests.
   for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
     unsigned common = ~0u;
     for (const RegionCorner& c : *b_corners)
