@@ -299,42 +299,49 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
     return v == edge_a || v == edge_b || v == partner;
   };
   const bool has_partner = partner != kNoVertex;
-  // Each nearby vertex's separating planes (Region::beyond_planes, beyond_sides): those it lies
-  // strictly beyond, and for a region corner those it lies on. An element whose corners have one in
-  // common meets the region at most in the hull of its corners that are the region's
-  // (Region::on_plane): it is passed over, as the tests below would pass it. The faces'
-  // (or a flat region's plane's) first; the shadow's sides only for the elements those
-  // leave (a vertex on a side's line, common on a grid, costs an exact zero).
+  // Each nearby vertex's separating planes (Region::beyond_planes, beyond_sides): those
+  // it lies strictly beyond, and for a region corner those it lies on. An element whose
+  // corners have one in common meets the region at most in the hull of its corners that
+  // are the region's (Region::on_plane): it is passed over, as the tests below would pass
+  // it. One kind first, the other only for the elements the first leaves: the shadow's
+  // sides for a flat region or a split's (orient3d against a flat region's plane is an
+  // exact zero for a vertex of its sheet, and a face of a split's rounding-thin region
+  // leaves its orientations to expansions), the faces for a flip's (a vertex on a side's
+  // line, common on a grid, costs an exact zero in the shadow).
+  const bool sides_first =
+      region.flat() || std::any_of(corners.begin(), corners.end(),
+                                   [](const RegionCorner& c) { return c.vertex == kNoVertex; });
   constexpr unsigned kUnknown = ~0u;
-  std::vector<unsigned> planes(near.vertices.size());
-  std::vector<unsigned> sides(near.vertices.size(), kUnknown);
   std::vector<int> corner(near.vertices.size());
+  std::vector<unsigned> first(near.vertices.size());
+  std::vector<unsigned> second(near.vertices.size(), kUnknown);
+  const auto bits = [&](std::size_t i, bool sides) {
+    if (corner[i] >= 0)
+      return region.on_plane(corner[i]) & (sides ? Region::kSideBits : Region::kPlaneBits);
+    const Point3& x = p[near.vertices[i]];
+    return sides ? region.beyond_sides(x) : region.beyond_planes(x);
+  };
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
-    const VertexIndex v = near.vertices[i];
-    corner[i] = region.corner_of(v);
-    planes[i] = corner[i] >= 0 ? region.on_plane(corner[i]) & Region::kPlaneBits
-                               : region.beyond_planes(p[v]);
+    corner[i] = region.corner_of(near.vertices[i]);
+    first[i] = bits(i, sides_first);
   }
+  const auto second_of = [&](std::size_t i) {
+    if (second[i] == kUnknown) second[i] = bits(i, !sides_first);
+    return second[i];
+  };
   const auto index_of = [&](VertexIndex v) {
     const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
     return static_cast<std::size_t>(it - near.vertices.begin());
-  };
-  const auto sides_of = [&](std::size_t i) {
-    if (sides[i] == kUnknown) {
-      sides[i] = corner[i] >= 0 ? region.on_plane(corner[i]) & Region::kSideBits
-                                : region.beyond_sides(p[near.vertices[i]]);
-    }
-    return sides[i];
   };
   // Whether the corners (indices into near.vertices) are all beyond one separating plane.
   const auto apart = [&](std::initializer_list<std::size_t> at) {
     unsigned common = ~0u;
     for (const std::size_t i : at)
-      common &= planes[i];
+      common &= first[i];
     if (common != 0) return true;
     common = ~0u;
     for (const std::size_t i : at)
-      common &= sides_of(i);
+      common &= second_of(i);
     return common != 0;
   };
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
@@ -344,7 +351,7 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
     // exactly when it is beyond none of its faces; a flat region's, when it is on its
     // plane, beyond none of its sides, and in one of its corner triangles).
     const bool inside =
-        planes[i] == 0 && (!region.flat() || (sides_of(i) == 0 && region.holds(p[v])));
+        first[i] == 0 && second_of(i) == 0 && (!region.flat() || region.holds(p[v]));
     if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
   }
   for (const Edge& e : near.edges) {
