@@ -15,6 +15,7 @@
 
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
@@ -95,6 +96,21 @@ bool sides_meet(const Surface& surface, const std::vector<Triangle>& made, const
   return false;
 }
 
+/// Whether the two sides' new triangles of an inner edge ab split at m (off the line ab)
+/// are apart by a plane: when the opposite corners c and d lie strictly on opposite sides
+/// of the plane of a, b and m, each side's new triangles (x m c, m y c, and x m d, m y d)
+/// lie on its closed side and meet that plane only in their edge am or mb. So a new
+/// triangle of one side meets one of the other only in am, mb or m, which they share
+/// (am and mb meet only at m): what sides_meet would find. Two signs, where sides_meet
+/// builds the four triangles' contacts; a flat sheet (c and d in that plane) goes there.
+bool sides_apart(const Surface& surface, const SplitPlan& plan) {
+  const auto& p = surface.vertices;
+  const VertexIndex c = third_corner(surface.triangles[plan.on_edge[0]], plan.a, plan.b);
+  const VertexIndex d = third_corner(surface.triangles[plan.on_edge[1]], plan.a, plan.b);
+  const Sign sc = orient3d(p[plan.a], p[plan.b], plan.at, p[c]);
+  return sc != Sign::zero && orient3d(p[plan.a], p[plan.b], plan.at, p[d]) == -sc;
+}
+
 std::variant<Outcome, SplitPlan> split_topology(const Surface& surface, VertexIndex a,
                                                 VertexIndex b, const Point3& at,
                                                 std::vector<std::size_t> on_edge) {
@@ -144,7 +160,8 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
                                   : kNoVertex);
     }
   }
-  if (!between && plan.on_edge.size() == 2 && sides_meet(surface, made, at)) {
+  if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan) &&
+      sides_meet(surface, made, at)) {
     return Outcome{Verdict::refused_collision,
                    splitting(a, b) + " off the edge would fold its two sides into each other",
                    Blocker{Blocker::Kind::triangle, surface.triangles[plan.on_edge[1]]},
