@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "exactgeo/boxes/point_groups.hpp"
+#include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
@@ -317,25 +318,38 @@ class CollapsePass {
         if (k != kNone && live(k)) end[i] = plans_[k].to;
       }
       const std::vector<double> t1 = ccd::flat_positions(end);
-      const ccd::MeshCcdResult step = mesh_ccd.step({t0, t1});
+      const ccd::StepPositions positions{t0, t1};
+      // The broad phase's pairs, in the order step() reports its collisions, and the
+      // narrow phase (exact, as step() runs it) on those that are not the collapse itself
+      // (pairs that share a vertex once each live collapse's ends are merged meet at its
+      // new point at the end of the step, by construction: a touch exact CCD spends the
+      // most on). step() would decide them as well, and they would be passed over here.
+      ccd::MeshCcdCandidates candidates = mesh_ccd.candidates(positions);
+      std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end());
+      std::sort(candidates.edge_edge.begin(), candidates.edge_edge.end());
+      ccd::Options exact;
+      exact.method = ccd::Method::exact;
       const auto& global = reach.vertices;  // a reached vertex's index in the surface
-      for (const ccd::VertexFacePair& pair : step.vertex_face) {
+      for (const ccd::VertexFacePair& pair : candidates.vertex_face) {
         const ccd::Triangle& local = reach.triangles[pair.face];
         const Triangle t{global[local[0]], global[local[1]], global[local[2]]};
         const VertexIndex x = global[pair.vertex];
         const VertexIndex v = merged(x);
         if (v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
           continue;  // the collapse itself
+        const ccd::VertexFaceQuery query = ccd::vertex_face_query(positions, reach.triangles, pair);
+        if (!ccd::vertex_face_ccd(query, exact).collision) continue;
         changed |= refuse(x, {Blocker::Kind::triangle, t});
         for (const VertexIndex c : t)
           changed |= refuse(c, {Blocker::Kind::vertex, {x, kNoVertex, kNoVertex}});
       }
-      for (const ccd::EdgeEdgePair& pair : step.edge_edge) {
+      for (const ccd::EdgeEdgePair& pair : candidates.edge_edge) {
         const std::array<VertexIndex, 2> ea{global[pair.a[0]], global[pair.a[1]]};
         const std::array<VertexIndex, 2> eb{global[pair.b[0]], global[pair.b[1]]};
         const VertexIndex a0 = merged(ea[0]), a1 = merged(ea[1]);
         const VertexIndex b0 = merged(eb[0]), b1 = merged(eb[1]);
         if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself
+        if (!ccd::edge_edge_ccd(ccd::edge_edge_query(positions, pair), exact).collision) continue;
         const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};
         const Blocker b{Blocker::Kind::edge, {eb[0], eb[1], kNoVertex}};
         for (const VertexIndex v : ea)
