@@ -140,9 +140,11 @@ double world_min_angle(const Surface& s, const remesh::Triangle& t) {
   return world_min_angle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
-/// The guard: the new triangles' smallest angle stays at kMinAngle, or at the old ones'.
-bool keeps_quality(double old_worst, double new_worst) {
-  return new_worst >= std::min(kMinAngle, old_worst);
+/// The guard: the new triangles' smallest angle stays at kMinAngle, or at the old ones'
+/// (`old_worst()`, asked only when the new ones are below kMinAngle).
+template <class OldWorst>
+bool keeps_quality(const OldWorst& old_worst, double new_worst) {
+  return new_worst >= kMinAngle || new_worst >= old_worst();
 }
 
 /// The size every vertex asks for (Remesher's sizing, remesher.hpp).
@@ -178,7 +180,7 @@ bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) 
     const Point3& c = s.vertices[remesh::third_corner(tri, e.a, e.b)];
     const Point3 &a = s.vertices[e.a], &b = s.vertices[e.b];
     const double made = std::min(world_min_angle(a, m, c), world_min_angle(m, b, c));
-    if (!keeps_quality(world_min_angle(s, tri), made)) return false;
+    if (!keeps_quality([&] { return world_min_angle(s, tri); }, made)) return false;
   }
   return true;
 }
@@ -302,13 +304,16 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
   }
   for (remesh::Triangle tri : star) {
     if (std::find(tri.begin(), tri.end(), kept) != tri.end()) continue;  // removed
+    const remesh::Triangle old = tri;
     const double before = material_area(w, tri[0], tri[1], tri[2]);
-    const double old_worst = world_min_angle(w.surface, tri);
     for (VertexIndex& c : tri)
       if (c == gone) c = kept;
     const double after = material_area(w, tri[0], tri[1], tri[2]);
     if (!(before * after > 0.0)) return false;
-    if (!keeps_quality(old_worst, world_min_angle(w.surface, tri))) return false;
+    if (!keeps_quality([&] { return world_min_angle(w.surface, old); },
+                       world_min_angle(w.surface, tri))) {
+      return false;
+    }
   }
   return true;
 }
@@ -361,8 +366,10 @@ bool flip_pass(Work& w, VerdictCounts& counts) {
         !(material_area(w, d, e.b, c) * old_turn > 0.0)) {
       continue;
     }
-    const double old_worst = std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
-                                      world_min_angle(w.surface, w.surface.triangles[*e.right]));
+    const auto old_worst = [&] {
+      return std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
+                      world_min_angle(w.surface, w.surface.triangles[*e.right]));
+    };
     const double new_worst =
         std::min(world_min_angle(w.surface, {c, e.a, d}), world_min_angle(w.surface, {d, e.b, c}));
     if (!keeps_quality(old_worst, new_worst)) continue;
