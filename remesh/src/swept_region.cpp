@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <numeric>
 #include <span>
@@ -264,25 +265,39 @@ struct NearbyElements {
   std::vector<VertexIndex> vertices;
   std::vector<Edge> edges;
   std::vector<std::size_t> triangles;
+  /// Per vertex, for first_in: which region corner it is, and its separating planes.
+  std::vector<int> corner;
+  std::vector<unsigned> first, second;
 
-  NearbyElements(const Surface& surface, std::vector<std::size_t> near)
-      : triangles(std::move(near)) {
+  /// Gathers the elements of the triangles `near` (reusing this object's storage from one
+  /// region to the next).
+  void gather(const Surface& surface, std::span<const std::size_t> near) {
+    triangles.assign(near.begin(), near.end());
     std::sort(triangles.begin(), triangles.end());
+    vertices.clear();
+    keys_.clear();
     for (const std::size_t t : triangles) {
       const Triangle& tri = surface.triangles[t];
       for (int k = 0; k < 3; ++k) {
         vertices.push_back(tri[k]);
-        edges.push_back(edge_of(tri[k], tri[(k + 1) % 3]));
+        const Edge e = edge_of(tri[k], tri[(k + 1) % 3]);
+        keys_.push_back(std::uint64_t{e[0]} << 32 | e[1]);  // sorts as the edges do
       }
     }
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::sort(keys_.begin(), keys_.end());
+    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    edges.clear();
+    for (const std::uint64_t key : keys_)
+      edges.push_back({static_cast<VertexIndex>(key >> 32), static_cast<VertexIndex>(key)});
   }
+
+ private:
+  std::vector<std::uint64_t> keys_;
 };
 
-std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& near,
+std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
                                 const std::array<RegionCorner, 4>& corners, VertexIndex partner) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
@@ -312,9 +327,12 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
       region.flat() || std::any_of(corners.begin(), corners.end(),
                                    [](const RegionCorner& c) { return c.vertex == kNoVertex; });
   constexpr unsigned kUnknown = ~0u;
-  std::vector<int> corner(near.vertices.size());
-  std::vector<unsigned> first(near.vertices.size());
-  std::vector<unsigned> second(near.vertices.size(), kUnknown);
+  std::vector<int>& corner = near.corner;
+  std::vector<unsigned>& first = near.first;
+  std::vector<unsigned>& second = near.second;
+  corner.resize(near.vertices.size());
+  first.resize(near.vertices.size());
+  second.assign(near.vertices.size(), kUnknown);
   const auto bits = [&](std::size_t i, bool sides) {
     if (corner[i] >= 0)
       return region.on_plane(corner[i]) & (sides ? Region::kSideBits : Region::kPlaneBits);
@@ -391,9 +409,11 @@ std::vector<std::optional<Blocker>> first_in_regions(
                                   [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
+  NearbyElements elements;
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    found.push_back(first_in(surface, NearbyElements(surface, std::move(near[r])), regions[r],
-                             partners.empty() ? kNoVertex : partners[r]));
+    elements.gather(surface, near[r]);
+    found.push_back(
+        first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
   }
   return found;
 }
