@@ -13,7 +13,6 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
-#include <set>
 #include <span>
 #include <variant>
 #include <vector>
@@ -73,17 +72,26 @@ std::string collapsing(VertexIndex a, VertexIndex b) {
   return "collapsing edge " + std::to_string(a) + "-" + std::to_string(b);
 }
 
-/// The neighbours of v and whether v is on the boundary (an edge of one triangle).
-std::pair<std::set<VertexIndex>, bool> ring(const Surface& s, const Stars& stars, VertexIndex v) {
-  std::multiset<VertexIndex> sides;
+/// The neighbours of v (sorted, each once) and whether v is on the boundary (an edge of
+/// one triangle: a neighbour seen once among the triangles' sides).
+std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const Stars& stars,
+                                               VertexIndex v) {
+  std::vector<VertexIndex> sides;
   for (const std::size_t t : stars[v]) {
     for (const VertexIndex c : s.triangles[t])
-      if (c != v) sides.insert(c);
+      if (c != v) sides.push_back(c);
   }
+  std::sort(sides.begin(), sides.end());
   bool boundary = false;
-  for (const VertexIndex c : sides)
-    boundary = boundary || sides.count(c) == 1;
-  return {std::set<VertexIndex>(sides.begin(), sides.end()), boundary};
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    while (j < sides.size() && sides[j] == sides[i])
+      ++j;
+    boundary = boundary || j - i == 1;
+    i = j;
+  }
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  return {std::move(sides), boundary};
 }
 
 std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars& stars,
@@ -97,14 +105,15 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
   if (auto why = edge_problem(s, a, b, on_edge)) return topology(*why);
   if (!finite(to)) return topology("the new position is not finite");
   // The link condition: the ends' common neighbours are the opposite corners only.
-  std::set<VertexIndex> opposite;
+  std::vector<VertexIndex> opposite;
   for (const std::size_t t : on_edge)
-    opposite.insert(third_corner(s.triangles[t], a, b));
+    opposite.push_back(third_corner(s.triangles[t], a, b));
+  std::sort(opposite.begin(), opposite.end());
+  opposite.erase(std::unique(opposite.begin(), opposite.end()), opposite.end());
   const auto [na, a_on_boundary] = ring(s, stars, a);
   const auto [nb, b_on_boundary] = ring(s, stars, b);
-  std::set<VertexIndex> common;
-  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(),
-                        std::inserter(common, common.begin()));
+  std::vector<VertexIndex> common;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
   if (common != opposite) {
     return topology(collapsing(a, b) +
                     " would pinch the surface (the ends share a neighbour beyond its triangles)");
@@ -114,7 +123,7 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
   }
   // The triangles around the merged vertex: none twice, none of zero area.
   const auto at = [&](VertexIndex v) { return v == a || v == b ? to : s.vertices[v]; };
-  std::set<std::array<VertexIndex, 3>> seen;
+  std::vector<Triangle> seen;  // sorted corners
   for (const VertexIndex end : {a, b}) {
     for (const std::size_t t : stars[end]) {
       if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
@@ -124,7 +133,10 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
         return topology("a triangle around the merged vertex would have zero area");
       }
       std::sort(tri.begin(), tri.end());
-      if (!seen.insert(tri).second) return topology("the collapse would duplicate a triangle");
+      if (std::find(seen.begin(), seen.end(), tri) != seen.end()) {
+        return topology("the collapse would duplicate a triangle");
+      }
+      seen.push_back(tri);
     }
   }
   return CollapsePlan{a, b, to, on_edge};
