@@ -322,46 +322,73 @@ class CollapsePass {
     for (std::size_t i = 0; i < start.size(); ++i)
       start[i] = surface_.vertices[reach.vertices[i]];
     const std::vector<double> t0 = ccd::flat_positions(start);
-    for (bool changed = true; changed;) {
+    // The broad phase's pairs, once, in the order step() reports its collisions: a later
+    // round's motions are this one's with refused collapses standing still, whose swept
+    // boxes lie in the first round's, so its colliding pairs are among these. The narrow
+    // phase (exact, as step() runs it) on those that are not the collapse itself (pairs
+    // that share a vertex once each live collapse's ends are merged meet at its new point
+    // at the end of the step, by construction: a touch exact CCD spends the most on;
+    // step() would decide them, and they would be passed over here); a pair's answer is
+    // kept for the next round unless one of its corners' motions changed.
+    ccd::MeshCcdCandidates candidates;
+    enum Known : std::int8_t { unknown, clear, colliding };
+    std::vector<Known> vf_known, ee_known;
+    std::vector<Point3> end = start, previous_end;
+    std::vector<bool> moved_differently(start.size(), false);
+    ccd::Options exact;
+    exact.method = ccd::Method::exact;
+    const auto& global = reach.vertices;  // a reached vertex's index in the surface
+    for (bool changed = true, first_round = true; changed; first_round = false) {
       changed = false;
-      std::vector<Point3> end = start;
+      previous_end = end;
       for (std::size_t i = 0; i < end.size(); ++i) {
         const std::size_t k = owner_[reach.vertices[i]];
-        if (k != kNone && live(k)) end[i] = plans_[k].to;
+        end[i] = k != kNone && live(k) ? plans_[k].to : start[i];
+        moved_differently[i] = end[i] != previous_end[i];
       }
       const std::vector<double> t1 = ccd::flat_positions(end);
       const ccd::StepPositions positions{t0, t1};
-      // The broad phase's pairs, in the order step() reports its collisions, and the
-      // narrow phase (exact, as step() runs it) on those that are not the collapse itself
-      // (pairs that share a vertex once each live collapse's ends are merged meet at its
-      // new point at the end of the step, by construction: a touch exact CCD spends the
-      // most on). step() would decide them as well, and they would be passed over here.
-      ccd::MeshCcdCandidates candidates = mesh_ccd.candidates(positions);
-      std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end());
-      std::sort(candidates.edge_edge.begin(), candidates.edge_edge.end());
-      ccd::Options exact;
-      exact.method = ccd::Method::exact;
-      const auto& global = reach.vertices;  // a reached vertex's index in the surface
-      for (const ccd::VertexFacePair& pair : candidates.vertex_face) {
+      if (first_round) {
+        candidates = mesh_ccd.candidates(positions);
+        std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end());
+        std::sort(candidates.edge_edge.begin(), candidates.edge_edge.end());
+        vf_known.assign(candidates.vertex_face.size(), unknown);
+        ee_known.assign(candidates.edge_edge.size(), unknown);
+      }
+      for (std::size_t n = 0; n < candidates.vertex_face.size(); ++n) {
+        const ccd::VertexFacePair& pair = candidates.vertex_face[n];
         const ccd::Triangle& local = reach.triangles[pair.face];
         const Triangle t{global[local[0]], global[local[1]], global[local[2]]};
         const VertexIndex x = global[pair.vertex];
         const VertexIndex v = merged(x);
         if (v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
           continue;  // the collapse itself
-        const ccd::VertexFaceQuery query = ccd::vertex_face_query(positions, reach.triangles, pair);
-        if (!ccd::vertex_face_ccd(query, exact).collision) continue;
+        if (vf_known[n] == unknown || moved_differently[pair.vertex] ||
+            moved_differently[local[0]] || moved_differently[local[1]] ||
+            moved_differently[local[2]]) {
+          const ccd::VertexFaceQuery query =
+              ccd::vertex_face_query(positions, reach.triangles, pair);
+          vf_known[n] = ccd::vertex_face_ccd(query, exact).collision ? colliding : clear;
+        }
+        if (vf_known[n] != colliding) continue;
         changed |= refuse(x, {Blocker::Kind::triangle, t});
         for (const VertexIndex c : t)
           changed |= refuse(c, {Blocker::Kind::vertex, {x, kNoVertex, kNoVertex}});
       }
-      for (const ccd::EdgeEdgePair& pair : candidates.edge_edge) {
+      for (std::size_t n = 0; n < candidates.edge_edge.size(); ++n) {
+        const ccd::EdgeEdgePair& pair = candidates.edge_edge[n];
         const std::array<VertexIndex, 2> ea{global[pair.a[0]], global[pair.a[1]]};
         const std::array<VertexIndex, 2> eb{global[pair.b[0]], global[pair.b[1]]};
         const VertexIndex a0 = merged(ea[0]), a1 = merged(ea[1]);
         const VertexIndex b0 = merged(eb[0]), b1 = merged(eb[1]);
         if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself
-        if (!ccd::edge_edge_ccd(ccd::edge_edge_query(positions, pair), exact).collision) continue;
+        if (ee_known[n] == unknown || moved_differently[pair.a[0]] ||
+            moved_differently[pair.a[1]] || moved_differently[pair.b[0]] ||
+            moved_differently[pair.b[1]]) {
+          const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
+          ee_known[n] = ccd::edge_edge_ccd(query, exact).collision ? colliding : clear;
+        }
+        if (ee_known[n] != colliding) continue;
         const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};
         const Blocker b{Blocker::Kind::edge, {eb[0], eb[1], kNoVertex}};
         for (const VertexIndex v : ea)
