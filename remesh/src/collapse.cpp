@@ -349,7 +349,9 @@ class CollapsePass {
       const std::vector<double> t1 = ccd::flat_positions(end);
       const ccd::StepPositions positions{t0, t1};
       if (first_round) {
-        candidates = mesh_ccd.candidates(positions);
+        ccd::MeshCcdOptions one_thread;  // a few collapses' neighbourhoods: no workers
+        one_thread.threads = 1;
+        candidates = mesh_ccd.candidates(positions, one_thread);
         std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end());
         std::sort(candidates.edge_edge.begin(), candidates.edge_edge.end());
         vf_known.assign(candidates.vertex_face.size(), unknown);
