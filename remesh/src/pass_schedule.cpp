@@ -27,12 +27,15 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
     pairs.emplace_back(x, y);
     pairs.emplace_back(y, x);
   });
-  std::sort(pairs.begin(), pairs.end());
-  std::vector<std::size_t> near_first(regions.size() + 1, 0);
+  std::vector<std::size_t> near_first(regions.size() + 1, 0);  // a counting sort by region
   for (const auto& [x, y] : pairs)
     ++near_first[x + 1];
   for (std::size_t r = 0; r < regions.size(); ++r)
     near_first[r + 1] += near_first[r];
+  std::vector<std::size_t> near(pairs.size());
+  std::vector<std::size_t> next(near_first.begin(), near_first.end() - 1);
+  for (const auto& [x, y] : pairs)
+    near[next[x]++] = y;
   std::vector<std::size_t> first_region(operations.size() + 1, 0);
   for (std::size_t i = 0; i < operations.size(); ++i)
     first_region[i + 1] = first_region[i] + operations[i].regions.size();
@@ -46,7 +49,7 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
     bool apart = true;
     for (std::size_t r = first_region[i]; r < first_region[i + 1] && apart; ++r) {
       for (std::size_t n = near_first[r]; n < near_first[r + 1]; ++n) {
-        const std::size_t other = pairs[n].second;
+        const std::size_t other = near[n];
         const std::size_t j = operation_of[other];
         if (!ahead[j]) continue;  // later, or waiting
         const bool by_boxes = operations[i].by_boxes || operations[j].by_boxes;
