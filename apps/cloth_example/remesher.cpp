@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -139,9 +140,11 @@ double world_min_angle(const Surface& s, const remesh::Triangle& t) {
   return world_min_angle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
-/// The guard: the new triangles' smallest angle stays at kMinAngle, or at the old ones'.
-bool keeps_quality(double old_worst, double new_worst) {
-  return new_worst >= std::min(kMinAngle, old_worst);
+/// The guard: the new triangles' smallest angle stays at kMinAngle, or at the old ones'
+/// (`old_worst()`, asked only when the new ones are below kMinAngle).
+template <class OldWorst>
+bool keeps_quality(const OldWorst& old_worst, double new_worst) {
+  return new_worst >= kMinAngle || new_worst >= old_worst();
 }
 
 /// The size every vertex asks for (Remesher's sizing, remesher.hpp).
@@ -177,7 +180,7 @@ bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) 
     const Point3& c = s.vertices[remesh::third_corner(tri, e.a, e.b)];
     const Point3 &a = s.vertices[e.a], &b = s.vertices[e.b];
     const double made = std::min(world_min_angle(a, m, c), world_min_angle(m, b, c));
-    if (!keeps_quality(world_min_angle(s, tri), made)) return false;
+    if (!keeps_quality([&] { return world_min_angle(s, tri); }, made)) return false;
   }
   return true;
 }
@@ -217,21 +220,49 @@ bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   return any;
 }
 
-/// The corners of the triangles around v other than v, each once per triangle side: a
-/// neighbour seen once is across a boundary edge.
-std::vector<VertexIndex> ring_sides(const std::vector<remesh::Triangle>& star, VertexIndex v) {
-  std::vector<VertexIndex> sides;
+/// The triangles around every vertex as a pass starts, in one array bucketed by vertex
+/// (a counting sort, where a vector per vertex was a good part of a collapse pass).
+class Stars {
+ public:
+  explicit Stars(const Surface& s) : first_(s.vertices.size() + 1, 0) {
+    for (const remesh::Triangle& t : s.triangles) {
+      for (const VertexIndex v : t)
+        ++first_[v + 1];
+    }
+    for (std::size_t v = 1; v < first_.size(); ++v)
+      first_[v] += first_[v - 1];
+    triangles_.resize(first_.back());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (const remesh::Triangle& t : s.triangles) {
+      for (const VertexIndex v : t)
+        triangles_[next[v]++] = t;
+    }
+  }
+
+  std::span<const remesh::Triangle> operator[](VertexIndex v) const noexcept {
+    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
+  }
+
+ private:
+  std::vector<std::size_t> first_;
+  std::vector<remesh::Triangle> triangles_;
+};
+
+/// The corners of the triangles around v other than v, each once per triangle side, into
+/// `sides` (sorted): a neighbour seen once is across a boundary edge.
+void ring_sides(std::span<const remesh::Triangle> star, VertexIndex v,
+                std::vector<VertexIndex>& sides) {
+  sides.clear();
   for (const remesh::Triangle& t : star) {
     for (const VertexIndex c : t)
       if (c != v) sides.push_back(c);
   }
   std::sort(sides.begin(), sides.end());
-  return sides;
 }
 
-/// The neighbours across boundary edges: those seen once among the ring's sides.
-std::vector<VertexIndex> boundary_neighbours(const std::vector<VertexIndex>& sides) {
-  std::vector<VertexIndex> once;
+/// The neighbours across boundary edges, into `once`: those seen once among the sides.
+void boundary_neighbours(const std::vector<VertexIndex>& sides, std::vector<VertexIndex>& once) {
+  once.clear();
   for (std::size_t i = 0; i < sides.size();) {
     std::size_t j = i;
     while (j < sides.size() && sides[j] == sides[i])
@@ -239,17 +270,24 @@ std::vector<VertexIndex> boundary_neighbours(const std::vector<VertexIndex>& sid
     if (j - i == 1) once.push_back(sides[i]);
     i = j;
   }
-  return once;
 }
+
+/// What collapse_suits reuses from one call to the next.
+struct RingScratch {
+  std::vector<VertexIndex> sides;
+  std::vector<VertexIndex> ends;
+};
 
 /// Whether removing `gone` into `kept` (gone moves to kept's place) suits the sheet: a
 /// boundary end moves only along its boundary edge and is no corner of the outline, no
 /// edge made is longer than it may be, and no triangle turns over in the material.
 bool collapse_suits(const Work& w, const std::vector<double>& size,
-                    const std::vector<remesh::Triangle>& star, VertexIndex kept, VertexIndex gone,
-                    bool boundary_edge) {
-  const std::vector<VertexIndex> sides = ring_sides(star, gone);
-  const std::vector<VertexIndex> ends = boundary_neighbours(sides);
+                    std::span<const remesh::Triangle> star, VertexIndex kept, VertexIndex gone,
+                    bool boundary_edge, RingScratch& scratch) {
+  std::vector<VertexIndex>& sides = scratch.sides;
+  std::vector<VertexIndex>& ends = scratch.ends;
+  ring_sides(star, gone, sides);
+  boundary_neighbours(sides, ends);
   if (ends.empty() == boundary_edge) return false;  // gone on the boundary, or not
   // A boundary end goes only where the outline is straight: its two boundary neighbours
   // on one line with it, up to the rounding of averaged material coordinates (a choice of
@@ -266,13 +304,16 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
   }
   for (remesh::Triangle tri : star) {
     if (std::find(tri.begin(), tri.end(), kept) != tri.end()) continue;  // removed
+    const remesh::Triangle old = tri;
     const double before = material_area(w, tri[0], tri[1], tri[2]);
-    const double old_worst = world_min_angle(w.surface, tri);
     for (VertexIndex& c : tri)
       if (c == gone) c = kept;
     const double after = material_area(w, tri[0], tri[1], tri[2]);
     if (!(before * after > 0.0)) return false;
-    if (!keeps_quality(old_worst, world_min_angle(w.surface, tri))) return false;
+    if (!keeps_quality([&] { return world_min_angle(w.surface, old); },
+                       world_min_angle(w.surface, tri))) {
+      return false;
+    }
   }
   return true;
 }
@@ -289,18 +330,15 @@ bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   // The triangles around each vertex as the pass starts (collapse_edges defers the
   // collapses whose surroundings another one of the pass changes).
-  std::vector<std::vector<remesh::Triangle>> stars(w.surface.vertices.size());
-  for (const remesh::Triangle& t : w.surface.triangles) {
-    for (const VertexIndex v : t)
-      stars[v].push_back(t);
-  }
+  const Stars stars(w.surface);
+  RingScratch scratch;
   std::vector<remesh::Collapse> collapses;
   for (const auto& [length, e] : wanted) {
     const bool boundary = !e->right;
     VertexIndex kept = e->a, gone = e->b;
-    if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) {
+    if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
-      if (!collapse_suits(w, size, stars[gone], kept, gone, boundary)) continue;
+      if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) continue;
     }
     collapses.push_back({kept, gone, w.surface.vertices[kept]});
   }
@@ -328,8 +366,10 @@ bool flip_pass(Work& w, VerdictCounts& counts) {
         !(material_area(w, d, e.b, c) * old_turn > 0.0)) {
       continue;
     }
-    const double old_worst = std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
-                                      world_min_angle(w.surface, w.surface.triangles[*e.right]));
+    const auto old_worst = [&] {
+      return std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
+                      world_min_angle(w.surface, w.surface.triangles[*e.right]));
+    };
     const double new_worst =
         std::min(world_min_angle(w.surface, {c, e.a, d}), world_min_angle(w.surface, {d, e.b, c}));
     if (!keeps_quality(old_worst, new_worst)) continue;

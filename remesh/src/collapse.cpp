@@ -13,11 +13,12 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
-#include <set>
+#include <span>
 #include <variant>
 #include <vector>
 
 #include "exactgeo/boxes/point_groups.hpp"
+#include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
@@ -31,17 +32,33 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 
 namespace {
 
-/// The triangles around every vertex, by index in triangle order.
-using Stars = std::vector<std::vector<std::size_t>>;
-
-Stars stars_of(const Surface& s) {
-  Stars stars(s.vertices.size());
-  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    for (const VertexIndex v : s.triangles[t])
-      stars[v].push_back(t);
+/// The triangles around every vertex, by index in triangle order: one array, bucketed by
+/// vertex (a counting sort; a vector per vertex was a good part of a pass's time).
+class Stars {
+ public:
+  explicit Stars(const Surface& s) : first_(s.vertices.size() + 1, 0) {
+    for (const Triangle& t : s.triangles) {
+      for (const VertexIndex v : t)
+        ++first_[v + 1];
+    }
+    for (std::size_t v = 1; v < first_.size(); ++v)
+      first_[v] += first_[v - 1];
+    triangles_.resize(first_.back());
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+      for (const VertexIndex v : s.triangles[t])
+        triangles_[next[v]++] = t;
+    }
   }
-  return stars;
-}
+
+  std::span<const std::size_t> operator[](VertexIndex v) const noexcept {
+    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
+  }
+
+ private:
+  std::vector<std::size_t> first_;
+  std::vector<std::size_t> triangles_;
+};
 
 /// A collapse that passed its topology checks.
 struct CollapsePlan {
@@ -55,17 +72,26 @@ std::string collapsing(VertexIndex a, VertexIndex b) {
   return "collapsing edge " + std::to_string(a) + "-" + std::to_string(b);
 }
 
-/// The neighbours of v and whether v is on the boundary (an edge of one triangle).
-std::pair<std::set<VertexIndex>, bool> ring(const Surface& s, const Stars& stars, VertexIndex v) {
-  std::multiset<VertexIndex> sides;
+/// The neighbours of v (sorted, each once) and whether v is on the boundary (an edge of
+/// one triangle: a neighbour seen once among the triangles' sides).
+std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const Stars& stars,
+                                               VertexIndex v) {
+  std::vector<VertexIndex> sides;
   for (const std::size_t t : stars[v]) {
     for (const VertexIndex c : s.triangles[t])
-      if (c != v) sides.insert(c);
+      if (c != v) sides.push_back(c);
   }
+  std::sort(sides.begin(), sides.end());
   bool boundary = false;
-  for (const VertexIndex c : sides)
-    boundary = boundary || sides.count(c) == 1;
-  return {std::set<VertexIndex>(sides.begin(), sides.end()), boundary};
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    while (j < sides.size() && sides[j] == sides[i])
+      ++j;
+    boundary = boundary || j - i == 1;
+    i = j;
+  }
+  sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+  return {std::move(sides), boundary};
 }
 
 std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars& stars,
@@ -79,14 +105,15 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
   if (auto why = edge_problem(s, a, b, on_edge)) return topology(*why);
   if (!finite(to)) return topology("the new position is not finite");
   // The link condition: the ends' common neighbours are the opposite corners only.
-  std::set<VertexIndex> opposite;
+  std::vector<VertexIndex> opposite;
   for (const std::size_t t : on_edge)
-    opposite.insert(third_corner(s.triangles[t], a, b));
+    opposite.push_back(third_corner(s.triangles[t], a, b));
+  std::sort(opposite.begin(), opposite.end());
+  opposite.erase(std::unique(opposite.begin(), opposite.end()), opposite.end());
   const auto [na, a_on_boundary] = ring(s, stars, a);
   const auto [nb, b_on_boundary] = ring(s, stars, b);
-  std::set<VertexIndex> common;
-  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(),
-                        std::inserter(common, common.begin()));
+  std::vector<VertexIndex> common;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
   if (common != opposite) {
     return topology(collapsing(a, b) +
                     " would pinch the surface (the ends share a neighbour beyond its triangles)");
@@ -96,7 +123,7 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
   }
   // The triangles around the merged vertex: none twice, none of zero area.
   const auto at = [&](VertexIndex v) { return v == a || v == b ? to : s.vertices[v]; };
-  std::set<std::array<VertexIndex, 3>> seen;
+  std::vector<Triangle> seen;  // sorted corners
   for (const VertexIndex end : {a, b}) {
     for (const std::size_t t : stars[end]) {
       if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
@@ -106,7 +133,10 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars&
         return topology("a triangle around the merged vertex would have zero area");
       }
       std::sort(tri.begin(), tri.end());
-      if (!seen.insert(tri).second) return topology("the collapse would duplicate a triangle");
+      if (std::find(seen.begin(), seen.end(), tri) != seen.end()) {
+        return topology("the collapse would duplicate a triangle");
+      }
+      seen.push_back(tri);
     }
   }
   return CollapsePlan{a, b, to, on_edge};
@@ -188,7 +218,7 @@ struct Reach {
 class CollapsePass {
  public:
   CollapsePass(const Surface& surface, std::span<const Collapse> collapses)
-      : surface_(surface), stars_(stars_of(surface)), outcomes_(collapses.size()) {
+      : surface_(surface), stars_(surface), outcomes_(collapses.size()) {
     plan(collapses);
   }
 
@@ -292,33 +322,75 @@ class CollapsePass {
     for (std::size_t i = 0; i < start.size(); ++i)
       start[i] = surface_.vertices[reach.vertices[i]];
     const std::vector<double> t0 = ccd::flat_positions(start);
-    for (bool changed = true; changed;) {
+    // The broad phase's pairs, once, in the order step() reports its collisions: a later
+    // round's motions are this one's with refused collapses standing still, whose swept
+    // boxes lie in the first round's, so its colliding pairs are among these. The narrow
+    // phase (exact, as step() runs it) on those that are not the collapse itself (pairs
+    // that share a vertex once each live collapse's ends are merged meet at its new point
+    // at the end of the step, by construction: a touch exact CCD spends the most on;
+    // step() would decide them, and they would be passed over here); a pair's answer is
+    // kept for the next round unless one of its corners' motions changed.
+    ccd::MeshCcdCandidates candidates;
+    enum Known : std::int8_t { unknown, clear, colliding };
+    std::vector<Known> vf_known, ee_known;
+    std::vector<Point3> end = start, previous_end;
+    std::vector<bool> moved_differently(start.size(), false);
+    ccd::Options exact;
+    exact.method = ccd::Method::exact;
+    const auto& global = reach.vertices;  // a reached vertex's index in the surface
+    for (bool changed = true, first_round = true; changed; first_round = false) {
       changed = false;
-      std::vector<Point3> end = start;
+      previous_end = end;
       for (std::size_t i = 0; i < end.size(); ++i) {
         const std::size_t k = owner_[reach.vertices[i]];
-        if (k != kNone && live(k)) end[i] = plans_[k].to;
+        end[i] = k != kNone && live(k) ? plans_[k].to : start[i];
+        moved_differently[i] = end[i] != previous_end[i];
       }
       const std::vector<double> t1 = ccd::flat_positions(end);
-      const ccd::MeshCcdResult step = mesh_ccd.step({t0, t1});
-      const auto& global = reach.vertices;  // a reached vertex's index in the surface
-      for (const ccd::VertexFacePair& pair : step.vertex_face) {
+      const ccd::StepPositions positions{t0, t1};
+      if (first_round) {
+        ccd::MeshCcdOptions one_thread;  // a few collapses' neighbourhoods: no workers
+        one_thread.threads = 1;
+        candidates = mesh_ccd.candidates(positions, one_thread);
+        std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end());
+        std::sort(candidates.edge_edge.begin(), candidates.edge_edge.end());
+        vf_known.assign(candidates.vertex_face.size(), unknown);
+        ee_known.assign(candidates.edge_edge.size(), unknown);
+      }
+      for (std::size_t n = 0; n < candidates.vertex_face.size(); ++n) {
+        const ccd::VertexFacePair& pair = candidates.vertex_face[n];
         const ccd::Triangle& local = reach.triangles[pair.face];
         const Triangle t{global[local[0]], global[local[1]], global[local[2]]};
         const VertexIndex x = global[pair.vertex];
         const VertexIndex v = merged(x);
         if (v == merged(t[0]) || v == merged(t[1]) || v == merged(t[2]))
           continue;  // the collapse itself
+        if (vf_known[n] == unknown || moved_differently[pair.vertex] ||
+            moved_differently[local[0]] || moved_differently[local[1]] ||
+            moved_differently[local[2]]) {
+          const ccd::VertexFaceQuery query =
+              ccd::vertex_face_query(positions, reach.triangles, pair);
+          vf_known[n] = ccd::vertex_face_ccd(query, exact).collision ? colliding : clear;
+        }
+        if (vf_known[n] != colliding) continue;
         changed |= refuse(x, {Blocker::Kind::triangle, t});
         for (const VertexIndex c : t)
           changed |= refuse(c, {Blocker::Kind::vertex, {x, kNoVertex, kNoVertex}});
       }
-      for (const ccd::EdgeEdgePair& pair : step.edge_edge) {
+      for (std::size_t n = 0; n < candidates.edge_edge.size(); ++n) {
+        const ccd::EdgeEdgePair& pair = candidates.edge_edge[n];
         const std::array<VertexIndex, 2> ea{global[pair.a[0]], global[pair.a[1]]};
         const std::array<VertexIndex, 2> eb{global[pair.b[0]], global[pair.b[1]]};
         const VertexIndex a0 = merged(ea[0]), a1 = merged(ea[1]);
         const VertexIndex b0 = merged(eb[0]), b1 = merged(eb[1]);
         if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself
+        if (ee_known[n] == unknown || moved_differently[pair.a[0]] ||
+            moved_differently[pair.a[1]] || moved_differently[pair.b[0]] ||
+            moved_differently[pair.b[1]]) {
+          const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
+          ee_known[n] = ccd::edge_edge_ccd(query, exact).collision ? colliding : clear;
+        }
+        if (ee_known[n] != colliding) continue;
         const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};
         const Blocker b{Blocker::Kind::edge, {eb[0], eb[1], kNoVertex}};
         for (const VertexIndex v : ea)
@@ -340,7 +412,7 @@ class CollapsePass {
 }  // namespace
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
-  const auto planned = plan_collapse(surface, stars_of(surface), a, b, to);
+  const auto planned = plan_collapse(surface, Stars(surface), a, b, to);
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const CollapsePlan& plan = std::get<CollapsePlan>(planned);
   const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};

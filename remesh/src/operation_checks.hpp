@@ -71,13 +71,14 @@ inline std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, 
     if (auto why = vertex_problem(s, v)) return why;
   }
   if (on_edge.empty()) on_edge = s.triangles_on_edge(a, b);
-  const std::string name = "edge " + std::to_string(a) + "-" + std::to_string(b);
-  if (a == b || on_edge.empty()) return name + " is no edge of the surface";
+  // Named only for a refusal (most edges a pass proposes have none).
+  const auto name = [&] { return "edge " + std::to_string(a) + "-" + std::to_string(b); };
+  if (a == b || on_edge.empty()) return name() + " is no edge of the surface";
   if (on_edge.size() > 2)
-    return name + " is used by " + std::to_string(on_edge.size()) + " triangles";
+    return name() + " is used by " + std::to_string(on_edge.size()) + " triangles";
   for (const std::size_t t : on_edge) {
     const VertexIndex c = third_corner(s.triangles[t], a, b);
-    if (s.is_fixed(c)) return name + ": its triangle's corner " + std::to_string(c) + " is fixed";
+    if (s.is_fixed(c)) return name() + ": its triangle's corner " + std::to_string(c) + " is fixed";
   }
   return std::nullopt;
 }

@@ -1,6 +1,7 @@
 #include "pass_schedule.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "exactgeo/boxes/point_groups.hpp"
 #include "region_points.hpp"
@@ -17,13 +18,24 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       operation_of.push_back(i);
     }
   }
-  std::vector<std::vector<std::size_t>> near(regions.size());  // regions whose boxes meet
+  // The regions whose boxes meet each region's, in one array bucketed by region (a vector
+  // per region was most of a pass's scheduling).
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   const RegionPoints boxed(points, regions);
   boxes::overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
     if (operation_of[x] == operation_of[y]) return;
-    near[x].push_back(y);
-    near[y].push_back(x);
+    pairs.emplace_back(x, y);
+    pairs.emplace_back(y, x);
   });
+  std::vector<std::size_t> near_first(regions.size() + 1, 0);  // a counting sort by region
+  for (const auto& [x, y] : pairs)
+    ++near_first[x + 1];
+  for (std::size_t r = 0; r < regions.size(); ++r)
+    near_first[r + 1] += near_first[r];
+  std::vector<std::size_t> near(pairs.size());
+  std::vector<std::size_t> next(near_first.begin(), near_first.end() - 1);
+  for (const auto& [x, y] : pairs)
+    near[next[x]++] = y;
   std::vector<std::size_t> first_region(operations.size() + 1, 0);
   for (std::size_t i = 0; i < operations.size(); ++i)
     first_region[i + 1] = first_region[i] + operations[i].regions.size();
@@ -36,7 +48,8 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       continue;
     bool apart = true;
     for (std::size_t r = first_region[i]; r < first_region[i + 1] && apart; ++r) {
-      for (const std::size_t other : near[r]) {
+      for (std::size_t n = near_first[r]; n < near_first[r + 1]; ++n) {
+        const std::size_t other = near[n];
         const std::size_t j = operation_of[other];
         if (!ahead[j]) continue;  // later, or waiting
         const bool by_boxes = operations[i].by_boxes || operations[j].by_boxes;

@@ -9,12 +9,14 @@
 // turn-over, the two sides apart), regions apart from the earlier ones'; then the regions
 // against the surface in one walk.
 
+#include <algorithm>
 #include <array>
 #include <variant>
 #include <vector>
 
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/mesh/self_intersection.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
@@ -95,6 +97,34 @@ bool sides_meet(const Surface& surface, const std::vector<Triangle>& made, const
   return false;
 }
 
+/// Whether the two sides' new triangles of an inner edge ab split at m (off the line ab)
+/// are apart, by one of two arguments (docs/remesh.md, "Split"), where sides_meet builds
+/// the four triangles' contacts:
+///  - the opposite corners c and d lie strictly on opposite sides of the plane of a, b and
+///    m: each side's new triangles (x m c, m y c, and x m d, m y d) lie on its closed side
+///    and meet that plane only in their edge am or mb, so a new triangle of one side meets
+///    one of the other only in am, mb or m, which they share (am and mb meet only at m);
+///  - c and d lie in that plane, and the four new triangles (`made`, the new vertex
+///    numbered after the surface's) turn the same way in its shadow: they are a fan of
+///    four angles around m, each below a half turn, going round once (their sum is a
+///    whole number of turns, below two), so they tile without overlap.
+bool sides_apart(const Surface& surface, const SplitPlan& plan, const std::vector<Triangle>& made) {
+  const auto& p = surface.vertices;
+  const VertexIndex c = third_corner(surface.triangles[plan.on_edge[0]], plan.a, plan.b);
+  const VertexIndex d = third_corner(surface.triangles[plan.on_edge[1]], plan.a, plan.b);
+  const Sign sc = orient3d(p[plan.a], p[plan.b], plan.at, p[c]);
+  const Sign sd = orient3d(p[plan.a], p[plan.b], plan.at, p[d]);
+  if (sc != Sign::zero || sd != Sign::zero) return sc != Sign::zero && sd == -sc;
+  const int axis = *shadow_axis(p[plan.a], p[plan.b], p[c]);
+  const auto point = [&](VertexIndex v) -> const Point3& { return v < p.size() ? p[v] : plan.at; };
+  const auto turn = [&](const Triangle& t) {
+    return orient2d_along(axis, point(t[0]), point(t[1]), point(t[2]));
+  };
+  const Sign first = turn(made[0]);
+  return first != Sign::zero &&
+         std::all_of(made.begin(), made.end(), [&](const Triangle& t) { return turn(t) == first; });
+}
+
 std::variant<Outcome, SplitPlan> split_topology(const Surface& surface, VertexIndex a,
                                                 VertexIndex b, const Point3& at,
                                                 std::vector<std::size_t> on_edge) {
@@ -144,7 +174,8 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
                                   : kNoVertex);
     }
   }
-  if (!between && plan.on_edge.size() == 2 && sides_meet(surface, made, at)) {
+  if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan, made) &&
+      sides_meet(surface, made, at)) {
     return Outcome{Verdict::refused_collision,
                    splitting(a, b) + " off the edge would fold its two sides into each other",
                    Blocker{Blocker::Kind::triangle, surface.triangles[plan.on_edge[1]]},

@@ -1,9 +1,13 @@
 #include "exactgeo/remesh/swept_region.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
 #include <numeric>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/boxes/point_groups.hpp"
@@ -23,24 +27,38 @@ struct Corner {
 
 /// The closed segment ab meets the closed triangle t outside their shared corners.
 bool edge_meets_triangle(const std::array<Corner, 2>& ab, const std::array<Corner, 3>& t) {
-  std::vector<int> shared_in_t;  // which corners of t the segment shares
+  int shared = 0;  // how many corners of t the segment shares
+  int k = -1;      // the last of them, in t
   int shared_in_ab = -1;
   for (int i = 0; i < 2; ++i) {
-    for (int k = 0; k < 3; ++k) {
-      if (ab[i].vertex != kNoVertex && ab[i].vertex == t[k].vertex) {
-        shared_in_t.push_back(k);
+    for (int j = 0; j < 3; ++j) {
+      if (ab[i].vertex != kNoVertex && ab[i].vertex == t[j].vertex) {
+        ++shared;
+        k = j;
         shared_in_ab = i;
       }
     }
   }
-  if (shared_in_t.size() >= 2) return false;  // an edge of the triangle
-  if (shared_in_t.empty()) {
+  if (shared >= 2) return false;  // an edge of the triangle
+  if (shared == 0) {
     return segment_meets_triangle(*ab[0].point, *ab[1].point, *t[0].point, *t[1].point,
                                   *t[2].point);
   }
-  const int k = shared_in_t[0];
   return segment_meets_triangle_beyond(*t[k].point, *ab[1 - shared_in_ab].point,
                                        *t[(k + 1) % 3].point, *t[(k + 2) % 3].point);
+}
+
+/// The coordinate axis the plane of p, q, r is most turned toward, in floating point (a
+/// choice, not a decision), when the shadow of p, q, r along it is a triangle; otherwise
+/// the first axis along which it is (shadow_axis). Precondition: p, q, r not collinear.
+int shadow_axis_of(const Point3& p, const Point3& q, const Point3& r) noexcept {
+  const double ux = q[0] - p[0], uy = q[1] - p[1], uz = q[2] - p[2];
+  const double vx = r[0] - p[0], vy = r[1] - p[1], vz = r[2] - p[2];
+  const std::array<double, 3> n{std::fabs(uy * vz - uz * vy), std::fabs(uz * vx - ux * vz),
+                                std::fabs(ux * vy - uy * vx)};
+  const int axis = n[0] >= n[1] ? (n[0] >= n[2] ? 0 : 2) : (n[1] >= n[2] ? 1 : 2);
+  if (orient2d_along(axis, p, q, r) != Sign::zero) return axis;
+  return *shadow_axis(p, q, r);
 }
 
 class Region {
@@ -49,23 +67,100 @@ class Region {
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
     volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
-    for (int l = 0; l < 4; ++l) {
-      const auto& t = face_opposite(l);
-      inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+    if (volume_ != Sign::zero) {
+      for (int l = 0; l < 4; ++l) {
+        const auto& t = face_opposite(l);
+        inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+      }
+    }
+    // The hull's shadow on a coordinate plane is a convex polygon, whose sides are the
+    // corner pairs with the other two corners on one closed side of their line, not both
+    // on it; the plane along the shadow axis through such a side has the whole hull on
+    // that side. The axis: the one the first three corners' plane is most turned toward
+    // (in floating point, a choice only; its shadow of those three is checked to be a
+    // triangle, so that a flat hull's shadow is its polygon, one to one).
+    axis_ = shadow_axis_of(*corners_[0].point, *corners_[1].point, *corners_[2].point);
+    for (int e = 0; e < 6; ++e) {
+      const auto [i, j] = kPairs[e];
+      Sign inward = Sign::zero;
+      bool side = true;
+      unsigned on = (1u << i) | (1u << j);
+      for (int k = 0; k < 4; ++k) {
+        if (k == i || k == j) continue;
+        const Sign s =
+            orient2d_along(axis_, *corners_[i].point, *corners_[j].point, *corners_[k].point);
+        if (s == Sign::zero) {
+          on |= 1u << k;
+        } else if (inward == Sign::zero) {
+          inward = s;
+        } else if (s != inward) {
+          side = false;
+        }
+      }
+      if (side && inward != Sign::zero) {
+        inward_side_[e] = inward;
+        on_side_[e] = on;
+      }
     }
   }
 
-  /// Of a tetrahedron's faces, those with x strictly on their far side (bit l: the face
-  /// opposite corner l); 0 for a flat region. Elements whose corners all lie beyond one
-  /// face are apart from the tetrahedron: four signs per vertex spare an element's tests.
-  unsigned beyond(const Point3& x) const noexcept {
-    if (volume_ == Sign::zero) return 0;
+  // The separating planes a point x lies strictly beyond, as bits, each a plane with the
+  // whole region on its other closed side: bit l (0-3) for the face of a tetrahedron
+  // opposite corner l; bit 4 + e for a side of the shadow (corner pair e, kPairs), x's
+  // shadow strictly beyond its line; bits 10 and 11 for a flat region's plane, x strictly
+  // off it on either side. An element whose corners all lie strictly beyond one of them is
+  // apart from the region (and so, by on_plane, when some of them are region corners on it).
+
+  /// The bits of the faces or of a flat region's plane (kPlaneBits).
+  unsigned beyond_planes(const Point3& x) const noexcept {
     unsigned mask = 0;
-    for (int l = 0; l < 4; ++l) {
-      const auto& t = face_opposite(l);
-      if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l]) mask |= 1u << l;
+    if (volume_ != Sign::zero) {
+      for (int l = 0; l < 4; ++l) {
+        const auto& t = face_opposite(l);
+        if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l]) mask |= 1u << l;
+      }
+      return mask;
+    }
+    const Sign off = orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, x);
+    if (off != Sign::zero) mask = off == Sign::positive ? 1u << 10 : 1u << 11;
+    return mask;
+  }
+
+  /// The bits of the shadow's sides (kSideBits).
+  unsigned beyond_sides(const Point3& x) const noexcept {
+    unsigned mask = 0;
+    for (int e = 0; e < 6; ++e) {
+      if (inward_side_[e] == Sign::zero) continue;
+      const auto [i, j] = kPairs[e];
+      if (orient2d_along(axis_, *corners_[i].point, *corners_[j].point, x) == -inward_side_[e])
+        mask |= 1u << (4 + e);
     }
     return mask;
+  }
+
+  static constexpr unsigned kPlaneBits = 0xFu | (1u << 10) | (1u << 11);
+  static constexpr unsigned kSideBits = 0x3Fu << 4;
+
+  /// The separating planes that region corner k lies on: a tetrahedron's faces
+  /// through it, the sides' planes through it (its own sides, and a side whose line its
+  /// shadow lies on), a flat region's plane. An element whose every corner is strictly
+  /// beyond one such plane or a region corner (by vertex index) on it meets the plane only
+  /// in the hull of those shared corners, and the region, on the plane's other closed
+  /// side, nowhere else: apart, beyond what it shares.
+  unsigned on_plane(int k) const noexcept {
+    unsigned mask = volume_ != Sign::zero ? 0xFu & ~(1u << k) : (1u << 10) | (1u << 11);
+    for (int e = 0; e < 6; ++e) {
+      if (inward_side_[e] != Sign::zero && (on_side_[e] >> k & 1u) != 0) mask |= 1u << (4 + e);
+    }
+    return mask;
+  }
+
+  /// Which corner vertex v is (by index), or -1.
+  int corner_of(VertexIndex v) const noexcept {
+    for (int k = 0; k < 4; ++k) {
+      if (corners_[k].vertex != kNoVertex && corners_[k].vertex == v) return k;
+    }
+    return -1;
   }
 
   bool is_corner(VertexIndex v) const noexcept {
@@ -83,7 +178,7 @@ class Region {
       return false;
     }
     // A tetrahedron: on no face's far side (the side away from the opposite corner).
-    return beyond(x) == 0;
+    return beyond_planes(x) == 0;
   }
 
   bool flat() const noexcept { return volume_ == Sign::zero; }
@@ -108,9 +203,17 @@ class Region {
     return t;
   }
 
+  static constexpr std::array<std::array<int, 2>, 6> kPairs{
+      {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
   std::array<Corner, 4> corners_{};
   Sign volume_ = Sign::zero;
   std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
+  int axis_ = 0;                  ///< the shadow's axis
+  /// per corner pair, the side of its line the other two corners are on in the shadow, or
+  /// zero when the pair is no side (they are on both sides, or all on the line)
+  std::array<Sign, 6> inward_side_{};
+  std::array<unsigned, 6> on_side_{};  ///< per side: the corners on its line, as bits
 };
 
 /// An edge of the surface crosses or touches one of the region's triangles outside
@@ -133,6 +236,7 @@ bool pierces(const Region& region, const std::array<Corner, 3>& triangle) {
 
 bool turns_over_in_plane(const std::array<Point3, 3>& old, const std::array<Point3, 3>& made) {
   for (const Point3& q : made) {
+    if (q == old[0] || q == old[1] || q == old[2]) continue;  // a corner: in the plane
     if (orient3d(old[0], old[1], old[2], q) != Sign::zero) return false;
   }
   const int axis = *shadow_axis(old[0], old[1], old[2]);
@@ -161,25 +265,39 @@ struct NearbyElements {
   std::vector<VertexIndex> vertices;
   std::vector<Edge> edges;
   std::vector<std::size_t> triangles;
+  /// Per vertex, for first_in: which region corner it is, and its separating planes.
+  std::vector<int> corner;
+  std::vector<unsigned> first, second;
 
-  NearbyElements(const Surface& surface, std::vector<std::size_t> near)
-      : triangles(std::move(near)) {
+  /// Gathers the elements of the triangles `near` (reusing this object's storage from one
+  /// region to the next).
+  void gather(const Surface& surface, std::span<const std::size_t> near) {
+    triangles.assign(near.begin(), near.end());
     std::sort(triangles.begin(), triangles.end());
+    vertices.clear();
+    keys_.clear();
     for (const std::size_t t : triangles) {
       const Triangle& tri = surface.triangles[t];
       for (int k = 0; k < 3; ++k) {
         vertices.push_back(tri[k]);
-        edges.push_back(edge_of(tri[k], tri[(k + 1) % 3]));
+        const Edge e = edge_of(tri[k], tri[(k + 1) % 3]);
+        keys_.push_back(std::uint64_t{e[0]} << 32 | e[1]);  // sorts as the edges do
       }
     }
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::sort(keys_.begin(), keys_.end());
+    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+    edges.clear();
+    for (const std::uint64_t key : keys_)
+      edges.push_back({static_cast<VertexIndex>(key >> 32), static_cast<VertexIndex>(key)});
   }
+
+ private:
+  std::vector<std::uint64_t> keys_;
 };
 
-std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& near,
+std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
                                 const std::array<RegionCorner, 4>& corners, VertexIndex partner) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
@@ -196,22 +314,66 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
     return v == edge_a || v == edge_b || v == partner;
   };
   const bool has_partner = partner != kNoVertex;
-  // Each nearby vertex's faces of the tetrahedron it lies beyond (none for a flat region).
-  std::vector<unsigned> beyond(near.vertices.size());
-  for (std::size_t i = 0; i < near.vertices.size(); ++i)
-    beyond[i] = region.beyond(p[near.vertices[i]]);
-  const auto beyond_of = [&](VertexIndex v) {
+  // Each nearby vertex's separating planes (Region::beyond_planes, beyond_sides): those
+  // it lies strictly beyond, and for a region corner those it lies on. An element whose
+  // corners have one in common meets the region at most in the hull of its corners that
+  // are the region's (Region::on_plane): it is passed over, as the tests below would pass
+  // it. One kind first, the other only for the elements the first leaves: the shadow's
+  // sides for a flat region or a split's (orient3d against a flat region's plane is an
+  // exact zero for a vertex of its sheet, and a face of a split's rounding-thin region
+  // leaves its orientations to expansions), the faces for a flip's (a vertex on a side's
+  // line, common on a grid, costs an exact zero in the shadow).
+  const bool sides_first =
+      region.flat() || std::any_of(corners.begin(), corners.end(),
+                                   [](const RegionCorner& c) { return c.vertex == kNoVertex; });
+  constexpr unsigned kUnknown = ~0u;
+  std::vector<int>& corner = near.corner;
+  std::vector<unsigned>& first = near.first;
+  std::vector<unsigned>& second = near.second;
+  corner.resize(near.vertices.size());
+  first.resize(near.vertices.size());
+  second.assign(near.vertices.size(), kUnknown);
+  const auto bits = [&](std::size_t i, bool sides) {
+    if (corner[i] >= 0)
+      return region.on_plane(corner[i]) & (sides ? Region::kSideBits : Region::kPlaneBits);
+    const Point3& x = p[near.vertices[i]];
+    return sides ? region.beyond_sides(x) : region.beyond_planes(x);
+  };
+  for (std::size_t i = 0; i < near.vertices.size(); ++i) {
+    corner[i] = region.corner_of(near.vertices[i]);
+    first[i] = bits(i, sides_first);
+  }
+  const auto second_of = [&](std::size_t i) {
+    if (second[i] == kUnknown) second[i] = bits(i, !sides_first);
+    return second[i];
+  };
+  const auto index_of = [&](VertexIndex v) {
     const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
-    return beyond[static_cast<std::size_t>(it - near.vertices.begin())];
+    return static_cast<std::size_t>(it - near.vertices.begin());
+  };
+  // Whether the corners (indices into near.vertices) are all beyond one separating plane.
+  const auto apart = [&](std::initializer_list<std::size_t> at) {
+    unsigned common = ~0u;
+    for (const std::size_t i : at)
+      common &= first[i];
+    if (common != 0) return true;
+    common = ~0u;
+    for (const std::size_t i : at)
+      common &= second_of(i);
+    return common != 0;
   };
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
-    if (region.is_corner(v)) continue;
-    const bool inside = region.flat() ? region.holds(p[v]) : beyond[i] == 0;
+    if (corner[i] >= 0) continue;
+    // Strictly beyond a separating plane: outside (a tetrahedron's vertex is inside
+    // exactly when it is beyond none of its faces; a flat region's, when it is on its
+    // plane, beyond none of its sides, and in one of its corner triangles).
+    const bool inside =
+        first[i] == 0 && second_of(i) == 0 && (!region.flat() || region.holds(p[v]));
     if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
   }
   for (const Edge& e : near.edges) {
-    if ((beyond_of(e[0]) & beyond_of(e[1])) != 0) continue;          // beyond one face: apart
+    if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
     if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
     if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
       return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
@@ -219,7 +381,7 @@ std::optional<Blocker> first_in(const Surface& surface, const NearbyElements& ne
   }
   for (const std::size_t t : near.triangles) {
     const Triangle& c = surface.triangles[t];
-    if ((beyond_of(c[0]) & beyond_of(c[1]) & beyond_of(c[2])) != 0) continue;  // apart
+    if (apart({index_of(c[0]), index_of(c[1]), index_of(c[2])})) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
@@ -247,9 +409,11 @@ std::vector<std::optional<Blocker>> first_in_regions(
                                   [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
+  NearbyElements elements;
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    found.push_back(first_in(surface, NearbyElements(surface, std::move(near[r])), regions[r],
-                             partners.empty() ? kNoVertex : partners[r]));
+    elements.gather(surface, near[r]);
+    found.push_back(
+        first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
   }
   return found;
 }
@@ -265,6 +429,21 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
   };
   const std::array<RegionCorner, 4> px = as_points(x), py = as_points(y);
   const Region rx(px), ry(py);
+  // Apart when one's corners all lie strictly beyond one separating plane of the other
+  // (Region::beyond_planes, beyond_sides: the other lies on its other closed side). Most pairs a
+  // pass asks about end here, before the segment-triangle tests.
+  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
+    unsigned common = ~0u;
+    for (const RegionCorner& c : *b_corners)
+      common &= a->beyond_planes(c.point);
+    if (common != 0) return false;
+  }
+  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
+    unsigned common = ~0u;
+    for (const RegionCorner& c : *b_corners)
+      common &= a->beyond_sides(c.point);
+    if (common != 0) return false;
+  }
   for (const auto& [a, b, a_corners] : {std::tuple{&rx, &ry, &px}, std::tuple{&ry, &rx, &py}}) {
     for (const RegionCorner& c : *a_corners) {
       if (b->holds(c.point)) return true;

@@ -16,12 +16,16 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "exactgeo/remesh/operations.hpp"
 #include "remesh/flat_sheet.hpp"
 #include "remesh/two_sheets.hpp"
+#include "support/rational_oracle.hpp"
+#include "support/seed.hpp"
+#include "support/segment_triangle_oracle.hpp"
 
 namespace exactgeo::remesh {
 namespace {
@@ -220,6 +224,51 @@ TEST_P(Operations, SplitThroughANeighbourOfBothOppositeCornersIsRefused) {
   forced.triangles.push_back({3, 6, 4});
   EXPECT_FALSE(testing::sheets_meeting(forced).intersecting.empty())
       << "the refused split would have made an intersection";
+}
+
+TEST_P(Operations, TheTwoSidesFoldIntoEachOtherOnlyWithBothCornersOnOneSideOfPlaneABM) {
+  // Random splits of an inner edge ab, a = (0,0,0) and b = (4,0,0), with opposite corners
+  // c and d and the new point m of small integers (the two triangles apart but for their
+  // edge): every applied split leaves the two
+  // triangles' four new ones intersection free by the exact finder (a flat overlap
+  // counting), which shares no code with the split's checks. With c and d strictly on
+  // opposite sides of the plane of a, b and m, the split takes the sides as apart without
+  // testing their new triangles against each other (split.cpp, sides_apart); with both on
+  // one side, a fold of the sides into each other happens, and is refused.
+  const double s = scale();
+  auto rng = testing::seeded_engine("remesh.split.sides");
+  std::uniform_int_distribution<int> coordinate(-4, 4);
+  const auto point = [&] {
+    return Point3{s * coordinate(rng), s * coordinate(rng), s * coordinate(rng)};
+  };
+  int apart_applied = 0;  // c and d on opposite sides of plane abm, applied
+  int folds_refused = 0;  // on one side, refused as a fold of the sides
+  for (int trial = 0; trial < 3000; ++trial) {
+    Surface surface;
+    surface.vertices = {Point3{0, 0, 0}, Point3{4 * s, 0, 0}, point(), point()};
+    surface.triangles = {{0, 1, 2}, {1, 0, 3}};
+    const Point3 m = point();
+    const auto& p = surface.vertices;
+    if (testing::collinear_oracle(p[0], p[1], p[2]) || testing::collinear_oracle(p[0], p[1], p[3]))
+      continue;
+    if (!testing::sheets_meeting(surface).intersecting.empty()) continue;  // folded already
+    const Sign c_side = testing::orient3d_oracle(p[0], p[1], m, p[2]);
+    const Sign d_side = testing::orient3d_oracle(p[0], p[1], m, p[3]);
+    Surface split = surface;
+    const Outcome outcome = split_edge(split, 0, 1, m);
+    const Surface forced = forced_split(surface, m);
+    const bool intersecting = !testing::sheets_meeting(forced).intersecting.empty();
+    if (outcome.applied()) {
+      EXPECT_FALSE(intersecting) << "trial " << trial << ": applied, and intersecting";
+      apart_applied += c_side != Sign::zero && d_side == -c_side ? 1 : 0;
+    } else if (outcome.reason.find("fold its two sides") != std::string::npos) {
+      EXPECT_TRUE(intersecting) << "trial " << trial << ": " << outcome.reason;
+      EXPECT_FALSE(c_side != Sign::zero && d_side == -c_side) << "trial " << trial;
+      ++folds_refused;
+    }
+  }
+  EXPECT_GT(apart_applied, 200);
+  EXPECT_GT(folds_refused, 200);
 }
 
 INSTANTIATE_TEST_SUITE_P(Planes, FlatSplits,

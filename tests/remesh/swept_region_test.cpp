@@ -311,6 +311,50 @@ TEST_P(SweptRegions, AFlatRegionIsTheQuadrilateralItself) {
   }
 }
 
+TEST_P(SweptRegions, AnElementAtACornerIsPassedOverOnlyBeyondAPlaneThroughThatCorner) {
+  // first_in_region passes over an element whose corners all lie strictly beyond one of
+  // the region's separating planes (a face of a tetrahedron; a side or the plane of a flat
+  // region), a shared corner counting when it lies on that plane. A corner is on the
+  // planes through it only: these elements at corner a reach through the region to
+  // beyond the plane opposite a, and are met.
+  // The tetrahedron: a triangle at a whose other corners lie beyond face bcd.
+  Surface s = flip_scene(at(3, 3, 3), at(3, 3, 2), at(-8, -8, -8));
+  s.triangles[2] = {0, 4, 5};
+  expect_first(s, flip_region(s), kNoVertex, Blocker{Blocker::Kind::edge, {0, 4, kNoVertex}},
+               "a triangle at corner a through face bcd");
+  // Its twin beyond face acd (x < 0), a plane through a: nothing.
+  s.vertices[4] = at(-1, 3, 3);
+  s.vertices[5] = at(-1, 3, 2);
+  expect_first(s, flip_region(s), kNoVertex, std::nullopt, "a triangle at corner a beyond acd");
+  // The flat square a = (0,0,0), b = (4,4,0), c = (0,4,0), d = (4,0,0): a triangle at a in
+  // its plane whose other corners lie beyond its side bd (x = 4), and its twin beyond side
+  // ac (x = 0), a side through a.
+  s.vertices = {at(0, 0, 0), at(4, 4, 0), at(0, 4, 0), at(4, 0, 0), at(5, 1, 0), at(5, 3, 0)};
+  s.triangles = {{0, 1, 2}, {1, 0, 3}, {0, 4, 5}};
+  expect_first(s, flip_region(s), kNoVertex, Blocker{Blocker::Kind::edge, {0, 4, kNoVertex}},
+               "a flat triangle at corner a through side bd");
+  s.vertices[4] = at(-1, 1, 0);
+  s.vertices[5] = at(-1, 3, 0);
+  expect_first(s, flip_region(s), kNoVertex, std::nullopt, "a flat triangle at a beyond ac");
+  // Off the plane on both sides (its edges leave the square but for corner a), the
+  // triangle crossing the plane along the diagonal ab: the plane separates neither side.
+  s.vertices[4] = at(8, 2, 1);
+  s.vertices[5] = at(2, 8, -1);
+  expect_first(s, flip_region(s), kNoVertex, Blocker{Blocker::Kind::triangle, {0, 4, 5}},
+               "a triangle at a across the plane");
+  // The square's shadow has sides and diagonals, and only a side separates: a vertex on
+  // either side of the diagonal ab is in the square.
+  s.vertices.push_back(at(8, 9, 8));
+  s.vertices[5] = at(8, 8, 8);
+  s.triangles[2] = {4, 5, 6};
+  for (const auto& [x, y] : {std::pair{1.0, 3.0}, std::pair{3.0, 1.0}}) {
+    s.vertices[4] = at(x, y, 0);
+    expect_first(s, flip_region(s), kNoVertex,
+                 Blocker{Blocker::Kind::vertex, {4, kNoVertex, kNoVertex}},
+                 "a vertex on one side of the square's diagonal ab");
+  }
+}
+
 TEST_P(SweptRegions, RegionsMeetWhenTheyTouchAndNotOneUlpApart) {
   // Corners first, first + 1, ... (all kNoVertex for first = kNoVertex).
   const auto region = [&](const std::array<Point3, 4>& p, VertexIndex first) {
