@@ -4,7 +4,7 @@
 #   cmake -DROOT=<source tree> -P cmake/CheckArchitecture.cmake
 #
 # 1. A library includes public headers only of the libraries below it (kAllowed below);
-#    apps/ and python/ may include every library's public headers.
+#    apps/, examples/ and python/ may include every library's public headers.
 # 2. A library's internal/ headers are included only by that library's own files, its own
 #    tests (tests/<library>/) and the benchmarks (bench/ measures internals on purpose).
 # 3. Inside ccd/, a file of one room includes headers of its own room and of the rooms below

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# apps.cloth_example: the cloth example (apps/cloth_example) runs a short simulation that
+# examples.cloth: the cloth example (examples/cloth) runs a short simulation that
 # verifies every filtered step with a second MeshCcd (exit 1 on a collision), and the scene
 # must exercise the filter: collisions with the obstacle and of the sheet with itself.
 set -u

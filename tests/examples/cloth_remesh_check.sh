@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# apps.cloth_remesh: the adaptive cloth (exactgeo-cloth --remesh) runs short versions of
+# examples.cloth_remesh: the adaptive cloth (exactgeo-cloth --remesh) runs short versions of
 # both scenes. The example itself exits 1 when a filtered step collides or the exact
 # self-intersection finder sees an intersecting face pair after a step or a remesh, so
 # exit 0 is the main check; the summary must also show that the run exercised what it
