@@ -65,10 +65,16 @@ class DisjointSets {
 
 /// Zero area, decided exactly. A quad is degenerate when its patch collapses to a segment
 /// or a point; the patch {a, b, c, c} of a triangle does so exactly when a, b, c are
-/// collinear. Every other flat shape (convex, concave, butterfly, or a quad with a
-/// collinear corner) spans a non-zero area. Precondition: finite corners.
-bool zero_area(const BilinearPatch& patch) noexcept {
-  const PatchShape shape = classify_patch(patch);
+/// collinear, asked directly (classify_patch would first find the tetrahedron (a, b, c, c)
+/// flat, an exact zero that the filters cannot certify: most of a triangle mesh's check).
+/// Every other flat shape (convex, concave, butterfly, or a quad with a collinear corner)
+/// spans a non-zero area. Precondition: finite corners in range.
+bool zero_area(const Mesh& mesh, const Face& face) noexcept {
+  if (face.is_triangle()) {
+    const auto& v = mesh.vertices;
+    return collinear(v[face.corners[0]], v[face.corners[1]], v[face.corners[2]]);
+  }
+  const PatchShape shape = classify_patch(patch_of(mesh, face));
   return shape == PatchShape::segment || shape == PatchShape::point;
 }
 
@@ -197,7 +203,7 @@ MeshCheck check_mesh(const Mesh& mesh) {
     FaceFindings& findings = check.face_findings[f];
     findings.degenerate = repeated_corner(face);
     // The exact predicates need finite coordinates.
-    findings.zero_area = all_finite && zero_area(patch_of(mesh, face));
+    findings.zero_area = all_finite && zero_area(mesh, face);
     findings.degenerate = findings.degenerate || findings.zero_area;
     if (findings.zero_area) check.zero_area_faces.add(f);
     if (findings.degenerate) check.degenerate_faces.add(f);

@@ -28,17 +28,11 @@ std::size_t second_point(std::span<const Point3> p) {
   return second;
 }
 
-/// (a, b, c) span a plane: not collinear (exact).
-bool spanning(const Point3& a, const Point3& b, const Point3& c) {
-  return std::any_of(kAxes.begin(), kAxes.end(),
-                     [&](int axis) { return orient2d_along(axis, a, b, c) != Sign::zero; });
-}
-
 /// Every corner on one line (exact).
-bool collinear(std::span<const Point3> p) {
+bool on_one_line(std::span<const Point3> p) {
   const std::size_t second = second_point(p);
   for (std::size_t third = second + 1; third < p.size(); ++third) {
-    if (spanning(p[0], p[second], p[third])) return false;
+    if (!collinear(p[0], p[second], p[third])) return false;
   }
   return true;
 }
@@ -58,7 +52,7 @@ bool planar(std::span<const Point3> p) {
     const Point3& x = p[0];
     const Point3& y = p[second];
     const Point3& z = p[third];
-    if (!spanning(x, y, z)) continue;
+    if (collinear(x, y, z)) continue;
     return std::all_of(p.begin(), p.end(),
                        [&](const Point3& d) { return orient3d(x, y, z, d) == Sign::zero; });
   }
@@ -164,7 +158,7 @@ PolygonForm triangulate_polygon(std::span<const VertexIndex> corners_as_read,
   std::vector<Point3> p(corners.size());
   std::transform(corners.begin(), corners.end(), p.begin(),
                  [&](VertexIndex c) { return vertices[c]; });
-  if (corners.size() < 3 || collinear(p)) {
+  if (corners.size() < 3 || on_one_line(p)) {
     append_fan(corners_as_read, out);
     return PolygonForm::zero_area;
   }

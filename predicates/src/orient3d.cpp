@@ -24,6 +24,11 @@ Sign orient2d_along(int axis, const Point3& a, const Point3& b, const Point3& c)
   return kernel::ExactSigns{}.cross2(axis, Offset::between(a, b), Offset::between(a, c));
 }
 
+bool collinear(const Point3& p, const Point3& q, const Point3& r) noexcept {
+  return orient2d_along(0, p, q, r) == Sign::zero && orient2d_along(1, p, q, r) == Sign::zero &&
+         orient2d_along(2, p, q, r) == Sign::zero;
+}
+
 Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d,
               Arithmetic arithmetic) noexcept {
   return kernel::with_signs(arithmetic,

@@ -20,11 +20,6 @@ bool in_shadow(int axis, const Point3& p, const Point3& q, const Point3& r,
 
 }  // namespace
 
-bool collinear(const Point3& p, const Point3& q, const Point3& r) noexcept {
-  return orient2d_along(0, p, q, r) == Sign::zero && orient2d_along(1, p, q, r) == Sign::zero &&
-         orient2d_along(2, p, q, r) == Sign::zero;
-}
-
 std::optional<int> shadow_axis(const Point3& p, const Point3& q, const Point3& r) noexcept {
   for (const int axis : {0, 1, 2}) {
     if (orient2d_along(axis, p, q, r) != Sign::zero) return axis;

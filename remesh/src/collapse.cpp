@@ -20,6 +20,7 @@
 #include "exactgeo/boxes/point_groups.hpp"
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 

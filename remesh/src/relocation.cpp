@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
 
 namespace exactgeo::remesh {
-
 
 namespace {
 

@@ -13,10 +13,12 @@
 #include "support/generators.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
+#include "support/segment_triangle_oracle.hpp"
 
 namespace exactgeo {
 namespace {
 
+using testing::collinear_oracle;
 using testing::orient3d_oracle;
 using testing::Rng;
 
@@ -178,6 +180,51 @@ TEST(Orient3d, PlainDoubleIsSometimesWrong) {
     wrong += orient3d(a, b, c, d, Arithmetic::plain_double) != orient3d_oracle(a, b, c, d);
   }
   EXPECT_GT(wrong, 50);
+}
+
+void expect_collinear_exact(const Point3& a, const Point3& b, const Point3& c) {
+  ASSERT_EQ(collinear(a, b, c), collinear_oracle(a, b, c))
+      << "a=" << hex(a) << " b=" << hex(b) << " c=" << hex(c);
+}
+
+// Points on one line made exactly (integer points a, b and c = a + k (b - a), scaled by a
+// power of two: exact at every magnitude the scale keeps finite and above the subnormal
+// floor), one ulp off it in each coordinate, coincident points, and random points, at
+// 2^0, 2^+-1000 and among subnormals: collinear() must equal the oracle's answer.
+TEST(Collinear, ExactLinesOneUlpOffAndRandomPointsAgreeWithOracle) {
+  Rng rng = testing::seeded_engine("orient3d-collinear");
+  int on_line = 0;
+  for (const int scale : {0, 1000, -1000, -1060}) {
+    for (int i = 0; i < 400; ++i) {
+      const Point3 a = testing::integer_point(rng, 1000), b = testing::integer_point(rng, 1000);
+      const int k = testing::uniform_int(rng, -3, 3);
+      Point3 c{};
+      for (std::size_t j = 0; j < 3; ++j)
+        c[j] = a[j] + k * (b[j] - a[j]);
+      const auto scaled = [scale](Point3 p) {
+        for (double& x : p)
+          x = std::ldexp(x, scale);
+        return p;
+      };
+      const Point3 sa = scaled(a), sb = scaled(b), sc = scaled(c);
+      EXPECT_TRUE(collinear(sa, sb, sc)) << "a=" << hex(sa) << " b=" << hex(sb) << " c=" << hex(sc);
+      on_line += collinear_oracle(sa, sb, sc);
+      expect_collinear_exact(sa, sb, sc);
+      expect_collinear_exact(sa, sa, sb);
+      expect_collinear_exact(sa, sa, sa);
+      for (std::size_t j = 0; j < 3; ++j) {
+        Point3 off = sc;
+        off[j] = std::nextafter(off[j], HUGE_VAL);
+        expect_collinear_exact(sa, sb, off);
+      }
+      const auto random = [&] {
+        return scale == -1060 ? testing::random_magnitude_point(rng, -1074, -1040)
+                              : scaled(testing::random_point(rng));
+      };
+      expect_collinear_exact(random(), random(), random());
+    }
+  }
+  EXPECT_EQ(on_line, 1600) << "the oracle must see the lines built exactly";
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // ulp, all at 2^0, 2^+-1000 and at subnormal scale.
 
 #include "exactgeo/predicates/segment_triangle.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
 
 #include <gtest/gtest.h>
 

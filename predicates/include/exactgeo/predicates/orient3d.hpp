@@ -24,4 +24,11 @@ Sign orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d
 /// for every finite input. Precondition: finite coordinates, axis in {0, 1, 2}.
 Sign orient2d_along(int axis, const Point3& a, const Point3& b, const Point3& c) noexcept;
 
+/// p, q and r on one line (or at one point), exactly: (q - p) x (r - p) = 0, orient2d_along
+/// zero for all three axes; a triangle of zero area. A triangle of nonzero area has a
+/// nonzero component, which the filter certifies at once, where asking orient3d about the
+/// degenerate tetrahedron (p, q, r, r) gets an exact zero, the slowest answer. Exact for
+/// every finite input. Precondition: finite coordinates.
+bool collinear(const Point3& p, const Point3& q, const Point3& r) noexcept;
+
 }  // namespace exactgeo

@@ -15,9 +15,6 @@
 
 namespace exactgeo {
 
-/// p, q and r on one line (or at one point): a triangle of zero area. Exact.
-bool collinear(const Point3& p, const Point3& q, const Point3& r) noexcept;
-
 /// An axis along which triangle pqr's normal has a non-zero component (its shadow on the
 /// other two coordinates is a triangle); nullopt when p, q, r are collinear.
 std::optional<int> shadow_axis(const Point3& p, const Point3& q, const Point3& r) noexcept;
