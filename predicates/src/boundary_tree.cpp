@@ -1,0 +1,251 @@
+#include "exactgeo/predicates/boundary_tree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+
+#include "boundary_term_filter.hpp"
+#include "double_interval.hpp"
+
+// The identity, why a ray that misses a node's box makes it exact, and the bound:
+// boundary_tree.hpp.
+
+namespace exactgeo {
+namespace {
+
+using internal::DoubleInterval;
+
+constexpr double kU = 0x1p-53;
+constexpr double kTiny = 0x1p-1000;
+
+double up(double x) noexcept {
+  return DoubleInterval::up(x);
+}
+
+/// area(a, b, c) (half the cross product's length), its upper end in outward-rounded
+/// intervals; +inf when that overflows.
+double area_above(const Point3& a, const Point3& b, const Point3& c) noexcept {
+  std::array<DoubleInterval, 3> u, v;
+  for (int i = 0; i < 3; ++i) {
+    u[i] = DoubleInterval::difference(a[i], c[i]);
+    v[i] = DoubleInterval::difference(b[i], c[i]);
+  }
+  const DoubleInterval x = u[1] * v[2] - u[2] * v[1];
+  const DoubleInterval y = u[2] * v[0] - u[0] * v[2];
+  const DoubleInterval z = u[0] * v[1] - u[1] * v[0];
+  const double length = sqrt(x * x + y * y + z * z).hi;
+  if (!std::isfinite(length)) return std::numeric_limits<double>::infinity();
+  return up(0.5 * length);
+}
+
+// The per-point tests take a priori bounds instead of directed rounding (std::nextafter
+// is a library call, and a point visits many nodes): a difference, product or quotient of
+// doubles is within u = 2^-53 of its exact value relatively, or 2^-1075 absolutely where
+// it underflows (a difference that underflows is exact).
+
+/// A lower bound on the squared distance from p to the box (0 when p may be in it): each
+/// gap and square within u relatively, the sum of three within 2u more, all within
+/// 5u < 2^-50; underflows lose at most 3 2^-1075, far below kTiny.
+double distance2_below(const Point3& p, const Point3& lower, const Point3& upper) noexcept {
+  double sum = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double gap = p[i] < lower[i] ? lower[i] - p[i] : p[i] > upper[i] ? p[i] - upper[i] : 0.0;
+    sum += gap * gap;
+  }
+  return std::max(0.0, sum * (1 - 0x1p-50) - kTiny);
+}
+
+/// Does the ray p + t r (t >= 0) certainly miss the closed box? From the slabs: it meets
+/// the box exactly when max(0, entries) <= min(exits), the entry and exit parameters
+/// (lower - p) / r and (upper - p) / r (ordered by r's sign). Each computed t is within
+/// 2u |t| + 2^-1075 of its exact value (a difference and a quotient); an entry moved down
+/// and an exit moved up by 2^-50 |t| + kTiny (more than that, their own rounding
+/// included) bound the exact ones, and a miss found with them is a miss. A t that is not
+/// finite (an overflow) is left out, which can only hide a miss.
+bool ray_misses(const Point3& p, const Vector3& r, const Point3& lower,
+                const Point3& upper) noexcept {
+  double enter = 0.0, exit = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    if (r[i] == 0.0) {
+      if (p[i] < lower[i] || p[i] > upper[i]) return true;  // parallel to the slab, outside
+      continue;
+    }
+    double t0 = (lower[i] - p[i]) / r[i], t1 = (upper[i] - p[i]) / r[i];
+    if (r[i] < 0) std::swap(t0, t1);
+    if (std::isfinite(t0)) enter = std::max(enter, t0 - (std::abs(t0) * 0x1p-50 + kTiny));
+    if (std::isfinite(t1)) exit = std::min(exit, t1 + (std::abs(t1) * 0x1p-50 + kTiny));
+  }
+  return enter > exit;
+}
+
+}  // namespace
+
+BoundaryTree::BoundaryTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
+  if (edges.empty()) return;
+  // The edges' vertices, renumbered in order of first use.
+  std::unordered_map<VertexIndex, VertexIndex> renumbered;
+  const auto own = [&](VertexIndex v) {
+    const auto [it, added] = renumbered.try_emplace(v, static_cast<VertexIndex>(vertices_.size()));
+    if (added) vertices_.push_back(vertices[v]);
+    return it->second;
+  };
+  edges_.reserve(edges.size());
+  for (const BoundaryEdge& e : edges)
+    edges_.push_back({own(e.from), own(e.to), e.multiplicity});
+  nodes_.reserve(2 * (edges_.size() / kBoundaryTreeLeafEdges + 1));
+  build(0, static_cast<std::uint32_t>(edges_.size()));
+}
+
+std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  node.first = first;
+  node.count = count;
+  const std::span<BoundaryEdge> own(edges_.data() + first, count);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  node.lower = {kInf, kInf, kInf};
+  node.upper = {-kInf, -kInf, -kInf};
+  for (const BoundaryEdge& e : own) {
+    for (const VertexIndex v : {e.from, e.to}) {
+      for (int i = 0; i < 3; ++i) {
+        node.lower[i] = std::min(node.lower[i], vertices_[v][i]);
+        node.upper[i] = std::max(node.upper[i], vertices_[v][i]);
+      }
+    }
+  }
+  // The centre, clamped into the box (a rounded midpoint lies in it anyway; the clamp makes
+  // that obvious).
+  Point3 centre;
+  for (int i = 0; i < 3; ++i) {
+    centre[i] = std::clamp(0.5 * node.lower[i] + 0.5 * node.upper[i], node.lower[i], node.upper[i]);
+  }
+  const auto c = static_cast<VertexIndex>(vertices_.size());
+  vertices_.push_back(centre);
+  // F = sum |m| area(a, b, c), rounded up (the children may give a smaller one, below).
+  const auto fan_of = [&](std::span<const BoundaryEdge> edges) {
+    double fan = 0.0;
+    for (const BoundaryEdge& e : edges) {
+      const double area = area_above(vertices_[e.from], vertices_[e.to], centre);
+      fan = up(fan + up(area * std::abs(static_cast<double>(e.multiplicity))));
+    }
+    return fan;
+  };
+  node.fan = fan_of(own);
+  // The ends: delta(x) = what enters x minus what leaves it; an edge c -> x of multiplicity
+  // delta(x) (x -> c of -delta(x) when negative). An end at c itself has no cone term.
+  std::vector<std::pair<VertexIndex, std::int64_t>> flow;
+  flow.reserve(2 * count);
+  for (const BoundaryEdge& e : own) {
+    flow.emplace_back(e.to, e.multiplicity);
+    flow.emplace_back(e.from, -std::int64_t{e.multiplicity});
+  }
+  std::sort(flow.begin(), flow.end());
+  node.ends_first = static_cast<std::uint32_t>(ends_.size());
+  for (std::size_t i = 0; i < flow.size();) {
+    std::int64_t delta = 0;
+    std::size_t j = i;
+    for (; j < flow.size() && flow[j].first == flow[i].first; ++j)
+      delta += flow[j].second;
+    const VertexIndex x = flow[i].first;
+    if (delta != 0 && vertices_[x] != centre) {
+      const auto m = static_cast<std::int32_t>(std::abs(delta));
+      ends_.push_back(delta > 0 ? BoundaryEdge{c, x, m} : BoundaryEdge{x, c, m});
+    }
+    i = j;
+  }
+  node.ends_count = static_cast<std::uint32_t>(ends_.size()) - node.ends_first;
+  if (count > kBoundaryTreeLeafEdges) {
+    // Halves by the edges' midpoints along the box's longest axis.
+    int axis = 0;
+    for (int i = 1; i < 3; ++i) {
+      if (node.upper[i] - node.lower[i] > node.upper[axis] - node.lower[axis]) axis = i;
+    }
+    const auto middle = [&](const BoundaryEdge& e) {
+      return 0.5 * vertices_[e.from][axis] + 0.5 * vertices_[e.to][axis];
+    };
+    const std::uint32_t half = count / 2;
+    std::nth_element(
+        own.begin(), own.begin() + half, own.end(),
+        [&](const BoundaryEdge& a, const BoundaryEdge& b) { return middle(a) < middle(b); });
+    node.left = build(first, half);
+    node.right = build(first + half, count - half);
+    // The children's bounds and the fan of their ends about this centre
+    // (boundary_tree.hpp, "Nested bounds"): far smaller than the direct F where the
+    // edges form small closed loops, whose fans about a distant centre are long and thin.
+    double nested = up(nodes_[node.left].fan + nodes_[node.right].fan);
+    for (const std::uint32_t child : {node.left, node.right}) {
+      const Node& n = nodes_[child];
+      nested = up(nested + fan_of(std::span(ends_).subspan(n.ends_first, n.ends_count)));
+    }
+    node.fan = std::min(node.fan, nested);
+  }
+  node.far_pays = node.ends_count < node.count && std::isfinite(node.fan);
+  nodes_[index] = node;
+  return index;
+}
+
+void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget,
+                          Selection& out) const {
+  out.edges.clear();
+  out.slack = 0.0;
+  if (nodes_.empty()) return;
+  std::array<std::uint32_t, 128> stack;  // depth <= log2(edges) + 1, far below
+  std::size_t top = 0, far = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (node.far_pays) {
+      const double d2 = distance2_below(point, node.lower, node.upper);
+      // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf
+      // or NaN, neither accepted.
+      const double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
+      if (bound <= budget && ray_misses(point, ray, node.lower, node.upper)) {
+        out.edges.insert(out.edges.end(), ends_.begin() + node.ends_first,
+                         ends_.begin() + node.ends_first + node.ends_count);
+        out.slack += bound;
+        ++far;
+        continue;
+      }
+    }
+    if (node.left == 0) {
+      out.edges.insert(out.edges.end(), edges_.begin() + node.first,
+                       edges_.begin() + node.first + node.count);
+      continue;
+    }
+    stack[top++] = node.right;
+    stack[top++] = node.left;
+  }
+  // The sum of `far` positive terms, each addition within u of its partial sum: within
+  // far u of the exact sum; the product rounds within u more.
+  out.slack *= 1 + static_cast<double>(far + 2) * 2 * kU;
+}
+
+std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector3& ray,
+                                               std::array<double, 2> levels,
+                                               Selection& scratch) const {
+  const Vector3 apex{-ray[0], -ray[1], -ray[2]};
+  for (const double budget : kBoundaryTreeBudgets) {
+    select(point, ray, budget, scratch);
+    const auto sum = internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.slack);
+    if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
+    if (auto settled = internal::settled(*sum, levels)) return settled;
+    if (scratch.slack == 0.0) return std::nullopt;  // a finer budget changes nothing
+  }
+  return std::nullopt;
+}
+
+std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vector3& ray,
+                                                 double budget, Selection& scratch) const {
+  select(point, ray, budget, scratch);
+  const Vector3 apex{-ray[0], -ray[1], -ray[2]};
+  const auto sum = internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.slack);
+  if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
+  return internal::turns_of(*sum);
+}
+
+}  // namespace exactgeo
