@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -82,6 +83,52 @@ bool ray_misses(const Point3& p, const Vector3& r, const Point3& lower,
   return enter > exit;
 }
 
+/// Each edge's trail (a walk along edges that share vertices), its place in it, and the
+/// key the halving sorts by: the trail's mean midpoint for a short trail, which keeps it
+/// together, and the edge's midpoint otherwise.
+std::vector<BoundaryTree::TrailPlace> trail_places(std::span<const BoundaryEdge> edges,
+                                                   std::span<const Point3> vertices) {
+  constexpr std::uint32_t kShortTrail = 16;
+  std::vector<std::vector<std::uint32_t>> leaving(vertices.size());
+  for (std::uint32_t i = 0; i < edges.size(); ++i)
+    leaving[edges[i].from].push_back(i);
+  std::vector<BoundaryTree::TrailPlace> places(edges.size());
+  std::vector<bool> used(edges.size(), false);
+  std::uint32_t trail = 0;
+  std::vector<std::uint32_t> walk;
+  for (std::uint32_t start = 0; start < edges.size(); ++start) {
+    if (used[start]) continue;
+    walk.clear();
+    for (std::uint32_t e = start;;) {
+      used[e] = true;
+      walk.push_back(e);
+      auto& next = leaving[edges[e].to];
+      while (!next.empty() && used[next.back()])
+        next.pop_back();
+      if (next.empty()) break;
+      e = next.back();
+    }
+    Point3 mean{0.0, 0.0, 0.0};
+    for (const std::uint32_t e : walk) {
+      for (int i = 0; i < 3; ++i)
+        mean[i] += (0.5 * vertices[edges[e].from][i] + 0.5 * vertices[edges[e].to][i]) /
+                   static_cast<double>(walk.size());
+    }
+    const bool short_trail = walk.size() <= kShortTrail;
+    for (std::uint32_t k = 0; k < walk.size(); ++k) {
+      const BoundaryEdge& e = edges[walk[k]];
+      Point3 key = mean;
+      if (!short_trail) {
+        for (int i = 0; i < 3; ++i)
+          key[i] = 0.5 * vertices[e.from][i] + 0.5 * vertices[e.to][i];
+      }
+      places[walk[k]] = {key, trail, k, short_trail};
+    }
+    ++trail;
+  }
+  return places;
+}
+
 }  // namespace
 
 BoundaryTree::BoundaryTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
@@ -96,8 +143,10 @@ BoundaryTree::BoundaryTree(std::span<const Point3> vertices, std::span<const Bou
   edges_.reserve(edges.size());
   for (const BoundaryEdge& e : edges)
     edges_.push_back({own(e.from), own(e.to), e.multiplicity});
+  places_ = trail_places(edges_, vertices_);
   nodes_.reserve(2 * (edges_.size() / kBoundaryTreeLeafEdges + 1));
   build(0, static_cast<std::uint32_t>(edges_.size()));
+  places_ = {};
 }
 
 std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
@@ -165,13 +214,40 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     for (int i = 1; i < 3; ++i) {
       if (node.upper[i] - node.lower[i] > node.upper[axis] - node.lower[axis]) axis = i;
     }
-    const auto middle = [&](const BoundaryEdge& e) {
-      return 0.5 * vertices_[e.from][axis] + 0.5 * vertices_[e.to][axis];
+    // Short trails (small holes) stay whole where the halves allow: a node holding a
+    // closed loop entirely has no end for it.
+    std::vector<std::uint32_t> order(count);
+    std::iota(order.begin(), order.end(), first);
+    const auto key = [&](std::uint32_t i) {
+      const TrailPlace& t = places_[i];
+      return std::tuple(t.key[axis], t.trail, t.position);
     };
-    const std::uint32_t half = count / 2;
-    std::nth_element(
-        own.begin(), own.begin() + half, own.end(),
-        [&](const BoundaryEdge& a, const BoundaryEdge& b) { return middle(a) < middle(b); });
+    std::sort(order.begin(), order.end(),
+              [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    std::vector<BoundaryEdge> sorted_edges(count);
+    std::vector<TrailPlace> sorted_places(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      sorted_edges[i] = edges_[order[i]];
+      sorted_places[i] = places_[order[i]];
+    }
+    std::copy(sorted_edges.begin(), sorted_edges.end(), edges_.begin() + first);
+    std::copy(sorted_places.begin(), sorted_places.end(), places_.begin() + first);
+    const auto same_short_trail = [&](std::uint32_t i) {  // edges i - 1 and i, of this node
+      const TrailPlace& a = places_[first + i - 1];
+      const TrailPlace& b = places_[first + i];
+      return a.short_trail && a.trail == b.trail;
+    };
+    std::uint32_t half = count / 2;
+    std::uint32_t forward = half, backward = half;
+    while (forward < count && same_short_trail(forward))
+      ++forward;
+    while (backward > 0 && same_short_trail(backward))
+      --backward;
+    if (forward < count) {
+      half = forward - half <= half - backward || backward == 0 ? forward : backward;
+    } else if (backward > 0) {
+      half = backward;
+    }
     node.left = build(first, half);
     node.right = build(first + half, count - half);
     // The children's bounds and the fan of their ends about this centre
@@ -231,6 +307,8 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
   const Vector3 apex{-ray[0], -ray[1], -ray[2]};
   for (const double budget : kBoundaryTreeBudgets) {
     select(point, ray, budget, scratch);
+    // Where the tree saves little, the term over every edge is the better next step.
+    if (scratch.edges.size() > edges_.size() / 3) return std::nullopt;
     const auto sum = internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.slack);
     if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
     if (auto settled = internal::settled(*sum, levels)) return settled;

@@ -121,6 +121,18 @@ class BoundaryTree {
   };
   std::uint32_t build(std::uint32_t first, std::uint32_t count);
 
+ public:
+  /// While building: an edge's trail and its place in it (boundary_tree.cpp).
+  struct TrailPlace {
+    Point3 key{};
+    std::uint32_t trail = 0;
+    std::uint32_t position = 0;
+    bool short_trail = false;
+  };
+
+ private:
+  std::vector<TrailPlace> places_;  // beside edges_, while building
+
   std::vector<Point3> vertices_;
   std::vector<BoundaryEdge> edges_;
   std::vector<BoundaryEdge> ends_;
