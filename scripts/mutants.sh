@@ -159,7 +159,8 @@ MUTANTS = [
      "} else if (on_ray(p, apex, a) || on_ray(p, apex, b)) {",
      "} else if (false) {", ["predicates_tests", "inside_tests"]),
     # The boundary tree (predicates/src/boundary_tree.cpp): a far node's fan bound, its
-    # nested form, the ray-box test that makes the tetrahedra's 4 pi vanish, the ends.
+    # nested form, the distance, the dipole term and its bound, the ray-box test that
+    # makes the tetrahedra's 4 pi vanish, the ends.
     ("boundary_tree_area_halved",
      "predicates/src/boundary_tree.cpp",
      "return up(0.5 * length);", "return up(0.25 * length);",
@@ -168,9 +169,17 @@ MUTANTS = [
      "predicates/src/boundary_tree.cpp",
      "nested = up(nested + fan_of(std::span(ends_).subspan(n.ends_first, n.ends_count)));",
      "(void)n;", ["predicates_tests", "inside_tests"]),
-    ("boundary_tree_distance_one_percent_long",
+    ("boundary_tree_distance_22_percent_long",
      "predicates/src/boundary_tree.cpp",
-     "sum += gap * gap;", "sum += 1.01 * gap * gap;",
+     "sum += gap * gap;", "sum += 1.5 * gap * gap;",
+     ["predicates_tests", "inside_tests"]),
+    ("boundary_tree_dipole_term_dropped",
+     "predicates/src/boundary_tree.cpp",
+     "out.offset += dipole;", "",
+     ["predicates_tests", "inside_tests"]),
+    ("boundary_tree_first_order_bound_without_its_reach",
+     "predicates/src/boundary_tree.cpp",
+     "(node.reach * node.fan / (d2 * d) +", "(0.0 * node.fan / (d2 * d) +",
      ["predicates_tests", "inside_tests"]),
     ("boundary_tree_ray_through_the_box_ignored",
      "predicates/src/boundary_tree.cpp",

@@ -70,11 +70,12 @@ double dot(const Vector3& a, const Vector3& b) {
 
 std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
                                         std::span<const Point3> vertices,
-                                        std::span<const BoundaryEdge> edges, double slack) {
+                                        std::span<const BoundaryEdge> edges, double offset,
+                                        double slack) {
   const auto d = normalized(apex);
   if (!d) return std::nullopt;
   const double ld = std::sqrt(dot(*d, *d));
-  double sum = 0.0, magnitudes = 0.0, errors = 0.0;
+  double sum = offset, magnitudes = std::abs(offset), errors = 0.0;
   for (const BoundaryEdge& edge : edges) {
     const Point3& pa = vertices[edge.from];
     const Point3& pb = vertices[edge.to];
@@ -121,7 +122,8 @@ std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
     magnitudes += std::abs(m * theta);
     errors += std::abs(m) * ((4.0 / 3.0) * e / radius + kAtan2Error);
   }
-  const double rounding = (static_cast<double>(edges.size()) + 2) * kU * magnitudes;
+  // (The offset is one more term of the sum.)
+  const double rounding = (static_cast<double>(edges.size()) + 3) * kU * magnitudes;
   // slack, an upper bound already, joins the sum inside the factor that covers the
   // rounding of these additions.
   const double bound = (errors + rounding + slack) * (1 + 8 * kU) + kTiny;
@@ -158,7 +160,7 @@ std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector
                                                    std::span<const Point3> vertices,
                                                    std::span<const BoundaryEdge> edges,
                                                    std::array<double, 2> levels) {
-  const std::optional<FilteredSum> sum = filtered_sum(p, apex, vertices, edges, 0.0);
+  const std::optional<FilteredSum> sum = filtered_sum(p, apex, vertices, edges, 0.0, 0.0);
   if (!sum) return std::nullopt;
   return settled(*sum, levels);
 }

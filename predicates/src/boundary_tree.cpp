@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -22,6 +23,10 @@ using internal::DoubleInterval;
 
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
+/// A bound on the dipole term's rounding relative to |M| / |c - p|^2: c - p within u,
+/// which moves (c - p) / |c - p|^3 by 2u relatively; the dot within 3u of |M| |c - p|;
+/// |c - p|^3 within 6u; the quotient u: 12u, far below this.
+constexpr double kDipoleRounding = 0x1p-40;
 
 double up(double x) noexcept {
   return DoubleInterval::up(x);
@@ -131,6 +136,38 @@ std::vector<BoundaryTree::TrailPlace> trail_places(std::span<const BoundaryEdge>
 
 }  // namespace
 
+/// M = (1/2) sum m (a - c) x (b - c) in outward-rounded intervals, its midpoint and
+/// radius; the reach, the distance from c to the farthest corner of the box, rounded up.
+void BoundaryTree::set_dipole(Node& node, std::span<const BoundaryEdge> edges) const {
+  const Point3& c = node.centre;
+  std::array<DoubleInterval, 3> m{};
+  for (const BoundaryEdge& e : edges) {
+    std::array<DoubleInterval, 3> u, v;
+    for (int i = 0; i < 3; ++i) {
+      u[i] = DoubleInterval::difference(vertices_[e.from][i], c[i]);
+      v[i] = DoubleInterval::difference(vertices_[e.to][i], c[i]);
+    }
+    const DoubleInterval times = DoubleInterval::exact(e.multiplicity);
+    m[0] = m[0] + (u[1] * v[2] - u[2] * v[1]) * times;
+    m[1] = m[1] + (u[2] * v[0] - u[0] * v[2]) * times;
+    m[2] = m[2] + (u[0] * v[1] - u[1] * v[0]) * times;
+  }
+  double error = 0.0, size2 = 0.0, reach2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const DoubleInterval half = m[i] * DoubleInterval::exact(0.5);
+    node.moment[i] = std::clamp(0.5 * half.lo + 0.5 * half.hi, half.lo, half.hi);
+    error = up(error + up(std::max(half.hi - node.moment[i], node.moment[i] - half.lo)));
+    size2 = up(size2 + up(node.moment[i] * node.moment[i]));
+    const double r = up(std::max(c[i] - node.lower[i], node.upper[i] - c[i]));
+    reach2 = up(reach2 + up(r * r));
+  }
+  node.moment_error = error;
+  node.moment_size = up(std::sqrt(size2));
+  node.reach = up(std::sqrt(reach2));
+  node.dipole =
+      std::isfinite(error) && std::isfinite(node.moment_size) && std::isfinite(node.reach);
+}
+
 BoundaryTree::BoundaryTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
   if (edges.empty()) return;
   // The edges' vertices, renumbered in order of first use.
@@ -175,6 +212,8 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
   }
   const auto c = static_cast<VertexIndex>(vertices_.size());
   vertices_.push_back(centre);
+  node.centre = centre;
+  set_dipole(node, own);
   // F = sum |m| area(a, b, c), rounded up (the children may give a smaller one, below).
   const auto fan_of = [&](std::span<const BoundaryEdge> edges) {
     double fan = 0.0;
@@ -268,10 +307,12 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
 void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget,
                           Selection& out) const {
   out.edges.clear();
+  out.offset = 0.0;
   out.slack = 0.0;
   if (nodes_.empty()) return;
   std::array<std::uint32_t, 128> stack;  // depth <= log2(edges) + 1, far below
-  std::size_t top = 0, far = 0;
+  std::size_t top = 0, far = 0, dipoles = 0;
+  double offsets = 0.0;  // the sum of the dipole terms' magnitudes
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
@@ -279,12 +320,38 @@ void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget
       const double d2 = distance2_below(point, node.lower, node.upper);
       // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf
       // or NaN, neither accepted.
-      const double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
+      double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
+      // The dipole term and its bound (boundary_tree.hpp, "First order"), where smaller.
+      double dipole = 0.0;
+      if (node.dipole && d2 > 0.0) {
+        const Vector3 v{node.centre[0] - point[0], node.centre[1] - point[1],
+                        node.centre[2] - point[2]};
+        const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+        if (r2 > 0x1p-900 && r2 < 0x1p900) {
+          // d from below (the root within u/2); the bound's own rounding within 10u.
+          const double d = std::sqrt(d2) * (1 - 0x1p-50);
+          const double first_order =
+              (node.reach * node.fan / (d2 * d) +
+               0.5 * (node.moment_error + kDipoleRounding * node.moment_size) / d2) *
+                  (1 + 0x1p-48) +
+              kTiny;
+          if (first_order < bound) {
+            bound = first_order;
+            dipole = 0.5 * (node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2]) /
+                     (r2 * std::sqrt(r2));
+          }
+        }
+      }
       if (bound <= budget && ray_misses(point, ray, node.lower, node.upper)) {
         out.edges.insert(out.edges.end(), ends_.begin() + node.ends_first,
                          ends_.begin() + node.ends_first + node.ends_count);
         out.slack += bound;
         ++far;
+        if (dipole != 0.0) {
+          out.offset += dipole;
+          offsets += std::abs(dipole);
+          ++dipoles;
+        }
         continue;
       }
     }
@@ -296,9 +363,11 @@ void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget
     stack[top++] = node.right;
     stack[top++] = node.left;
   }
-  // The sum of `far` positive terms, each addition within u of its partial sum: within
-  // far u of the exact sum; the product rounds within u more.
-  out.slack *= 1 + static_cast<double>(far + 2) * 2 * kU;
+  // The offset's additions round within dipoles u of the sum of magnitudes; the sum of
+  // `far` positive terms, each addition within u of its partial sum, within far u of the
+  // exact sum; the products round within u more.
+  out.slack += offsets * (static_cast<double>(dipoles + 2) * 2 * kU);
+  out.slack *= 1 + static_cast<double>(far + 3) * 2 * kU;
 }
 
 std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector3& ray,
@@ -308,8 +377,11 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
   for (const double budget : kBoundaryTreeBudgets) {
     select(point, ray, budget, scratch);
     // Where the tree saves little, the term over every edge is the better next step.
-    if (scratch.edges.size() > edges_.size() / 3) return std::nullopt;
-    const auto sum = internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.slack);
+    if (scratch.edges.size() > edges_.size() / 2) return std::nullopt;
+    // The levels lie 2 pi apart in half angles: an enclosure 2 pi wide holds one.
+    if (scratch.slack >= std::numbers::pi) continue;
+    const auto sum = internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.offset,
+                                            scratch.slack);
     if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
     if (auto settled = internal::settled(*sum, levels)) return settled;
     if (scratch.slack == 0.0) return std::nullopt;  // a finer budget changes nothing
@@ -321,7 +393,8 @@ std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vect
                                                  double budget, Selection& scratch) const {
   select(point, ray, budget, scratch);
   const Vector3 apex{-ray[0], -ray[1], -ray[2]};
-  const auto sum = internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.slack);
+  const auto sum =
+      internal::filtered_sum(point, apex, vertices_, scratch.edges, scratch.offset, scratch.slack);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of(*sum);
 }

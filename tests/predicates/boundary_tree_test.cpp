@@ -2,9 +2,10 @@
 // independently in 512-bit MPFR over every edge (support/solid_angle_oracle.hpp): wherever
 // the tree encloses the term, the enclosure holds the oracle's value. Chains of 10 to
 // 10,000 edges: loops of every size (one big, many small), multiplicity 3, points anywhere,
-// near the edges and far away, at 2^0 and 2^+-1000. Then a far node whose fan is nearly
-// as large as its bound (a flat arc seen from straight above), which any weaker bound
-// misses, and rays aimed through far nodes, where the fan's identity needs its 4 pi.
+// near the edges and far away, at 2^0 and 2^+-1000. Then far nodes whose fan the
+// zero-order bound nearly fills (a thin rectangle) or whose dipole term carries the fan
+// (a flat arc seen from straight above), and rays aimed through far nodes, where the
+// fan's identity needs its 4 pi.
 
 #include "exactgeo/predicates/boundary_tree.hpp"
 
@@ -203,12 +204,14 @@ Chain flat_arc(std::size_t n) {
   return chain;
 }
 
-TEST(BoundaryTree, AFarFanNearlyAsLargeAsItsBoundIsHeld) {
+TEST(BoundaryTree, AFarFanCarriedByItsDipoleTermIsHeld) {
   // Seen from (0, 0, h), the three-quarter disc's solid angle is
-  // (3/4) 2 pi (1 - h / sqrt(1 + h^2)), about (3/4) pi / h^2 (1 - 3 / (4 h^2)); its bound
-  // area / h^2 = (3/4) pi / h^2 (the box is flat: the distance is h). At h = 20 they
-  // differ by 0.2%: a bound halved (or a distance taken too large by 0.1%) misses the
-  // term, which the node leaves out entirely when it stands in for its edges.
+  // (3/4) 2 pi (1 - h / sqrt(1 + h^2)), about (3/4) pi / h^2 (1 - 3 / (4 h^2)); its
+  // zero-order bound area / h^2 = (3/4) pi / h^2 (the box is flat: the distance is h).
+  // From h = 16 on the first-order bound reach F / d^3 is smaller, and the node gives
+  // the dipole term (1/2) M.(c - p) / |c - p|^3 = -(3/8) pi / h^2 in half angles, within
+  // (3/8) pi 0.75 / h^4 of the fan's: a dipole term left out, or a bound without its
+  // reach, misses the term.
   const Chain chain = flat_arc(96);
   const BoundaryTree tree(chain.vertices, chain.edges);
   std::size_t far = 0;
@@ -226,7 +229,50 @@ TEST(BoundaryTree, AFarFanNearlyAsLargeAsItsBoundIsHeld) {
       EXPECT_GE(e->upper, truth) << h;
     }
   }
-  EXPECT_GT(far, 6u);  // the root stood in for the arc
+  EXPECT_GT(far, 6u);  // the root stood in for the arc, by its dipole term:
+  BoundaryTree::Selection selection;
+  ASSERT_TRUE(
+      tree.enclosure({0.0, 0.0, 40.0}, ray_direction(0), kBoundaryTreeBudgets.front(), selection));
+  EXPECT_NE(selection.offset, 0.0);
+}
+
+TEST(BoundaryTree, AFarLoopWhoseFanFillsMostOfItsBoundIsHeld) {
+  // A closed rectangle 2 x 0.05 in the plane z = 0 (one leaf, no ends, its fan about the
+  // centre the rectangle itself, F = 0.1), seen from (0, 0, 1.5): the box reaches
+  // sqrt(1 + 0.025^2) from its centre, so F / (2 d^2) = 0.022 is below the first-order
+  // bound (0.030) and is the one taken. The rectangle's solid angle is
+  // 0.05 x 2 / (1.5 sqrt(3.25)) = 0.037, 0.83 of F / d^2: a bound halved, or a distance
+  // 22% long, misses it, and nothing but the bound accounts for it (no ends, no dipole).
+  // With n edges along each long side (a node of children whose ends' fans the nested
+  // bound must count) as well as one.
+  for (const int n : {1, 5, 7}) {
+    Chain chain;
+    for (int i = 0; i <= n; ++i)
+      chain.vertices.push_back({-1.0 + 2.0 * i / n, -0.025, 0.0});
+    for (int i = 0; i <= n; ++i)
+      chain.vertices.push_back({1.0 - 2.0 * i / n, 0.025, 0.0});
+    const auto size = static_cast<VertexIndex>(chain.vertices.size());
+    for (VertexIndex i = 0; i < size; ++i)
+      chain.edges.push_back({i, (i + 1) % size, 1});
+    const BoundaryTree tree(chain.vertices, chain.edges);
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (const double h : {1.5, -1.5}) {
+        const Point3 p{0.0, 0.0, h};
+        Vector3 ray = ray_direction(k);
+        if (h < 0) ray = {-ray[0], -ray[1], -ray[2]};  // away from the rectangle
+        BoundaryTree::Selection selection;
+        const std::optional<Enclosure> e =
+            tree.enclosure(p, ray, kBoundaryTreeBudgets.front(), selection);
+        ASSERT_TRUE(e.has_value());
+        EXPECT_TRUE(selection.edges.empty());
+        EXPECT_EQ(selection.offset, 0.0);
+        const double truth = oracle_term(p, ray, chain);
+        EXPECT_GT(std::abs(truth), 0.8 * selection.slack / (2 * std::numbers::pi));
+        EXPECT_LE(e->lower, truth) << h << ", " << n;
+        EXPECT_GE(e->upper, truth) << h << ", " << n;
+      }
+    }
+  }
 }
 
 TEST(BoundaryTree, RaysThroughFarNodesAreSummedEdgeByEdge) {

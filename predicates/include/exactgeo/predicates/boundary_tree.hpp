@@ -48,6 +48,16 @@
 // too, and the node keeps the smaller. For small closed loops far from c the direct fan
 // is a set of long thin triangles, and the nested bound is about the loops' own areas.
 //
+// First order. Expanding g(y) = (y - p) / |y - p|^3 about c, g(y) - g(c) is the
+// integral of Dg along the segment c-y (in B, so at least d from p), and
+// |Dg| = |I - 3 u u^T| / |y - p|^3 <= 2 / d^3; so a triangle's solid angle
+// (the integral of n.g over it) is its vector area times g(c), within 2 rho area / d^3,
+// rho the box's reach from c. The triangles of either decomposition have the vector
+// area M = (1/2) sum m (a - c) x (b - c) in all (it depends only on their common
+// boundary: E less its ends). In half angles the node's fan is therefore
+// (1/2) M.g(c) within rho F / d^3: the dipole term is added to the sum and that bound
+// to the error where it is below F / (2 d^2), which is where d > 2 rho or so.
+//
 // Certified. F is computed once per node in outward-rounded intervals (its upper end);
 // d^2 from below and the ray-box test from the slabs with a priori error bounds (in the
 // source), so that the test says "misses" only when the ray does. c is the box's centre,
@@ -69,10 +79,12 @@
 
 namespace exactgeo {
 
-/// The budgets tried in turn: a node is replaced by its ends where its bound F / (2 d^2)
-/// is at most the budget, in radians of half angle (the levels lie 2 pi apart in these
-/// units: a point whose w is 0.1 from a level has 0.63 to spare). The first settles
-/// almost every point, the finer ones the points nearer a level.
+/// The budgets tried in turn: a node is replaced by its ends (and dipole term) where its
+/// bound is at most the budget, in radians of half angle (the levels lie 2 pi apart in
+/// these units: a point whose w is 0.1 from a level has 0.63 to spare). The first
+/// settles almost every point, the finer ones the points nearer a level. A pass whose
+/// bounds add up to pi or more is skipped (its enclosure would hold a level), and one
+/// that selects more than half the edges ends the tree's attempt.
 inline constexpr std::array<double, 3> kBoundaryTreeBudgets{0x1p-3, 0x1p-7, 0x1p-11};
 /// The most edges a leaf holds.
 inline constexpr std::uint32_t kBoundaryTreeLeafEdges = 4;
@@ -91,6 +103,7 @@ class BoundaryTree {
   /// fans add (the exact term, in half angles, is within slack of theirs).
   struct Selection {
     std::vector<BoundaryEdge> edges;
+    double offset = 0.0;  ///< far nodes' dipole terms, added to the edges' sum
     double slack = 0.0;
   };
   void select(const Point3& point, const Vector3& ray, double budget, Selection& out) const;
@@ -118,8 +131,16 @@ class BoundaryTree {
     std::uint32_t left = 0, right = 0;             // children; 0 for a leaf
     double fan = 0.0;                              // F, rounded up
     bool far_pays = false;                         // fewer ends than edges
+    // The dipole term ("First order" above): the centre, the fan's vector area M (its
+    // enclosure's midpoint, within moment_error of M, at most moment_size long), and
+    // the box's reach from the centre (rounded up).
+    Point3 centre{};
+    Vector3 moment{};
+    double moment_error = 0.0, moment_size = 0.0, reach = 0.0;
+    bool dipole = false;  // all of these finite
   };
   std::uint32_t build(std::uint32_t first, std::uint32_t count);
+  void set_dipole(Node& node, std::span<const BoundaryEdge> edges) const;
 
  public:
   /// While building: an edge's trail and its place in it (boundary_tree.cpp).
