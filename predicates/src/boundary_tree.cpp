@@ -67,12 +67,14 @@ double distance2_below(const Point3& p, const Point3& lower, const Point3& upper
 
 /// Does the ray p + t r (t >= 0) certainly miss the closed box? From the slabs: it meets
 /// the box exactly when max(0, entries) <= min(exits), the entry and exit parameters
-/// (lower - p) / r and (upper - p) / r (ordered by r's sign). Each computed t is within
-/// 2u |t| + 2^-1075 of its exact value (a difference and a quotient); an entry moved down
-/// and an exit moved up by 2^-50 |t| + kTiny (more than that, their own rounding
-/// included) bound the exact ones, and a miss found with them is a miss. A t that is not
-/// finite (an overflow) is left out, which can only hide a miss.
-bool ray_misses(const Point3& p, const Vector3& r, const Point3& lower,
+/// (lower - p) / r and (upper - p) / r (ordered by r's sign), computed as
+/// (lower - p) times `inverse`, 1 / r rounded. Each computed t is within 3u |t| + 2^-1075
+/// of its exact value (a difference, a reciprocal and a product; the reciprocal of a
+/// component below 2^1000 does not underflow); an entry moved down and an exit moved up by
+/// 2^-50 |t| + kTiny (more than that, their own rounding included) bound the exact ones,
+/// and a miss found with them is a miss. A t that is not finite (an overflow, or a
+/// reciprocal that overflows) is left out, which can only hide a miss.
+bool ray_misses(const Point3& p, const Vector3& r, const Vector3& inverse, const Point3& lower,
                 const Point3& upper) noexcept {
   double enter = 0.0, exit = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
@@ -80,7 +82,7 @@ bool ray_misses(const Point3& p, const Vector3& r, const Point3& lower,
       if (p[i] < lower[i] || p[i] > upper[i]) return true;  // parallel to the slab, outside
       continue;
     }
-    double t0 = (lower[i] - p[i]) / r[i], t1 = (upper[i] - p[i]) / r[i];
+    double t0 = (lower[i] - p[i]) * inverse[i], t1 = (upper[i] - p[i]) * inverse[i];
     if (r[i] < 0) std::swap(t0, t1);
     if (std::isfinite(t0)) enter = std::max(enter, t0 - (std::abs(t0) * 0x1p-50 + kTiny));
     if (std::isfinite(t1)) exit = std::min(exit, t1 + (std::abs(t1) * 0x1p-50 + kTiny));
@@ -310,9 +312,18 @@ void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget
   out.offset = 0.0;
   out.slack = 0.0;
   if (nodes_.empty()) return;
+  constexpr double kLargeComponent = 0x1p1000;
+  if (!(std::abs(ray[0]) < kLargeComponent && std::abs(ray[1]) < kLargeComponent &&
+        std::abs(ray[2]) < kLargeComponent)) {
+    out.edges = edges_;  // no far node: every edge (not reached for the rays in use)
+    return;
+  }
   std::array<std::uint32_t, 128> stack;  // depth <= log2(edges) + 1, far below
   std::size_t top = 0, far = 0, dipoles = 0;
   double offsets = 0.0;  // the sum of the dipole terms' magnitudes
+  // The reciprocals of the ray's components (below 2^1000 in magnitude, which
+  // ray_directions.hpp's and open_label.hpp's are by far: no reciprocal underflows).
+  const Vector3 inverse{1.0 / ray[0], 1.0 / ray[1], 1.0 / ray[2]};
   stack[top++] = 0;
   while (top > 0) {
     const Node& node = nodes_[stack[--top]];
@@ -323,7 +334,8 @@ void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget
       double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
       // The dipole term and its bound (boundary_tree.hpp, "First order"), where smaller.
       double dipole = 0.0;
-      if (node.dipole && d2 > 0.0) {
+      // (Below d = 2 rho the first-order bound is the larger: not worth its square roots.)
+      if (node.dipole && d2 > 4 * node.reach * node.reach) {
         const Vector3 v{node.centre[0] - point[0], node.centre[1] - point[1],
                         node.centre[2] - point[2]};
         const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
@@ -342,7 +354,7 @@ void BoundaryTree::select(const Point3& point, const Vector3& ray, double budget
           }
         }
       }
-      if (bound <= budget && ray_misses(point, ray, node.lower, node.upper)) {
+      if (bound <= budget && ray_misses(point, ray, inverse, node.lower, node.upper)) {
         out.edges.insert(out.edges.end(), ends_.begin() + node.ends_first,
                          ends_.begin() + node.ends_first + node.ends_count);
         out.slack += bound;
