@@ -88,6 +88,16 @@ struct Classifier::State {
   /// The boundary of an open surface (empty for a closed one): the kept faces', the
   /// surface being open with the faces of zero area counted (Classifier's constructor).
   std::vector<BoundaryEdge> boundary;
+  /// The same edges in a tree (boundary_tree.hpp), over the vertices the exact rays see:
+  /// the term from near edges and far nodes, which settles most points.
+  BoundaryTree boundary_tree;
+
+  /// `point` in the tree's coordinates (the unit frame's when it is on), when it maps
+  /// there exactly.
+  std::optional<Point3> in_tree_frame(const Point3& point) const noexcept {
+    if (frame.on()) return frame.map(point);
+    return point;
+  }
 
   PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
     return {faces, arithmetic == Arithmetic::plain_double ? double_spans : exact_spans};
@@ -149,17 +159,37 @@ std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& 
 /// beyond its corners' box (a rolled sheet does).
 Location Classifier::classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                    ClassifierScratch& scratch) {
+  // The tree's term first (certified, and settling all but points near a level); the term
+  // over every edge, with its exact stages, where it does not settle the label.
+  const bool certified = arithmetic != Arithmetic::plain_double;
   if (internal::strictly_outside(s.box, point)) {
-    const auto label = internal::open_label(s.rule, 0, point, internal::ray_away_from(s.box, point),
-                                            s.mesh.vertices, s.boundary, arithmetic);
+    const Vector3 ray = internal::ray_away_from(s.box, point);
+    if (const std::optional<Point3> mapped = s.in_tree_frame(point); mapped && certified) {
+      if (const auto label = internal::open_label_from_tree(s.rule, 0, *mapped, ray,
+                                                            s.boundary_tree, scratch.boundary)) {
+        return *label;
+      }
+    }
+    const auto label =
+        internal::open_label(s.rule, 0, point, ray, s.mesh.vertices, s.boundary, arithmetic);
     return label.value_or(Location::undecided);  // a ray that meets no edge: never nullopt
   }
   const RayOrigin origin(s, point);
+  // The tree holds the vertices the rays see; a point the frame cannot map sees others.
+  const bool tree_sees_origin =
+      certified && (!s.frame.on() || origin.vertices.data() == s.frame.vertices().data());
   return kernel::with_signs(arithmetic, [&](const auto& signs) {
     for (std::size_t k = 0; k < max_rays(arithmetic); ++k) {
       const SignedRayCount count = count_ray(s, signs, arithmetic, origin, k, scratch);
       if (count.kind == RayCount::origin_on_face) return Location::boundary;
       if (count.kind == RayCount::degenerate) continue;
+      if (tree_sees_origin) {
+        if (const auto label =
+                internal::open_label_from_tree(s.rule, count.total, origin.exact, ray_direction(k),
+                                               s.boundary_tree, scratch.boundary)) {
+          return *label;
+        }
+      }
       if (const auto label = internal::open_label(s.rule, count.total, point, ray_direction(k),
                                                   s.mesh.vertices, s.boundary, arithmetic)) {
         return *label;
@@ -247,6 +277,7 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
       s.frame.on() ? s.frame.vertices() : std::span<const Point3>(s.mesh.vertices);
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, ray_vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
+  if (!s.boundary.empty()) s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
   if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
   // A cell's points share one integer winding number; an open surface's vary.
   if (options.space_cells && s.boundary.empty()) {

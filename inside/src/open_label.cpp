@@ -48,6 +48,16 @@ std::optional<Location> open_label(FillRule rule, std::int64_t crossings, const 
   return Location::undecided;
 }
 
+std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossings,
+                                             const Point3& point, const Vector3& ray,
+                                             const BoundaryTree& tree,
+                                             BoundaryTree::Selection& scratch) {
+  const auto s = static_cast<double>(crossings);
+  const std::optional<BoundaryTerm> term = tree.term(point, ray, {-0.5 - s, 0.5 - s}, scratch);
+  if (!term) return std::nullopt;
+  return verdict(rule, term->versus);
+}
+
 Vector3 ray_away_from(const mesh::Box& box, const Point3& point) noexcept {
   Vector3 ray{0.0, 0.0, 0.0};
   for (int i = 0; i < 3; ++i) {

@@ -1,7 +1,9 @@
 #include "boundary_term_filter.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <numbers>
 
@@ -46,6 +48,15 @@ constexpr double kTiny = 0x1p-1000;
 /// nullopt when it is zero or not finite.
 std::optional<Vector3> normalized(const Vector3& v) {
   const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  // The common case without library calls: largest = 1.f 2^(b - 1023) with b its biased
+  // exponent; for 2^-1000 <= largest < 2^1000 the factor 2^(1023 - b) is a normal double
+  // (biased exponent 2046 - b), and a product by it is what ldexp gives (exact, or rounded
+  // once where it underflows).
+  const auto biased = static_cast<int>(std::bit_cast<std::uint64_t>(largest) >> 52);
+  if (biased > 23 && biased < 2023) {
+    const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(2046 - biased) << 52);
+    return Vector3{v[0] * scale, v[1] * scale, v[2] * scale};
+  }
   if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
   const int shift = -std::ilogb(largest);
   return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
@@ -57,14 +68,14 @@ double dot(const Vector3& a, const Vector3& b) {
 
 }  // namespace
 
-std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector3& apex,
-                                                   std::span<const Point3> vertices,
-                                                   std::span<const BoundaryEdge> edges,
-                                                   std::array<double, 2> levels) {
+std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
+                                        std::span<const Point3> vertices,
+                                        std::span<const BoundaryEdge> edges, double offset,
+                                        double slack) {
   const auto d = normalized(apex);
   if (!d) return std::nullopt;
   const double ld = std::sqrt(dot(*d, *d));
-  double sum = 0.0, magnitudes = 0.0, errors = 0.0;
+  double sum = offset, magnitudes = std::abs(offset), errors = 0.0;
   for (const BoundaryEdge& edge : edges) {
     const Point3& pa = vertices[edge.from];
     const Point3& pb = vertices[edge.to];
@@ -87,7 +98,13 @@ std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector
     const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
     const double num_error = 8 * kU * permanent + kTiny;
     const double den_error = 96 * kU * length + kTiny;
-    const double radius = std::hypot(num, den) * (1 - 4 * kU);
+    // r = |(N, D)| from below: the squares and their sum within u each, the root within
+    // u/2 (2.5u in all, below the 4u taken off), where the sum is at least 2^-1000 (an
+    // underflowing square then changes it by 2^-75 of itself at most); a smaller one (the
+    // point within 2^-500 of an edge's line) is left to the intervals.
+    const double radius2 = num * num + den * den;
+    if (!(radius2 >= 0x1p-1000)) return std::nullopt;
+    const double radius = std::sqrt(radius2) * (1 - 4 * kU);
     const double e = num_error + den_error;
     if (!(e <= radius / 4)) return std::nullopt;
     if (!(std::abs(num) > num_error) && !(den > den_error)) {
@@ -96,7 +113,7 @@ std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector
       const Sign side = kernel::ExactSigns{}.det3_by_vector(kernel::Offset::between(p, pa),
                                                             kernel::Offset::between(p, pb),
                                                             kernel::Offset::vector(apex));
-      if (side == Sign::zero) return BoundaryTerm{BoundaryTermKind::ray_on_edge, {}, {}};
+      if (side == Sign::zero) return FilteredSum{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
       num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
     }
     const double theta = std::atan2(num, den);
@@ -105,9 +122,18 @@ std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector
     magnitudes += std::abs(m * theta);
     errors += std::abs(m) * ((4.0 / 3.0) * e / radius + kAtan2Error);
   }
-  const double rounding = (static_cast<double>(edges.size()) + 2) * kU * magnitudes;
-  const double bound = (errors + rounding) * (1 + 8 * kU) + kTiny;
-  const double lower = sum - bound, upper = sum + bound;  // each within an ulp of exact
+  // (The offset is one more term of the sum.)
+  const double rounding = (static_cast<double>(edges.size()) + 3) * kU * magnitudes;
+  // slack, an upper bound already, joins the sum inside the factor that covers the
+  // rounding of these additions.
+  const double bound = (errors + rounding + slack) * (1 + 8 * kU) + kTiny;
+  return FilteredSum{BoundaryTermKind::enclosed, sum - bound,
+                     sum + bound};  // each within an ulp of exact
+}
+
+std::optional<BoundaryTerm> settled(const FilteredSum& sum, std::array<double, 2> levels) {
+  if (sum.kind != BoundaryTermKind::enclosed) return BoundaryTerm{sum.kind, {}, {}};
+  const double lower = sum.lower, upper = sum.upper;
   constexpr double two_pi = 2 * std::numbers::pi;
   BoundaryTerm term{BoundaryTermKind::enclosed, {}, {}};
   for (std::size_t i = 0; i < 2; ++i) {
@@ -119,10 +145,24 @@ std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector
                                                  : Versus::unsure;
     if (term.versus[i] == Versus::unsure) return std::nullopt;
   }
-  // For reports: the turns, widened by the division's rounding and pi's.
-  const double low = lower / two_pi, high = upper / two_pi;
-  term.turns = {low - 4 * kU * std::abs(low) - kTiny, high + 4 * kU * std::abs(high) + kTiny};
+  term.turns = turns_of(sum);
   return term;
+}
+
+Enclosure turns_of(const FilteredSum& sum) {
+  // The turns, widened by the division's rounding and pi's.
+  constexpr double two_pi = 2 * std::numbers::pi;
+  const double low = sum.lower / two_pi, high = sum.upper / two_pi;
+  return {low - 4 * kU * std::abs(low) - kTiny, high + 4 * kU * std::abs(high) + kTiny};
+}
+
+std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector3& apex,
+                                                   std::span<const Point3> vertices,
+                                                   std::span<const BoundaryEdge> edges,
+                                                   std::array<double, 2> levels) {
+  const std::optional<FilteredSum> sum = filtered_sum(p, apex, vertices, edges, 0.0, 0.0);
+  if (!sum) return std::nullopt;
+  return settled(*sum, levels);
 }
 
 }  // namespace exactgeo::internal

@@ -17,6 +17,28 @@ namespace exactgeo::internal {
 /// of pi (whose ulp is 2^-51), where every libm in use is within a few.
 inline constexpr double kAtan2Error = 0x1p-40;
 
+/// The filter's bounds on offset + sum m theta over the edges (theta = Omega / 2, the half
+/// angles, in radians), `slack` (an upper bound, in the same unit, on how far that is
+/// from what is to be enclosed) included: kind enclosed with lower <= exact <= upper, or
+/// kind ray_on_edge (both bounds 0); nullopt when the bound cannot be made. `apex` is
+/// -ray.
+struct FilteredSum {
+  BoundaryTermKind kind = BoundaryTermKind::enclosed;
+  double lower = 0.0;
+  double upper = 0.0;
+};
+std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
+                                        std::span<const Point3> vertices,
+                                        std::span<const BoundaryEdge> edges, double offset,
+                                        double slack);
+
+/// The sum against the levels (in turns): kind enclosed with both settled, or the sum's
+/// ray_on_edge; nullopt when a level lies within the bounds.
+std::optional<BoundaryTerm> settled(const FilteredSum& sum, std::array<double, 2> levels);
+
+/// The sum's bounds in turns (divided by 2 pi), rounded outward.
+Enclosure turns_of(const FilteredSum& sum);
+
 /// The term of boundary_term.hpp with both levels settled (kind enclosed), or kind
 /// ray_on_edge; nullopt when the bound cannot settle them. `apex` is -ray.
 std::optional<BoundaryTerm> filtered_boundary_term(const Point3& p, const Vector3& apex,

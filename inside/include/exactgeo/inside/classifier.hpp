@@ -32,6 +32,7 @@
 #include "exactgeo/mesh/mesh.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/boundary_term.hpp"
+#include "exactgeo/predicates/boundary_tree.hpp"
 #include "exactgeo/predicates/crossing_parity.hpp"
 #include "exactgeo/predicates/point.hpp"
 
@@ -63,6 +64,8 @@ struct ClassifierOptions {
 /// Scratch memory for one thread's queries (the candidate list), reused between calls.
 struct ClassifierScratch {
   std::vector<std::uint32_t> candidates;
+  /// An open surface's boundary edges near the point and far nodes' ends.
+  BoundaryTree::Selection boundary;
 };
 
 class Classifier {

@@ -13,6 +13,7 @@
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/boundary_term.hpp"
+#include "exactgeo/predicates/boundary_tree.hpp"
 
 namespace exactgeo::inside::internal {
 
@@ -25,6 +26,15 @@ namespace exactgeo::inside::internal {
 std::optional<Location> open_label(FillRule rule, std::int64_t crossings, const Point3& point,
                                    const Vector3& ray, std::span<const Point3> vertices,
                                    std::span<const BoundaryEdge> boundary, Arithmetic arithmetic);
+
+/// The same label from the boundary tree (exactgeo/predicates/boundary_tree.hpp): the
+/// near edges' and the far nodes' cone terms, the far nodes' fans bounded. `point` and
+/// `ray` are in the tree's coordinates. nullopt when that does not settle the label (or
+/// the ray meets an edge): open_label over every edge then decides, exactly.
+std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossings,
+                                             const Point3& point, const Vector3& ray,
+                                             const BoundaryTree& tree,
+                                             BoundaryTree::Selection& scratch);
 
 /// A direction whose ray from `point` (outside `box`) leaves the box behind: along the
 /// axis on which the point lies outside it, away from it. It crosses no face and meets
