@@ -63,6 +63,27 @@ void write_file(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
+/// Two unit cubes as OBJ, the second moved by 1/2 along every axis (six pairs of faces
+/// cross), after `before` (lines of vertices and faces of `vertices_before` vertices); with
+/// `turn_one_face`, the second cube's first face turned (the faces not oriented alike).
+std::string two_crossing_cubes_obj(const std::string& before = "", int vertices_before = 0,
+                                   bool turn_one_face = false) {
+  std::string obj = before;
+  for (const double offset : {0.0, 0.5})
+    for (int c = 0; c < 8; ++c)
+      obj += "v " + std::to_string((c & 1) + offset) + " " +
+             std::to_string(((c >> 1) & 1) + offset) + " " +
+             std::to_string(((c >> 2) & 1) + offset) + "\n";
+  for (const int first : {vertices_before + 1, vertices_before + 9})
+    for (std::size_t f = 0; f < testing::kHexahedronFaces.size(); ++f) {
+      std::array<VertexIndex, 4> q = testing::kHexahedronFaces[f];
+      if (turn_one_face && first == vertices_before + 9 && f == 0) std::reverse(q.begin(), q.end());
+      obj += "f " + std::to_string(q[0] + first) + " " + std::to_string(q[1] + first) + " " +
+             std::to_string(q[2] + first) + " " + std::to_string(q[3] + first) + "\n";
+    }
+  return obj;
+}
+
 std::string as_text(const std::vector<Point3>& points) {
   std::string text;
   char line[96];
@@ -324,17 +345,7 @@ TEST_F(InsideCommand, ProgressShowsTheBuildAndTheShareReadThenVanishes) {
 // standard error, in the file's numbering, whether the check runs beside the build or
 // after it; without the check it says nothing.
 TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
-  std::string obj;
-  for (const double offset : {0.0, 0.5})
-    for (int c = 0; c < 8; ++c)
-      obj += "v " + std::to_string((c & 1) + offset) + " " +
-             std::to_string(((c >> 1) & 1) + offset) + " " +
-             std::to_string(((c >> 2) & 1) + offset) + "\n";
-  for (const int first : {1, 9})
-    for (const auto& q : testing::kHexahedronFaces)
-      obj += "f " + std::to_string(q[0] + first) + " " + std::to_string(q[1] + first) + " " +
-             std::to_string(q[2] + first) + " " + std::to_string(q[3] + first) + "\n";
-  write_file(dir_ / "two_cubes.obj", obj);
+  write_file(dir_ / "two_cubes.obj", two_crossing_cubes_obj());
   write_file(dir_ / "points.txt", "0.25 0.25 0.25\n0.75 0.75 0.75\n1.25 1.25 1.25\n");
   InsideCommandOptions options;
   options.mesh.path = (dir_ / "two_cubes.obj").string();
@@ -378,24 +389,8 @@ TEST_F(InsideCommand, WarnsThatTheLabelsAreTheParitySolidsWhenFacesIntersect) {
 // solid's: not under nonzero (the default rule, which no intersection changes) unless
 // asked, and where no rule is given but the faces are not oriented alike, after the build.
 TEST_F(InsideCommand, LooksForIntersectingFacesByDefaultOnlyUnderParity) {
-  std::string obj;
-  for (const double offset : {0.0, 0.5})
-    for (int c = 0; c < 8; ++c)
-      obj += "v " + std::to_string((c & 1) + offset) + " " +
-             std::to_string(((c >> 1) & 1) + offset) + " " +
-             std::to_string(((c >> 2) & 1) + offset) + "\n";
-  std::string turned = obj;  // one face of the second cube turned: not oriented alike
-  for (const int first : {1, 9})
-    for (const auto& q : testing::kHexahedronFaces) {
-      const std::string a = std::to_string(q[0] + first), b = std::to_string(q[1] + first),
-                        c = std::to_string(q[2] + first), d = std::to_string(q[3] + first);
-      obj += "f " + a + " " + b + " " + c + " " + d + "\n";
-      turned += first == 9 && &q == &testing::kHexahedronFaces[0]
-                    ? "f " + d + " " + c + " " + b + " " + a + "\n"
-                    : "f " + a + " " + b + " " + c + " " + d + "\n";
-    }
-  write_file(dir_ / "two_cubes.obj", obj);
-  write_file(dir_ / "two_cubes_turned.obj", turned);
+  write_file(dir_ / "two_cubes.obj", two_crossing_cubes_obj());
+  write_file(dir_ / "two_cubes_turned.obj", two_crossing_cubes_obj("", 0, true));
   write_file(dir_ / "points.txt", "0.25 0.25 0.25\n");
   for (const unsigned threads : {2u, 1u}) {
     InsideCommandOptions options;
@@ -431,17 +426,8 @@ TEST_F(InsideCommand, LooksForIntersectingFacesByDefaultOnlyUnderParity) {
 // shifted by the pillow's two faces), on two threads and on one, where the check once ran
 // on the classifier's mesh without the pillow and named the wrong faces.
 TEST_F(InsideCommand, IntersectingFacesAreNamedAsTheFileNumbersThemAfterFacesOfZeroArea) {
-  std::string obj = "v 5 0 0\nv 6 0 0\nv 7 0 0\nf 1 2 3\nf 1 3 2\n";
-  for (const double offset : {0.0, 0.5})
-    for (int c = 0; c < 8; ++c)
-      obj += "v " + std::to_string((c & 1) + offset) + " " +
-             std::to_string(((c >> 1) & 1) + offset) + " " +
-             std::to_string(((c >> 2) & 1) + offset) + "\n";
-  for (const int first : {4, 12})
-    for (const auto& q : testing::kHexahedronFaces)
-      obj += "f " + std::to_string(q[0] + first) + " " + std::to_string(q[1] + first) + " " +
-             std::to_string(q[2] + first) + " " + std::to_string(q[3] + first) + "\n";
-  write_file(dir_ / "pillow_and_cubes.obj", obj);
+  write_file(dir_ / "pillow_and_cubes.obj",
+             two_crossing_cubes_obj("v 5 0 0\nv 6 0 0\nv 7 0 0\nf 1 2 3\nf 1 3 2\n", 3));
   write_file(dir_ / "points.txt", "0.25 0.25 0.25\n");
   InsideCommandOptions options;
   options.mesh.path = (dir_ / "pillow_and_cubes.obj").string();
