@@ -220,41 +220,13 @@ bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   return any;
 }
 
-/// The triangles around every vertex as a pass starts, in one array bucketed by vertex
-/// (a counting sort, where a vector per vertex was a good part of a collapse pass).
-class Stars {
- public:
-  explicit Stars(const Surface& s) : first_(s.vertices.size() + 1, 0) {
-    for (const remesh::Triangle& t : s.triangles) {
-      for (const VertexIndex v : t)
-        ++first_[v + 1];
-    }
-    for (std::size_t v = 1; v < first_.size(); ++v)
-      first_[v] += first_[v - 1];
-    triangles_.resize(first_.back());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for (const remesh::Triangle& t : s.triangles) {
-      for (const VertexIndex v : t)
-        triangles_[next[v]++] = t;
-    }
-  }
-
-  std::span<const remesh::Triangle> operator[](VertexIndex v) const noexcept {
-    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
-  }
-
- private:
-  std::vector<std::size_t> first_;
-  std::vector<remesh::Triangle> triangles_;
-};
-
 /// The corners of the triangles around v other than v, each once per triangle side, into
 /// `sides` (sorted): a neighbour seen once is across a boundary edge.
-void ring_sides(std::span<const remesh::Triangle> star, VertexIndex v,
+void ring_sides(const remesh::Surface& s, std::span<const std::size_t> star, VertexIndex v,
                 std::vector<VertexIndex>& sides) {
   sides.clear();
-  for (const remesh::Triangle& t : star) {
-    for (const VertexIndex c : t)
+  for (const std::size_t t : star) {
+    for (const VertexIndex c : s.triangles[t])
       if (c != v) sides.push_back(c);
   }
   std::sort(sides.begin(), sides.end());
@@ -282,11 +254,11 @@ struct RingScratch {
 /// boundary end moves only along its boundary edge and is no corner of the outline, no
 /// edge made is longer than it may be, and no triangle turns over in the material.
 bool collapse_suits(const Work& w, const std::vector<double>& size,
-                    std::span<const remesh::Triangle> star, VertexIndex kept, VertexIndex gone,
+                    std::span<const std::size_t> star, VertexIndex kept, VertexIndex gone,
                     bool boundary_edge, RingScratch& scratch) {
   std::vector<VertexIndex>& sides = scratch.sides;
   std::vector<VertexIndex>& ends = scratch.ends;
-  ring_sides(star, gone, sides);
+  ring_sides(w.surface, star, gone, sides);
   boundary_neighbours(sides, ends);
   if (ends.empty() == boundary_edge) return false;  // gone on the boundary, or not
   // A boundary end goes only where the outline is straight: its two boundary neighbours
@@ -302,7 +274,8 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     if (x != kept && material_length(w, kept, x) > kSplitAbove * edge_size(size, kept, x))
       return false;
   }
-  for (remesh::Triangle tri : star) {
+  for (const std::size_t t : star) {
+    remesh::Triangle tri = w.surface.triangles[t];
     if (std::find(tri.begin(), tri.end(), kept) != tri.end()) continue;  // removed
     const remesh::Triangle old = tri;
     const double before = material_area(w, tri[0], tri[1], tri[2]);
@@ -330,7 +303,7 @@ bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
                    [](const auto& x, const auto& y) { return x.first < y.first; });
   // The triangles around each vertex as the pass starts (collapse_edges defers the
   // collapses whose surroundings another one of the pass changes).
-  const Stars stars(w.surface);
+  const VertexTriangles stars(w.surface.triangles, w.surface.vertices.size());
   RingScratch scratch;
   std::vector<remesh::Collapse> collapses;
   for (const auto& [length, e] : wanted) {

@@ -33,34 +33,6 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 
 namespace {
 
-/// The triangles around every vertex, by index in triangle order: one array, bucketed by
-/// vertex (a counting sort; a vector per vertex was a good part of a pass's time).
-class Stars {
- public:
-  explicit Stars(const Surface& s) : first_(s.vertices.size() + 1, 0) {
-    for (const Triangle& t : s.triangles) {
-      for (const VertexIndex v : t)
-        ++first_[v + 1];
-    }
-    for (std::size_t v = 1; v < first_.size(); ++v)
-      first_[v] += first_[v - 1];
-    triangles_.resize(first_.back());
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
-    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-      for (const VertexIndex v : s.triangles[t])
-        triangles_[next[v]++] = t;
-    }
-  }
-
-  std::span<const std::size_t> operator[](VertexIndex v) const noexcept {
-    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
-  }
-
- private:
-  std::vector<std::size_t> first_;
-  std::vector<std::size_t> triangles_;
-};
-
 /// A collapse that passed its topology checks.
 struct CollapsePlan {
   VertexIndex a = 0;
@@ -75,7 +47,7 @@ std::string collapsing(VertexIndex a, VertexIndex b) {
 
 /// The neighbours of v (sorted, each once) and whether v is on the boundary (an edge of
 /// one triangle: a neighbour seen once among the triangles' sides).
-std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const Stars& stars,
+std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const VertexTriangles& stars,
                                                VertexIndex v) {
   std::vector<VertexIndex> sides;
   for (const std::size_t t : stars[v]) {
@@ -95,7 +67,7 @@ std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const Stars& st
   return {std::move(sides), boundary};
 }
 
-std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Stars& stars,
+std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const VertexTriangles& stars,
                                                   VertexIndex a, VertexIndex b, const Point3& to) {
   for (const VertexIndex v : {a, b}) {
     if (auto why = vertex_problem(s, v)) return topology(*why);
@@ -219,7 +191,9 @@ struct Reach {
 class CollapsePass {
  public:
   CollapsePass(const Surface& surface, std::span<const Collapse> collapses)
-      : surface_(surface), stars_(surface), outcomes_(collapses.size()) {
+      : surface_(surface),
+        stars_(surface.triangles, surface.vertices.size()),
+        outcomes_(collapses.size()) {
     plan(collapses);
   }
 
@@ -403,7 +377,7 @@ class CollapsePass {
   }
 
   const Surface& surface_;
-  Stars stars_;
+  VertexTriangles stars_;
   std::vector<Outcome> outcomes_;
   std::vector<CollapsePlan> plans_;
   std::vector<std::size_t> outcome_of_;  ///< per plan: its collapse's index
@@ -413,7 +387,8 @@ class CollapsePass {
 }  // namespace
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
-  const auto planned = plan_collapse(surface, Stars(surface), a, b, to);
+  const auto planned =
+      plan_collapse(surface, VertexTriangles(surface.triangles, surface.vertices.size()), a, b, to);
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const CollapsePlan& plan = std::get<CollapsePlan>(planned);
   const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};

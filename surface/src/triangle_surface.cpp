@@ -45,6 +45,22 @@ std::vector<std::size_t> EdgeTriangles::on(VertexIndex a, VertexIndex b) const {
   return found;
 }
 
+VertexTriangles::VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count)
+    : first_(vertex_count + 1, 0) {
+  for (const Triangle& t : triangles) {
+    for (const VertexIndex v : t)
+      ++first_[v + 1];
+  }
+  for (std::size_t v = 1; v < first_.size(); ++v)
+    first_[v] += first_[v - 1];
+  triangles_.resize(first_.back());
+  std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (const VertexIndex v : triangles[t])
+      triangles_[next[v]++] = t;
+  }
+}
+
 std::vector<Edge> edges_of(std::span<const Triangle> triangles, std::size_t vertex_count) {
   // Bucketed by the smaller end, then sorted within each bucket (a vertex's few sides).
   std::vector<std::size_t> first(vertex_count + 1, 0);

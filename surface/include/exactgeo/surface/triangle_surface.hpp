@@ -61,4 +61,22 @@ class EdgeTriangles {
   std::vector<Side> sides_;
 };
 
+/// The triangles around every vertex, by index in triangle order: one array bucketed by
+/// vertex (a counting sort, linear in the triangles; a vector per vertex costs an
+/// allocation each, a good part of a remesher's collapse pass).
+class VertexTriangles {
+ public:
+  /// Precondition: every index below vertex_count.
+  VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count);
+
+  /// The triangles with corner v, in triangle order. Precondition: v < vertex_count.
+  std::span<const std::size_t> operator[](VertexIndex v) const noexcept {
+    return std::span(triangles_).subspan(first_[v], first_[v + 1] - first_[v]);
+  }
+
+ private:
+  std::vector<std::size_t> first_;      ///< per vertex: where its triangles start
+  std::vector<std::size_t> triangles_;  ///< triangle indices, bucketed by vertex
+};
+
 }  // namespace exactgeo
