@@ -8,8 +8,8 @@
 // (scripts/inside-end-to-end.py). Built only by those scripts, against a libigl checkout
 // outside this repository (libigl is MPL-2.0 and not packaged for Debian).
 
-#include <Eigen/Core>
 #include <igl/read_triangle_mesh.h>
+#include <Eigen/Core>
 
 #include <chrono>
 #include <cstdint>
