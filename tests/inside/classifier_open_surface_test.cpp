@@ -48,6 +48,7 @@
 #include "inside/polycube.hpp"
 #include "inside/scaled_cube.hpp"
 #include "mesh/hexahedron.hpp"
+#include "oracle_triangles.hpp"
 #include "support/generators.hpp"
 #include "support/hexahedron.hpp"
 #include "support/polygon_oracle.hpp"
@@ -61,6 +62,7 @@ namespace {
 using mesh::Mesh;
 using testing::hex;
 using testing::Triangle;
+using testing::triangles_of;
 
 /// The label a rule gives a point with the oracle's w - 1/2 and w + 1/2; nullopt when w
 /// is too near a level for the oracle's double to tell (then any label but boundary goes).
@@ -116,15 +118,6 @@ Mesh subdivided_octahedron(std::mt19937_64& rng, int k) {
       x = std::ldexp(x + jitter(rng), k);
   }
   return mesh;
-}
-
-std::vector<Triangle> triangles_of(const Mesh& mesh) {
-  std::vector<Triangle> out;
-  for (const mesh::Face& f : mesh.faces) {
-    out.push_back(
-        {mesh.vertices[f.corners[0]], mesh.vertices[f.corners[1]], mesh.vertices[f.corners[2]]});
-  }
-  return out;
 }
 
 struct Tally {

@@ -25,6 +25,8 @@
 #include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/load.hpp"
+#include "oracle_triangles.hpp"
+#include "support/hexfloat.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -33,33 +35,8 @@ namespace {
 
 using mesh::Mesh;
 using testing::Triangle;
-
-std::string hex_point(const Point3& p) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p[0], p[1], p[2]);
-  return buf;
-}
-
-/// The mesh's triangles, quads split along c0-c2 (the oracle integrates triangles).
-Mesh triangulated(const Mesh& mesh) {
-  Mesh out;
-  out.vertices = mesh.vertices;
-  for (const mesh::Face& f : mesh.faces) {
-    const auto& c = f.corners;
-    out.faces.push_back(mesh::make_triangle(c[0], c[1], c[2]));
-    if (!f.is_triangle()) out.faces.push_back(mesh::make_triangle(c[0], c[2], c[3]));
-  }
-  return out;
-}
-
-std::vector<Triangle> triangles_of(const Mesh& mesh) {
-  std::vector<Triangle> out;
-  for (const mesh::Face& f : mesh.faces) {
-    out.push_back(
-        {mesh.vertices[f.corners[0]], mesh.vertices[f.corners[1]], mesh.vertices[f.corners[2]]});
-  }
-  return out;
-}
+using testing::triangles_of;
+using testing::triangulated;
 
 Mesh scaled(Mesh mesh, int k) {
   for (Point3& v : mesh.vertices) {
@@ -189,11 +166,11 @@ void expect_oracle_labels(const Mesh& mesh, int copies, std::mt19937_64& rng, in
     for (const auto* classifier : {&nonzero, &positive}) {
       const auto want = expected(classifier->rule(), above_half);
       const Location got = classifier->classify(p);
-      ASSERT_NE(got, Location::undecided) << hex_point(p);
+      ASSERT_NE(got, Location::undecided) << testing::hex(p);
       if (!want) continue;
       ASSERT_EQ(to_string(got), to_string(*want))
-          << "point " << hex_point(p) << ", rule " << to_string(classifier->rule()) << ", w - 1/2 "
-          << above_half;
+          << "point " << testing::hex(p) << ", rule " << to_string(classifier->rule())
+          << ", w - 1/2 " << above_half;
       ++tally.compared;
       tally.inside += got == Location::inside;
     }

@@ -11,14 +11,9 @@
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/mesh.hpp"
 #include "support/hexahedron.hpp"
+#include "support/hexfloat.hpp"
 
 namespace exactgeo::testing {
-
-inline std::string hex(const Point3& p) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p[0], p[1], p[2]);
-  return buf;
-}
 
 /// The cube [0, 2^k]^3, as six quads or as twelve triangles.
 inline mesh::Mesh scaled_cube(int k, bool triangles) {

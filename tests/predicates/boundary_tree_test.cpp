@@ -22,17 +22,12 @@
 #include <vector>
 
 #include "exactgeo/predicates/ray_directions.hpp"
+#include "support/hexfloat.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
 namespace exactgeo::boundary_tree_test {
 namespace {
-
-std::string hex_point(const Point3& p) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p[0], p[1], p[2]);
-  return buf;
-}
 
 struct Chain {
   std::vector<Point3> vertices;
@@ -105,8 +100,8 @@ void expect_held(const BoundaryTree& tree, const Chain& chain, const Point3& p, 
   ++tally.enclosed;
   tally.with_far_nodes += selection.slack > 0;
   const double truth = oracle_term(p, ray, chain);
-  ASSERT_LE(e->lower, truth) << "point " << hex_point(p) << ", slack " << selection.slack;
-  ASSERT_GE(e->upper, truth) << "point " << hex_point(p) << ", slack " << selection.slack;
+  ASSERT_LE(e->lower, truth) << "point " << testing::hex(p) << ", slack " << selection.slack;
+  ASSERT_GE(e->upper, truth) << "point " << testing::hex(p) << ", slack " << selection.slack;
 }
 
 struct Case {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "support/generators.hpp"
+#include "support/hexfloat.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
 #include "support/segment_triangle_oracle.hpp"
@@ -19,14 +20,9 @@ namespace exactgeo {
 namespace {
 
 using testing::collinear_oracle;
+using testing::hex;
 using testing::orient3d_oracle;
 using testing::Rng;
-
-std::string hex(const Point3& p) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p[0], p[1], p[2]);
-  return buf;
-}
 
 /// Checks one case and prints it in hexfloat on failure, so it can be replayed exactly.
 void expect_exact(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
