@@ -8,6 +8,26 @@
 
 namespace exactgeo::testbed {
 
+namespace {
+
+/// The cycle through the polygon's points in order; with `collinear`, about a third of the
+/// edges get their midpoint as an extra corner (exact: the coordinates are even integers).
+void walk_corners(Polygon2& polygon, std::mt19937_64& rng, bool collinear) {
+  std::bernoulli_distribution split(1.0 / 3.0);
+  const std::size_t n = polygon.points.size();
+  for (std::uint32_t k = 0; k < n; ++k) {
+    polygon.cycle.push_back(k);
+    if (collinear && split(rng)) {
+      const Point2& a = polygon.points[k];
+      const Point2& b = polygon.points[(k + 1) % n];
+      polygon.points.push_back({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2});
+      polygon.cycle.push_back(static_cast<std::uint32_t>(polygon.points.size() - 1));
+    }
+  }
+}
+
+}  // namespace
+
 Polygon2 random_star_polygon(std::mt19937_64& rng, int corners, bool collinear) {
   std::uniform_int_distribution<int> component(-8, 8);
   std::uniform_int_distribution<int> length(1, 1 << 16);
@@ -33,21 +53,11 @@ Polygon2 random_star_polygon(std::mt19937_64& rng, int corners, bool collinear) 
     if (gaps_below_pi) break;
   }
   Polygon2 polygon;
-  std::bernoulli_distribution split(1.0 / 3.0);
   for (const auto& ray : rays) {
     const double t = 2.0 * length(rng);
     polygon.points.push_back({t * ray[0], t * ray[1]});
   }
-  const std::size_t n = polygon.points.size();
-  for (std::uint32_t k = 0; k < n; ++k) {
-    polygon.cycle.push_back(k);
-    if (collinear && split(rng)) {
-      const Point2& a = polygon.points[k];
-      const Point2& b = polygon.points[(k + 1) % n];
-      polygon.points.push_back({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2});
-      polygon.cycle.push_back(static_cast<std::uint32_t>(polygon.points.size() - 1));
-    }
-  }
+  walk_corners(polygon, rng, collinear);
   return polygon;
 }
 
@@ -75,17 +85,7 @@ Polygon2 star_polygon(std::mt19937_64& rng, int corners, bool collinear) {
     polygon.points.push_back(
         {2.0 * std::round(r * std::cos(angle) / 2), 2.0 * std::round(r * std::sin(angle) / 2)});
   }
-  std::bernoulli_distribution split(1.0 / 3.0);
-  const std::size_t n = polygon.points.size();
-  for (std::uint32_t k = 0; k < n; ++k) {
-    polygon.cycle.push_back(k);
-    if (collinear && split(rng)) {
-      const Point2& a = polygon.points[k];
-      const Point2& b = polygon.points[(k + 1) % n];
-      polygon.points.push_back({(a[0] + b[0]) / 2, (a[1] + b[1]) / 2});
-      polygon.cycle.push_back(static_cast<std::uint32_t>(polygon.points.size() - 1));
-    }
-  }
+  walk_corners(polygon, rng, collinear);
   return polygon;
 }
 
