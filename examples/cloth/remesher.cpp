@@ -54,8 +54,8 @@ bool sheet_triangle(const Surface& s, const remesh::Triangle& t) {
 
 /// Every edge of the sheets' triangles with its triangles (edges of more than two, which
 /// the sheets never have, are left out), ordered by their ends. The triangles' sides are
-/// bucketed by their smaller vertex (a counting sort: linear, where a sort of all sides
-/// was a good part of a remesh), then paired within each bucket.
+/// bucketed by their smaller vertex (a counting sort: linear, not a sort of all sides),
+/// then paired within each bucket.
 std::vector<SheetEdge> sheet_edges(const Surface& s) {
   struct Side {
     VertexIndex other;  // the larger end

@@ -18,9 +18,8 @@ bool is_finite(const Point3& p) noexcept {
 
 /// One use of an undirected edge by a face, `forward` when the face walks it from the
 /// smaller index to the larger one, packed into one integer that sorts by the edge and
-/// then backward before forward: (smaller << 33) | (larger << 1) | forward. (Sorting
-/// std::array edges compared them through memcmp, a call per comparison: a tenth of a
-/// large mesh's classifier build.)
+/// then backward before forward: (smaller << 33) | (larger << 1) | forward. (std::array
+/// edges compare equal through memcmp, a library call per comparison of the sort.)
 struct EdgeUse {
   std::uint64_t key;
   std::size_t face;

@@ -18,8 +18,8 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       operation_of.push_back(i);
     }
   }
-  // The regions whose boxes meet each region's, in one array bucketed by region (a vector
-  // per region was most of a pass's scheduling).
+  // The regions whose boxes meet each region's, in one array bucketed by region (no
+  // vector per region).
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   const RegionPoints boxed(points, regions);
   boxes::overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {

@@ -62,8 +62,8 @@ class EdgeTriangles {
 };
 
 /// The triangles around every vertex, by index in triangle order: one array bucketed by
-/// vertex (a counting sort, linear in the triangles; a vector per vertex costs an
-/// allocation each, a good part of a remesher's collapse pass).
+/// vertex (a counting sort, linear in the triangles; a vector per vertex would cost an
+/// allocation each).
 class VertexTriangles {
  public:
   /// Precondition: every index below vertex_count.
