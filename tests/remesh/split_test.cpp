@@ -22,6 +22,7 @@
 
 #include "exactgeo/remesh/operations.hpp"
 #include "remesh/flat_sheet.hpp"
+#include "remesh/sheets_oracle.hpp"
 #include "remesh/two_sheets.hpp"
 #include "support/rational_oracle.hpp"
 #include "support/seed.hpp"
@@ -230,10 +231,11 @@ TEST_P(Operations, TheTwoSidesFoldIntoEachOtherOnlyWithBothCornersOnOneSideOfPla
   // Random splits of an inner edge ab, a = (0,0,0) and b = (4,0,0), with opposite corners
   // c and d and the new point m of small integers (the two triangles apart but for their
   // edge): every applied split leaves the two
-  // triangles' four new ones intersection free by the exact finder (a flat overlap
-  // counting), which shares no code with the split's checks. With c and d strictly on
-  // opposite sides of the plane of a, b and m, the split takes the sides as apart without
-  // testing their new triangles against each other (split.cpp, sides_apart); with both on
+  // triangles' four new ones intersection free by an oracle written from the definition
+  // (sheets_oracle.hpp: GMP, a touch or a flat overlap counting), which shares no code
+  // with the split's checks or the library's finder (which must agree with it). With c and d
+  // strictly on opposite sides of the plane of a, b and m, the split takes the sides as apart
+  // without testing their new triangles against each other (split.cpp, sides_apart); with both on
   // one side, a fold of the sides into each other happens, and is refused.
   const double s = scale();
   auto rng = testing::seeded_engine("remesh.split.sides");
@@ -251,13 +253,24 @@ TEST_P(Operations, TheTwoSidesFoldIntoEachOtherOnlyWithBothCornersOnOneSideOfPla
     const auto& p = surface.vertices;
     if (testing::collinear_oracle(p[0], p[1], p[2]) || testing::collinear_oracle(p[0], p[1], p[3]))
       continue;
-    if (!testing::sheets_meeting(surface).intersecting.empty()) continue;  // folded already
+    if (testing::sheets_meet_oracle(surface)) continue;  // folded already
     const Sign c_side = testing::orient3d_oracle(p[0], p[1], m, p[2]);
     const Sign d_side = testing::orient3d_oracle(p[0], p[1], m, p[3]);
     Surface split = surface;
     const Outcome outcome = split_edge(split, 0, 1, m);
     const Surface forced = forced_split(surface, m);
-    const bool intersecting = !testing::sheets_meeting(forced).intersecting.empty();
+    const bool zero_area =
+        std::any_of(forced.triangles.begin(), forced.triangles.end(), [&](const Triangle& t) {
+          const auto& q = forced.vertices;
+          return testing::collinear_oracle(q[t[0]], q[t[1]], q[t[2]]);
+        });
+    if (zero_area) {  // m on a line through a corner: a new triangle of zero area
+      EXPECT_FALSE(outcome.applied()) << "trial " << trial << ": applied with zero area";
+      continue;
+    }
+    const bool intersecting = testing::sheets_meet_oracle(forced);
+    EXPECT_EQ(intersecting, !testing::sheets_meeting(forced).intersecting.empty())
+        << "trial " << trial << ": the finder and the oracle disagree";
     if (outcome.applied()) {
       EXPECT_FALSE(intersecting) << "trial " << trial << ": applied, and intersecting";
       apart_applied += c_side != Sign::zero && d_side == -c_side ? 1 : 0;
