@@ -5,12 +5,12 @@
 // O(log n)) whose nodes sit in one array, 64 bytes each, recycled as items leave. It is
 // what std::set does for the sweeps, with the memory a sweep over a million edges can
 // afford to walk: a descent reads one cache line per level, and the nodes stay together.
-// Each node also knows its neighbours below and above (a threaded tree, in an array of
-// its own), so that stepping to a neighbour, which the sweeps do at every corner, reads
-// one entry instead of climbing the tree. Items are compared only by `Below` (strict: a
+// Each node also knows its neighbours below and above (a threaded tree), so that stepping
+// to a neighbour, which the sweeps do at every corner, reads the node it reaches instead
+// of climbing the tree; the links share the node's cache line (an item of at most 44
+// bytes keeps a node at 64). Items are compared only by `Below` (strict: a
 // below b), only at insertion, and only with items already there.
 
-#include <array>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -33,10 +33,10 @@ class SweepStatus {
   Handle last() const { return top_; }
 
   /// The item just below h, or kNone.
-  Handle previous(Handle h) const { return neighbours_[h][0]; }
+  Handle previous(Handle h) const { return nodes_[h].neighbour[0]; }
 
   /// The item just above h, or kNone.
-  Handle next(Handle h) const { return neighbours_[h][1]; }
+  Handle next(Handle h) const { return nodes_[h].neighbour[1]; }
 
   /// Inserts the item where `Below` puts it, searching from the root.
   Handle insert(const Item& item) {
@@ -44,7 +44,6 @@ class SweepStatus {
     if (root_ == kNone) {
       root_ = h;
       top_ = h;
-      neighbours_[h] = {kNone, kNone};
       return h;
     }
     Handle at = root_;
@@ -86,9 +85,10 @@ class SweepStatus {
 
   /// Removes h; returns the item that was just above it (kNone: none).
   Handle erase(Handle h) {
-    const auto [under, above] = neighbours_[h];
-    if (under != kNone) neighbours_[under][1] = above;
-    if (above != kNone) neighbours_[above][0] = under;
+    const Handle under = nodes_[h].neighbour[0];
+    const Handle above = nodes_[h].neighbour[1];
+    if (under != kNone) nodes_[under].neighbour[1] = above;
+    if (above != kNone) nodes_[above].neighbour[0] = under;
     if (top_ == h) top_ = under;
     // Rotate h down until it is a leaf, the child of higher priority up each time.
     for (;;) {
@@ -116,6 +116,7 @@ class SweepStatus {
     Handle child[2];
     Handle parent;
     std::uint32_t priority;
+    Handle neighbour[2];  ///< the items just below and just above
   };
 
   Handle allocate(const Item& item) {
@@ -123,10 +124,10 @@ class SweepStatus {
     seed_ ^= seed_ << 13;
     seed_ ^= seed_ >> 7;
     seed_ ^= seed_ << 17;
-    const Node node{item, {kNone, kNone}, kNone, static_cast<std::uint32_t>(seed_ >> 32)};
+    const Node node{
+        item, {kNone, kNone}, kNone, static_cast<std::uint32_t>(seed_ >> 32), {kNone, kNone}};
     if (free_.empty()) {
       nodes_.push_back(node);
-      neighbours_.push_back({kNone, kNone});
       return static_cast<Handle>(nodes_.size() - 1);
     }
     const Handle h = free_.back();
@@ -141,11 +142,11 @@ class SweepStatus {
   void attach(Handle h, Handle parent, int side) {
     nodes_[parent].child[side] = h;
     nodes_[h].parent = parent;
-    const Handle beyond = neighbours_[parent][side];  // the parent's old neighbour that side
-    neighbours_[h][side] = beyond;
-    neighbours_[h][1 - side] = parent;
-    neighbours_[parent][side] = h;
-    if (beyond != kNone) neighbours_[beyond][1 - side] = h;
+    const Handle beyond = nodes_[parent].neighbour[side];  // the parent's old one that side
+    nodes_[h].neighbour[side] = beyond;
+    nodes_[h].neighbour[1 - side] = parent;
+    nodes_[parent].neighbour[side] = h;
+    if (beyond != kNone) nodes_[beyond].neighbour[1 - side] = h;
     if (top_ == parent && side == 1) top_ = h;
     while (nodes_[h].parent != kNone && nodes_[nodes_[h].parent].priority < nodes_[h].priority)
       rotate_up(h);
@@ -171,7 +172,6 @@ class SweepStatus {
 
   Below below_;
   std::vector<Node> nodes_;
-  std::vector<std::array<Handle, 2>> neighbours_;  // below, above
   std::vector<Handle> free_;
   Handle root_ = kNone;
   Handle top_ = kNone;

@@ -12,16 +12,17 @@ namespace exactgeo::mesh::internal {
 namespace {
 
 /// An edge of the walk in the sweep, as the status holds it: the (u, v) coordinates of
-/// its endpoints in sweep order, the winding number above it minus the one below it, the
-/// winding number just above it once inserted, and its index in walk.edges.
+/// its endpoints in sweep order, its index in walk.edges, the winding number above it
+/// minus the one below it (-1, 0 or 1), and the winding number just above it once
+/// inserted (-2 to 2 before the sweep refuses anything but -1 to 1).
 struct Segment {
   double left_u;
   double left_v;
   double right_u;
   double right_v;
-  std::int32_t weight;
-  std::int32_t above;
   std::uint32_t edge;
+  std::int8_t weight;
+  std::int8_t above;
 
   Point3 left() const { return {left_u, left_v, 0.0}; }
   Point3 right() const { return {right_u, right_v, 0.0}; }
@@ -60,10 +61,21 @@ class BottomToTop {
   bool* degenerate_;
 };
 
+// Small enough that a status node, with its links, is one cache line of 64 bytes.
+static_assert(sizeof(Segment) <= 40);
+
 }  // namespace
 
 bool segments_meet_improperly(const Point3& a0, const Point3& a1, const Point3& b0,
                               const Point3& b1, const Projection& plane) {
+  // A shared endpoint (neighbours in a walk, mostly) makes one of the four orientations
+  // below an exact zero, a filter's slowest answer; its cases are short. Such segments
+  // share more than that point only when they lie on one line and leave it the same way:
+  // from a common left end, or into a common right end; a common point that is the left
+  // end of one and the right end of the other lies between them on any line.
+  if (plane.same(a0, b0)) return plane.orientation(a0, a1, b1) == Sign::zero;
+  if (plane.same(a1, b1)) return plane.orientation(a0, a1, b0) == Sign::zero;
+  if (plane.same(a1, b0) || plane.same(a0, b1)) return false;
   const Sign o1 = plane.orientation(a0, a1, b0);
   const Sign o2 = plane.orientation(a0, a1, b1);
   if (o1 != Sign::zero && o1 == o2) return false;  // t on one side of s's line
@@ -112,6 +124,10 @@ std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::ui
     const std::uint32_t a = rank[e.low];
     const std::uint32_t b = rank[e.high];
     if (flat.same(point[a], point[b])) return std::nullopt;  // zero length
+    // Off every other edge (else the sweep refuses), the winding numbers just above and
+    // just below an edge differ by its coefficient, and two of 0 and one sign's 1 differ
+    // by at most 1.
+    if (e.coefficient < -1 || e.coefficient > 1) return std::nullopt;
     ++first[std::min(a, b) + 1];
     ++last[std::max(a, b) + 1];
   }
@@ -132,7 +148,8 @@ std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::ui
       const Point3& l = point[std::min(a, b)];
       const Point3& r = point[std::max(a, b)];
       const std::uint32_t s = fill_first[std::min(a, b)]++;
-      segments[s] = {l[0], l[1], r[0], r[1], a < b ? e.coefficient : -e.coefficient, 0, k};
+      const auto weight = static_cast<std::int8_t>(a < b ? e.coefficient : -e.coefficient);
+      segments[s] = {l[0], l[1], r[0], r[1], k, weight, 0};
       right_rank[s] = std::max(a, b);
       ending[fill_last[std::max(a, b)]++] = s;
     }
@@ -232,7 +249,7 @@ std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::ui
         return std::nullopt;
       }
       Segment& inserted_segment = status[it];
-      inserted_segment.above = winding_below + inserted_segment.weight;
+      inserted_segment.above = static_cast<std::int8_t>(winding_below + inserted_segment.weight);
       positive = positive || inserted_segment.above == 1;
       negative = negative || inserted_segment.above == -1;
       if (inserted_segment.above > 1 || inserted_segment.above < -1 || (positive && negative)) {
