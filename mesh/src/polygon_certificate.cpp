@@ -12,7 +12,7 @@ namespace exactgeo::mesh::internal {
 bool triangles_fit(const PolygonWalk& walk, std::span<const Face> triangles,
                    std::span<const Point3> vertices, const Projection& plane, Sign turn) {
   if (triangles.size() + 2 != walk.corners) return false;
-  std::vector<ChainUse> uses;
+  ScratchVector<ChainUse> uses;
   uses.reserve(3 * triangles.size());
   for (const Face& t : triangles) {
     if (!t.is_triangle()) return false;
@@ -27,9 +27,9 @@ bool triangles_fit(const PolygonWalk& walk, std::span<const Face> triangles,
     for (std::size_t k = 0; k < 3; ++k)
       uses.push_back({local[k], local[(k + 1) % 3]});
   }
-  const std::vector<ChainEdge> boundary = chain_of(uses, walk.vertices.size());
+  const ScratchVector<ChainEdge> boundary = chain_of(uses, walk.vertices.size());
   // The two chains' pairs of non-zero coefficient, side by side.
-  const auto next_nonzero = [](const std::vector<ChainEdge>& chain, std::size_t k) {
+  const auto next_nonzero = [](const ScratchVector<ChainEdge>& chain, std::size_t k) {
     while (k < chain.size() && chain[k].coefficient == 0)
       ++k;
     return k;
@@ -53,11 +53,11 @@ struct Use {
 };
 
 /// Each pair once, by (low, high), with its net coefficient (0 kept).
-std::vector<Use> merged(std::vector<Use> uses) {
+ScratchVector<Use> merged(ScratchVector<Use> uses) {
   std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) {
     return a.low < b.low || (a.low == b.low && a.high < b.high);
   });
-  std::vector<Use> chain;
+  ScratchVector<Use> chain;
   for (const Use& use : uses) {
     if (!chain.empty() && chain.back().low == use.low && chain.back().high == use.high) {
       chain.back().way += use.way;
@@ -108,13 +108,13 @@ bool few_triangles_tile(std::span<const VertexIndex> corners, std::span<const Fa
                         std::span<const Point3> vertices, const Projection& plane, Sign turn) {
   const std::size_t n = corners.size();
   if (triangles.size() + 2 != n) return false;
-  std::vector<Use> walk_uses;
+  ScratchVector<Use> walk_uses;
   walk_uses.reserve(n);
   for (std::size_t k = 0; k < n; ++k)
     walk_uses.push_back(use_of(corners[k], corners[k + 1 == n ? 0 : k + 1]));
-  std::vector<Use> triangle_uses;
+  ScratchVector<Use> triangle_uses;
   triangle_uses.reserve(3 * triangles.size());
-  std::vector<std::array<const Point3*, 3>> points;
+  ScratchVector<std::array<const Point3*, 3>> points;
   points.reserve(triangles.size());
   for (const Face& t : triangles) {
     if (!t.is_triangle()) return false;
@@ -125,9 +125,9 @@ bool few_triangles_tile(std::span<const VertexIndex> corners, std::span<const Fa
     for (std::size_t k = 0; k < 3; ++k)
       triangle_uses.push_back(use_of(t.corners[k], t.corners[(k + 1) % 3]));
   }
-  const std::vector<Use> walk = merged(std::move(walk_uses));
-  std::vector<Use> boundary = merged(std::move(triangle_uses));
-  std::vector<Use> walk_boundary;
+  const ScratchVector<Use> walk = merged(std::move(walk_uses));
+  ScratchVector<Use> boundary = merged(std::move(triangle_uses));
+  ScratchVector<Use> walk_boundary;
   std::copy_if(walk.begin(), walk.end(), std::back_inserter(walk_boundary),
                [](const Use& use) { return use.way != 0; });
   std::erase_if(boundary, [](const Use& use) { return use.way == 0; });
@@ -169,7 +169,7 @@ bool few_triangles_tile(std::span<const VertexIndex> corners, std::span<const Fa
 
 bool triangles_tile_polygon(std::span<const VertexIndex> corners, std::span<const Face> triangles,
                             std::span<const Point3> vertices, int axis) {
-  const std::vector<VertexIndex> walked = without_repeats(corners);
+  const ScratchVector<VertexIndex> walked = without_repeats(corners);
   if (walked.size() < 3) return false;
   const PolygonWalk walk = walk_of(walked);
   const Projection plane(axis);

@@ -25,11 +25,11 @@ using Triangle = std::array<std::uint32_t, 3>;  // ranks
 /// (Projection::flat, side by side in sweep order) and its vertex index. A corner that
 /// only bridges reach is left out.
 struct Loops {
-  std::vector<std::uint32_t> next;
-  std::vector<std::uint32_t> previous;
-  std::vector<Point3> point;
-  std::vector<VertexIndex> vertex;
-  std::vector<std::uint32_t> rank_of;  ///< local number -> rank (kNone: not joined)
+  ScratchVector<std::uint32_t> next;
+  ScratchVector<std::uint32_t> previous;
+  ScratchVector<Point3> point;
+  ScratchVector<VertexIndex> vertex;
+  ScratchVector<std::uint32_t> rank_of;  ///< local number -> rank (kNone: not joined)
 
   std::uint32_t size() const { return static_cast<std::uint32_t>(next.size()); }
 };
@@ -39,8 +39,8 @@ struct Loops {
 bool loops_of(const PolygonWalk& walk, std::span<const std::uint32_t> order,
               std::span<const Point3> vertices, const Projection& plane, Sign turn, Loops& loops) {
   const std::size_t m = walk.vertices.size();
-  std::vector<std::uint32_t> next(m, kNone);
-  std::vector<std::uint32_t> previous(m, kNone);
+  ScratchVector<std::uint32_t> next(m, kNone);
+  ScratchVector<std::uint32_t> previous(m, kNone);
   for (const ChainEdge& e : walk.edges) {
     if (e.coefficient == 0) continue;
     if (e.coefficient != 1 && e.coefficient != -1) return false;
@@ -52,8 +52,8 @@ bool loops_of(const PolygonWalk& walk, std::span<const std::uint32_t> order,
     previous[to] = from;
   }
   const Projection flat(2);
-  std::vector<std::uint32_t> rank(m, kNone);
-  std::vector<std::uint32_t> joined;  // local numbers by rank
+  ScratchVector<std::uint32_t> rank(m, kNone);
+  ScratchVector<std::uint32_t> joined;  // local numbers by rank
   for (const std::uint32_t v : order) {
     if (next[v] == kNone && previous[v] == kNone) continue;
     if (next[v] == kNone || previous[v] == kNone) return false;
@@ -174,14 +174,14 @@ class SearchedStatus {
   bool broken_ = false;
   std::pmr::unsynchronized_pool_resource pool_;  // the nodes side by side, reused
   std::pmr::set<StatusEdge, EdgesBottomToTop> set_;
-  std::vector<std::pmr::set<StatusEdge, EdgesBottomToTop>::iterator> place_;
+  ScratchVector<std::pmr::set<StatusEdge, EdgesBottomToTop>::iterator> place_;
 };
 
 /// The status of the monotone partition as the certificate's sweep recorded it
 /// (region_turn's `below`): the edge below each corner, looked up.
 class RecordedStatus {
  public:
-  explicit RecordedStatus(std::vector<std::uint32_t> below) : below_(std::move(below)) {}
+  explicit RecordedStatus(ScratchVector<std::uint32_t> below) : below_(std::move(below)) {}
 
   void open(std::uint32_t) {}
   void close(std::uint32_t) {}
@@ -191,16 +191,16 @@ class RecordedStatus {
   bool empty() const { return true; }
 
  private:
-  std::vector<std::uint32_t> below_;  ///< by rank: the edge just below, or kNone
+  ScratchVector<std::uint32_t> below_;  ///< by rank: the edge just below, or kNone
 };
 
 /// The edge just below each corner (by rank) from the certificate's record, or nullopt
 /// when the record has a gap (bridges stacked below a corner). An edge that is not one
 /// with the region above it is left out (kNone), and the partition, needing it, fails.
-std::optional<std::vector<std::uint32_t>> recorded_below(const PolygonWalk& walk,
-                                                         const Loops& loops,
-                                                         std::span<const std::uint32_t> below) {
-  std::vector<std::uint32_t> edges(loops.size(), kNone);
+std::optional<ScratchVector<std::uint32_t>> recorded_below(const PolygonWalk& walk,
+                                                           const Loops& loops,
+                                                           std::span<const std::uint32_t> below) {
+  ScratchVector<std::uint32_t> edges(loops.size(), kNone);
   for (std::size_t local = 0; local < below.size(); ++local) {
     const std::uint32_t v = loops.rank_of[local];
     if (v == kNone || below[local] == kNoEdge) continue;
@@ -222,10 +222,10 @@ std::optional<std::vector<std::uint32_t>> recorded_below(const PolygonWalk& walk
 /// `diagonals`; false when the precondition turns out broken.
 template <class Status>
 bool monotone_diagonals(const Geometry& geometry, const Loops& loops, Status& status,
-                        std::vector<std::pair<std::uint32_t, std::uint32_t>>& diagonals) {
+                        ScratchVector<std::pair<std::uint32_t, std::uint32_t>>& diagonals) {
   const std::uint32_t n = loops.size();
-  std::vector<std::uint32_t> helper(n, kNone);
-  std::vector<char> is_merge(n, 0);
+  ScratchVector<std::uint32_t> helper(n, kNone);
+  ScratchVector<char> is_merge(n, 0);
   const auto open = [&](std::uint32_t e) {
     status.open(e);
     helper[e] = e;
@@ -311,7 +311,7 @@ class PlaneGraph {
     for (std::uint32_t v = 0; v < m; ++v)
       offset_[v + 1] += offset_[v];
     neighbour_.assign(offset_[m], kNone);
-    std::vector<std::uint32_t> fill(offset_.begin(), offset_.end() - 1);
+    ScratchVector<std::uint32_t> fill(offset_.begin(), offset_.end() - 1);
     for (std::uint32_t v = 0; v < m; ++v) {
       neighbour_[fill[v]++] = loops.next[v];
       neighbour_[fill[v]++] = loops.previous[v];
@@ -378,15 +378,15 @@ class PlaneGraph {
     return turn == Sign::positive;
   }
 
-  std::vector<std::size_t> offset_;
-  std::vector<std::uint32_t> neighbour_;
+  ScratchVector<std::size_t> offset_;
+  ScratchVector<std::uint32_t> neighbour_;
 };
 
 /// Triangles of one piece monotone in sweep order, given as its corners counter-clockwise
 /// (de Berg et al., TRIANGULATEMONOTONEPOLYGON), appended counter-clockwise; false when
 /// the piece is not monotone or a triangle would be degenerate (the precondition broken).
 bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> piece,
-                       std::vector<Triangle>& triangles) {
+                       ScratchVector<Triangle>& triangles) {
   const std::size_t k = piece.size();
   if (k < 3) return false;
   const auto earlier = [](std::uint32_t a, std::uint32_t b) { return a < b; };
@@ -398,18 +398,18 @@ bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> 
   }
   // Counter-clockwise, from the first corner forward to the last is the lower chain (the
   // piece above it), and backward the upper chain; each must advance in sweep order.
-  std::vector<std::uint32_t> lower;
-  std::vector<std::uint32_t> upper;
+  ScratchVector<std::uint32_t> lower;
+  ScratchVector<std::uint32_t> upper;
   for (std::size_t i = (first + 1) % k; i != last; i = (i + 1) % k)
     lower.push_back(piece[i]);
   for (std::size_t i = (first + k - 1) % k; i != last; i = (i + k - 1) % k)
     upper.push_back(piece[i]);
-  const auto advancing = [&](const std::vector<std::uint32_t>& chain) {
+  const auto advancing = [&](const ScratchVector<std::uint32_t>& chain) {
     return std::is_sorted(chain.begin(), chain.end(), earlier);
   };
   if (!advancing(lower) || !advancing(upper)) return false;
   // All corners in sweep order, each marked with its chain.
-  std::vector<std::pair<std::uint32_t, bool>> sorted;  // (corner, on the upper chain)
+  ScratchVector<std::pair<std::uint32_t, bool>> sorted;  // (corner, on the upper chain)
   sorted.reserve(k);
   sorted.emplace_back(piece[first], false);
   std::size_t i = 0;
@@ -429,7 +429,7 @@ bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> 
     if (turn == Sign::zero) degenerate = true;
     triangles.push_back(turn == Sign::positive ? Triangle{a, b, c} : Triangle{a, c, b});
   };
-  std::vector<std::uint32_t> stack = {sorted[0].first, sorted[1].first};
+  ScratchVector<std::uint32_t> stack = {sorted[0].first, sorted[1].first};
   bool top_upper = sorted[1].second;
   for (std::size_t n = 2; n + 1 < k; ++n) {
     const auto [u, u_upper] = sorted[n];
@@ -464,11 +464,11 @@ bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> 
 /// The pieces the diagonals cut the region into (the faces of the plane graph on the
 /// region's side), each triangulated.
 bool triangulate_pieces(const Geometry& geometry, const Loops& loops, const PlaneGraph& graph,
-                        std::vector<Triangle>& triangles) {
+                        ScratchVector<Triangle>& triangles) {
   // Slot s of corner v is the half-edge v -> neighbour(s); the piece on its left follows
   // it. The half-edges against the loops (v -> previous[v]) have the outside on their left.
-  std::vector<char> used(graph.size(), 0);
-  std::vector<std::uint32_t> piece;
+  ScratchVector<char> used(graph.size(), 0);
+  ScratchVector<std::uint32_t> piece;
   for (std::uint32_t v = 0; v < loops.size(); ++v) {
     for (std::size_t s = graph.begin(v); s < graph.end(v); ++s) {
       if (used[s] || graph.neighbour(s) == loops.previous[v]) continue;
@@ -501,8 +501,8 @@ bool triangulate_by_sweep(const PolygonWalk& walk, std::span<const std::uint32_t
   Loops loops;
   if (!loops_of(walk, order, vertices, plane, turn, loops)) return false;
   const Geometry geometry(loops);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> diagonals;
-  std::optional<std::vector<std::uint32_t>> recorded;
+  ScratchVector<std::pair<std::uint32_t, std::uint32_t>> diagonals;
+  std::optional<ScratchVector<std::uint32_t>> recorded;
   if (!below.empty()) recorded = recorded_below(walk, loops, below);
   bool partitioned = false;
   if (recorded) {
@@ -516,7 +516,7 @@ bool triangulate_by_sweep(const PolygonWalk& walk, std::span<const std::uint32_t
   }
   PlaneGraph graph;
   if (!graph.build(geometry, loops, diagonals)) return false;
-  std::vector<Triangle> triangles;
+  ScratchVector<Triangle> triangles;
   triangles.reserve(walk.corners);
   if (!triangulate_pieces(geometry, loops, graph, triangles)) return false;
   // Counter-clockwise in the projection; the loops were reversed for a clockwise walk.

@@ -15,6 +15,8 @@
 #include <limits>
 #include <vector>
 
+#include "scratch_vector.hpp"
+
 namespace exactgeo::mesh::internal {
 
 template <class Item, class Below>
@@ -171,8 +173,8 @@ class SweepStatus {
   }
 
   Below below_;
-  std::vector<Node> nodes_;
-  std::vector<Handle> free_;
+  ScratchVector<Node> nodes_;
+  ScratchVector<Handle> free_;
   Handle root_ = kNone;
   Handle top_ = kNone;
   std::uint64_t seed_ = 0x9e3779b97f4a7c15ull;

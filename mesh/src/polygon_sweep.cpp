@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "polygon_status.hpp"
+#include "scratch_vector.hpp"
 
 namespace exactgeo::mesh::internal {
 
@@ -105,21 +106,21 @@ bool segments_meet_improperly(const Point3& a0, const Point3& a1, const Point3& 
 
 std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::uint32_t> order,
                                 std::span<const Point3> vertices, const Projection& plane,
-                                std::vector<std::uint32_t>* below) {
+                                ScratchVector<std::uint32_t>* below) {
   // Everything by rank in sweep order: the flat points side by side, the segments in the
   // order they are inserted (by their left ends' ranks), so that those starting at rank
   // r are segments[first[r], first[r + 1]), and those ending there ending[last[r],
   // last[r + 1]).
   const Projection flat(2);
   const std::size_t m = order.size();
-  std::vector<std::uint32_t> rank(m);
-  std::vector<Point3> point(m);
+  ScratchVector<std::uint32_t> rank(m);
+  ScratchVector<Point3> point(m);
   for (std::size_t r = 0; r < m; ++r) {
     rank[order[r]] = static_cast<std::uint32_t>(r);
     point[r] = plane.flat(vertices[walk.vertices[order[r]]]);
   }
-  std::vector<std::uint32_t> first(m + 1, 0);
-  std::vector<std::uint32_t> last(m + 1, 0);
+  ScratchVector<std::uint32_t> first(m + 1, 0);
+  ScratchVector<std::uint32_t> last(m + 1, 0);
   for (const ChainEdge& e : walk.edges) {
     const std::uint32_t a = rank[e.low];
     const std::uint32_t b = rank[e.high];
@@ -135,12 +136,12 @@ std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::ui
     first[r + 1] += first[r];
     last[r + 1] += last[r];
   }
-  std::vector<Segment> segments(walk.edges.size());
-  std::vector<std::uint32_t> ending(walk.edges.size());
-  std::vector<std::uint32_t> right_rank(walk.edges.size());
+  ScratchVector<Segment> segments(walk.edges.size());
+  ScratchVector<std::uint32_t> ending(walk.edges.size());
+  ScratchVector<std::uint32_t> right_rank(walk.edges.size());
   {
-    std::vector<std::uint32_t> fill_first(first.begin(), first.end() - 1);
-    std::vector<std::uint32_t> fill_last(last.begin(), last.end() - 1);
+    ScratchVector<std::uint32_t> fill_first(first.begin(), first.end() - 1);
+    ScratchVector<std::uint32_t> fill_last(last.begin(), last.end() - 1);
     for (std::uint32_t k = 0; k < walk.edges.size(); ++k) {
       const ChainEdge& e = walk.edges[k];
       const std::uint32_t a = rank[e.low];
@@ -158,10 +159,10 @@ std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::ui
   bool degenerate = false;
   using Status = SweepStatus<Segment, BottomToTop>;
   Status status{BottomToTop(degenerate)};
-  std::vector<Status::Handle> place(segments.size(), Status::kNone);
+  ScratchVector<Status::Handle> place(segments.size(), Status::kNone);
   bool positive = false;
   bool negative = false;
-  std::vector<std::uint32_t> inserted;
+  ScratchVector<std::uint32_t> inserted;
   if (below) below->assign(walk.vertices.size(), kNoEdge);
   // The edge just below a point, from the status item just above it (kNone: the top).
   const auto record = [&](std::size_t g, std::size_t h, Status::Handle above_point) {

@@ -14,6 +14,7 @@
 #include "exactgeo/predicates/sign.hpp"
 #include "polygon_projection.hpp"
 #include "polygon_walk.hpp"
+#include "scratch_vector.hpp"
 
 namespace exactgeo::mesh::internal {
 
@@ -54,6 +55,6 @@ inline constexpr std::uint32_t kNoEdge = 0xffffffff;
 inline constexpr std::uint32_t kUnknownEdge = 0xfffffffe;
 std::optional<Sign> region_turn(const PolygonWalk& walk, std::span<const std::uint32_t> order,
                                 std::span<const Point3> vertices, const Projection& plane,
-                                std::vector<std::uint32_t>* below = nullptr);
+                                ScratchVector<std::uint32_t>* below = nullptr);
 
 }  // namespace exactgeo::mesh::internal

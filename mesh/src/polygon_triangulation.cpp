@@ -119,8 +119,8 @@ bool split_over(std::span<const VertexIndex> corners, std::span<const Point3> p,
                 std::vector<Face>& out) {
   const Projection plane(axis);
   if (corners.size() <= kFewCorners) return split_few(corners, p, vertices, plane, out);
-  const std::vector<std::uint32_t> order = sweep_order(walk, vertices, plane);
-  std::vector<std::uint32_t> below;
+  const ScratchVector<std::uint32_t> order = sweep_order(walk, vertices, plane);
+  ScratchVector<std::uint32_t> below;
   const std::optional<Sign> turn = region_turn(walk, order, vertices, plane, &below);
   if (!turn) return false;  // no tiling exists in this projection: nothing to try
   const std::size_t before = out.size();
@@ -154,8 +154,8 @@ void append_fan(std::span<const VertexIndex> corners, std::vector<Face>& out) {
 PolygonForm triangulate_polygon(std::span<const VertexIndex> corners_as_read,
                                 std::span<const Point3> vertices, std::vector<Face>& out) {
   // A corner repeated next to itself makes an edge of zero length, which joins nothing.
-  const std::vector<VertexIndex> corners = without_repeats(corners_as_read);
-  std::vector<Point3> p(corners.size());
+  const ScratchVector<VertexIndex> corners = without_repeats(corners_as_read);
+  ScratchVector<Point3> p(corners.size());
   std::transform(corners.begin(), corners.end(), p.begin(),
                  [&](VertexIndex c) { return vertices[c]; });
   if (corners.size() < 3 || on_one_line(p)) {

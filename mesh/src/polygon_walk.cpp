@@ -10,12 +10,12 @@ namespace {
 /// The distinct values of `corners`, ascending. Files mostly number a polygon's corners
 /// in one run, or nearly: a range at most twice their count is marked off in one pass,
 /// anything else sorted.
-std::vector<VertexIndex> distinct_ascending(std::span<const VertexIndex> corners) {
+ScratchVector<VertexIndex> distinct_ascending(std::span<const VertexIndex> corners) {
   const auto [least, most] = std::minmax_element(corners.begin(), corners.end());
   const std::size_t range = static_cast<std::size_t>(*most - *least) + 1;
-  std::vector<VertexIndex> distinct;
+  ScratchVector<VertexIndex> distinct;
   if (range <= 2 * corners.size()) {
-    std::vector<char> used(range, 0);
+    ScratchVector<char> used(range, 0);
     for (const VertexIndex c : corners)
       used[c - *least] = 1;
     for (std::size_t k = 0; k < range; ++k) {
@@ -31,8 +31,8 @@ std::vector<VertexIndex> distinct_ascending(std::span<const VertexIndex> corners
 
 }  // namespace
 
-std::vector<VertexIndex> without_repeats(std::span<const VertexIndex> corners) {
-  std::vector<VertexIndex> kept;
+ScratchVector<VertexIndex> without_repeats(std::span<const VertexIndex> corners) {
+  ScratchVector<VertexIndex> kept;
   kept.reserve(corners.size());
   for (std::size_t k = 0; k < corners.size(); ++k) {
     if (corners[k] != corners[k == 0 ? corners.size() - 1 : k - 1]) kept.push_back(corners[k]);
@@ -45,10 +45,10 @@ PolygonWalk walk_of(std::span<const VertexIndex> corners) {
   walk.corners = corners.size();
   if (corners.empty()) return walk;
   walk.vertices = distinct_ascending(corners);
-  std::vector<std::uint32_t> local(corners.size());
+  ScratchVector<std::uint32_t> local(corners.size());
   for (std::size_t k = 0; k < corners.size(); ++k)
     local[k] = *local_number(walk, corners[k]);
-  std::vector<ChainUse> uses(corners.size());
+  ScratchVector<ChainUse> uses(corners.size());
   for (std::size_t k = 0; k < corners.size(); ++k)
     uses[k] = {local[k], local[k + 1 == corners.size() ? 0 : k + 1]};
   walk.edges = chain_of(uses, walk.vertices.size());
@@ -68,10 +68,10 @@ std::optional<std::uint32_t> local_number(const PolygonWalk& walk, VertexIndex v
   return static_cast<std::uint32_t>(found - walk.vertices.begin());
 }
 
-std::vector<ChainEdge> chain_of(std::span<const ChainUse> uses, std::size_t vertex_count) {
+ScratchVector<ChainEdge> chain_of(std::span<const ChainUse> uses, std::size_t vertex_count) {
   // A counting sort by the lower end, then each lower end's few uses by the higher end:
   // linear in the uses and the vertices.
-  std::vector<std::uint32_t> offset(vertex_count + 1, 0);
+  ScratchVector<std::uint32_t> offset(vertex_count + 1, 0);
   for (const ChainUse& use : uses)
     ++offset[std::min(use.from, use.to) + 1];
   std::partial_sum(offset.begin(), offset.end(), offset.begin());
@@ -79,15 +79,15 @@ std::vector<ChainEdge> chain_of(std::span<const ChainUse> uses, std::size_t vert
     std::uint32_t high;
     std::int32_t way;
   };
-  std::vector<Other> others(uses.size());
+  ScratchVector<Other> others(uses.size());
   {
-    std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+    ScratchVector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
     for (const ChainUse& use : uses) {
       const bool forward = use.from < use.to;
       others[fill[forward ? use.from : use.to]++] = {forward ? use.to : use.from, forward ? 1 : -1};
     }
   }
-  std::vector<ChainEdge> chain;
+  ScratchVector<ChainEdge> chain;
   chain.reserve(uses.size());
   for (std::uint32_t low = 0; low < vertex_count; ++low) {
     const auto first = others.begin() + offset[low];
@@ -104,22 +104,22 @@ std::vector<ChainEdge> chain_of(std::span<const ChainUse> uses, std::size_t vert
   return chain;
 }
 
-std::vector<std::uint32_t> sweep_order(const PolygonWalk& walk, std::span<const Point3> vertices,
-                                       const Projection& plane) {
+ScratchVector<std::uint32_t> sweep_order(const PolygonWalk& walk, std::span<const Point3> vertices,
+                                         const Projection& plane) {
   // The coordinates beside the numbers, so that the sort reads memory in order.
   struct Keyed {
     double u;
     double v;
     std::uint32_t local;
   };
-  std::vector<Keyed> keyed(walk.vertices.size());
+  ScratchVector<Keyed> keyed(walk.vertices.size());
   for (std::uint32_t k = 0; k < keyed.size(); ++k) {
     const Point3& p = vertices[walk.vertices[k]];
     keyed[k] = {plane.u(p), plane.v(p), k};
   }
   std::sort(keyed.begin(), keyed.end(),
             [](const Keyed& a, const Keyed& b) { return a.u < b.u || (a.u == b.u && a.v < b.v); });
-  std::vector<std::uint32_t> order(keyed.size());
+  ScratchVector<std::uint32_t> order(keyed.size());
   std::transform(keyed.begin(), keyed.end(), order.begin(), [](const Keyed& k) { return k.local; });
   return order;
 }

@@ -14,6 +14,7 @@
 
 #include "exactgeo/mesh/mesh.hpp"
 #include "polygon_projection.hpp"
+#include "scratch_vector.hpp"
 
 namespace exactgeo::mesh::internal {
 
@@ -32,14 +33,14 @@ struct ChainUse {
 };
 
 struct PolygonWalk {
-  std::vector<VertexIndex> vertices;  ///< local number -> vertex index, ascending
-  std::vector<ChainEdge> edges;       ///< every pair the walk joins, by (low, high)
-  std::size_t corners = 0;            ///< the walk's length
+  ScratchVector<VertexIndex> vertices;  ///< local number -> vertex index, ascending
+  ScratchVector<ChainEdge> edges;       ///< every pair the walk joins, by (low, high)
+  std::size_t corners = 0;              ///< the walk's length
 };
 
 /// The corners without those repeated next to themselves (the last is next to the
 /// first): an edge of zero length joins nothing.
-std::vector<VertexIndex> without_repeats(std::span<const VertexIndex> corners);
+ScratchVector<VertexIndex> without_repeats(std::span<const VertexIndex> corners);
 
 /// The walk of these corners, each to the next and the last to the first. Precondition:
 /// no corner next to an occurrence of itself (the caller drops such repeats).
@@ -50,11 +51,11 @@ std::optional<std::uint32_t> local_number(const PolygonWalk& walk, VertexIndex v
 
 /// The chain of these uses (local numbers below `vertex_count`): each pair once, by
 /// (low, high), with its net coefficient (coefficient 0 kept: a pair walked both ways).
-std::vector<ChainEdge> chain_of(std::span<const ChainUse> uses, std::size_t vertex_count);
+ScratchVector<ChainEdge> chain_of(std::span<const ChainUse> uses, std::size_t vertex_count);
 
 /// The walk's local numbers in sweep order (polygon_projection.hpp) of their projections;
 /// vertices at one projected position are next to each other, in no particular order.
-std::vector<std::uint32_t> sweep_order(const PolygonWalk& walk, std::span<const Point3> vertices,
-                                       const Projection& plane);
+ScratchVector<std::uint32_t> sweep_order(const PolygonWalk& walk, std::span<const Point3> vertices,
+                                         const Projection& plane);
 
 }  // namespace exactgeo::mesh::internal

@@ -71,8 +71,8 @@ TEST(PolygonSweep, EveryFamilyIsTriangulatedWithoutTheFallback) {
                                    (backwards ? ", walked backwards" : "");
           const PolygonWalk walk = walk_of(corners);
           const Projection plane(axis);
-          const std::vector<std::uint32_t> order = sweep_order(walk, seen, plane);
-          std::vector<std::uint32_t> below;
+          const auto order = sweep_order(walk, seen, plane);
+          ScratchVector<std::uint32_t> below;
           const std::optional<Sign> turn = region_turn(walk, order, seen, plane, &below);
           ASSERT_EQ(turn, clockwise ? Sign::negative : Sign::positive) << what;
           // With the certificate's record of the edge below each corner, as the reader

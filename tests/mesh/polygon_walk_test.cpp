@@ -25,13 +25,13 @@ TEST(PolygonWalk, ABridgeWalkedBothWaysHasCoefficientZero) {
   const std::vector<VertexIndex> corners{10, 11, 12, 13, 10, 20, 22, 21, 20};
   const PolygonWalk walk = walk_of(corners);
   EXPECT_EQ(walk.corners, 9u);
-  EXPECT_EQ(walk.vertices, (std::vector<VertexIndex>{10, 11, 12, 13, 20, 21, 22}));
+  EXPECT_EQ(walk.vertices, (ScratchVector<VertexIndex>{10, 11, 12, 13, 20, 21, 22}));
   EXPECT_EQ(local_number(walk, 20), 4u);
   EXPECT_EQ(local_number(walk, 14), std::nullopt);
   EXPECT_EQ(local_number(walk, 9), std::nullopt);
   EXPECT_EQ(local_number(walk, 23), std::nullopt);
   // Local numbers: 10 11 12 13 20 21 22 are 0 1 2 3 4 5 6.
-  EXPECT_EQ(walk.edges, (std::vector<ChainEdge>{{0, 1, 1},
+  EXPECT_EQ(walk.edges, (ScratchVector<ChainEdge>{{0, 1, 1},
                                                 {0, 3, -1},
                                                 {0, 4, 0},
                                                 {1, 2, 1},
@@ -43,11 +43,11 @@ TEST(PolygonWalk, ABridgeWalkedBothWaysHasCoefficientZero) {
 
 TEST(PolygonWalk, RepeatsNextToThemselvesAreDroppedCyclically) {
   EXPECT_EQ(without_repeats(std::vector<VertexIndex>{1, 1, 2, 3, 3, 1}),
-            (std::vector<VertexIndex>{2, 3, 1}));
+            (ScratchVector<VertexIndex>{2, 3, 1}));
   EXPECT_EQ(without_repeats(std::vector<VertexIndex>{4, 5, 6}),
-            (std::vector<VertexIndex>{4, 5, 6}));
+            (ScratchVector<VertexIndex>{4, 5, 6}));
   // The last corner is next to the first.
-  EXPECT_EQ(without_repeats(std::vector<VertexIndex>{4, 5, 4}), (std::vector<VertexIndex>{5, 4}));
+  EXPECT_EQ(without_repeats(std::vector<VertexIndex>{4, 5, 4}), (ScratchVector<VertexIndex>{5, 4}));
   EXPECT_TRUE(without_repeats(std::vector<VertexIndex>{7, 7, 7}).empty());
 }
 
@@ -93,8 +93,8 @@ TEST(PolygonWalk, RandomWalksAgreeWithTheWalkByHand) {
     const auto [sorted, net] = walk_by_hand(corners);
     const PolygonWalk walk = walk_of(corners);
     EXPECT_EQ(walk.corners, corners.size());
-    ASSERT_EQ(walk.vertices, sorted);
-    std::vector<ChainEdge> expected;
+    ASSERT_TRUE(std::ranges::equal(walk.vertices, sorted));
+    ScratchVector<ChainEdge> expected;
     for (const auto& [pair, coefficient] : net)
       expected.push_back({pair.first, pair.second, coefficient});
     ASSERT_EQ(walk.edges, expected) << "trial " << trial;
@@ -123,9 +123,9 @@ TEST(PolygonWalk, TheSweepOrderIsLexicographicInTheProjection) {
     const PolygonWalk walk = walk_of(corners);
     for (const int axis : {0, 1, 2}) {
       const Projection plane(axis);
-      const std::vector<std::uint32_t> order = sweep_order(walk, vertices, plane);
+      const auto order = sweep_order(walk, vertices, plane);
       ASSERT_EQ(order.size(), walk.vertices.size());
-      std::vector<std::uint32_t> sorted = order;
+      std::vector<std::uint32_t> sorted(order.begin(), order.end());
       std::sort(sorted.begin(), sorted.end());
       for (std::uint32_t k = 0; k < sorted.size(); ++k)
         ASSERT_EQ(sorted[k], k);  // a permutation of the local numbers
