@@ -62,6 +62,12 @@ std::optional<double> share_read(std::istream& in, std::optional<double> bytes) 
   return std::min(1.0, static_cast<double>(position) / *bytes);
 }
 
+/// A double between a generalized winding number's certified bounds, which are at most
+/// about 2^-40 apart.
+double midpoint(const Enclosure& w) {
+  return w.lower + (w.upper - w.lower) / 2;
+}
+
 /// Appends `"labels": ["inside", ...]` to `out`, a few thousand labels per write.
 void print_json_labels(const std::vector<inside::Location>& labels, std::ostream& out) {
   std::string text = ", \"labels\": [";
@@ -112,6 +118,8 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
                      options.points_format.value_or(io::default_point_format(options.points)));
   const bool print_labels = !options.json;
   const bool keep_labels = options.json && options.labels;  // printed with the counts, at the end
+  const bool keep_windings = options.json && options.winding;  // likewise
+  std::string kept_windings;  // the JSON array's entries, comma-separated
   std::span<const Point3> block;
   std::vector<inside::Location> locations;
   std::vector<std::optional<std::int64_t>> windings;
@@ -128,10 +136,14 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       locations.resize(block.size());
       const Clock::time_point start = Clock::now();
       if (real_windings) {
-        // No labels: --winding prints the values, and the counts (--json) are refused with it.
         bounds.resize(block.size());
         built->generalized_winding_numbers(block, bounds, options.mesh.arithmetic,
                                            options.mesh.threads);
+        // The counts beside the values (--json) are the labels' own: a value within 2^-40
+        // of 1/2 does not say on which side w lies, so the labels are decided separately.
+        if (options.json) {
+          built->classify(block, locations, options.mesh.arithmetic, options.mesh.threads);
+        }
       } else if (options.winding) {
         windings.resize(block.size());
         built->winding_numbers(block, windings, options.mesh.arithmetic, options.mesh.threads);
@@ -144,10 +156,17 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
       tally.points += block.size();
       text.clear();
       for (std::size_t i = 0; i < block.size(); ++i) {
-        if (real_windings) {
-          // A double between the certified bounds, which are at most about 2^-40 apart.
+        if (keep_windings) {
+          if (!kept_windings.empty()) kept_windings.append(", ");
+          if (real_windings) {
+            kept_windings.append(bounds[i] ? shortest(midpoint(*bounds[i])) : "null");
+          } else {
+            kept_windings.append(windings[i] ? std::to_string(*windings[i]) : "null");
+          }
+        }
+        if (real_windings && print_labels) {
           const std::optional<Enclosure>& w = bounds[i];
-          text.append(w ? shortest(w->lower + (w->upper - w->lower) / 2) : "boundary");
+          text.append(w ? shortest(midpoint(*w)) : "boundary");
           text.push_back('\n');
           continue;
         }
@@ -196,6 +215,7 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
           << ", \"components\": " << cells->components << "}";
     }
     if (keep_labels) print_json_labels(kept, out);
+    if (keep_windings) out << ", \"winding_numbers\": [" << kept_windings << "]";
     out << "}\n";
   }
   out << std::flush;
@@ -254,12 +274,13 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
          "rule for faces not oriented alike) or positive (w > 0: parts turned inside out carve "
          "cavities). All three agree on a closed mesh that does not intersect itself")
       ->check(CLI::IsMember({"nonzero", "parity", "positive"}));
-  CLI::Option* winding = sub->add_flag(
+  sub->add_flag(
       "--winding", options.winding,
       "print each point's winding number (an integer, exact) instead of its label; against an "
       "open surface its generalized winding number (a decimal within about 2^-41 of the true "
-      "value, certified); boundary for points on the surface");
-  winding->excludes(json);
+      "value, certified); boundary for points on the surface. With --json: the values beside "
+      "the counts, as \"winding_numbers\": [...] in input order (null on the surface; held in "
+      "memory until the end)");
   add_weld_flag(*sub, options.mesh.load.weld);
   add_split_polygons_flag(*sub, options.mesh.load.split_polygons, " instead of refusing the mesh");
   sub->add_flag("--allow-non-manifold", options.mesh.allow_non_manifold,

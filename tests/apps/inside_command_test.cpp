@@ -532,6 +532,50 @@ TEST_F(InsideCommand, WindingAgainstAnOpenSurfaceIsTheGeneralizedWindingNumber) 
   EXPECT_EQ(printed[3], "boundary");
 }
 
+// --winding --json: the values beside the counts, in input order, null on the surface; the
+// counts are the labels' (the open box's missing face centre, w = 1/2 exactly, is
+// undecided, not rounded to a side by its printed value).
+TEST_F(InsideCommand, WindingWithJsonHasTheValuesBesideTheCounts) {
+  write_file(dir_ / "open_box.obj",
+             "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+             "f 1 4 3 2\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n");
+  write_file(dir_ / "nested.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9));
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n0.5 0.5 1\n2 2 2\n0 0.5 0.5\n");
+  InsideCommandOptions options;
+  options.winding = true;
+  options.json = true;
+  options.mesh.path = (dir_ / "open_box.obj").string();
+  Outcome r = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(r.code, ExitCode::success) << r.err;
+  const double centre = 5.0 / 6.0;
+  const double far = inside::Classifier(mesh::load_mesh(options.mesh.path).mesh)
+                         .generalized_winding_number({2, 2, 2})
+                         .value()
+                         .lower;
+  EXPECT_NE(r.out.find("\"points\": 4, \"inside\": 1, \"outside\": 1, \"boundary\": 1, "
+                       "\"undecided\": 1,"),
+            std::string::npos)
+      << r.out;
+  const std::size_t values = r.out.find("\"winding_numbers\": [");
+  ASSERT_NE(values, std::string::npos) << r.out;
+  std::istringstream list(r.out.substr(values + 20));
+  std::vector<std::string> printed;
+  for (std::string value; std::getline(list, value, ',');)
+    printed.push_back(value.substr(value.find_first_not_of(' ')));
+  ASSERT_EQ(printed.size(), 4u) << r.out;
+  EXPECT_NEAR(std::stod(printed[0]), centre, 1e-12);
+  EXPECT_EQ(std::stod(printed[1]), 0.5);
+  EXPECT_NEAR(std::stod(printed[2]), far, 1e-12);
+  EXPECT_EQ(printed[3], "null]}\n");
+  write_file(dir_ / "nested_points.txt", "0.5 0.5 0.5\n0.1 0.5 0.5\n2 2 2\n0 0.5 0.5\n");
+  options.mesh.path = (dir_ / "nested.obj").string();
+  r = run_file(options, dir_ / "nested_points.txt");
+  ASSERT_EQ(r.code, ExitCode::success) << r.err;
+  EXPECT_NE(r.out.find("\"inside\": 2, \"outside\": 1, \"boundary\": 1"), std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("\"winding_numbers\": [2, 1, 0, null]}"), std::string::npos) << r.out;
+}
+
 TEST_F(InsideCommand, WindingNumbersAndRules) {
   write_file(dir_ / "nested.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9));
   write_file(dir_ / "cavity.obj", obj_cube(0, 1, 1) + obj_cube(0.25, 0.5, 9, /*reversed=*/true));
