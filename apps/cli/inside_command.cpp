@@ -99,7 +99,13 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     return ExitCode::input_error;
   }
   ProgressLine progress(err, options.progress, "points");
-  const std::optional<InsideMesh> built = build_inside_mesh(options.mesh, err, &progress);
+  const std::optional<double> points_bytes = file_size(options.points);
+  InsideMeshOptions mesh_options = options.mesh;
+  if (points_bytes) {
+    // 24 bytes a point in binary; text takes more, so this counts text's points high.
+    mesh_options.expected_points = static_cast<std::size_t>(*points_bytes / 24);
+  }
+  const std::optional<InsideMesh> built = build_inside_mesh(mesh_options, err, &progress);
   if (!built) return ExitCode::input_error;
   // Against an open surface --winding prints the generalized winding number, a real number.
   const bool real_windings = options.winding && built->classifier->open();
@@ -111,7 +117,6 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
     return ExitCode::input_error;
   }
   progress.task("classifying");
-  const std::optional<double> points_bytes = file_size(options.points);
 
   Tally tally;
   PointReader reader(in, points_source,

@@ -128,6 +128,7 @@ std::optional<InsideMesh> build_inside_mesh(const InsideMeshOptions& options, st
       // The plain double baseline casts a ray for every point (classifier.hpp).
       classifier_options.space_cells =
           options.space_cells && options.arithmetic != Arithmetic::plain_double;
+      classifier_options.expected_points = options.expected_points;
       built.classifier.emplace(std::move(loaded.mesh), classifier_options);
     }
     built.seconds = seconds_since(start);

@@ -41,6 +41,9 @@ struct InsideMeshOptions {
   /// The float ray baseline (inside/float_ray_parity.hpp) instead of the classifier.
   bool float_rays = false;
   bool space_cells = true;  ///< exact labels of the cells no face reaches (classifier.hpp)
+  /// About how many points will be classified (from the points file's size), which sizes
+  /// the space cells to the work; nullopt: unknown (standard input, a slice).
+  std::optional<std::size_t> expected_points = std::nullopt;
   /// Look for faces that intersect (exactly): by default only where the labels are the
   /// parity solid's (--rule parity, faces not oriented alike, the float ray baseline),
   /// which the check then warns of; intersections change no winding number.

@@ -282,8 +282,9 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   // A cell's points share one integer winding number; an open surface's vary.
   if (options.space_cells && s.boundary.empty()) {
     ClassifierScratch scratch;
-    s.cells.emplace(s.mesh, s.box,
-                    [&](const Point3& p) { return cast_rays(s, p, Arithmetic::exact, scratch); });
+    s.cells.emplace(
+        s.mesh, s.box, [&](const Point3& p) { return cast_rays(s, p, Arithmetic::exact, scratch); },
+        options.expected_points);
   }
 }
 

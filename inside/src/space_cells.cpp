@@ -64,9 +64,15 @@ double SpaceCells::Axis::point_in(std::size_t k) const noexcept {
   return std::clamp(planes_[k] / 2 + planes_[k + 1] / 2, planes_[k], planes_[k + 1]);
 }
 
-SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactWinding& winding) {
-  const std::size_t target = std::clamp(kCellsPerFace * mesh.faces.size(), kMinCells, kMaxCells);
-  const auto cells = resolution_for(box, target);
+std::size_t SpaceCells::cell_count(std::size_t faces, std::optional<std::size_t> expected_points) {
+  const std::size_t by_faces = std::clamp(kCellsPerFace * faces, kMinCells, kMaxCells);
+  if (!expected_points) return by_faces;
+  return std::min(by_faces, std::max(kMinCellsForFewPoints, kCellsPerPoint * *expected_points));
+}
+
+SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactWinding& winding,
+                       std::optional<std::size_t> expected_points) {
+  const auto cells = resolution_for(box, cell_count(mesh.faces.size(), expected_points));
   for (int i = 0; i < 3; ++i)
     axes_[i] = Axis(box.lower[i], box.upper[i], cells[i]);
   // Everything margin, then each row's inner cells unknown.

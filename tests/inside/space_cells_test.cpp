@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 #include <utility>
@@ -57,8 +58,10 @@ struct Tally {
   std::size_t answered_on_planes = 0;
 };
 
-/// Checks every probe kind on one mesh; returns how many probes the cells answered.
-Tally check_cells(const std::string& name, const Mesh& mesh, std::mt19937_64& rng) {
+/// Checks every probe kind on one mesh, its grid sized for `expected_points` (nullopt: by
+/// its faces alone); returns how many probes the cells answered.
+Tally check_cells(const std::string& name, const Mesh& mesh, std::mt19937_64& rng,
+                  std::optional<std::size_t> expected_points = std::nullopt) {
   SCOPED_TRACE(name);
   const mesh::Box box = *mesh::check_mesh(mesh).bounding_box;
   // The reference: rays for every point, every face a candidate (brute force) for the
@@ -72,7 +75,8 @@ Tally check_cells(const std::string& name, const Mesh& mesh, std::mt19937_64& rn
   const Classifier with_cells(
       mesh,
       {.candidates = CandidateSearch::embree, .allow_non_manifold = true, .space_cells = true});
-  const SpaceCells cells(mesh, box, [&](const Point3& p) { return rays.winding_number(p); });
+  const SpaceCells cells(
+      mesh, box, [&](const Point3& p) { return rays.winding_number(p); }, expected_points);
   EXPECT_GE(cells.components(), 2u);  // inside and outside at least
   EXPECT_LT(cells.surface_cells(), cells.cells());
 
@@ -146,6 +150,36 @@ TEST(SpaceCells, LabelsAreTheRaysLabelsAtEveryMagnitude) {
       EXPECT_GT(t.answered, std::string(name) == "torus" ? t.probes / 20 : t.probes / 2);
       EXPECT_GT(t.answered_on_planes, 0u);
     }
+  }
+}
+
+// Sized to the points: kCellsPerPoint per expected point, between the few-points floor and
+// what the faces ask for; the coarse grid is as exact as the fine one (the same probes,
+// at 1 and 2^+-1000).
+TEST(SpaceCells, GridSizedToTheExpectedPoints) {
+  EXPECT_EQ(SpaceCells::cell_count(10, std::nullopt), SpaceCells::kMinCells);
+  EXPECT_EQ(SpaceCells::cell_count(1 << 20, std::nullopt), SpaceCells::kMaxCells);
+  EXPECT_EQ(SpaceCells::cell_count(10, 1000), SpaceCells::kMinCellsForFewPoints);
+  EXPECT_EQ(SpaceCells::cell_count(10, 25000), SpaceCells::kCellsPerPoint * 25000);
+  EXPECT_EQ(SpaceCells::cell_count(10, 1000000), SpaceCells::kMinCells);
+  EXPECT_EQ(SpaceCells::cell_count(1 << 20, 1000000), SpaceCells::kCellsPerPoint * 1000000);
+  auto rng = testing::seeded_engine("inside.space_cells.expected_points");
+  const Mesh spot = mesh::load_mesh(kMeshes + "spot/spot_quadrangulated.obj").mesh;
+  for (const int k : {0, 1000, -1000}) {
+    const Tally t = check_cells("spot for 1,000 points at 2^" + std::to_string(k),
+                                scaled_mesh(spot, k, k == 0 ? 0.75 : 0.0), rng, 1000);
+    EXPECT_GT(t.answered, t.probes / 10);
+  }
+  // The classifier passes the hint on, and labels as without cells.
+  const Classifier hinted(spot, {.expected_points = 1000});
+  const Classifier unhinted(spot);
+  ASSERT_TRUE(hinted.space_cells() && unhinted.space_cells());
+  EXPECT_LT(hinted.space_cells()->cells, unhinted.space_cells()->cells / 8);
+  const Classifier rays(spot, {.space_cells = false});
+  const mesh::Box box = *mesh::check_mesh(spot).bounding_box;
+  for (int i = 0; i < 2000; ++i) {
+    const Point3 p = random_in(box, rng);
+    ASSERT_EQ(hinted.classify(p), rays.classify(p)) << p[0] << " " << p[1] << " " << p[2];
   }
 }
 

@@ -54,6 +54,11 @@ struct ClassifierOptions {
   /// reaches get that cell's exact label without a ray. Exact and rational arithmetic
   /// only; the plain double baseline always casts rays.
   bool space_cells = true;
+  /// About how many points will be classified, where the caller knows (a points file's
+  /// size): the space cells are then sized to the work as well as to the mesh, so that a
+  /// few thousand points do not pay for a grid built for millions. Any value gives the
+  /// same labels; nullopt sizes the cells by the mesh alone.
+  std::optional<std::size_t> expected_points = std::nullopt;
   /// nonzero and positive need faces oriented alike (no edge run the same way by two more
   /// faces than the other way), closed or open; parity needs a closed surface.
   /// nullopt: parity for a closed surface whose faces are not oriented alike (the only
