@@ -1,9 +1,9 @@
 #include "assimp_reader.hpp"
 
 #include <assimp/scene.h>
+
 #include <algorithm>
 #include <array>
-#include <assimp/Importer.hpp>
 #include <cmath>
 #include <exception>
 #include <fstream>
@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "assimp_library.hpp"
 #include "exactgeo/io/input_error.hpp"
 #include "exactgeo/io/read_bytes.hpp"
 #include "exactgeo/io/text_scan.hpp"
@@ -153,11 +154,11 @@ class SceneMerger {
   FileFaces faces_;
 };
 
-void require_supported(const Assimp::Importer& importer, const std::string& source,
+void require_supported(const AssimpLibrary& assimp, const std::string& source,
                        const std::string& extension) {
   std::string dotted = ".";
   dotted.append(extension);
-  if (extension.empty() || !importer.IsExtensionSupported(dotted)) {
+  if (extension.empty() || !assimp.supports(dotted)) {
     std::string what = "unsupported mesh format ";
     what.append(extension.empty() ? "(no file extension; name it with --format)"
                                   : quoted(extension));
@@ -192,9 +193,9 @@ std::string first_bytes(const std::string& path, std::size_t n) {
 
 /// `read` runs the importer; its exceptions and failures become InputErrors naming `source`.
 template <class Read>
-LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
+LoadedMesh read_scene(const AssimpLibrary& assimp, const std::string& source,
                       const std::string& extension, const LoadOptions& options, Read read) {
-  const aiScene* scene = nullptr;
+  AssimpLibrary::Scene scene(nullptr, {&assimp});
   try {
     scene = read();  // no post-processing: quads stay quads
   } catch (const std::exception& e) {
@@ -204,7 +205,7 @@ LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
   }
   if (scene == nullptr) {
     std::string what = "assimp cannot read it: ";
-    what.append(importer.GetErrorString());
+    what.append(assimp.error());
     fail(source, what);
   }
   if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
@@ -227,22 +228,20 @@ LoadedMesh read_scene(Assimp::Importer& importer, const std::string& source,
 
 LoadedMesh read_with_assimp(const std::string& path, const std::string& extension,
                             const LoadOptions& options) {
-  Assimp::Importer importer;
-  require_supported(importer, path, extension);
+  const AssimpLibrary& assimp = AssimpLibrary::open(path);
+  require_supported(assimp, path, extension);
   require_readable(path);  // the same message as for the other formats
   refuse_zipped_amf(path, extension, first_bytes(path, kZipSignature.size()));
-  return read_scene(importer, path, extension, options,
-                    [&] { return importer.ReadFile(path, 0u); });
+  return read_scene(assimp, path, extension, options, [&] { return assimp.read_file(path); });
 }
 
 LoadedMesh read_with_assimp_from_memory(const std::string& bytes, const std::string& source,
                                         const std::string& extension, const LoadOptions& options) {
-  Assimp::Importer importer;
-  require_supported(importer, source, extension);
+  const AssimpLibrary& assimp = AssimpLibrary::open(source);
+  require_supported(assimp, source, extension);
   refuse_zipped_amf(source, extension, bytes);
-  return read_scene(importer, source, extension, options, [&] {
-    return importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0u, extension.c_str());
-  });
+  return read_scene(assimp, source, extension, options,
+                    [&] { return assimp.read_memory(bytes, extension); });
 }
 
 }  // namespace exactgeo::mesh::internal
