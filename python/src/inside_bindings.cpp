@@ -160,12 +160,13 @@ std::optional<inside::FillRule> rule_named(const py::object& name) {
 }
 
 ClassifierObject build(const MeshObject& mesh, const py::object& rule, bool allow_non_manifold,
-                       bool space_cells, int threads) {
+                       bool space_cells, std::optional<std::size_t> expected_points, int threads) {
   const unsigned workers = thread_count(threads);
   inside::ClassifierOptions options;
   options.rule = rule_named(rule);
   options.allow_non_manifold = allow_non_manifold;
   options.space_cells = space_cells;
+  options.expected_points = expected_points;
   if (auto problem = inside::face_soup_problem(mesh.loaded, options.rule, inside::kPythonNames)) {
     throw py::value_error(*problem);
   }
@@ -229,7 +230,7 @@ winding number w, the crossings plus a certified term over the boundary: INSIDE 
 |w| >= 1/2 (rule "positive": w >= 1/2), UNDECIDED where no precision allowed settles it.)doc")
       .def(py::init(&build), py::arg("mesh"), py::kw_only(), py::arg("rule") = py::none(),
            py::arg("allow_non_manifold") = false, py::arg("space_cells") = true,
-           py::arg("threads") = 0,
+           py::arg("expected_points") = py::none(), py::arg("threads") = 0,
            R"doc(Checks the mesh and builds the search structure once (the GIL is released).
 
 rule: which points the surface holds, by their winding number w (faces oriented by their
@@ -244,6 +245,10 @@ allow_non_manifold: with rule="parity", accept edges shared by 4, 6, ... faces (
     winding rules accept any edge whose faces are oriented alike).
 space_cells: label the cells of a grid that no face reaches once, exactly, so that
     points in them need no ray (method "exact" only; False: a ray for every point).
+expected_points: about how many points will be classified, where known: the grid is then
+    sized to them too (at most two cells a point), so that a few thousand points do not
+    pay for a grid built for millions. Any value gives the same labels; None (default):
+    sized by the mesh alone.
 threads: worker threads for the checks here and, by default, for every call (a call's
     own threads= overrides it); 0 for all hardware threads.
 

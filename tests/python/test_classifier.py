@@ -51,6 +51,11 @@ def test_space_cells_keep_the_labels(rng, path):
     with_cells = exactgeo.Classifier(mesh).classify(points)
     without = exactgeo.Classifier(mesh, space_cells=False).classify(points)
     np.testing.assert_array_equal(with_cells, without)
+    # A grid sized for few points (coarser) labels alike.
+    few = exactgeo.Classifier(mesh, expected_points=len(points)).classify(points)
+    np.testing.assert_array_equal(few, without)
+    with pytest.raises(TypeError):
+        exactgeo.Classifier(mesh, expected_points=-1)
 
 
 def test_known_solid_exactly(rng):
