@@ -382,11 +382,20 @@ class PlaneGraph {
   ScratchVector<std::uint32_t> neighbour_;
 };
 
+/// The working lists of triangulate_piece, kept from one piece to the next (a star polygon
+/// of n corners is cut into about n / 4 pieces).
+struct PieceLists {
+  ScratchVector<std::uint32_t> lower;
+  ScratchVector<std::uint32_t> upper;
+  ScratchVector<std::pair<std::uint32_t, bool>> sorted;  ///< (corner, on the upper chain)
+  ScratchVector<std::uint32_t> stack;
+};
+
 /// Triangles of one piece monotone in sweep order, given as its corners counter-clockwise
 /// (de Berg et al., TRIANGULATEMONOTONEPOLYGON), appended counter-clockwise; false when
 /// the piece is not monotone or a triangle would be degenerate (the precondition broken).
 bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> piece,
-                       ScratchVector<Triangle>& triangles) {
+                       PieceLists& lists, ScratchVector<Triangle>& triangles) {
   const std::size_t k = piece.size();
   if (k < 3) return false;
   const auto earlier = [](std::uint32_t a, std::uint32_t b) { return a < b; };
@@ -398,8 +407,9 @@ bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> 
   }
   // Counter-clockwise, from the first corner forward to the last is the lower chain (the
   // piece above it), and backward the upper chain; each must advance in sweep order.
-  ScratchVector<std::uint32_t> lower;
-  ScratchVector<std::uint32_t> upper;
+  auto& [lower, upper, sorted, stack] = lists;
+  lower.clear();
+  upper.clear();
   for (std::size_t i = (first + 1) % k; i != last; i = (i + 1) % k)
     lower.push_back(piece[i]);
   for (std::size_t i = (first + k - 1) % k; i != last; i = (i + k - 1) % k)
@@ -409,8 +419,7 @@ bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> 
   };
   if (!advancing(lower) || !advancing(upper)) return false;
   // All corners in sweep order, each marked with its chain.
-  ScratchVector<std::pair<std::uint32_t, bool>> sorted;  // (corner, on the upper chain)
-  sorted.reserve(k);
+  sorted.clear();
   sorted.emplace_back(piece[first], false);
   std::size_t i = 0;
   std::size_t j = 0;
@@ -429,7 +438,7 @@ bool triangulate_piece(const Geometry& geometry, std::span<const std::uint32_t> 
     if (turn == Sign::zero) degenerate = true;
     triangles.push_back(turn == Sign::positive ? Triangle{a, b, c} : Triangle{a, c, b});
   };
-  ScratchVector<std::uint32_t> stack = {sorted[0].first, sorted[1].first};
+  stack.assign({sorted[0].first, sorted[1].first});
   bool top_upper = sorted[1].second;
   for (std::size_t n = 2; n + 1 < k; ++n) {
     const auto [u, u_upper] = sorted[n];
@@ -469,6 +478,7 @@ bool triangulate_pieces(const Geometry& geometry, const Loops& loops, const Plan
   // it. The half-edges against the loops (v -> previous[v]) have the outside on their left.
   ScratchVector<char> used(graph.size(), 0);
   ScratchVector<std::uint32_t> piece;
+  PieceLists lists;
   for (std::uint32_t v = 0; v < loops.size(); ++v) {
     for (std::size_t s = graph.begin(v); s < graph.end(v); ++s) {
       if (used[s] || graph.neighbour(s) == loops.previous[v]) continue;
@@ -487,7 +497,7 @@ bool triangulate_pieces(const Geometry& geometry, const Loops& loops, const Plan
         slot = back == graph.begin(b) ? graph.end(b) - 1 : back - 1;
         a = b;
       } while (slot != s);
-      if (!triangulate_piece(geometry, piece, triangles)) return false;
+      if (!triangulate_piece(geometry, piece, lists, triangles)) return false;
     }
   }
   return true;
