@@ -1,9 +1,9 @@
 #pragma once
 
 // `exactgeo ccd-mesh`'s reports of a step: the text report (the mesh, the method, the pair
-// and candidate counts, the time of impact when asked for, the broad and narrow phases' times, then every
-// colliding pair, one per line) and, with --json, one JSON object. Both end with the
-// legend of the --mark file when there is one.
+// and candidate counts, the time of impact when asked for, the broad and narrow phases' times, then
+// every colliding pair, one per line) and, with --json, one JSON object. Both end with the legend
+// of the --mark file when there is one.
 
 #include <cstddef>
 #include <optional>

@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "cli/json.hpp"
+#include "cli/npy_labels.hpp"
 #include "cli/output_file.hpp"
 #include "exactgeo/inside/location.hpp"
 
@@ -21,8 +22,6 @@ const std::vector<std::string> kBatchMeshExtensions{".obj", ".off", ".ply", ".st
                                                     ".fbx", ".dae", ".3ds", ".amf", ".3mf"};
 
 namespace {
-
-constexpr const char* kLabelsSuffix = ".labels.txt";
 
 std::string lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -37,9 +36,10 @@ bool is_mesh_file(const fs::path& path) {
 }
 
 /// `relative` (a mesh's path below the folder or list) with its extension replaced.
-std::string labels_file(const fs::path& output_dir, fs::path relative) {
+std::string labels_file(const fs::path& output_dir, fs::path relative, BatchLabelsFormat format) {
   relative.replace_extension();
-  return (output_dir / relative).string() + kLabelsSuffix;
+  return (output_dir / relative).string() +
+         (format == BatchLabelsFormat::npy ? ".labels.npy" : ".labels.txt");
 }
 
 /// The line counts of labels text, by label.
@@ -60,7 +60,7 @@ inside::LocationCounts count_labels(const std::string& text) {
 
 std::optional<std::vector<BatchMesh>> batch_meshes(const std::string& given,
                                                    const std::string& output_dir,
-                                                   std::string& error) {
+                                                   BatchLabelsFormat format, std::string& error) {
   std::vector<BatchMesh> meshes;
   std::error_code failed;
   if (fs::is_directory(given, failed)) {
@@ -75,7 +75,8 @@ std::optional<std::vector<BatchMesh>> batch_meshes(const std::string& given,
     }
     std::sort(found.begin(), found.end());
     for (const fs::path& path : found)
-      meshes.push_back({path.string(), labels_file(output_dir, path.lexically_relative(given))});
+      meshes.push_back(
+          {path.string(), labels_file(output_dir, path.lexically_relative(given), format)});
     if (meshes.empty()) {
       error = given + ": no mesh file in this folder or below it (extensions:";
       for (const std::string& e : kBatchMeshExtensions)
@@ -100,14 +101,14 @@ std::optional<std::vector<BatchMesh>> batch_meshes(const std::string& given,
       // Labels keep the list's relative path, unless it leaves the list's folder.
       const bool below = !written.is_absolute() && !written.empty() && *written.begin() != "..";
       meshes.push_back(
-          {path.string(), labels_file(output_dir, below ? written : written.filename())});
+          {path.string(), labels_file(output_dir, below ? written : written.filename(), format)});
     }
     if (meshes.empty()) {
       error = given + ": the list names no mesh";
       return std::nullopt;
     }
   } else {
-    meshes.push_back({given, labels_file(output_dir, fs::path(given).filename())});
+    meshes.push_back({given, labels_file(output_dir, fs::path(given).filename(), format)});
   }
   std::map<std::string, std::string> writers;
   for (const BatchMesh& m : meshes) {
@@ -136,7 +137,8 @@ std::string batch_points(const std::string& points, const std::string& mesh) {
 ExitCode run_inside_batch(const InsideCommandOptions& options, std::ostream& out,
                           std::ostream& err) {
   std::string error;
-  const auto meshes = batch_meshes(options.mesh.path, options.output_dir, error);
+  const auto meshes =
+      batch_meshes(options.mesh.path, options.output_dir, options.labels_format, error);
   if (!meshes) {
     err << "exactgeo inside: " << error << "\n";
     return ExitCode::input_error;
@@ -180,7 +182,9 @@ ExitCode run_inside_batch(const InsideCommandOptions& options, std::ostream& out
     }
     const std::string text = labels.str();
     try {
-      file->commit(text);
+      // run_inside printed labels only, one word a line: npy_labels reads each.
+      file->commit(options.labels_format == BatchLabelsFormat::npy ? npy_labels(text).value()
+                                                                   : text);
     } catch (const OutputFileError& e) {
       fail(e.what());
       continue;

@@ -5,8 +5,8 @@
 // or one mesh; POINTS is one points file for every mesh, or a pattern naming each mesh's
 // own ("{mesh}.points.npy", {mesh} standing for the mesh's path without its extension).
 // Each mesh is classified as `exactgeo inside MESH POINTS` would, its labels written to
-// DIR/<name>.labels.txt whole or not at all; a mesh that fails is reported on `err`
-// and the others go on.
+// DIR/<name>.labels.txt (or .labels.npy) whole or not at all; a mesh that fails is reported on
+// `err` and the others go on.
 
 #include <iosfwd>
 #include <optional>
@@ -34,7 +34,7 @@ struct BatchMesh {
 /// folder, no mesh at all, or two meshes whose labels files would be one.
 std::optional<std::vector<BatchMesh>> batch_meshes(const std::string& given,
                                                    const std::string& output_dir,
-                                                   std::string& error);
+                                                   BatchLabelsFormat format, std::string& error);
 
 /// The points file of `mesh` for the pattern `points`: "{mesh}" replaced by the mesh's
 /// path without its extension (a pattern without it names one file for every mesh).

@@ -320,6 +320,18 @@ CLI::App& add_inside_command(CLI::App& app, InsideCommandOptions& options) {
       "Prints a line per mesh (--json: a JSON object per line); a mesh that fails is "
       "reported and the others go on (exit code 2 at the end, nothing printed)");
   output_dir->type_name("DIR");
+  sub->add_option_function<std::string>(
+         "--labels-format",
+         [&options](const std::string& format) {
+           options.labels_format =
+               format == "npy" ? BatchLabelsFormat::npy : BatchLabelsFormat::text;
+         },
+         "with --output-dir: each mesh's labels as text, one word a line (NAME.labels.txt, "
+         "the default), or as npy, a NumPy int8 array of the Python module's codes "
+         "(NAME.labels.npy: exactgeo.OUTSIDE, INSIDE, BOUNDARY, UNDECIDED), as "
+         "exactgeo.dask.classify_meshes writes")
+      ->check(CLI::IsMember({"text", "npy"}))
+      ->needs(output_dir);
   for (const char* name : {"--winding", "--labels"})
     output_dir->excludes(sub->get_option(name));
 

@@ -5,6 +5,7 @@
 // so memory stays flat however many there are. They are text, raw float64 or .npy
 // (io/point_reader.hpp).
 
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -20,6 +21,10 @@ class App;
 }
 
 namespace exactgeo::cli {
+
+/// The labels files of a batch: one word a line (NAME.labels.txt), or a NumPy int8 array
+/// of the Python module's codes (NAME.labels.npy, as exactgeo.dask.classify_meshes writes).
+enum class BatchLabelsFormat : std::uint8_t { text, npy };
 
 struct InsideCommandOptions {
   /// The mesh, its checks, the method and the threads (cli/inside_mesh.hpp).
@@ -38,6 +43,8 @@ struct InsideCommandOptions {
   /// mesh), `points` a points file or pattern, and each mesh's labels go to a file there
   /// (cli/inside_batch.hpp).
   std::string output_dir;
+  /// --labels-format: how the batch writes each mesh's labels.
+  BatchLabelsFormat labels_format = BatchLabelsFormat::text;
   /// --slice, --image, --resolution: a cross-section picture instead of labels; no points
   /// are read (cli/slice_command.hpp).
   SliceOptions slice;

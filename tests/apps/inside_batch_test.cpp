@@ -60,8 +60,10 @@ class InsideBatch : public ::testing::Test {
   const testing::ScratchDir scratch_{"exactgeo_inside_batch"};
   const fs::path& dir_ = scratch_.path;
 
-  Outcome run(const std::string& meshes, const std::string& points, bool json = false) {
+  Outcome run(const std::string& meshes, const std::string& points, bool json = false,
+              BatchLabelsFormat format = BatchLabelsFormat::text) {
     InsideCommandOptions options;
+    options.labels_format = format;
     options.mesh.path = meshes;
     options.points = points;
     options.output_dir = (dir_ / "labels").string();
@@ -155,6 +157,45 @@ TEST_F(InsideBatch, AListAndAPointsPatternPerMesh) {
   EXPECT_EQ(read_file(dir_ / "labels" / "sub" / "two.labels.txt"), "outside\ninside\n");
   EXPECT_EQ(batch_points("{mesh}.npy", "data/chair.obj"), "data/chair.npy");
   EXPECT_EQ(batch_points("grid.npy", "data/chair.obj"), "grid.npy");
+}
+
+// --labels-format npy: NAME.labels.npy, version 1.0 of the format: a header that says int8,
+// one dimension of the points' count, padded so that the data starts at a multiple of 64
+// bytes; then one code a point, inside::Location's values (the Python module's constants).
+TEST_F(InsideBatch, NpyLabelsAreTheCodesOfTheTextLabels) {
+  write_file(dir_ / "set" / "cube.obj", cube_obj(0));
+  write_file(dir_ / "set" / "open.obj", cube_obj(0, true));
+  std::string points;
+  for (int k = 0; k < 40; ++k)
+    points += std::to_string(-0.5 + 0.05 * k) + " 0.5 0.5\n";  // out, boundary, in, out
+  write_file(dir_ / "points.txt", points);
+  const Outcome outcome =
+      run((dir_ / "set").string(), (dir_ / "points.txt").string(), false, BatchLabelsFormat::npy);
+  ASSERT_EQ(outcome.code, ExitCode::success) << outcome.err;
+  for (const std::string name : {"cube", "open"}) {
+    const std::string npy = read_file(dir_ / "labels" / (name + ".labels.npy"));
+    const std::string text = single(dir_ / "set" / (name + ".obj"), dir_ / "points.txt");
+    ASSERT_GT(npy.size(), 10u);
+    EXPECT_EQ(npy.substr(0, 8), std::string("\x93NUMPY\x01\x00", 8));
+    const std::size_t header = static_cast<unsigned char>(npy[8]) +
+                               256 * static_cast<std::size_t>(static_cast<unsigned char>(npy[9]));
+    EXPECT_EQ((10 + header) % 64, 0u);
+    EXPECT_EQ(npy[10 + header - 1], '\n');
+    EXPECT_EQ(npy.substr(10, 58), "{'descr': '|i1', 'fortran_order': False, 'shape': (40,), }");
+    std::string codes;
+    std::istringstream lines(text);
+    for (std::string word; std::getline(lines, word);) {
+      const std::vector<std::string> words{"outside", "inside", "boundary", "undecided"};
+      const auto found = std::find(words.begin(), words.end(), word);
+      ASSERT_NE(found, words.end()) << word;
+      codes.push_back(static_cast<char>(found - words.begin()));
+    }
+    EXPECT_EQ(codes.size(), 40u);
+    EXPECT_EQ(npy.substr(10 + header), codes) << name;
+    EXPECT_NE(codes.find('\2'), std::string::npos) << name;  // each kind is there
+    EXPECT_NE(codes.find('\1'), std::string::npos) << name;
+  }
+  EXPECT_NE(outcome.out.find("cube.labels.npy"), std::string::npos) << outcome.out;
 }
 
 TEST_F(InsideBatch, WhatCannotRunIsRefusedBeforeAnything) {

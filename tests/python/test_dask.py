@@ -207,6 +207,26 @@ def test_classify_meshes_writes_one_labels_file_per_mesh(client, rng, tmp_path):
     assert "broken.off" in reported[2]["error"]
 
 
+def test_the_command_lines_npy_labels_files_are_classify_meshes_own(client, cli, rng, tmp_path):
+    # The same data set through both: `exactgeo inside --output-dir --labels-format npy`
+    # writes the files classify_meshes writes, byte for byte after loading.
+    shapes = tmp_path / "shapes"
+    (shapes / "a").mkdir(parents=True)
+    write_obj(shapes / "a" / "cube.obj", *subdivided_cube(2))
+    vertices, faces = subdivided_cube(1)
+    write_obj(shapes / "open_box.obj", vertices, faces[:-1])
+    points, _ = known_points(rng, 2_000)
+    np.save(tmp_path / "points.npy", points)
+    exactgeo.dask.classify_meshes(shapes, points, tmp_path / "dask")
+    done = cli.run("inside", shapes, tmp_path / "points.npy", "--output-dir", tmp_path / "cli",
+                   "--labels-format", "npy")
+    assert done.returncode == 0, done.stderr
+    for name in ("a/cube.labels.npy", "open_box.labels.npy"):
+        from_cli = np.load(tmp_path / "cli" / name)
+        assert from_cli.dtype == np.int8 and from_cli.shape == (len(points),)
+        assert np.array_equal(from_cli, np.load(tmp_path / "dask" / name)), name
+
+
 def test_classify_meshes_reads_each_meshs_own_points(client, rng, tmp_path):
     write_obj(tmp_path / "small.obj", *subdivided_cube(1))
     points, truth = known_points(rng, 500)
