@@ -42,7 +42,7 @@ struct CollapsePlan {
 };
 
 std::string collapsing(VertexIndex a, VertexIndex b) {
-  return "collapsing edge " + std::to_string(a) + "-" + std::to_string(b);
+  return operation_name("collapsing", a, b);
 }
 
 /// The neighbours of v (sorted, each once) and whether v is on the boundary (an edge of
@@ -246,12 +246,9 @@ class CollapsePass {
     for (std::size_t k = 0; k < planned.size(); ++k) {
       const std::size_t i = planned_collapse[k];
       if (!ahead[k]) {
-        outcomes_[i] = {Verdict::deferred,
-                        collapsing(planned[k].a, planned[k].b) +
-                            " comes near another collapse of the pass (a shared vertex around "
-                            "their ends, or their moving triangles' boxes)",
-                        {},
-                        {}};
+        outcomes_[i] = deferred(collapsing(planned[k].a, planned[k].b),
+                                "comes near another collapse of the pass (a shared vertex around "
+                                "their ends, or their moving triangles' boxes)");
         continue;
       }
       owner_[planned[k].a] = owner_[planned[k].b] = plans_.size();

@@ -22,7 +22,7 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 namespace {
 
 std::string flipping(VertexIndex a, VertexIndex b) {
-  return "flipping edge " + std::to_string(a) + "-" + std::to_string(b);
+  return operation_name("flipping", a, b);
 }
 
 /// A flip that passed its topology checks: its triangles, their replacements, the region
@@ -110,9 +110,8 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     // An index out of range finds no triangles here, and flip_topology names it.
-    auto planned = flip_topology(surface, a, b, table.on(a, b), [&](VertexIndex c, VertexIndex d) {
-      return !table.on(c, d).empty();
-    });
+    auto planned = flip_topology(surface, a, b, table.on(a, b),
+                                 [&](VertexIndex c, VertexIndex d) { return table.has(c, d); });
     if (auto* refused = std::get_if<Outcome>(&planned)) {
       outcomes[i] = std::move(*refused);
       continue;
@@ -121,12 +120,12 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     edge_of_plan.push_back(i);
   }
   // 2. No shared vertex with an earlier flip that goes ahead.
-  std::vector<internal::Footprint> by_vertices(plans.size());
+  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
   for (std::size_t k = 0; k < plans.size(); ++k) {
-    for (const RegionCorner& corner : plans[k].region)
-      by_vertices[k].vertices.push_back(corner.vertex);
+    for (std::size_t c = 0; c < 4; ++c)
+      by_vertices[k][c] = plans[k].region[c].vertex;
   }
-  const std::vector<bool> apart = internal::go_ahead(by_vertices, surface.vertices);
+  const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
   std::vector<std::size_t> candidates;
   std::vector<internal::Footprint> by_regions;

@@ -50,9 +50,22 @@ inline Outcome turns_over(const std::string& operation, const Triangle& made, Ve
           {}};
 }
 
+/// "flipping edge 6-12": an operation named for its outcome's reason, in a string with room
+/// for the rest of a reason, so that a pass's many deferrals cost one allocation each.
+inline std::string operation_name(std::string_view verb, VertexIndex a, VertexIndex b) {
+  std::string name;
+  name.reserve(128);
+  name.append(verb)
+      .append(" edge ")
+      .append(std::to_string(a))
+      .append("-")
+      .append(std::to_string(b));
+  return name;
+}
+
 /// A pass's refusal of an operation that waits for the next pass.
-inline Outcome deferred(const std::string& operation, std::string_view why) {
-  std::string reason = operation;
+inline Outcome deferred(std::string operation, std::string_view why) {
+  std::string reason = std::move(operation);
   reason.append(" ").append(why);
   return {Verdict::deferred, std::move(reason), std::nullopt, std::nullopt};
 }

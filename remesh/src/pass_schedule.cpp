@@ -21,12 +21,14 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
   // The regions whose boxes meet each region's, in one array bucketed by region (no
   // vector per region).
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  const RegionPoints boxed(points, regions);
-  boxes::overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
-    if (operation_of[x] == operation_of[y]) return;
-    pairs.emplace_back(x, y);
-    pairs.emplace_back(y, x);
-  });
+  if (!regions.empty()) {
+    const RegionPoints boxed(points, regions);
+    boxes::overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
+      if (operation_of[x] == operation_of[y]) return;
+      pairs.emplace_back(x, y);
+      pairs.emplace_back(y, x);
+    });
+  }
   std::vector<std::size_t> near_first(regions.size() + 1, 0);  // a counting sort by region
   for (const auto& [x, y] : pairs)
     ++near_first[x + 1];
@@ -63,6 +65,22 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
     ahead[i] = true;
     for (const VertexIndex v : vertices)
       taken[v] = true;
+  }
+  return ahead;
+}
+
+std::vector<bool> share_no_vertex(std::span<const std::array<VertexIndex, 4>> operations,
+                                  std::size_t vertex_count) {
+  std::vector<bool> ahead(operations.size(), false);
+  std::vector<bool> taken(vertex_count, false);  // a vertex of an operation going ahead
+  for (std::size_t i = 0; i < operations.size(); ++i) {
+    const auto& vertices = operations[i];
+    if (std::any_of(vertices.begin(), vertices.end(),
+                    [&](VertexIndex v) { return v != kNoVertex && taken[v]; }))
+      continue;
+    ahead[i] = true;
+    for (const VertexIndex v : vertices)
+      if (v != kNoVertex) taken[v] = true;
   }
   return ahead;
 }

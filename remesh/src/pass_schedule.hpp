@@ -45,4 +45,10 @@ struct Footprint {
 /// surface's vertices (a region's corners index them).
 std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<const Point3> points);
 
+/// go_ahead for operations of at most four vertices and no regions (a flip's corners, a
+/// split's edge and opposite corners; kNoVertex for none), with no vector per operation:
+/// whether each shares no vertex with an earlier one that goes ahead.
+std::vector<bool> share_no_vertex(std::span<const std::array<VertexIndex, 4>> operations,
+                                  std::size_t vertex_count);
+
 }  // namespace exactgeo::remesh::internal

@@ -29,7 +29,7 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 namespace {
 
 std::string splitting(VertexIndex a, VertexIndex b) {
-  return "splitting edge " + std::to_string(a) + "-" + std::to_string(b);
+  return operation_name("splitting", a, b);
 }
 
 /// A split: the edge's triangles, and once its geometry is checked the regions it sweeps
@@ -232,14 +232,15 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
     split_of_plan.push_back(i);
   }
   // 2. No shared vertex with an earlier split that goes ahead.
-  std::vector<internal::Footprint> by_vertices(plans.size());
+  // (Its vertices: the edge's ends and its triangles' opposite corners, one or two.)
+  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
   for (std::size_t k = 0; k < plans.size(); ++k) {
-    for (const std::size_t t : plans[k].on_edge) {
-      const Triangle& tri = surface.triangles[t];
-      by_vertices[k].vertices.insert(by_vertices[k].vertices.end(), tri.begin(), tri.end());
-    }
+    const SplitPlan& plan = plans[k];
+    by_vertices[k] = {plan.a, plan.b, kNoVertex, kNoVertex};
+    for (std::size_t i = 0; i < plan.on_edge.size(); ++i)
+      by_vertices[k][2 + i] = third_corner(surface.triangles[plan.on_edge[i]], plan.a, plan.b);
   }
-  const std::vector<bool> apart = internal::go_ahead(by_vertices, surface.vertices);
+  const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
   std::vector<std::size_t> candidates;
   std::vector<internal::Footprint> by_regions;

@@ -45,6 +45,15 @@ std::vector<std::size_t> EdgeTriangles::on(VertexIndex a, VertexIndex b) const {
   return found;
 }
 
+bool EdgeTriangles::has(VertexIndex a, VertexIndex b) const noexcept {
+  const Edge e = edge_of(a, b);
+  if (std::size_t{e[0]} + 1 >= first_.size()) return false;
+  for (std::size_t i = first_[e[0]]; i < first_[e[0] + 1]; ++i) {
+    if (sides_[i].other == e[1]) return true;
+  }
+  return false;
+}
+
 VertexTriangles::VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count)
     : first_(vertex_count + 1, 0) {
   for (const Triangle& t : triangles) {

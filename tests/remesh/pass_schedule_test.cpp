@@ -201,6 +201,37 @@ TEST_P(PassSchedule, RandomPassesFollowTheRule) {
   EXPECT_GT(waiting_for_a_region, 50);
 }
 
+TEST(PassScheduleVertices, ShareNoVertexIsGoAheadWithoutRegions) {
+  // Random operations of two to four vertices among 40 (kNoVertex for the missing ones),
+  // in passes of 30: share_no_vertex (the flip and split passes' first test) must answer
+  // as go_ahead does for the same vertices and no regions, which an operation that took a
+  // missing corner for a vertex, or ignored a later one's, would break.
+  std::mt19937_64 rng = exactgeo::testing::seeded_engine("share_no_vertex");
+  std::uniform_int_distribution<VertexIndex> vertex(0, 39);
+  std::uniform_int_distribution<int> count(2, 4);
+  const std::vector<Point3> points(40, Point3{0, 0, 0});
+  std::size_t ahead = 0, waiting = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::array<VertexIndex, 4>> operations(30);
+    std::vector<Footprint> footprints(30);
+    for (std::size_t i = 0; i < operations.size(); ++i) {
+      operations[i].fill(kNoVertex);
+      const int n = count(rng);
+      for (int k = 0; k < n; ++k) {
+        operations[i][static_cast<std::size_t>(k)] = vertex(rng);
+        footprints[i].vertices.push_back(operations[i][static_cast<std::size_t>(k)]);
+      }
+      if (n < 4) std::swap(operations[i][0], operations[i][3]);  // a gap first
+    }
+    const std::vector<bool> expected = go_ahead(footprints, points);
+    EXPECT_EQ(internal::share_no_vertex(operations, points.size()), expected) << trial;
+    ahead += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), true));
+    waiting += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), false));
+  }
+  EXPECT_GT(ahead, 500u);
+  EXPECT_GT(waiting, 500u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scales, PassSchedule, ::testing::Values(0, 1000, -1000),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            const int k = param_info.param;
