@@ -66,13 +66,6 @@ class Region {
   explicit Region(const std::array<RegionCorner, 4>& corners) {
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
-    volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
-    if (volume_ != Sign::zero) {
-      for (int l = 0; l < 4; ++l) {
-        const auto& t = face_opposite(l);
-        inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
-      }
-    }
     // The hull's shadow on a coordinate plane is a convex polygon, whose sides are the
     // corner pairs with the other two corners on one closed side of their line, not both
     // on it; the plane along the shadow axis through such a side has the whole hull on
@@ -109,10 +102,12 @@ class Region {
   // opposite corner l; bit 4 + e for a side of the shadow (corner pair e, kPairs), x's
   // shadow strictly beyond its line; bits 10 and 11 for a flat region's plane, x strictly
   // off it on either side. An element whose corners all lie strictly beyond one of them is
-  // apart from the region (and so, by on_plane, when some of them are region corners on it).
+  // apart from the region (and so, by on_faces and on_sides, when some of them are region corners
+  // on it).
 
   /// The bits of the faces or of a flat region's plane (kPlaneBits).
   unsigned beyond_planes(const Point3& x) const noexcept {
+    orient();
     unsigned mask = 0;
     if (volume_ != Sign::zero) {
       for (int l = 0; l < 4; ++l) {
@@ -146,9 +141,15 @@ class Region {
   /// shadow lies on), a flat region's plane. An element whose every corner is strictly
   /// beyond one such plane or a region corner (by vertex index) on it meets the plane only
   /// in the hull of those shared corners, and the region, on the plane's other closed
-  /// side, nowhere else: apart, beyond what it shares.
-  unsigned on_plane(int k) const noexcept {
-    unsigned mask = volume_ != Sign::zero ? 0xFu & ~(1u << k) : (1u << 10) | (1u << 11);
+  /// side, nowhere else: apart, beyond what it shares. In two parts, as the bits of
+  /// beyond_planes and beyond_sides: the faces or a flat region's plane (kPlaneBits), and
+  /// the sides (kSideBits).
+  unsigned on_faces(int k) const noexcept {
+    orient();
+    return volume_ != Sign::zero ? 0xFu & ~(1u << k) : (1u << 10) | (1u << 11);
+  }
+  unsigned on_sides(int k) const noexcept {
+    unsigned mask = 0;
     for (int e = 0; e < 6; ++e) {
       if (inward_side_[e] != Sign::zero && (on_side_[e] >> k & 1u) != 0) mask |= 1u << (4 + e);
     }
@@ -170,6 +171,7 @@ class Region {
 
   /// x in the closed hull.
   bool holds(const Point3& x) const noexcept {
+    orient();
     if (volume_ == Sign::zero) {  // flat: the union of the four corner triangles
       for (const auto& t : triangles()) {
         if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) != Sign::zero) return false;
@@ -181,7 +183,10 @@ class Region {
     return beyond_planes(x) == 0;
   }
 
-  bool flat() const noexcept { return volume_ == Sign::zero; }
+  bool flat() const noexcept {
+    orient();
+    return volume_ == Sign::zero;
+  }
 
   /// The four corner triangles: the tetrahedron's faces, or the flat hull's cover.
   std::array<std::array<Corner, 3>, 4> triangles() const noexcept {
@@ -207,9 +212,26 @@ class Region {
       {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
   std::array<Corner, 4> corners_{};
-  Sign volume_ = Sign::zero;
-  std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
-  int axis_ = 0;                  ///< the shadow's axis
+  /// The hull's volume's sign and each face's inward side, worked out when first asked: a
+  /// split's rounding-thin region leaves these orientations to exact arithmetic, and its
+  /// shadow's sides usually decide without them.
+  void orient() const noexcept {
+    if (oriented_) return;
+    oriented_ = true;
+    volume_ =
+        orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point);
+    if (volume_ == Sign::zero) return;
+    for (int l = 0; l < 4; ++l) {
+      const auto& t = face_opposite(l);
+      inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+    }
+  }
+
+  mutable bool oriented_ = false;
+  mutable Sign volume_ = Sign::zero;
+  /// the side of face l (opposite corner l) that corner l is on
+  mutable std::array<Sign, 4> inward_{};
+  int axis_ = 0;  ///< the shadow's axis
   /// per corner pair, the side of its line the other two corners are on in the shadow, or
   /// zero when the pair is no side (they are on both sides, or all on the line)
   std::array<Sign, 6> inward_side_{};
@@ -317,15 +339,16 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   // Each nearby vertex's separating planes (Region::beyond_planes, beyond_sides): those
   // it lies strictly beyond, and for a region corner those it lies on. An element whose
   // corners have one in common meets the region at most in the hull of its corners that
-  // are the region's (Region::on_plane): it is passed over, as the tests below would pass
+  // are the region's (Region::on_faces, on_sides): it is passed over, as the tests below would pass
   // it. One kind first, the other only for the elements the first leaves: the shadow's
   // sides for a flat region or a split's (orient3d against a flat region's plane is an
   // exact zero for a vertex of its sheet, and a face of a split's rounding-thin region
   // leaves its orientations to expansions), the faces for a flip's (a vertex on a side's
   // line, common on a grid, costs an exact zero in the shadow).
   const bool sides_first =
-      region.flat() || std::any_of(corners.begin(), corners.end(),
-                                   [](const RegionCorner& c) { return c.vertex == kNoVertex; });
+      std::any_of(corners.begin(), corners.end(),
+                  [](const RegionCorner& c) { return c.vertex == kNoVertex; }) ||
+      region.flat();
   constexpr unsigned kUnknown = ~0u;
   std::vector<int>& corner = near.corner;
   std::vector<unsigned>& first = near.first;
@@ -334,8 +357,7 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   first.resize(near.vertices.size());
   second.assign(near.vertices.size(), kUnknown);
   const auto bits = [&](std::size_t i, bool sides) {
-    if (corner[i] >= 0)
-      return region.on_plane(corner[i]) & (sides ? Region::kSideBits : Region::kPlaneBits);
+    if (corner[i] >= 0) return sides ? region.on_sides(corner[i]) : region.on_faces(corner[i]);
     const Point3& x = p[near.vertices[i]];
     return sides ? region.beyond_sides(x) : region.beyond_planes(x);
   };
@@ -432,18 +454,22 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
   // Apart when one's corners all lie strictly beyond one separating plane of the other
   // (Region::beyond_planes, beyond_sides: the other lies on its other closed side). Most pairs a
   // pass asks about end here, before the segment-triangle tests.
-  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
-    unsigned common = ~0u;
-    for (const RegionCorner& c : *b_corners)
-      common &= a->beyond_planes(c.point);
-    if (common != 0) return false;
-  }
-  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
-    unsigned common = ~0u;
-    for (const RegionCorner& c : *b_corners)
-      common &= a->beyond_sides(c.point);
-    if (common != 0) return false;
-  }
+  const auto apart_by = [&](bool sides) {
+    for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
+      unsigned common = ~0u;
+      for (const RegionCorner& c : *b_corners)
+        common &= sides ? a->beyond_sides(c.point) : a->beyond_planes(c.point);
+      if (common != 0) return true;
+    }
+    return false;
+  };
+  // The sides first when a region has a new point (a split's, rounding-thin: its faces'
+  // orientations fall to exact arithmetic), the faces first otherwise (on a grid, a
+  // corner on a side's line costs an exact zero in the shadow).
+  const auto is_new = [](const RegionCorner& c) { return c.vertex == kNoVertex; };
+  const bool sides_first =
+      std::any_of(x.begin(), x.end(), is_new) || std::any_of(y.begin(), y.end(), is_new);
+  if (apart_by(sides_first) || apart_by(!sides_first)) return false;
   for (const auto& [a, b, a_corners] : {std::tuple{&rx, &ry, &px}, std::tuple{&ry, &rx, &py}}) {
     for (const RegionCorner& c : *a_corners) {
       if (b->holds(c.point)) return true;
