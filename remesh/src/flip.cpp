@@ -41,7 +41,7 @@ struct FlipPlan {
 /// reason it is refused. `edge_exists(c, d)` says whether the surface has edge cd.
 template <class EdgeExists>
 std::variant<Outcome, FlipPlan> flip_topology(const Surface& surface, VertexIndex a, VertexIndex b,
-                                              std::vector<std::size_t> on_edge,
+                                              std::vector<std::size_t>& on_edge,
                                               const EdgeExists& edge_exists) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
   if (on_edge.size() != 2) return topology("a boundary edge cannot be flipped");
@@ -90,7 +90,8 @@ void apply_flip(Surface& surface, const FlipPlan& plan) {
 }  // namespace
 
 Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
-  const auto planned = flip_topology(surface, a, b, {}, [&](VertexIndex c, VertexIndex d) {
+  std::vector<std::size_t> on_edge;
+  const auto planned = flip_topology(surface, a, b, on_edge, [&](VertexIndex c, VertexIndex d) {
     return !surface.triangles_on_edge(c, d).empty();
   });
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
@@ -107,10 +108,12 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   // 1. Topology.
   std::vector<FlipPlan> plans;
   std::vector<std::size_t> edge_of_plan;
+  std::vector<std::size_t> on_edge;  // reused from flip to flip
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     // An index out of range finds no triangles here, and flip_topology names it.
-    auto planned = flip_topology(surface, a, b, table.on(a, b),
+    table.on(a, b, on_edge);
+    auto planned = flip_topology(surface, a, b, on_edge,
                                  [&](VertexIndex c, VertexIndex d) { return table.has(c, d); });
     if (auto* refused = std::get_if<Outcome>(&planned)) {
       outcomes[i] = std::move(*refused);
