@@ -18,8 +18,7 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       operation_of.push_back(i);
     }
   }
-  // The regions whose boxes meet each region's, in one array bucketed by region (no
-  // vector per region).
+  // The regions whose boxes meet each region's.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   if (!regions.empty()) {
     const RegionPoints boxed(points, regions);
@@ -29,15 +28,7 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       pairs.emplace_back(y, x);
     });
   }
-  std::vector<std::size_t> near_first(regions.size() + 1, 0);  // a counting sort by region
-  for (const auto& [x, y] : pairs)
-    ++near_first[x + 1];
-  for (std::size_t r = 0; r < regions.size(); ++r)
-    near_first[r + 1] += near_first[r];
-  std::vector<std::size_t> near(pairs.size());
-  std::vector<std::size_t> next(near_first.begin(), near_first.end() - 1);
-  for (const auto& [x, y] : pairs)
-    near[next[x]++] = y;
+  const Buckets near(regions.size(), pairs);
   std::vector<std::size_t> first_region(operations.size() + 1, 0);
   for (std::size_t i = 0; i < operations.size(); ++i)
     first_region[i + 1] = first_region[i] + operations[i].regions.size();
@@ -50,8 +41,7 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       continue;
     bool apart = true;
     for (std::size_t r = first_region[i]; r < first_region[i + 1] && apart; ++r) {
-      for (std::size_t n = near_first[r]; n < near_first[r + 1]; ++n) {
-        const std::size_t other = near[n];
+      for (const std::size_t other : near.of(r)) {
         const std::size_t j = operation_of[other];
         if (!ahead[j]) continue;  // later, or waiting
         const bool by_boxes = operations[i].by_boxes || operations[j].by_boxes;

@@ -279,44 +279,40 @@ std::string to_string(const Blocker& blocker) {
 namespace {
 
 /// The elements of the surface near one region: the triangles whose boxes meet its box
-/// (found by a box tree), their corners and their edges, each once, in the order
-/// first_in_region reports them (vertices by index, edges by their ends, triangles by
-/// index). Every element that meets the region has its box meeting the region's box,
-/// and so has a triangle of it; the others are tested and pass.
+/// (found by a box tree), their corners, each once, and their edges (walked as the
+/// triangles' sides: an edge of two of them is tested twice, which only repeats a test).
+/// Every element that meets the region has its box meeting the region's box, and so has
+/// a triangle of it; the others are tested and pass. Nothing is sorted: first_in keeps the
+/// least element it finds meeting the region, in the order first_in_region reports them
+/// (vertices by index, then edges by their ends, then triangles by index).
 struct NearbyElements {
+  static constexpr std::uint32_t kAbsent = ~std::uint32_t{0};
+
   std::vector<VertexIndex> vertices;
-  std::vector<Edge> edges;
-  std::vector<std::size_t> triangles;
+  std::span<const std::size_t> triangles;
   /// Per vertex, for first_in: which region corner it is, and its separating planes.
   std::vector<int> corner;
   std::vector<unsigned> first, second;
+  /// Per vertex of the surface: its place in `vertices`, or kAbsent.
+  std::vector<std::uint32_t> slot;
+
+  explicit NearbyElements(std::size_t vertex_count) : slot(vertex_count, kAbsent) {}
 
   /// Gathers the elements of the triangles `near` (reusing this object's storage from one
   /// region to the next).
   void gather(const Surface& surface, std::span<const std::size_t> near) {
-    triangles.assign(near.begin(), near.end());
-    std::sort(triangles.begin(), triangles.end());
+    for (const VertexIndex v : vertices)
+      slot[v] = kAbsent;
     vertices.clear();
-    keys_.clear();
+    triangles = near;
     for (const std::size_t t : triangles) {
-      const Triangle& tri = surface.triangles[t];
-      for (int k = 0; k < 3; ++k) {
-        vertices.push_back(tri[k]);
-        const Edge e = edge_of(tri[k], tri[(k + 1) % 3]);
-        keys_.push_back(std::uint64_t{e[0]} << 32 | e[1]);  // sorts as the edges do
+      for (const VertexIndex v : surface.triangles[t]) {
+        if (slot[v] != kAbsent) continue;
+        slot[v] = static_cast<std::uint32_t>(vertices.size());
+        vertices.push_back(v);
       }
     }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    std::sort(keys_.begin(), keys_.end());
-    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
-    edges.clear();
-    for (const std::uint64_t key : keys_)
-      edges.push_back({static_cast<VertexIndex>(key >> 32), static_cast<VertexIndex>(key)});
   }
-
- private:
-  std::vector<std::uint64_t> keys_;
 };
 
 std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
@@ -369,10 +365,7 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     if (second[i] == kUnknown) second[i] = bits(i, !sides_first);
     return second[i];
   };
-  const auto index_of = [&](VertexIndex v) {
-    const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
-    return static_cast<std::size_t>(it - near.vertices.begin());
-  };
+  const auto index_of = [&](VertexIndex v) -> std::size_t { return near.slot[v]; };
   // Whether the corners (indices into near.vertices) are all beyond one separating plane.
   const auto apart = [&](std::initializer_list<std::size_t> at) {
     unsigned common = ~0u;
@@ -384,33 +377,43 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
       common &= second_of(i);
     return common != 0;
   };
+  // The least of each kind that meets the region (NearbyElements is unsorted).
+  std::optional<VertexIndex> vertex;
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
-    if (corner[i] >= 0) continue;
+    if (corner[i] >= 0 || (vertex && *vertex < v)) continue;
     // Strictly beyond a separating plane: outside (a tetrahedron's vertex is inside
     // exactly when it is beyond none of its faces; a flat region's, when it is on its
     // plane, beyond none of its sides, and in one of its corner triangles).
     const bool inside =
         first[i] == 0 && second_of(i) == 0 && (!region.flat() || region.holds(p[v]));
-    if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
+    if (inside) vertex = v;
   }
-  for (const Edge& e : near.edges) {
-    if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
-    if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
-    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
-      return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
+  if (vertex) return Blocker{Blocker::Kind::vertex, {*vertex, kNoVertex, kNoVertex}};
+  std::optional<Edge> edge;
+  for (const std::size_t t : near.triangles) {
+    const Triangle& c = surface.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const Edge e = edge_of(c[k], c[(k + 1) % 3]);
+      if (edge && !(e < *edge)) continue;
+      if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
+      if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
+      if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) edge = e;
     }
   }
+  if (edge) return Blocker{Blocker::Kind::edge, {(*edge)[0], (*edge)[1], kNoVertex}};
+  std::optional<std::size_t> triangle;
   for (const std::size_t t : near.triangles) {
+    if (triangle && *triangle < t) continue;
     const Triangle& c = surface.triangles[t];
     if (apart({index_of(c[0]), index_of(c[1]), index_of(c[2])})) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
-    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
-      return Blocker{Blocker::Kind::triangle, c};
-    }
+    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}}))
+      triangle = t;
   }
+  if (triangle) return Blocker{Blocker::Kind::triangle, surface.triangles[*triangle]};
   return std::nullopt;
 }
 
@@ -426,14 +429,16 @@ std::vector<std::optional<Blocker>> first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
     std::span<const VertexIndex> partners) {
   const internal::RegionPoints boxed(surface.vertices, regions);
-  std::vector<std::vector<std::size_t>> near(regions.size());
+  // The triangles near each region.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   boxes::overlapping_groups<4, 3>(boxed.points, boxed.groups, surface.triangles,
-                                  [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
+                                  [&](std::size_t r, std::size_t t) { pairs.emplace_back(r, t); });
+  const internal::Buckets near(regions.size(), pairs);
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
-  NearbyElements elements;
+  NearbyElements elements(surface.vertices.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    elements.gather(surface, near[r]);
+    elements.gather(surface, near.of(r));
     found.push_back(
         first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
   }
