@@ -63,8 +63,11 @@ std::vector<SheetEdge> sheet_edges(const Surface& s) {
     bool forward;  // the triangle walks smaller -> larger
   };
   std::vector<std::size_t> first(s.vertices.size() + 1, 0);
-  for (const remesh::Triangle& tri : s.triangles) {
-    if (!sheet_triangle(s, tri)) continue;
+  std::vector<bool> sheet(s.triangles.size());  // asked once per triangle, used twice
+  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+    const remesh::Triangle& tri = s.triangles[t];
+    sheet[t] = sheet_triangle(s, tri);
+    if (!sheet[t]) continue;
     for (int k = 0; k < 3; ++k)
       ++first[std::min(tri[k], tri[(k + 1) % 3]) + 1];
   }
@@ -74,7 +77,7 @@ std::vector<SheetEdge> sheet_edges(const Surface& s) {
   std::vector<std::size_t> next(first.begin(), first.end() - 1);
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const remesh::Triangle& tri = s.triangles[t];
-    if (!sheet_triangle(s, tri)) continue;
+    if (!sheet[t]) continue;
     for (int k = 0; k < 3; ++k) {
       const VertexIndex p = tri[k], q = tri[(k + 1) % 3];
       sides[next[std::min(p, q)]++] = {std::max(p, q), t, p < q};
@@ -140,6 +143,38 @@ double world_min_angle(const Surface& s, const remesh::Triangle& t) {
   return world_min_angle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
+/// world_min_angle for the guard's new triangles, with kMinAngle standing for any angle
+/// clearly above it: every corner's sides u and v have |u x v| >= tan(kMinAngle) (u . v)
+/// with a relative margin of 1e-6 in the squares (far beyond the few ulps by which this
+/// and atan2 of hypot may round apart), or u . v <= 0 with u x v not zero (an angle of at
+/// least a right angle). The guard compares a new triangle's angle only with kMinAngle,
+/// and with the old triangles' only when it is below kMinAngle, so its answers are those
+/// of world_min_angle; most new triangles are clear of the floor and need no atan2.
+double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& r) {
+  static const double tan_squared = std::pow(std::tan(kMinAngle), 2);
+  constexpr double kMargin = 1.0 + 1e-6;
+  constexpr double kTiny = 1e-280;  // below it, squares may have lost their precision
+  const auto clear = [&](const Point3& o, const Point3& x, const Point3& y) {
+    const double ux = x[0] - o[0], uy = x[1] - o[1], uz = x[2] - o[2];
+    const double vx = y[0] - o[0], vy = y[1] - o[1], vz = y[2] - o[2];
+    const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+    const double cross_squared = cx * cx + cy * cy + cz * cz;
+    const double dot = ux * vx + uy * vy + uz * vz;
+    if (!(cross_squared > kTiny) || !std::isfinite(cross_squared) || !std::isfinite(dot))
+      return false;
+    if (dot <= 0.0) return true;
+    const double dot_squared = dot * dot;
+    return dot_squared > kTiny && std::isfinite(dot_squared) &&
+           cross_squared >= kMargin * tan_squared * dot_squared;
+  };
+  if (clear(p, q, r) && clear(q, r, p) && clear(r, p, q)) return kMinAngle;
+  return world_min_angle(p, q, r);
+}
+
+double world_min_angle_to_floor(const Surface& s, const remesh::Triangle& t) {
+  return world_min_angle_to_floor(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
+}
+
 /// The guard: the new triangles' smallest angle stays at kMinAngle, or at the old ones'
 /// (`old_worst()`, asked only when the new ones are below kMinAngle).
 template <class OldWorst>
@@ -179,7 +214,8 @@ bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) 
     const remesh::Triangle& tri = s.triangles[*t];
     const Point3& c = s.vertices[remesh::third_corner(tri, e.a, e.b)];
     const Point3 &a = s.vertices[e.a], &b = s.vertices[e.b];
-    const double made = std::min(world_min_angle(a, m, c), world_min_angle(m, b, c));
+    const double made =
+        std::min(world_min_angle_to_floor(a, m, c), world_min_angle_to_floor(m, b, c));
     if (!keeps_quality([&] { return world_min_angle(s, tri); }, made)) return false;
   }
   return true;
@@ -284,7 +320,7 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     const double after = material_area(w, tri[0], tri[1], tri[2]);
     if (!(before * after > 0.0)) return false;
     if (!keeps_quality([&] { return world_min_angle(w.surface, old); },
-                       world_min_angle(w.surface, tri))) {
+                       world_min_angle_to_floor(w.surface, tri))) {
       return false;
     }
   }
@@ -343,8 +379,8 @@ bool flip_pass(Work& w, VerdictCounts& counts) {
       return std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
                       world_min_angle(w.surface, w.surface.triangles[*e.right]));
     };
-    const double new_worst =
-        std::min(world_min_angle(w.surface, {c, e.a, d}), world_min_angle(w.surface, {d, e.b, c}));
+    const double new_worst = std::min(world_min_angle_to_floor(w.surface, {c, e.a, d}),
+                                      world_min_angle_to_floor(w.surface, {d, e.b, c}));
     if (!keeps_quality(old_worst, new_worst)) continue;
     flips.push_back(remesh::edge_of(e.a, e.b));
   }

@@ -24,12 +24,13 @@
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
+#include "one_mover.hpp"
 #include "operation_checks.hpp"
 #include "pass_schedule.hpp"
 
 namespace exactgeo::remesh {
 
-using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
+using namespace internal;  // one_mover.hpp, operation_checks.hpp, pass_schedule.hpp
 
 namespace {
 
@@ -42,7 +43,7 @@ struct CollapsePlan {
 };
 
 std::string collapsing(VertexIndex a, VertexIndex b) {
-  return "collapsing edge " + std::to_string(a) + "-" + std::to_string(b);
+  return operation_name("collapsing", a, b);
 }
 
 /// The neighbours of v (sorted, each once) and whether v is on the boundary (an edge of
@@ -246,12 +247,9 @@ class CollapsePass {
     for (std::size_t k = 0; k < planned.size(); ++k) {
       const std::size_t i = planned_collapse[k];
       if (!ahead[k]) {
-        outcomes_[i] = {Verdict::deferred,
-                        collapsing(planned[k].a, planned[k].b) +
-                            " comes near another collapse of the pass (a shared vertex around "
-                            "their ends, or their moving triangles' boxes)",
-                        {},
-                        {}};
+        outcomes_[i] = deferred(collapsing(planned[k].a, planned[k].b),
+                                "comes near another collapse of the pass (a shared vertex around "
+                                "their ends, or their moving triangles' boxes)");
         continue;
       }
       owner_[planned[k].a] = owner_[planned[k].b] = plans_.size();
@@ -305,6 +303,8 @@ class CollapsePass {
     // at the end of the step, by construction: a touch exact CCD spends the most on;
     // step() would decide them, and they would be passed over here); a pair's answer is
     // kept for the next round unless one of its corners' motions changed.
+    // A pair with a single moving corner (a collapse into one end moves one vertex) is
+    // clear without CCD when a plane keeps its swept hull apart (one_mover.hpp).
     ccd::MeshCcdCandidates candidates;
     enum Known : std::int8_t { unknown, clear, colliding };
     std::vector<Known> vf_known, ee_known;
@@ -345,7 +345,9 @@ class CollapsePass {
             moved_differently[local[2]]) {
           const ccd::VertexFaceQuery query =
               ccd::vertex_face_query(positions, reach.triangles, pair);
-          vf_known[n] = ccd::vertex_face_ccd(query, exact).collision ? colliding : clear;
+          vf_known[n] = !one_mover_apart(query) && ccd::vertex_face_ccd(query, exact).collision
+                            ? colliding
+                            : clear;
         }
         if (vf_known[n] != colliding) continue;
         changed |= refuse(x, {Blocker::Kind::triangle, t});
@@ -363,7 +365,9 @@ class CollapsePass {
             moved_differently[pair.a[1]] || moved_differently[pair.b[0]] ||
             moved_differently[pair.b[1]]) {
           const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
-          ee_known[n] = ccd::edge_edge_ccd(query, exact).collision ? colliding : clear;
+          ee_known[n] = !one_mover_apart(query) && ccd::edge_edge_ccd(query, exact).collision
+                            ? colliding
+                            : clear;
         }
         if (ee_known[n] != colliding) continue;
         const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};

@@ -22,7 +22,7 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 namespace {
 
 std::string flipping(VertexIndex a, VertexIndex b) {
-  return "flipping edge " + std::to_string(a) + "-" + std::to_string(b);
+  return operation_name("flipping", a, b);
 }
 
 /// A flip that passed its topology checks: its triangles, their replacements, the region
@@ -41,7 +41,7 @@ struct FlipPlan {
 /// reason it is refused. `edge_exists(c, d)` says whether the surface has edge cd.
 template <class EdgeExists>
 std::variant<Outcome, FlipPlan> flip_topology(const Surface& surface, VertexIndex a, VertexIndex b,
-                                              std::vector<std::size_t> on_edge,
+                                              std::vector<std::size_t>& on_edge,
                                               const EdgeExists& edge_exists) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
   if (on_edge.size() != 2) return topology("a boundary edge cannot be flipped");
@@ -90,7 +90,8 @@ void apply_flip(Surface& surface, const FlipPlan& plan) {
 }  // namespace
 
 Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
-  const auto planned = flip_topology(surface, a, b, {}, [&](VertexIndex c, VertexIndex d) {
+  std::vector<std::size_t> on_edge;
+  const auto planned = flip_topology(surface, a, b, on_edge, [&](VertexIndex c, VertexIndex d) {
     return !surface.triangles_on_edge(c, d).empty();
   });
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
@@ -107,12 +108,13 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   // 1. Topology.
   std::vector<FlipPlan> plans;
   std::vector<std::size_t> edge_of_plan;
+  std::vector<std::size_t> on_edge;  // reused from flip to flip
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     // An index out of range finds no triangles here, and flip_topology names it.
-    auto planned = flip_topology(surface, a, b, table.on(a, b), [&](VertexIndex c, VertexIndex d) {
-      return !table.on(c, d).empty();
-    });
+    table.on(a, b, on_edge);
+    auto planned = flip_topology(surface, a, b, on_edge,
+                                 [&](VertexIndex c, VertexIndex d) { return table.has(c, d); });
     if (auto* refused = std::get_if<Outcome>(&planned)) {
       outcomes[i] = std::move(*refused);
       continue;
@@ -121,12 +123,12 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     edge_of_plan.push_back(i);
   }
   // 2. No shared vertex with an earlier flip that goes ahead.
-  std::vector<internal::Footprint> by_vertices(plans.size());
+  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
   for (std::size_t k = 0; k < plans.size(); ++k) {
-    for (const RegionCorner& corner : plans[k].region)
-      by_vertices[k].vertices.push_back(corner.vertex);
+    for (std::size_t c = 0; c < 4; ++c)
+      by_vertices[k][c] = plans[k].region[c].vertex;
   }
-  const std::vector<bool> apart = internal::go_ahead(by_vertices, surface.vertices);
+  const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
   std::vector<std::size_t> candidates;
   std::vector<internal::Footprint> by_regions;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -50,9 +51,25 @@ inline Outcome turns_over(const std::string& operation, const Triangle& made, Ve
           {}};
 }
 
+/// "flipping edge 6-12": an operation named for its outcome's reason, in a string with room
+/// for the rest of a reason, so that a pass's many deferrals cost one allocation each.
+inline std::string operation_name(std::string_view verb, VertexIndex a, VertexIndex b) {
+  std::array<char, 10> digits_a{}, digits_b{};  // a 32-bit number each
+  char* end_a = std::to_chars(digits_a.data(), digits_a.data() + digits_a.size(), a).ptr;
+  char* end_b = std::to_chars(digits_b.data(), digits_b.data() + digits_b.size(), b).ptr;
+  std::string name;
+  name.reserve(128);
+  name.append(verb)
+      .append(" edge ")
+      .append(digits_a.data(), end_a)
+      .append("-")
+      .append(digits_b.data(), end_b);
+  return name;
+}
+
 /// A pass's refusal of an operation that waits for the next pass.
-inline Outcome deferred(const std::string& operation, std::string_view why) {
-  std::string reason = operation;
+inline Outcome deferred(std::string operation, std::string_view why) {
+  std::string reason = std::move(operation);
   reason.append(" ").append(why);
   return {Verdict::deferred, std::move(reason), std::nullopt, std::nullopt};
 }
@@ -83,6 +100,26 @@ inline std::optional<std::string> edge_problem(const Surface& s, VertexIndex a, 
   }
   return std::nullopt;
 }
+
+/// The one or two triangles of an edge an operation changes (edge_problem refuses an edge
+/// of more), held in place: a pass plans thousands of operations.
+class EdgeTrianglesOfOne {
+ public:
+  EdgeTrianglesOfOne() = default;
+  /// Precondition: at most two.
+  explicit EdgeTrianglesOfOne(const std::vector<std::size_t>& triangles) noexcept
+      : size_(triangles.size()) {
+    std::copy(triangles.begin(), triangles.end(), triangles_.begin());
+  }
+  std::size_t size() const noexcept { return size_; }
+  std::size_t operator[](std::size_t i) const noexcept { return triangles_[i]; }
+  const std::size_t* begin() const noexcept { return triangles_.data(); }
+  const std::size_t* end() const noexcept { return triangles_.data() + size_; }
+
+ private:
+  std::array<std::size_t, 2> triangles_{};
+  std::size_t size_ = 0;
+};
 
 /// The triangles on every edge of a surface (surface/triangle_surface.hpp).
 inline EdgeTriangles edge_triangles(const Surface& s) {

@@ -41,8 +41,16 @@ struct Footprint {
 /// For each operation in order, whether it goes ahead: not when it shares a vertex with an
 /// earlier one that goes ahead, or when one of its regions meets one of that one's
 /// (regions_meet, for the pairs whose boxes a box tree finds overlapping; the boxes alone
-/// when either footprint is by_boxes). The others wait for the next pass. `points` are the
-/// surface's vertices (a region's corners index them).
+/// when either footprint is by_boxes; when every one is, each operation is checked in
+/// order against the boxes of those going ahead, not by a tree of every region). The
+/// others wait for the next pass. `points` are the surface's vertices (a region's corners
+/// index them).
 std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<const Point3> points);
+
+/// go_ahead for operations of at most four vertices and no regions (a flip's corners, a
+/// split's edge and opposite corners; kNoVertex for none), with no vector per operation:
+/// whether each shares no vertex with an earlier one that goes ahead.
+std::vector<bool> share_no_vertex(std::span<const std::array<VertexIndex, 4>> operations,
+                                  std::size_t vertex_count);
 
 }  // namespace exactgeo::remesh::internal

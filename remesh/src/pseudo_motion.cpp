@@ -5,6 +5,7 @@
 
 #include "exactgeo/boxes/exact_box.hpp"
 #include "exactgeo/ccd/ccd.hpp"
+#include "one_mover.hpp"
 
 namespace exactgeo::remesh {
 
@@ -42,16 +43,18 @@ class Step {
     return box;
   }
 
+  // A pair with one moving corner whose swept hull a plane keeps apart needs no CCD
+  // (one_mover.hpp).
   bool vertex_face_collides(VertexIndex v, const Triangle& t) const noexcept {
     const ccd::VertexFaceQuery q{t0_[v], t0_[t[0]], t0_[t[1]], t0_[t[2]],
                                  t1_[v], t1_[t[0]], t1_[t[1]], t1_[t[2]]};
-    return ccd::vertex_face_ccd(q).collision;
+    return !internal::one_mover_apart(q) && ccd::vertex_face_ccd(q).collision;
   }
 
   bool edge_edge_collides(const Edge& a, const Edge& b) const noexcept {
     const ccd::EdgeEdgeQuery q{t0_[a[0]], t0_[a[1]], t0_[b[0]], t0_[b[1]],
                                t1_[a[0]], t1_[a[1]], t1_[b[0]], t1_[b[1]]};
-    return ccd::edge_edge_ccd(q).collision;
+    return !internal::one_mover_apart(q) && ccd::edge_edge_ccd(q).collision;
   }
 
  private:

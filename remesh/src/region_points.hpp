@@ -2,10 +2,12 @@
 
 // A pass's swept regions as groups of points for the box queries of boxes/point_groups.hpp:
 // a region's corners index the surface's vertices, and its new point (a split's, vertex
-// kNoVertex) is appended after them.
+// kNoVertex) is appended after them; and the pairs such a query finds, bucketed.
 
 #include <array>
+#include <cstddef>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/remesh/swept_region.hpp"
@@ -31,6 +33,30 @@ struct RegionPoints {
       }
     }
   }
+};
+
+/// Pairs (x, y) that a box query found, bucketed by x: the ys of x are of(x), in the order
+/// found (a counting sort into one array, no vector per x).
+class Buckets {
+ public:
+  Buckets(std::size_t count, std::span<const std::pair<std::size_t, std::size_t>> pairs)
+      : first_(count + 1, 0), items_(pairs.size()) {
+    for (const auto& [x, y] : pairs)
+      ++first_[x + 1];
+    for (std::size_t x = 0; x < count; ++x)
+      first_[x + 1] += first_[x];
+    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    for (const auto& [x, y] : pairs)
+      items_[next[x]++] = y;
+  }
+
+  std::span<const std::size_t> of(std::size_t x) const noexcept {
+    return std::span(items_).subspan(first_[x], first_[x + 1] - first_[x]);
+  }
+
+ private:
+  std::vector<std::size_t> first_;
+  std::vector<std::size_t> items_;
 };
 
 }  // namespace exactgeo::remesh::internal

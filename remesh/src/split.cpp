@@ -29,7 +29,7 @@ using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
 namespace {
 
 std::string splitting(VertexIndex a, VertexIndex b) {
-  return "splitting edge " + std::to_string(a) + "-" + std::to_string(b);
+  return operation_name("splitting", a, b);
 }
 
 /// A split: the edge's triangles, and once its geometry is checked the regions it sweeps
@@ -38,16 +38,15 @@ struct SplitPlan {
   VertexIndex a = 0;
   VertexIndex b = 0;
   Point3 at{};
-  std::vector<std::size_t> on_edge;
+  EdgeTrianglesOfOne on_edge;
   std::vector<std::array<RegionCorner, 4>> regions;
   std::vector<VertexIndex> partners;  ///< per region: the other side's opposite corner
 };
 
 /// The triangles x m c and m y c that replace each triangle x y c of the edge (walking
 /// x -> y along it), for a new vertex numbered m.
-std::vector<Triangle> split_triangles(const Surface& surface,
-                                      const std::vector<std::size_t>& on_edge, VertexIndex a,
-                                      VertexIndex b, VertexIndex m) {
+std::vector<Triangle> split_triangles(const Surface& surface, const EdgeTrianglesOfOne& on_edge,
+                                      VertexIndex a, VertexIndex b, VertexIndex m) {
   std::vector<Triangle> made;
   for (const std::size_t t : on_edge) {
     const Triangle& old = surface.triangles[t];
@@ -127,9 +126,9 @@ bool sides_apart(const Surface& surface, const SplitPlan& plan, const std::vecto
 
 std::variant<Outcome, SplitPlan> split_topology(const Surface& surface, VertexIndex a,
                                                 VertexIndex b, const Point3& at,
-                                                std::vector<std::size_t> on_edge) {
+                                                std::vector<std::size_t>& on_edge) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
-  return SplitPlan{a, b, at, std::move(on_edge), {}, {}};
+  return SplitPlan{a, b, at, EdgeTrianglesOfOne(on_edge), {}, {}};
 }
 
 /// The geometry of a planned split: nullopt with its regions filled in, or why it is
@@ -203,7 +202,8 @@ Outcome apply_split(Surface& surface, const SplitPlan& plan) {
 }  // namespace
 
 Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at) {
-  auto planned = split_topology(surface, a, b, at, {});
+  std::vector<std::size_t> on_edge;
+  auto planned = split_topology(surface, a, b, at, on_edge);
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   SplitPlan& plan = std::get<SplitPlan>(planned);
   if (auto refused = split_geometry(surface, plan)) return *refused;
@@ -221,9 +221,11 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   // 1. Topology.
   std::vector<SplitPlan> plans;
   std::vector<std::size_t> split_of_plan;
+  std::vector<std::size_t> on_edge;  // reused from split to split
   for (std::size_t i = 0; i < splits.size(); ++i) {
     const Split& s = splits[i];
-    auto planned = split_topology(surface, s.a, s.b, s.at, table.on(s.a, s.b));
+    table.on(s.a, s.b, on_edge);
+    auto planned = split_topology(surface, s.a, s.b, s.at, on_edge);
     if (auto* refused = std::get_if<Outcome>(&planned)) {
       outcomes[i] = std::move(*refused);
       continue;
@@ -232,14 +234,15 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
     split_of_plan.push_back(i);
   }
   // 2. No shared vertex with an earlier split that goes ahead.
-  std::vector<internal::Footprint> by_vertices(plans.size());
+  // (Its vertices: the edge's ends and its triangles' opposite corners, one or two.)
+  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
   for (std::size_t k = 0; k < plans.size(); ++k) {
-    for (const std::size_t t : plans[k].on_edge) {
-      const Triangle& tri = surface.triangles[t];
-      by_vertices[k].vertices.insert(by_vertices[k].vertices.end(), tri.begin(), tri.end());
-    }
+    const SplitPlan& plan = plans[k];
+    by_vertices[k] = {plan.a, plan.b, kNoVertex, kNoVertex};
+    for (std::size_t i = 0; i < plan.on_edge.size(); ++i)
+      by_vertices[k][2 + i] = third_corner(surface.triangles[plan.on_edge[i]], plan.a, plan.b);
   }
-  const std::vector<bool> apart = internal::go_ahead(by_vertices, surface.vertices);
+  const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
   std::vector<std::size_t> candidates;
   std::vector<internal::Footprint> by_regions;

@@ -66,13 +66,6 @@ class Region {
   explicit Region(const std::array<RegionCorner, 4>& corners) {
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
-    volume_ = orient3d(corners[0].point, corners[1].point, corners[2].point, corners[3].point);
-    if (volume_ != Sign::zero) {
-      for (int l = 0; l < 4; ++l) {
-        const auto& t = face_opposite(l);
-        inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
-      }
-    }
     // The hull's shadow on a coordinate plane is a convex polygon, whose sides are the
     // corner pairs with the other two corners on one closed side of their line, not both
     // on it; the plane along the shadow axis through such a side has the whole hull on
@@ -109,10 +102,12 @@ class Region {
   // opposite corner l; bit 4 + e for a side of the shadow (corner pair e, kPairs), x's
   // shadow strictly beyond its line; bits 10 and 11 for a flat region's plane, x strictly
   // off it on either side. An element whose corners all lie strictly beyond one of them is
-  // apart from the region (and so, by on_plane, when some of them are region corners on it).
+  // apart from the region (and so, by on_faces and on_sides, when some of them are region corners
+  // on it).
 
   /// The bits of the faces or of a flat region's plane (kPlaneBits).
   unsigned beyond_planes(const Point3& x) const noexcept {
+    orient();
     unsigned mask = 0;
     if (volume_ != Sign::zero) {
       for (int l = 0; l < 4; ++l) {
@@ -146,9 +141,15 @@ class Region {
   /// shadow lies on), a flat region's plane. An element whose every corner is strictly
   /// beyond one such plane or a region corner (by vertex index) on it meets the plane only
   /// in the hull of those shared corners, and the region, on the plane's other closed
-  /// side, nowhere else: apart, beyond what it shares.
-  unsigned on_plane(int k) const noexcept {
-    unsigned mask = volume_ != Sign::zero ? 0xFu & ~(1u << k) : (1u << 10) | (1u << 11);
+  /// side, nowhere else: apart, beyond what it shares. In two parts, as the bits of
+  /// beyond_planes and beyond_sides: the faces or a flat region's plane (kPlaneBits), and
+  /// the sides (kSideBits).
+  unsigned on_faces(int k) const noexcept {
+    orient();
+    return volume_ != Sign::zero ? 0xFu & ~(1u << k) : (1u << 10) | (1u << 11);
+  }
+  unsigned on_sides(int k) const noexcept {
+    unsigned mask = 0;
     for (int e = 0; e < 6; ++e) {
       if (inward_side_[e] != Sign::zero && (on_side_[e] >> k & 1u) != 0) mask |= 1u << (4 + e);
     }
@@ -170,6 +171,7 @@ class Region {
 
   /// x in the closed hull.
   bool holds(const Point3& x) const noexcept {
+    orient();
     if (volume_ == Sign::zero) {  // flat: the union of the four corner triangles
       for (const auto& t : triangles()) {
         if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) != Sign::zero) return false;
@@ -181,7 +183,10 @@ class Region {
     return beyond_planes(x) == 0;
   }
 
-  bool flat() const noexcept { return volume_ == Sign::zero; }
+  bool flat() const noexcept {
+    orient();
+    return volume_ == Sign::zero;
+  }
 
   /// The four corner triangles: the tetrahedron's faces, or the flat hull's cover.
   std::array<std::array<Corner, 3>, 4> triangles() const noexcept {
@@ -207,9 +212,26 @@ class Region {
       {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
   std::array<Corner, 4> corners_{};
-  Sign volume_ = Sign::zero;
-  std::array<Sign, 4> inward_{};  ///< the side of face l (opposite corner l) that corner l is on
-  int axis_ = 0;                  ///< the shadow's axis
+  /// The hull's volume's sign and each face's inward side, worked out when first asked: a
+  /// split's rounding-thin region leaves these orientations to exact arithmetic, and its
+  /// shadow's sides usually decide without them.
+  void orient() const noexcept {
+    if (oriented_) return;
+    oriented_ = true;
+    volume_ =
+        orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point);
+    if (volume_ == Sign::zero) return;
+    for (int l = 0; l < 4; ++l) {
+      const auto& t = face_opposite(l);
+      inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
+    }
+  }
+
+  mutable bool oriented_ = false;
+  mutable Sign volume_ = Sign::zero;
+  /// the side of face l (opposite corner l) that corner l is on
+  mutable std::array<Sign, 4> inward_{};
+  int axis_ = 0;  ///< the shadow's axis
   /// per corner pair, the side of its line the other two corners are on in the shadow, or
   /// zero when the pair is no side (they are on both sides, or all on the line)
   std::array<Sign, 6> inward_side_{};
@@ -257,44 +279,40 @@ std::string to_string(const Blocker& blocker) {
 namespace {
 
 /// The elements of the surface near one region: the triangles whose boxes meet its box
-/// (found by a box tree), their corners and their edges, each once, in the order
-/// first_in_region reports them (vertices by index, edges by their ends, triangles by
-/// index). Every element that meets the region has its box meeting the region's box,
-/// and so has a triangle of it; the others are tested and pass.
+/// (found by a box tree), their corners, each once, and their edges (walked as the
+/// triangles' sides: an edge of two of them is tested twice, which only repeats a test).
+/// Every element that meets the region has its box meeting the region's box, and so has
+/// a triangle of it; the others are tested and pass. Nothing is sorted: first_in keeps the
+/// least element it finds meeting the region, in the order first_in_region reports them
+/// (vertices by index, then edges by their ends, then triangles by index).
 struct NearbyElements {
+  static constexpr std::uint32_t kAbsent = ~std::uint32_t{0};
+
   std::vector<VertexIndex> vertices;
-  std::vector<Edge> edges;
-  std::vector<std::size_t> triangles;
+  std::span<const std::size_t> triangles;
   /// Per vertex, for first_in: which region corner it is, and its separating planes.
   std::vector<int> corner;
   std::vector<unsigned> first, second;
+  /// Per vertex of the surface: its place in `vertices`, or kAbsent.
+  std::vector<std::uint32_t> slot;
+
+  explicit NearbyElements(std::size_t vertex_count) : slot(vertex_count, kAbsent) {}
 
   /// Gathers the elements of the triangles `near` (reusing this object's storage from one
   /// region to the next).
   void gather(const Surface& surface, std::span<const std::size_t> near) {
-    triangles.assign(near.begin(), near.end());
-    std::sort(triangles.begin(), triangles.end());
+    for (const VertexIndex v : vertices)
+      slot[v] = kAbsent;
     vertices.clear();
-    keys_.clear();
+    triangles = near;
     for (const std::size_t t : triangles) {
-      const Triangle& tri = surface.triangles[t];
-      for (int k = 0; k < 3; ++k) {
-        vertices.push_back(tri[k]);
-        const Edge e = edge_of(tri[k], tri[(k + 1) % 3]);
-        keys_.push_back(std::uint64_t{e[0]} << 32 | e[1]);  // sorts as the edges do
+      for (const VertexIndex v : surface.triangles[t]) {
+        if (slot[v] != kAbsent) continue;
+        slot[v] = static_cast<std::uint32_t>(vertices.size());
+        vertices.push_back(v);
       }
     }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-    std::sort(keys_.begin(), keys_.end());
-    keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
-    edges.clear();
-    for (const std::uint64_t key : keys_)
-      edges.push_back({static_cast<VertexIndex>(key >> 32), static_cast<VertexIndex>(key)});
   }
-
- private:
-  std::vector<std::uint64_t> keys_;
 };
 
 std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
@@ -317,15 +335,16 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   // Each nearby vertex's separating planes (Region::beyond_planes, beyond_sides): those
   // it lies strictly beyond, and for a region corner those it lies on. An element whose
   // corners have one in common meets the region at most in the hull of its corners that
-  // are the region's (Region::on_plane): it is passed over, as the tests below would pass
+  // are the region's (Region::on_faces, on_sides): it is passed over, as the tests below would pass
   // it. One kind first, the other only for the elements the first leaves: the shadow's
   // sides for a flat region or a split's (orient3d against a flat region's plane is an
   // exact zero for a vertex of its sheet, and a face of a split's rounding-thin region
   // leaves its orientations to expansions), the faces for a flip's (a vertex on a side's
   // line, common on a grid, costs an exact zero in the shadow).
   const bool sides_first =
-      region.flat() || std::any_of(corners.begin(), corners.end(),
-                                   [](const RegionCorner& c) { return c.vertex == kNoVertex; });
+      std::any_of(corners.begin(), corners.end(),
+                  [](const RegionCorner& c) { return c.vertex == kNoVertex; }) ||
+      region.flat();
   constexpr unsigned kUnknown = ~0u;
   std::vector<int>& corner = near.corner;
   std::vector<unsigned>& first = near.first;
@@ -334,8 +353,7 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   first.resize(near.vertices.size());
   second.assign(near.vertices.size(), kUnknown);
   const auto bits = [&](std::size_t i, bool sides) {
-    if (corner[i] >= 0)
-      return region.on_plane(corner[i]) & (sides ? Region::kSideBits : Region::kPlaneBits);
+    if (corner[i] >= 0) return sides ? region.on_sides(corner[i]) : region.on_faces(corner[i]);
     const Point3& x = p[near.vertices[i]];
     return sides ? region.beyond_sides(x) : region.beyond_planes(x);
   };
@@ -347,10 +365,7 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     if (second[i] == kUnknown) second[i] = bits(i, !sides_first);
     return second[i];
   };
-  const auto index_of = [&](VertexIndex v) {
-    const auto it = std::lower_bound(near.vertices.begin(), near.vertices.end(), v);
-    return static_cast<std::size_t>(it - near.vertices.begin());
-  };
+  const auto index_of = [&](VertexIndex v) -> std::size_t { return near.slot[v]; };
   // Whether the corners (indices into near.vertices) are all beyond one separating plane.
   const auto apart = [&](std::initializer_list<std::size_t> at) {
     unsigned common = ~0u;
@@ -362,33 +377,43 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
       common &= second_of(i);
     return common != 0;
   };
+  // The least of each kind that meets the region (NearbyElements is unsorted).
+  std::optional<VertexIndex> vertex;
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
-    if (corner[i] >= 0) continue;
+    if (corner[i] >= 0 || (vertex && *vertex < v)) continue;
     // Strictly beyond a separating plane: outside (a tetrahedron's vertex is inside
     // exactly when it is beyond none of its faces; a flat region's, when it is on its
     // plane, beyond none of its sides, and in one of its corner triangles).
     const bool inside =
         first[i] == 0 && second_of(i) == 0 && (!region.flat() || region.holds(p[v]));
-    if (inside) return Blocker{Blocker::Kind::vertex, {v, kNoVertex, kNoVertex}};
+    if (inside) vertex = v;
   }
-  for (const Edge& e : near.edges) {
-    if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
-    if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
-    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) {
-      return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
+  if (vertex) return Blocker{Blocker::Kind::vertex, {*vertex, kNoVertex, kNoVertex}};
+  std::optional<Edge> edge;
+  for (const std::size_t t : near.triangles) {
+    const Triangle& c = surface.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const Edge e = edge_of(c[k], c[(k + 1) % 3]);
+      if (edge && !(e < *edge)) continue;
+      if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
+      if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
+      if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) edge = e;
     }
   }
+  if (edge) return Blocker{Blocker::Kind::edge, {(*edge)[0], (*edge)[1], kNoVertex}};
+  std::optional<std::size_t> triangle;
   for (const std::size_t t : near.triangles) {
+    if (triangle && *triangle < t) continue;
     const Triangle& c = surface.triangles[t];
     if (apart({index_of(c[0]), index_of(c[1]), index_of(c[2])})) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
-    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}})) {
-      return Blocker{Blocker::Kind::triangle, c};
-    }
+    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}}))
+      triangle = t;
   }
+  if (triangle) return Blocker{Blocker::Kind::triangle, surface.triangles[*triangle]};
   return std::nullopt;
 }
 
@@ -404,14 +429,16 @@ std::vector<std::optional<Blocker>> first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
     std::span<const VertexIndex> partners) {
   const internal::RegionPoints boxed(surface.vertices, regions);
-  std::vector<std::vector<std::size_t>> near(regions.size());
+  // The triangles near each region.
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   boxes::overlapping_groups<4, 3>(boxed.points, boxed.groups, surface.triangles,
-                                  [&](std::size_t r, std::size_t t) { near[r].push_back(t); });
+                                  [&](std::size_t r, std::size_t t) { pairs.emplace_back(r, t); });
+  const internal::Buckets near(regions.size(), pairs);
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
-  NearbyElements elements;
+  NearbyElements elements(surface.vertices.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    elements.gather(surface, near[r]);
+    elements.gather(surface, near.of(r));
     found.push_back(
         first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
   }
@@ -432,18 +459,22 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
   // Apart when one's corners all lie strictly beyond one separating plane of the other
   // (Region::beyond_planes, beyond_sides: the other lies on its other closed side). Most pairs a
   // pass asks about end here, before the segment-triangle tests.
-  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
-    unsigned common = ~0u;
-    for (const RegionCorner& c : *b_corners)
-      common &= a->beyond_planes(c.point);
-    if (common != 0) return false;
-  }
-  for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
-    unsigned common = ~0u;
-    for (const RegionCorner& c : *b_corners)
-      common &= a->beyond_sides(c.point);
-    if (common != 0) return false;
-  }
+  const auto apart_by = [&](bool sides) {
+    for (const auto& [a, b_corners] : {std::pair{&rx, &py}, std::pair{&ry, &px}}) {
+      unsigned common = ~0u;
+      for (const RegionCorner& c : *b_corners)
+        common &= sides ? a->beyond_sides(c.point) : a->beyond_planes(c.point);
+      if (common != 0) return true;
+    }
+    return false;
+  };
+  // The sides first when a region has a new point (a split's, rounding-thin: its faces'
+  // orientations fall to exact arithmetic), the faces first otherwise (on a grid, a
+  // corner on a side's line costs an exact zero in the shadow).
+  const auto is_new = [](const RegionCorner& c) { return c.vertex == kNoVertex; };
+  const bool sides_first =
+      std::any_of(x.begin(), x.end(), is_new) || std::any_of(y.begin(), y.end(), is_new);
+  if (apart_by(sides_first) || apart_by(!sides_first)) return false;
   for (const auto& [a, b, a_corners] : {std::tuple{&rx, &ry, &px}, std::tuple{&ry, &rx, &py}}) {
     for (const RegionCorner& c : *a_corners) {
       if (b->holds(c.point)) return true;

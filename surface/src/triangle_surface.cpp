@@ -36,13 +36,27 @@ EdgeTriangles::EdgeTriangles(std::span<const Triangle> triangles, std::size_t ve
 }
 
 std::vector<std::size_t> EdgeTriangles::on(VertexIndex a, VertexIndex b) const {
-  const Edge e = edge_of(a, b);
   std::vector<std::size_t> found;
-  if (std::size_t{e[0]} + 1 >= first_.size()) return found;
+  on(a, b, found);
+  return found;
+}
+
+void EdgeTriangles::on(VertexIndex a, VertexIndex b, std::vector<std::size_t>& found) const {
+  const Edge e = edge_of(a, b);
+  found.clear();
+  if (std::size_t{e[0]} + 1 >= first_.size()) return;
   for (std::size_t i = first_[e[0]]; i < first_[e[0] + 1]; ++i) {
     if (sides_[i].other == e[1]) found.push_back(sides_[i].triangle);
   }
-  return found;
+}
+
+bool EdgeTriangles::has(VertexIndex a, VertexIndex b) const noexcept {
+  const Edge e = edge_of(a, b);
+  if (std::size_t{e[0]} + 1 >= first_.size()) return false;
+  for (std::size_t i = first_[e[0]]; i < first_[e[0] + 1]; ++i) {
+    if (sides_[i].other == e[1]) return true;
+  }
+  return false;
 }
 
 VertexTriangles::VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count)

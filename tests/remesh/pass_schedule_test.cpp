@@ -201,6 +201,110 @@ TEST_P(PassSchedule, RandomPassesFollowTheRule) {
   EXPECT_GT(waiting_for_a_region, 50);
 }
 
+TEST_P(PassSchedule, FootprintsThatAllAskForBoxesWaitForOverlappingBoxes) {
+  // A pass of collapses: every footprint asks for boxes, and go_ahead checks each against
+  // those going ahead (not every region against every other). Grid points (exact in the
+  // float boxes at every scale, a power of two): the rule as the header states it, with
+  // the regions' exact boxes, touching counting; a pass of forty operations over a pool of
+  // sixty vertices, so that both reasons to wait occur.
+  auto rng = testing::seeded_engine("remesh.pass_schedule.boxes");
+  std::uniform_int_distribution<int> coordinate(-8, 8);
+  std::uniform_int_distribution<int> reach(0, 4);
+  std::uniform_int_distribution<VertexIndex> vertex(0, 59);
+  std::uniform_int_distribution<int> count(1, 3);
+  int ahead = 0, waiting_for_a_vertex = 0, waiting_for_a_box = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Point3> points;
+    for (int i = 0; i < 60; ++i)
+      points.push_back(at(coordinate(rng), coordinate(rng), coordinate(rng)));
+    std::vector<Footprint> pass(40);
+    for (Footprint& f : pass) {
+      f.by_boxes = true;
+      for (int k = count(rng); k > 0; --k)
+        f.vertices.push_back(vertex(rng));
+      const Point3& centre = points[f.vertices[0]];
+      for (int r = count(rng) - 1; r > 0; --r) {  // up to two regions, near the first vertex
+        Region region{};
+        for (RegionCorner& c : region) {
+          Point3 q = centre;
+          for (double& x : q)
+            x += reach(rng) * scale();
+          c = {kNoVertex, q};
+        }
+        f.regions.push_back(region);
+      }
+    }
+    const auto boxes_overlap = [](const Region& x, const Region& y) {
+      for (int k = 0; k < 3; ++k) {
+        double x_lo = x[0].point[k], x_hi = x_lo, y_lo = y[0].point[k], y_hi = y_lo;
+        for (const RegionCorner& c : x) {
+          x_lo = std::min(x_lo, c.point[k]);
+          x_hi = std::max(x_hi, c.point[k]);
+        }
+        for (const RegionCorner& c : y) {
+          y_lo = std::min(y_lo, c.point[k]);
+          y_hi = std::max(y_hi, c.point[k]);
+        }
+        if (x_hi < y_lo || y_hi < x_lo) return false;
+      }
+      return true;
+    };
+    std::vector<bool> expected;
+    for (std::size_t i = 0; i < pass.size(); ++i) {
+      bool by_vertex = false, by_box = false;
+      for (std::size_t j = 0; j < i; ++j) {
+        if (!expected[j]) continue;
+        for (const VertexIndex v : pass[i].vertices)
+          by_vertex =
+              by_vertex || std::count(pass[j].vertices.begin(), pass[j].vertices.end(), v) > 0;
+        for (const Region& x : pass[i].regions) {
+          for (const Region& y : pass[j].regions)
+            by_box = by_box || boxes_overlap(x, y);
+        }
+      }
+      expected.push_back(!by_vertex && !by_box);
+      ahead += expected.back() ? 1 : 0;
+      waiting_for_a_vertex += by_vertex ? 1 : 0;
+      waiting_for_a_box += by_box && !by_vertex ? 1 : 0;
+    }
+    EXPECT_EQ(go_ahead(pass, points), expected) << "trial " << trial;
+  }
+  EXPECT_GT(ahead, 200);
+  EXPECT_GT(waiting_for_a_vertex, 100);
+  EXPECT_GT(waiting_for_a_box, 50);
+}
+
+TEST(PassScheduleVertices, ShareNoVertexIsGoAheadWithoutRegions) {
+  // Random operations of two to four vertices among 40 (kNoVertex for the missing ones),
+  // in passes of 30: share_no_vertex (the flip and split passes' first test) must answer
+  // as go_ahead does for the same vertices and no regions, which an operation that took a
+  // missing corner for a vertex, or ignored a later one's, would break.
+  std::mt19937_64 rng = exactgeo::testing::seeded_engine("share_no_vertex");
+  std::uniform_int_distribution<VertexIndex> vertex(0, 39);
+  std::uniform_int_distribution<int> count(2, 4);
+  const std::vector<Point3> points(40, Point3{0, 0, 0});
+  std::size_t ahead = 0, waiting = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::array<VertexIndex, 4>> operations(30);
+    std::vector<Footprint> footprints(30);
+    for (std::size_t i = 0; i < operations.size(); ++i) {
+      operations[i].fill(kNoVertex);
+      const int n = count(rng);
+      for (int k = 0; k < n; ++k) {
+        operations[i][static_cast<std::size_t>(k)] = vertex(rng);
+        footprints[i].vertices.push_back(operations[i][static_cast<std::size_t>(k)]);
+      }
+      if (n < 4) std::swap(operations[i][0], operations[i][3]);  // a gap first
+    }
+    const std::vector<bool> expected = go_ahead(footprints, points);
+    EXPECT_EQ(internal::share_no_vertex(operations, points.size()), expected) << trial;
+    ahead += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), true));
+    waiting += static_cast<std::size_t>(std::count(expected.begin(), expected.end(), false));
+  }
+  EXPECT_GT(ahead, 500u);
+  EXPECT_GT(waiting, 500u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Scales, PassSchedule, ::testing::Values(0, 1000, -1000),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            const int k = param_info.param;

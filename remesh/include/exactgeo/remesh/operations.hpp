@@ -7,8 +7,8 @@
 //   relocate_vertex  the vertex moves on a straight line, checked by exact CCD through the
 //                    mesh broad phase (a pass of one move: relocate_vertices);
 //   collapse_edge    both ends move to the new point on straight lines, pairs that become
-//                    adjacent excepted; the triangles around the merged vertex are then
-//                    checked against every other triangle, exactly, in their final place;
+//                    adjacent excepted (the surface after it needs no check of its own:
+//                    docs/remesh.md, "Collapse");
 //   flip_edge        the surface sweeps the hull of the edge's two triangles' four corners;
 //   split_edge       nothing moves when the new vertex lies exactly on the edge; otherwise
 //                    the surface sweeps the hull of the edge's ends, the new vertex and
@@ -81,9 +81,8 @@ struct Collapse {
 /// checked together as one step of the mesh broad phase (ccd::MeshCcd, exact method), the
 /// pairs that come to share the merged vertex excepted (they meet there at the end of the
 /// step, which is the collapse itself), refusing the collapses of every colliding pair
-/// until a step has no collision; then the surface with every remaining collapse made is
-/// checked exactly for intersecting triangles (mesh::find_self_intersections), and a
-/// collapse around whose merged vertex one lies is refused. One outcome per collapse, in
+/// until a step has no collision (the surface after it needs no check of its own:
+/// docs/remesh.md, "Collapse"). One outcome per collapse, in
 /// order; collapse_edge on each applied edge of the surface before the pass would have
 /// applied it too. Removed triangles leave the list; the other triangles keep their order.
 std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses);

@@ -51,6 +51,11 @@ class EdgeTriangles {
 
   /// The triangles with corners a and b, in triangle order (none for indices out of range).
   std::vector<std::size_t> on(VertexIndex a, VertexIndex b) const;
+  /// The same into `found` (cleared first), whose storage a caller asking for many edges
+  /// reuses.
+  void on(VertexIndex a, VertexIndex b, std::vector<std::size_t>& found) const;
+  /// Whether some triangle has corners a and b (on(a, b) not empty, with no vector made).
+  bool has(VertexIndex a, VertexIndex b) const noexcept;
 
  private:
   std::vector<std::size_t> first_;  ///< per vertex: where its sides start in sides_
