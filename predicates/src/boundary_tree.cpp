@@ -360,37 +360,39 @@ std::optional<BoundaryTree::FarValue> BoundaryTree::far_value(const Node& node, 
   // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf or
   // NaN, neither accepted.
   double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
-  double expansion = 0.0;
   bool expanded = false;
-  // The expansion and its bound (boundary_tree.hpp, "Second order"), where smaller: below
-  // d = 2 rho the zero-order bound is the smaller, and not worth the square roots.
-  if (node.expansion && d2 > 4 * node.reach * node.reach && d2 < 0x1p400) {
-    const Vector3 v{node.centre[0] - p[0], node.centre[1] - p[1], node.centre[2] - p[2]};
-    const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-    if (r2 > 0x1p-400 && r2 < 0x1p400) {
-      // d from below (the root within u/2); each bound's own rounding within 10u.
-      const double d = std::sqrt(d2) * (1 - 0x1p-50);
-      const double d3 = d2 * d;
-      const double second =
-          (1.5 * node.reach * node.reach * node.fan / (d2 * d2) +
-           0.5 * (node.moment_error / d2 + 3 * node.quad_error / d3) +
-           kExpansionRounding * 0.5 * (node.moment_size / d2 + 4 * node.quad_size / d3)) *
-              (1 + 0x1p-48) +
-          kTiny;
-      if (second < bound) {
-        bound = second;
-        expanded = true;
-        const std::array<double, 6>& s = node.quad;
-        const double trace = s[0] + s[1] + s[2];
-        const double vqv = s[0] * v[0] * v[0] + s[1] * v[1] * v[1] + s[2] * v[2] * v[2] +
-                           2 * (s[3] * v[0] * v[1] + s[4] * v[0] * v[2] + s[5] * v[1] * v[2]);
-        const double mv = node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2];
-        expansion = 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
-      }
+  // The expansion's bound (boundary_tree.hpp, "Second order"), where smaller: below
+  // d = 2 rho the zero-order bound is the smaller, and not worth the square root. (With
+  // 2^-400 < d^2 < 2^400 neither d^4 nor |c - p|^3 below overflows or underflows.)
+  if (node.expansion && d2 > 4 * node.reach * node.reach && d2 > 0x1p-400 && d2 < 0x1p400) {
+    // d from below (the root within u/2); each bound's own rounding within 10u.
+    const double d = std::sqrt(d2) * (1 - 0x1p-50);
+    const double d3 = d2 * d;
+    const double second =
+        (1.5 * node.reach * node.reach * node.fan / (d2 * d2) +
+         0.5 * (node.moment_error / d2 + 3 * node.quad_error / d3) +
+         kExpansionRounding * 0.5 * (node.moment_size / d2 + 4 * node.quad_size / d3)) *
+            (1 + 0x1p-48) +
+        kTiny;
+    if (second < bound) {
+      bound = second;
+      expanded = true;
     }
   }
   if (!(bound <= limit) || !ray_misses(p, q.ray, q.inverse, node.lower, node.upper)) {
     return std::nullopt;
+  }
+  double expansion = 0.0;
+  if (expanded) {
+    // (d <= |c - p| <= d + 2 rho < 2d: c lies in the box.)
+    const Vector3 v{node.centre[0] - p[0], node.centre[1] - p[1], node.centre[2] - p[2]};
+    const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    const std::array<double, 6>& s = node.quad;
+    const double trace = s[0] + s[1] + s[2];
+    const double vqv = s[0] * v[0] * v[0] + s[1] * v[1] * v[1] + s[2] * v[2] * v[2] +
+                       2 * (s[3] * v[0] * v[1] + s[4] * v[0] * v[2] + s[5] * v[1] * v[2]);
+    const double mv = node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2];
+    expansion = 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
   }
   double value = expansion, magnitudes = std::abs(expansion), errors = 0.0;
   for (std::uint32_t i = 0; i < node.ends_count; ++i) {
@@ -463,6 +465,12 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
   // The nodes on the stack into the sum: far ones onto the heap, leaves' edges, the rest
   // opened.
   double limit = kBoundaryTreeFirstCut;  // the largest bound a far node may enter with
+  // The far nodes become a heap only when the first cut does not settle the point (most
+  // points are settled there).
+  bool heaped = false;
+  const auto by_bound = [](const Refinement::Far& a, const Refinement::Far& b) {
+    return a.bound < b.bound;
+  };
   const auto descend = [&]() {
     while (!r.stack.empty()) {
       const std::uint32_t n = r.stack.back();
@@ -479,8 +487,7 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
         ++bound_terms;
         r.angles += node.ends_count;
         r.heap.push_back({far->bound, far->value, n, far->expanded});
-        std::push_heap(r.heap.begin(), r.heap.end(),
-                       [](const auto& a, const auto& b) { return a.bound < b.bound; });
+        if (heaped) std::push_heap(r.heap.begin(), r.heap.end(), by_bound);
         continue;
       }
       if (node.left == 0) {
@@ -518,9 +525,10 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
     if (r.angles > most_angles) return std::nullopt;
     // The far node of largest bound opened; its children enter as far nodes only with
     // at most half its bound (else they are opened before their ends are computed).
+    if (!heaped) std::make_heap(r.heap.begin(), r.heap.end(), by_bound);
+    heaped = true;
     limit = std::min(limit, r.heap.front().bound / 2);
-    std::pop_heap(r.heap.begin(), r.heap.end(),
-                  [](const auto& a, const auto& b) { return a.bound < b.bound; });
+    std::pop_heap(r.heap.begin(), r.heap.end(), by_bound);
     const Refinement::Far top = r.heap.back();
     r.heap.pop_back();
     sum -= top.value;
@@ -545,16 +553,15 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
 std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector3& ray,
                                                std::array<double, 2> levels,
                                                Refinement& scratch) const {
-  const auto settle = [&](double lower, double upper) {
-    return internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
-  };
+  std::optional<BoundaryTerm> settled;  // the last enclosure's verdict
   // Past as many angles as there are edges, the term over every edge is the better next
   // step.
   const auto sum = refine(point, ray, scratch, edges_.size(), [&](double lower, double upper) {
-    return settle(lower, upper).has_value();
+    settled = internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
+    return settled.has_value();
   });
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
-  return settle(sum->lower, sum->upper);
+  return settled;
 }
 
 std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vector3& ray,
