@@ -93,12 +93,18 @@ bool ray_misses(const Point3& p, const Vector3& r, const Vector3& inverse, const
   return enter > exit;
 }
 
-/// Each edge's trail (a walk along edges that share vertices), its place in it, and the
-/// key the halving sorts by: the trail's mean midpoint for a short trail, which keeps it
-/// together, and the edge's midpoint otherwise.
+/// Each edge's piece of trail (a walk along edges that share vertices, cut into pieces of
+/// at most kPiece consecutive edges), its place in it, and the key the halving sorts by:
+/// the piece's mean midpoint, which keeps it together where the halving allows. A node
+/// then holds whole pieces, each with at most two ends (none for a small closed loop),
+/// where edges sorted by their own midpoints left a winding rim entering and leaving
+/// every box many times, two ends each time: on Spot with a thousand faces cut, pieces of
+/// 64 edges cost 2.9 times fewer instructions per point than that, pieces of 16 2.0
+/// times, of 8 1.4 times; 128 no better than 64. (A cost: any grouping gives the same
+/// bounds' guarantee.)
 std::vector<BoundaryTree::TrailPlace> trail_places(std::span<const BoundaryEdge> edges,
                                                    std::span<const Point3> vertices) {
-  constexpr std::uint32_t kShortTrail = 16;
+  constexpr std::uint32_t kPiece = 64;
   std::vector<std::vector<std::uint32_t>> leaving(vertices.size());
   for (std::uint32_t i = 0; i < edges.size(); ++i)
     leaving[edges[i].from].push_back(i);
@@ -118,23 +124,19 @@ std::vector<BoundaryTree::TrailPlace> trail_places(std::span<const BoundaryEdge>
       if (next.empty()) break;
       e = next.back();
     }
-    Point3 mean{0.0, 0.0, 0.0};
-    for (const std::uint32_t e : walk) {
-      for (int i = 0; i < 3; ++i)
-        mean[i] += (0.5 * vertices[edges[e].from][i] + 0.5 * vertices[edges[e].to][i]) /
-                   static_cast<double>(walk.size());
-    }
-    const bool short_trail = walk.size() <= kShortTrail;
-    for (std::uint32_t k = 0; k < walk.size(); ++k) {
-      const BoundaryEdge& e = edges[walk[k]];
-      Point3 key = mean;
-      if (!short_trail) {
+    for (std::size_t first = 0; first < walk.size(); first += kPiece) {
+      const std::size_t count = std::min<std::size_t>(kPiece, walk.size() - first);
+      Point3 mean{0.0, 0.0, 0.0};
+      for (std::size_t k = first; k < first + count; ++k) {
+        const BoundaryEdge& e = edges[walk[k]];
         for (int i = 0; i < 3; ++i)
-          key[i] = 0.5 * vertices[e.from][i] + 0.5 * vertices[e.to][i];
+          mean[i] +=
+              (0.5 * vertices[e.from][i] + 0.5 * vertices[e.to][i]) / static_cast<double>(count);
       }
-      places[walk[k]] = {key, trail, k, short_trail};
+      for (std::size_t k = first; k < first + count; ++k)
+        places[walk[k]] = {mean, trail, static_cast<std::uint32_t>(k)};
+      ++trail;
     }
-    ++trail;
   }
   return places;
 }
@@ -288,8 +290,8 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     for (int i = 1; i < 3; ++i) {
       if (node.upper[i] - node.lower[i] > node.upper[axis] - node.lower[axis]) axis = i;
     }
-    // Short trails (small holes) stay whole where the halves allow: a node holding a
-    // closed loop entirely has no end for it.
+    // Pieces of trail (small holes whole) stay whole where the halves allow: a node
+    // holding a closed loop entirely has no end for it.
     std::vector<std::uint32_t> order(count);
     std::iota(order.begin(), order.end(), first);
     const auto key = [&](std::uint32_t i) {
@@ -306,16 +308,16 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     }
     std::copy(sorted_edges.begin(), sorted_edges.end(), edges_.begin() + first);
     std::copy(sorted_places.begin(), sorted_places.end(), places_.begin() + first);
-    const auto same_short_trail = [&](std::uint32_t i) {  // edges i - 1 and i, of this node
+    const auto same_piece = [&](std::uint32_t i) {  // edges i - 1 and i, of this node
       const TrailPlace& a = places_[first + i - 1];
       const TrailPlace& b = places_[first + i];
-      return a.short_trail && a.trail == b.trail;
+      return a.trail == b.trail;
     };
     std::uint32_t half = count / 2;
     std::uint32_t forward = half, backward = half;
-    while (forward < count && same_short_trail(forward))
+    while (forward < count && same_piece(forward))
       ++forward;
-    while (backward > 0 && same_short_trail(backward))
+    while (backward > 0 && same_piece(backward))
       --backward;
     if (forward < count) {
       half = forward - half <= half - backward || backward == 0 ? forward : backward;

@@ -194,12 +194,11 @@ class BoundaryTree {
                                 std::size_t most_angles, const Done& done) const;
 
  public:
-  /// While building: an edge's trail and its place in it (boundary_tree.cpp).
+  /// While building: an edge's piece of trail and its place in it (boundary_tree.cpp).
   struct TrailPlace {
     Point3 key{};
-    std::uint32_t trail = 0;
+    std::uint32_t trail = 0;  // the piece's number
     std::uint32_t position = 0;
-    bool short_trail = false;
   };
 
  private:
