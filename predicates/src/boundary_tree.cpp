@@ -526,10 +526,11 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
     }
     if (r.angles > most_angles) return std::nullopt;
     // The far node of largest bound opened; its children enter as far nodes only with
-    // at most half its bound (else they are opened before their ends are computed).
+    // at most kBoundaryTreeOpening times less (else they are opened before their ends
+    // are computed).
     if (!heaped) std::make_heap(r.heap.begin(), r.heap.end(), by_bound);
     heaped = true;
-    limit = std::min(limit, r.heap.front().bound / 2);
+    limit = std::min(limit, r.heap.front().bound / kBoundaryTreeOpening);
     std::pop_heap(r.heap.begin(), r.heap.end(), by_bound);
     const Refinement::Far top = r.heap.back();
     r.heap.pop_back();

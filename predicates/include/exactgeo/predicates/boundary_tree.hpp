@@ -104,9 +104,13 @@ namespace exactgeo {
 
 /// The first cut of the refinement: nodes whose bound is above this (radians of half
 /// angle; the levels lie 2 pi apart) are opened before any angle is computed; later, a
-/// node is opened straight away where its bound exceeds half the largest bound opened
-/// so far. Costs, not certificates: any positive values give the enclosures' guarantee.
-inline constexpr double kBoundaryTreeFirstCut = 0x1p-2;
+/// node is opened straight away where its bound exceeds an eighth of the smallest bound
+/// opened so far. Costs, not certificates: any positive values give the enclosures'
+/// guarantee. (Instructions per point on Spot with 10, 100 and 1,000 faces cut, against
+/// 2^-2 and a half: 3,308, 5,624 and 146,104 against 3,472, 6,981 and 147,804.)
+inline constexpr double kBoundaryTreeFirstCut = 1.0;
+/// The ratio between a node's bound and the largest its children may enter with.
+inline constexpr double kBoundaryTreeOpening = 8.0;
 /// The most edges a leaf holds.
 inline constexpr std::uint32_t kBoundaryTreeLeafEdges = 4;
 
