@@ -51,7 +51,7 @@ std::optional<Location> open_label(FillRule rule, std::int64_t crossings, const 
 std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossings,
                                              const Point3& point, const Vector3& ray,
                                              const BoundaryTree& tree,
-                                             BoundaryTree::Selection& scratch) {
+                                             BoundaryTree::Refinement& scratch) {
   const auto s = static_cast<double>(crossings);
   const std::optional<BoundaryTerm> term = tree.term(point, ray, {-0.5 - s, 0.5 - s}, scratch);
   if (!term) return std::nullopt;

@@ -68,6 +68,53 @@ double dot(const Vector3& a, const Vector3& b) {
 
 }  // namespace
 
+std::optional<Vector3> normalized_apex(const Vector3& apex) {
+  return normalized(apex);
+}
+
+std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld, const Point3& pa,
+                                    const Point3& pb, const Vector3& apex) {
+  const auto a = normalized({pa[0] - p[0], pa[1] - p[1], pa[2] - p[2]});
+  const auto b = normalized({pb[0] - p[0], pb[1] - p[1], pb[2] - p[2]});
+  if (!a || !b) return std::nullopt;  // the point on a corner, or an overflow
+  const Vector3& A = *a;
+  const Vector3& B = *b;
+  const Vector3& D = d;
+  const Vector3 bxd{B[1] * D[2] - B[2] * D[1], B[2] * D[0] - B[0] * D[2],
+                    B[0] * D[1] - B[1] * D[0]};
+  double num = dot(A, bxd);
+  double permanent = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    permanent += std::abs(A[i]) * (std::abs(B[j] * D[k]) + std::abs(B[k] * D[j]));
+  }
+  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B));
+  const double length = la * lb * ld;
+  const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
+  const double num_error = 8 * kU * permanent + kTiny;
+  const double den_error = 96 * kU * length + kTiny;
+  // r = |(N, D)| from below: the squares and their sum within u each, the root within
+  // u/2 (2.5u in all, below the 4u taken off), where the sum is at least 2^-1000 (an
+  // underflowing square then changes it by 2^-75 of itself at most); a smaller one (the
+  // point within 2^-500 of an edge's line) is left to the intervals.
+  const double radius2 = num * num + den * den;
+  if (!(radius2 >= 0x1p-1000)) return std::nullopt;
+  const double radius = std::sqrt(radius2) * (1 - 4 * kU);
+  const double e = num_error + den_error;
+  if (!(e <= radius / 4)) return std::nullopt;
+  if (!(std::abs(num) > num_error) && !(den > den_error)) {
+    if (!(den < -den_error)) return std::nullopt;
+    // Near the branch cut: the exact side.
+    const Sign side = kernel::ExactSigns{}.det3_by_vector(kernel::Offset::between(p, pa),
+                                                          kernel::Offset::between(p, pb),
+                                                          kernel::Offset::vector(apex));
+    if (side == Sign::zero) return HalfAngle{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
+    num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
+  }
+  return HalfAngle{BoundaryTermKind::enclosed, std::atan2(num, den),
+                   (4.0 / 3.0) * e / radius + kAtan2Error};
+}
+
 std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
                                         std::span<const Point3> vertices,
                                         std::span<const BoundaryEdge> edges, double offset,
@@ -77,50 +124,15 @@ std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
   const double ld = std::sqrt(dot(*d, *d));
   double sum = offset, magnitudes = std::abs(offset), errors = 0.0;
   for (const BoundaryEdge& edge : edges) {
-    const Point3& pa = vertices[edge.from];
-    const Point3& pb = vertices[edge.to];
-    const auto a = normalized({pa[0] - p[0], pa[1] - p[1], pa[2] - p[2]});
-    const auto b = normalized({pb[0] - p[0], pb[1] - p[1], pb[2] - p[2]});
-    if (!a || !b) return std::nullopt;  // the point on a corner, or an overflow
-    const Vector3& A = *a;
-    const Vector3& B = *b;
-    const Vector3& D = *d;
-    const Vector3 bxd{B[1] * D[2] - B[2] * D[1], B[2] * D[0] - B[0] * D[2],
-                      B[0] * D[1] - B[1] * D[0]};
-    double num = dot(A, bxd);
-    double permanent = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      permanent += std::abs(A[i]) * (std::abs(B[j] * D[k]) + std::abs(B[k] * D[j]));
+    const auto angle = half_angle(p, *d, ld, vertices[edge.from], vertices[edge.to], apex);
+    if (!angle) return std::nullopt;
+    if (angle->kind == BoundaryTermKind::ray_on_edge) {
+      return FilteredSum{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
     }
-    const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B));
-    const double length = la * lb * ld;
-    const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
-    const double num_error = 8 * kU * permanent + kTiny;
-    const double den_error = 96 * kU * length + kTiny;
-    // r = |(N, D)| from below: the squares and their sum within u each, the root within
-    // u/2 (2.5u in all, below the 4u taken off), where the sum is at least 2^-1000 (an
-    // underflowing square then changes it by 2^-75 of itself at most); a smaller one (the
-    // point within 2^-500 of an edge's line) is left to the intervals.
-    const double radius2 = num * num + den * den;
-    if (!(radius2 >= 0x1p-1000)) return std::nullopt;
-    const double radius = std::sqrt(radius2) * (1 - 4 * kU);
-    const double e = num_error + den_error;
-    if (!(e <= radius / 4)) return std::nullopt;
-    if (!(std::abs(num) > num_error) && !(den > den_error)) {
-      if (!(den < -den_error)) return std::nullopt;
-      // Near the branch cut: the exact side.
-      const Sign side = kernel::ExactSigns{}.det3_by_vector(kernel::Offset::between(p, pa),
-                                                            kernel::Offset::between(p, pb),
-                                                            kernel::Offset::vector(apex));
-      if (side == Sign::zero) return FilteredSum{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
-      num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
-    }
-    const double theta = std::atan2(num, den);
     const double m = edge.multiplicity;
-    sum += m * theta;
-    magnitudes += std::abs(m * theta);
-    errors += std::abs(m) * ((4.0 / 3.0) * e / radius + kAtan2Error);
+    sum += m * angle->theta;
+    magnitudes += std::abs(m * angle->theta);
+    errors += std::abs(m) * angle->error;
   }
   // (The offset is one more term of the sum.)
   const double rounding = (static_cast<double>(edges.size()) + 3) * kU * magnitudes;

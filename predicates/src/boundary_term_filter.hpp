@@ -17,6 +17,19 @@ namespace exactgeo::internal {
 /// of pi (whose ulp is 2^-51), where every libm in use is within a few.
 inline constexpr double kAtan2Error = 0x1p-40;
 
+/// One edge's half angle theta(p; a, b, p + apex) in plain doubles, and a bound on its
+/// error (radians, per unit of multiplicity): kind enclosed, or ray_on_edge (the ray meets
+/// the edge exactly); nullopt when the filter cannot bound it (p near the edge's line, or
+/// on a corner). `d` is `apex` scaled by normalized_apex and `ld` its length.
+struct HalfAngle {
+  BoundaryTermKind kind = BoundaryTermKind::enclosed;
+  double theta = 0.0;
+  double error = 0.0;
+};
+std::optional<Vector3> normalized_apex(const Vector3& apex);
+std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld, const Point3& pa,
+                                    const Point3& pb, const Vector3& apex);
+
 /// The filter's bounds on offset + sum m theta over the edges (theta = Omega / 2, the half
 /// angles, in radians), `slack` (an upper bound, in the same unit, on how far that is
 /// from what is to be enclosed) included: kind enclosed with lower <= exact <= upper, or

@@ -70,7 +70,7 @@ struct ClassifierOptions {
 struct ClassifierScratch {
   std::vector<std::uint32_t> candidates;
   /// An open surface's boundary edges near the point and far nodes' ends.
-  BoundaryTree::Selection boundary;
+  BoundaryTree::Refinement boundary;
 };
 
 class Classifier {

@@ -48,25 +48,48 @@
 // too, and the node keeps the smaller. For small closed loops far from c the direct fan
 // is a set of long thin triangles, and the nested bound is about the loops' own areas.
 //
-// First order. Expanding g(y) = (y - p) / |y - p|^3 about c, g(y) - g(c) is the
-// integral of Dg along the segment c-y (in B, so at least d from p), and
-// |Dg| = |I - 3 u u^T| / |y - p|^3 <= 2 / d^3; so a triangle's solid angle
-// (the integral of n.g over it) is its vector area times g(c), within 2 rho area / d^3,
-// rho the box's reach from c. The triangles of either decomposition have the vector
-// area M = (1/2) sum m (a - c) x (b - c) in all (it depends only on their common
-// boundary: E less its ends). In half angles the node's fan is therefore
-// (1/2) M.g(c) within rho F / d^3: the dipole term is added to the sum and that bound
-// to the error where it is below F / (2 d^2), which is where d > 2 rho or so.
+// Second order. With g(y) = (y - p) / |y - p|^3 = -grad 1/|y - p|, a triangle's solid
+// angle is the integral of n.g over it. The k-th derivative of 1/|y - p| has norm
+// k! / |y - p|^(k+1) (along a unit u it is k! P_k(cos) / |y - p|^(k+1), the Legendre
+// polynomials' generating function, |P_k| <= 1; a symmetric form's norm is its largest
+// value on a unit vector), so |Dg| <= 2 / |y - p|^3 and |D^2 g| <= 6 / |y - p|^4. Taylor's
+// formula about c along the segment c-y (in B, so at least d from p) leaves
+// |g(y) - g(c) - Dg(c)(y - c)| <= 3 |y - c|^2 / d^4 <= 3 rho^2 / d^4, rho the box's reach
+// from c. Integrated over the triangles of either decomposition, the fan is
+//
+//     M.g(c) + sum_ij Dg(c)_ij Q_ij,   M = sum m (vector area),
+//     Q_ij = sum m (vector area)_i (centroid - c)_j,
+//
+// within 3 rho^2 F / d^4 (in half angles, half of all three). M depends only on the
+// decompositions' common boundary (E less its ends); Q differs between two of them by
+// delta_ij times the volume their difference encloses (the divergence theorem), which
+// Dg(c) = (I - 3 u u^T) / |c - p|^3 (u the unit vector along c - p) does not see: its
+// trace is 0. So Q is taken from the direct fan, where Q = sum m (1/6) (a - c) x (b - c)
+// ((a - c) + (b - c))^T, and its symmetric part kept. Where d > 2 rho this bound is
+// below the zero-order one (by 3 rho^2 / d^2), and the node adds the expansion to the sum
+// and that bound to the error. (The first-order bound, rho F / d^3, is larger than this
+// one wherever d > 1.5 rho.)
+//
+// Refinement. A point's term is the sum over a cut of the tree: far nodes (their ends,
+// expansion and bound) and leaves' edges. The cut starts where every far node's bound is
+// at most kBoundaryTreeFirstCut; then, while the sum's enclosure holds a level (or is
+// wider than asked), the far node of largest bound is opened: its value and bound leave
+// the sum, its children (or a leaf's edges) enter it. Every angle evaluated stays in the
+// sum; none is computed twice. The sum's own rounding is bounded from the magnitudes of
+// everything ever added or taken away (recursive summation of k terms errs by at most
+// (k - 1) u times their magnitudes), the far bounds' running total likewise, and each
+// node's errors (its angles', its expansion's) stay counted after it is opened.
 //
 // Certified. F is computed once per node in outward-rounded intervals (its upper end);
-// d^2 from below and the ray-box test from the slabs with a priori error bounds (in the
-// source), so that the test says "misses" only when the ray does. c is the box's centre,
-// a double clamped into the box. The cone terms of the ends and of the near edges go
-// through the filter of boundary_term_filter.cpp with the bounds added to its error;
-// what the filter cannot settle goes back to the full term over every edge (the
-// caller's), whose stages reach the exact ones. Far from magnitude 1 (areas beyond the
-// doubles' range) every node is near and the tree sums every edge; the classifier builds
-// it in its unit frame, where this does not happen.
+// M and Q likewise, kept as midpoints with bounds on their distance from the exact
+// ones; d^2 from below and the ray-box test from the slabs with a priori error bounds
+// (in the source), so that the test says "misses" only when the ray does. c is the box's
+// centre, a double clamped into the box. The cone terms of the ends and of the near
+// edges are the filter's of boundary_term_filter.cpp, each with its error bound; what the
+// refinement cannot settle goes back to the full term over every edge (the caller's),
+// whose stages reach the exact ones. Far from magnitude 1 (areas beyond the doubles'
+// range) every node is near and the tree sums every edge; the classifier builds it in
+// its unit frame, where this does not happen.
 
 #include <array>
 #include <cstdint>
@@ -79,13 +102,15 @@
 
 namespace exactgeo {
 
-/// The budgets tried in turn: a node is replaced by its ends (and dipole term) where its
-/// bound is at most the budget, in radians of half angle (the levels lie 2 pi apart in
-/// these units: a point whose w is 0.1 from a level has 0.63 to spare). The first
-/// settles almost every point, the finer ones the points nearer a level. A pass whose
-/// bounds add up to pi or more is skipped (its enclosure would hold a level), and one
-/// that selects more than half the edges ends the tree's attempt.
-inline constexpr std::array<double, 3> kBoundaryTreeBudgets{0x1p-3, 0x1p-7, 0x1p-11};
+/// The first cut of the refinement: nodes whose bound is above this (radians of half
+/// angle; the levels lie 2 pi apart) are opened before any angle is computed; later, a
+/// node is opened straight away where its bound exceeds an eighth of the smallest bound
+/// opened so far. Costs, not certificates: any positive values give the enclosures'
+/// guarantee. (Instructions per point on Spot with 10, 100 and 1,000 faces cut, against
+/// 2^-2 and a half: 3,308, 5,624 and 146,104 against 3,472, 6,981 and 147,804.)
+inline constexpr double kBoundaryTreeFirstCut = 1.0;
+/// The ratio between a node's bound and the largest its children may enter with.
+inline constexpr double kBoundaryTreeOpening = 8.0;
 /// The most edges a leaf holds.
 inline constexpr std::uint32_t kBoundaryTreeLeafEdges = 4;
 
@@ -98,26 +123,34 @@ class BoundaryTree {
 
   bool empty() const noexcept { return nodes_.empty(); }
 
-  /// The edges a point's term is summed over, indexing vertices(): near nodes' own edges
-  /// and far nodes' ends; `slack` bounds, in radians of half angle, what the far nodes'
-  /// fans add (the exact term, in half angles, is within slack of theirs).
-  struct Selection {
-    std::vector<BoundaryEdge> edges;
-    double offset = 0.0;  ///< far nodes' dipole terms, added to the edges' sum
-    double slack = 0.0;
+  /// A point's refinement: the far nodes of its cut, and what the last call left.
+  struct Refinement {
+    struct Far {
+      double bound = 0.0;  ///< radians of half angle
+      double value = 0.0;  ///< its ends' angles and its expansion, in the sum
+      std::uint32_t node = 0;
+      bool expanded = false;
+    };
+    std::vector<Far> heap;  ///< a max-heap by bound
+    std::vector<std::uint32_t> stack;
+    std::size_t angles = 0;      ///< edges and ends whose angle was computed
+    std::size_t far_nodes = 0;   ///< far nodes in the final cut
+    std::size_t expansions = 0;  ///< of those, with a second-order expansion
+    double slack = 0.0;          ///< their bounds' sum, radians of half angle
   };
-  void select(const Point3& point, const Vector3& ray, double budget, Selection& out) const;
 
-  /// The term of boundary_term.hpp from a selection at each budget in turn, with both
-  /// levels settled (kind enclosed); nullopt when none settles them or the ray meets an
+  /// The term of boundary_term.hpp with both levels settled (kind enclosed), refined
+  /// until it is; nullopt when the refinement cannot settle them (a level within the
+  /// filter's errors, or the refinement costs as much as every edge) or the ray meets an
   /// edge (then boundary_term over every edge decides).
   std::optional<BoundaryTerm> term(const Point3& point, const Vector3& ray,
-                                   std::array<double, 2> levels, Selection& scratch) const;
+                                   std::array<double, 2> levels, Refinement& scratch) const;
 
   /// Bounds, in turns, on the term (1/4 pi) sum m Omega(p; a, b, p - r) over every edge,
-  /// from a selection; nullopt when the filter cannot bound it or the ray meets an edge.
-  std::optional<Enclosure> enclosure(const Point3& point, const Vector3& ray, double budget,
-                                     Selection& scratch) const;
+  /// refined until at most `width` turns apart or every node is open; nullopt when the
+  /// filter cannot bound it or the ray meets an edge.
+  std::optional<Enclosure> enclosure(const Point3& point, const Vector3& ray, double width,
+                                     Refinement& scratch) const;
 
   /// The boundary vertices and the nodes' centres.
   std::span<const Point3> vertices() const noexcept { return vertices_; }
@@ -130,25 +163,46 @@ class BoundaryTree {
     std::uint32_t ends_first = 0, ends_count = 0;  // its ends: ends_[...]
     std::uint32_t left = 0, right = 0;             // children; 0 for a leaf
     double fan = 0.0;                              // F, rounded up
-    bool far_pays = false;                         // fewer ends than edges
-    // The dipole term ("First order" above): the centre, the fan's vector area M (its
-    // enclosure's midpoint, within moment_error of M, at most moment_size long), and
-    // the box's reach from the centre (rounded up).
+    bool far_pays = false;                         // ends fewer than half its edges
+    // The expansion ("Second order" above): the centre, the fan's vector area M (its
+    // enclosure's midpoint, within moment_error of M, at most moment_size long), the
+    // symmetric part of Q (xx, yy, zz, xy, xz, yz: midpoints, whose nine entries' errors
+    // add up to at most quad_error and magnitudes to at most quad_size), and the box's
+    // reach from the centre (rounded up).
     Point3 centre{};
     Vector3 moment{};
-    double moment_error = 0.0, moment_size = 0.0, reach = 0.0;
-    bool dipole = false;  // all of these finite
+    std::array<double, 6> quad{};
+    double moment_error = 0.0, moment_size = 0.0, quad_error = 0.0, quad_size = 0.0;
+    double reach = 0.0;
+    bool expansion = false;  // all of these finite
   };
+  /// A far node's part of the sum: its ends' angles and expansion, their errors (in
+  /// radians) and its bound.
+  struct FarValue {
+    double value = 0.0, error = 0.0, bound = 0.0;
+    bool expanded = false;
+  };
+  struct Query;
   std::uint32_t build(std::uint32_t first, std::uint32_t count);
-  void set_dipole(Node& node, std::span<const BoundaryEdge> edges) const;
+  void set_expansion(Node& node, std::span<const BoundaryEdge> edges) const;
+  std::optional<FarValue> far_value(const Node& node, const Query& query, double limit) const;
+  /// The refinement's sum: kind enclosed with its bounds in radians of half angle, or
+  /// ray_on_edge; nullopt when the filter cannot bound an angle or the refinement costs
+  /// more than `most_angles` angles. `done(lower, upper)` ends it early.
+  struct Refined {
+    BoundaryTermKind kind = BoundaryTermKind::enclosed;
+    double lower = 0.0, upper = 0.0;
+  };
+  template <class Done>
+  std::optional<Refined> refine(const Point3& point, const Vector3& ray, Refinement& scratch,
+                                std::size_t most_angles, const Done& done) const;
 
  public:
-  /// While building: an edge's trail and its place in it (boundary_tree.cpp).
+  /// While building: an edge's piece of trail and its place in it (boundary_tree.cpp).
   struct TrailPlace {
     Point3 key{};
-    std::uint32_t trail = 0;
+    std::uint32_t trail = 0;  // the piece's number
     std::uint32_t position = 0;
-    bool short_trail = false;
   };
 
  private:

@@ -34,7 +34,7 @@ std::optional<Location> open_label(FillRule rule, std::int64_t crossings, const 
 std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossings,
                                              const Point3& point, const Vector3& ray,
                                              const BoundaryTree& tree,
-                                             BoundaryTree::Selection& scratch);
+                                             BoundaryTree::Refinement& scratch);
 
 /// A direction whose ray from `point` (outside `box`) leaves the box behind: along the
 /// axis on which the point lies outside it, away from it. It crosses no face and meets
