@@ -231,8 +231,8 @@ MUTANTS = [
     # remesh: a split's partner is only its other triangle; its corner and edges are tested.
     ("swept_region_partner_corner_skipped",
      "remesh/src/swept_region.cpp",
-     "    if (corner[i] >= 0) continue;",
-     "    if (corner[i] >= 0 || (has_partner && v == partner)) continue;",
+     "    if (corner[i] >= 0 || (vertex && *vertex < v)) continue;",
+     "    if (corner[i] >= 0 || (vertex && *vertex < v) || (has_partner && v == partner)) continue;",
      ["remesh_tests"]),
     ("boundary_intervals_not_widened",
      "predicates/src/double_interval.hpp",
