@@ -42,18 +42,16 @@ std::string labels_file(const fs::path& output_dir, fs::path relative, BatchLabe
          (format == BatchLabelsFormat::npy ? ".labels.npy" : ".labels.txt");
 }
 
-/// The line counts of labels text, by label.
-inside::LocationCounts count_labels(const std::string& text) {
-  inside::LocationCounts counts;
+/// The labels run_inside printed, one word a line (labels only: it printed nothing else).
+std::vector<inside::Location> labels_of(const std::string& text) {
+  std::vector<inside::Location> labels;
   std::size_t start = 0;
   for (std::size_t end = text.find('\n'); end != std::string::npos;
        start = end + 1, end = text.find('\n', start)) {
-    for (const inside::Location l : {inside::Location::outside, inside::Location::inside,
-                                     inside::Location::boundary, inside::Location::undecided}) {
-      if (text.compare(start, end - start, to_string(l)) == 0) counts.add(l);
-    }
+    labels.push_back(
+        inside::location_named(std::string_view(text).substr(start, end - start)).value());
   }
-  return counts;
+  return labels;
 }
 
 }  // namespace
@@ -181,18 +179,18 @@ ExitCode run_inside_batch(const InsideCommandOptions& options, std::ostream& out
       continue;
     }
     const std::string text = labels.str();
+    const std::vector<inside::Location> read = labels_of(text);
     try {
-      // run_inside printed labels only, one word a line: npy_labels reads each.
-      file->commit(options.labels_format == BatchLabelsFormat::npy ? npy_labels(text).value()
-                                                                   : text);
+      file->commit(options.labels_format == BatchLabelsFormat::npy ? npy_labels(read) : text);
     } catch (const OutputFileError& e) {
       fail(e.what());
       continue;
     }
-    const inside::LocationCounts c = count_labels(text);
+    inside::LocationCounts c;
+    for (const inside::Location l : read)
+      c.add(l);
     using inside::Location;
-    const std::size_t points =
-        c[Location::inside] + c[Location::outside] + c[Location::boundary] + c[Location::undecided];
+    const std::size_t points = read.size();
     if (options.json) {
       report << "{\"mesh\": " << json_string(m.mesh)
              << ", \"labels_file\": " << json_string(m.labels) << ", \"points\": " << points

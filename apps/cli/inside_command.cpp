@@ -62,12 +62,6 @@ std::optional<double> share_read(std::istream& in, std::optional<double> bytes) 
   return std::min(1.0, static_cast<double>(position) / *bytes);
 }
 
-/// A double between a generalized winding number's certified bounds, which are at most
-/// about 2^-40 apart.
-double midpoint(const Enclosure& w) {
-  return w.lower + (w.upper - w.lower) / 2;
-}
-
 /// Appends `"labels": ["inside", ...]` to `out`, a few thousand labels per write.
 void print_json_labels(const std::vector<inside::Location>& labels, std::ostream& out) {
   std::string text = ", \"labels\": [";
@@ -164,14 +158,14 @@ ExitCode run_inside(const InsideCommandOptions& options, std::istream& in,
         if (keep_windings) {
           if (!kept_windings.empty()) kept_windings.append(", ");
           if (real_windings) {
-            kept_windings.append(bounds[i] ? shortest(midpoint(*bounds[i])) : "null");
+            kept_windings.append(bounds[i] ? shortest(bounds[i]->midpoint()) : "null");
           } else {
             kept_windings.append(windings[i] ? std::to_string(*windings[i]) : "null");
           }
         }
         if (real_windings && print_labels) {
           const std::optional<Enclosure>& w = bounds[i];
-          text.append(w ? shortest(midpoint(*w)) : "boundary");
+          text.append(w ? shortest(w->midpoint()) : "boundary");
           text.push_back('\n');
           continue;
         }

@@ -1,6 +1,5 @@
 #include "cli/npy_labels.hpp"
 
-#include <array>
 #include <cstdint>
 
 #include "exactgeo/inside/location.hpp"
@@ -27,25 +26,11 @@ std::string npy_preamble(std::size_t count) {
 
 }  // namespace
 
-std::optional<std::string> npy_labels(std::string_view text) {
-  constexpr std::array kLabels{inside::Location::outside, inside::Location::inside,
-                               inside::Location::boundary, inside::Location::undecided};
-  std::string codes;
-  for (std::size_t start = 0; start < text.size();) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view word = text.substr(start, end - start);
-    bool known = false;
-    for (const inside::Location l : kLabels) {
-      if (word == to_string(l)) {
-        codes.push_back(static_cast<char>(static_cast<std::int8_t>(l)));
-        known = true;
-      }
-    }
-    if (!known) return std::nullopt;
-    start = end + 1;
-  }
-  return npy_preamble(codes.size()) + codes;
+std::string npy_labels(std::span<const inside::Location> labels) {
+  std::string out = npy_preamble(labels.size());
+  for (const inside::Location l : labels)
+    out.push_back(static_cast<char>(static_cast<std::int8_t>(l)));
+  return out;
 }
 
 }  // namespace exactgeo::cli

@@ -4,14 +4,14 @@
 // the Python module (exactgeo.OUTSIDE, INSIDE, BOUNDARY, UNDECIDED: inside::Location's
 // values), which is what `exactgeo.dask.classify_meshes` writes for each mesh.
 
-#include <optional>
+#include <span>
 #include <string>
-#include <string_view>
+
+#include "exactgeo/inside/location.hpp"
 
 namespace exactgeo::cli {
 
-/// The .npy file's bytes for labels given as text, one word a line (what `exactgeo
-/// inside` prints); nullopt when a line is not a label.
-std::optional<std::string> npy_labels(std::string_view text);
+/// The .npy file's bytes for these labels.
+std::string npy_labels(std::span<const inside::Location> labels);
 
 }  // namespace exactgeo::cli

@@ -16,4 +16,12 @@ std::string_view to_string(Location location) noexcept {
   return "?";
 }
 
+std::optional<Location> location_named(std::string_view word) noexcept {
+  for (const Location l :
+       {Location::outside, Location::inside, Location::boundary, Location::undecided}) {
+    if (word == to_string(l)) return l;
+  }
+  return std::nullopt;
+}
+
 }  // namespace exactgeo::inside

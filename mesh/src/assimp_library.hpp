@@ -4,9 +4,8 @@
 // the mesh readers. OBJ, OFF, PLY and STL have exactgeo's own readers; assimp serves the
 // other formats (glTF, FBX, 3DS, ...). Linked at build time, its library (with the zip,
 // compression and Draco libraries it pulls in) is mapped and relocated at every start of
-// every command and of the Python module: on this project's machines about 8 ms of a
-// process start, more than classifying 25,000 points against a small mesh takes. So it is
-// opened with dlopen on first use, and only assimp's C interface (assimp/cimport.h) is
+// every command and of the Python module, a large share of a short command's time
+// (docs/inside.md, "End to end"). So it is opened with dlopen on first use, and only assimp's C interface (assimp/cimport.h) is
 // called: plain functions whose addresses dlsym finds; the scene they return is plain data.
 
 #include <assimp/scene.h>

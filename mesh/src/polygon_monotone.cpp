@@ -382,8 +382,8 @@ class PlaneGraph {
   ScratchVector<std::uint32_t> neighbour_;
 };
 
-/// The working lists of triangulate_piece, kept from one piece to the next (a star polygon
-/// of n corners is cut into about n / 4 pieces).
+/// The working lists of triangulate_piece, kept from one piece to the next (a polygon is
+/// cut into a piece per split or merge corner, and more).
 struct PieceLists {
   ScratchVector<std::uint32_t> lower;
   ScratchVector<std::uint32_t> upper;

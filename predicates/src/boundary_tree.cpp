@@ -98,10 +98,8 @@ bool ray_misses(const Point3& p, const Vector3& r, const Vector3& inverse, const
 /// the piece's mean midpoint, which keeps it together where the halving allows. A node
 /// then holds whole pieces, each with at most two ends (none for a small closed loop),
 /// where edges sorted by their own midpoints left a winding rim entering and leaving
-/// every box many times, two ends each time: on Spot with a thousand faces cut, pieces of
-/// 64 edges cost 2.9 times fewer instructions per point than that, pieces of 16 2.0
-/// times, of 8 1.4 times; 128 no better than 64. (A cost: any grouping gives the same
-/// bounds' guarantee.)
+/// every box many times, two ends each time (docs/inside.md measures the pieces' length).
+/// A cost only: any grouping gives the same bounds' guarantee.
 std::vector<BoundaryTree::TrailPlace> trail_places(std::span<const BoundaryEdge> edges,
                                                    std::span<const Point3> vertices) {
   constexpr std::uint32_t kPiece = 64;

@@ -146,8 +146,7 @@ py::object winding_numbers(const ClassifierObject& object, const py::object& poi
   py::array_t<double> value(lower.size());
   double* data = value.mutable_data();
   for (py::ssize_t i = 0; i < lower.size(); ++i) {
-    const double low = lower.at(i), high = upper.at(i);
-    data[i] = low + (high - low) / 2;
+    data[i] = Enclosure{lower.at(i), upper.at(i)}.midpoint();
   }
   return value;
 }

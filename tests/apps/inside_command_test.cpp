@@ -535,6 +535,33 @@ TEST_F(InsideCommand, WindingAgainstAnOpenSurfaceIsTheGeneralizedWindingNumber) 
 // --winding --json: the values beside the counts, in input order, null on the surface; the
 // counts are the labels' (the open box's missing face centre, w = 1/2 exactly, is
 // undecided, not rounded to a side by its printed value).
+// The space cells are sized to the points the file holds: for a few points, a grid much
+// coarser than the mesh's own; from standard input (count unknown), the mesh's own.
+TEST_F(InsideCommand, SpaceCellsAreSizedToThePointsFile) {
+  write_file(dir_ / "cube.obj", obj_cube(0, 1, 1));
+  write_file(dir_ / "points.txt", "0.5 0.5 0.5\n2 2 2\n");
+  InsideCommandOptions options;
+  options.mesh.path = (dir_ / "cube.obj").string();
+  options.json = true;
+  const Outcome from_file = run_file(options, dir_ / "points.txt");
+  ASSERT_EQ(from_file.code, ExitCode::success) << from_file.err;
+  const auto cells = [](const std::string& json) {
+    const std::size_t at = json.find("\"cells\": ");
+    return at == std::string::npos ? 0ul : std::stoul(json.substr(at + 9));
+  };
+  // The grid the classifier builds for the mesh alone.
+  const std::size_t by_mesh =
+      inside::Classifier(mesh::load_mesh(options.mesh.path).mesh).space_cells()->cells;
+  const std::size_t few = cells(from_file.out);
+  EXPECT_GT(few, 0u) << from_file.out;
+  EXPECT_LT(few, by_mesh / 8) << from_file.out;
+  const Outcome from_stdin = run_stdin(options, "0.5 0.5 0.5\n2 2 2\n");
+  ASSERT_EQ(from_stdin.code, ExitCode::success) << from_stdin.err;
+  EXPECT_EQ(cells(from_stdin.out), by_mesh) << from_stdin.out;
+  for (const Outcome* r : {&from_file, &from_stdin})
+    EXPECT_NE(r->out.find("\"inside\": 1, \"outside\": 1"), std::string::npos) << r->out;
+}
+
 TEST_F(InsideCommand, WindingWithJsonHasTheValuesBesideTheCounts) {
   write_file(dir_ / "open_box.obj",
              "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"

@@ -32,6 +32,13 @@ TEST(Location, EachLocationIsNamedAsItsEnumerator) {
   EXPECT_EQ(names.size(), kLocations.size());
 }
 
+TEST(Location, EachNameReadsBackAndNoOtherWordDoes) {
+  for (const Location l : kLocations)
+    EXPECT_EQ(location_named(to_string(l)), l);
+  for (const std::string_view word : {"", "Inside", "inside ", "outsid", "?", "in side"})
+    EXPECT_FALSE(location_named(word).has_value()) << word;
+}
+
 TEST(Location, CountsStartAtZeroAndCountEachLocationApart) {
   LocationCounts counts;
   for (const Location l : kLocations)

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 namespace exactgeo::inside {
@@ -14,6 +15,8 @@ namespace exactgeo::inside {
 /// classifier allows can compare with the rule's level (internal/open_label.hpp).
 enum class Location : std::uint8_t { outside, inside, boundary, undecided };
 std::string_view to_string(Location location) noexcept;
+/// The location to_string names so; nullopt for any other word.
+std::optional<Location> location_named(std::string_view word) noexcept;
 
 /// How many points got each location.
 class LocationCounts {

@@ -68,6 +68,9 @@ struct BoundaryEdge {
 struct Enclosure {
   double lower = 0.0;
   double upper = 0.0;
+
+  /// A double between the bounds, the one the command line and Python report as the value.
+  double midpoint() const noexcept { return lower + (upper - lower) / 2; }
 };
 
 enum class BoundaryTermKind : std::uint8_t {

@@ -55,8 +55,7 @@ class SpaceCells {
   /// and where the number of points to classify is known, at most kCellsPerPoint per point
   /// (but kMinCellsForFewPoints at least). A cell costs its build about what a point costs
   /// its lookup, and a point saves a ray only where its cell is free of faces: a grid much
-  /// finer than the points are many is built and never read (25,000 points in the 2^18
-  /// cells of a cube's grid: building took eight times as long as classifying).
+  /// finer than the points are many is built and never read.
   static std::size_t cell_count(std::size_t faces, std::optional<std::size_t> expected_points);
 
   /// The winding number of every point of a cell containing `p`, or nullopt when a face
