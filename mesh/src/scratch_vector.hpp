@@ -30,7 +30,7 @@ class HugePageAllocator {
 
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (!huge(bytes)) return static_cast<T*>(::operator new(bytes));
+    if (!huge(bytes)) return static_cast<T*>(::operator new(bytes, kAlignment));
     void* memory = ::operator new(rounded(bytes), std::align_val_t{kHugePage});
 #if defined(__linux__)
     madvise(memory, rounded(bytes), MADV_HUGEPAGE);  // advice: ignored where refused
@@ -41,7 +41,7 @@ class HugePageAllocator {
   void deallocate(T* memory, std::size_t n) noexcept {
     const std::size_t bytes = n * sizeof(T);
     if (!huge(bytes)) {
-      ::operator delete(memory, bytes);
+      ::operator delete(memory, bytes, kAlignment);
     } else {
       ::operator delete(memory, rounded(bytes), std::align_val_t{kHugePage});
     }
@@ -54,6 +54,10 @@ class HugePageAllocator {
 
  private:
   static constexpr std::size_t kHugePage = std::size_t{1} << 21;
+  // The element's own alignment (a sweep node asks for a cache line, above what plain
+  // operator new promises); a huge allocation's 2 MiB alignment covers it.
+  static constexpr std::align_val_t kAlignment{alignof(T)};
+  static_assert(alignof(T) <= kHugePage);
 
   static bool huge(std::size_t bytes) noexcept { return bytes >= kHugePage; }
   static std::size_t rounded(std::size_t bytes) noexcept {
