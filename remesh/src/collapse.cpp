@@ -14,6 +14,8 @@
 #include <iterator>
 #include <limits>
 #include <span>
+#include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -27,6 +29,7 @@
 #include "one_mover.hpp"
 #include "operation_checks.hpp"
 #include "pass_schedule.hpp"
+#include "region_points.hpp"
 
 namespace exactgeo::remesh {
 
@@ -39,18 +42,25 @@ struct CollapsePlan {
   VertexIndex a = 0;
   VertexIndex b = 0;
   Point3 to{};
-  std::vector<std::size_t> on_edge;  ///< the edge's triangles, removed
+  EdgeTrianglesOfOne on_edge;  ///< the edge's triangles, removed
 };
 
 std::string collapsing(VertexIndex a, VertexIndex b) {
   return operation_name("collapsing", a, b);
 }
 
-/// The neighbours of v (sorted, each once) and whether v is on the boundary (an edge of
-/// one triangle: a neighbour seen once among the triangles' sides).
-std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const VertexTriangles& stars,
-                                               VertexIndex v) {
-  std::vector<VertexIndex> sides;
+/// What plan_collapse reuses from one collapse to the next (a pass plans thousands).
+struct PlanScratch {
+  std::vector<std::size_t> on_edge;
+  std::vector<VertexIndex> opposite, ring_a, ring_b, common;
+  std::vector<Triangle> seen;
+};
+
+/// The neighbours of v into `sides` (sorted, each once), and whether v is on the boundary
+/// (an edge of one triangle: a neighbour seen once among the triangles' sides).
+bool ring(const Surface& s, const VertexTriangles& stars, VertexIndex v,
+          std::vector<VertexIndex>& sides) {
+  sides.clear();
   for (const std::size_t t : stars[v]) {
     for (const VertexIndex c : s.triangles[t])
       if (c != v) sides.push_back(c);
@@ -65,28 +75,33 @@ std::pair<std::vector<VertexIndex>, bool> ring(const Surface& s, const VertexTri
     i = j;
   }
   sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
-  return {std::move(sides), boundary};
+  return boundary;
 }
 
 std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const VertexTriangles& stars,
-                                                  VertexIndex a, VertexIndex b, const Point3& to) {
+                                                  VertexIndex a, VertexIndex b, const Point3& to,
+                                                  PlanScratch& scratch) {
   for (const VertexIndex v : {a, b}) {
     if (auto why = vertex_problem(s, v)) return topology(*why);
   }
-  std::vector<std::size_t> on_edge;
+  std::vector<std::size_t>& on_edge = scratch.on_edge;
+  on_edge.clear();
   std::set_intersection(stars[a].begin(), stars[a].end(), stars[b].begin(), stars[b].end(),
                         std::back_inserter(on_edge));
   if (auto why = edge_problem(s, a, b, on_edge)) return topology(*why);
   if (!finite(to)) return topology("the new position is not finite");
   // The link condition: the ends' common neighbours are the opposite corners only.
-  std::vector<VertexIndex> opposite;
+  std::vector<VertexIndex>& opposite = scratch.opposite;
+  opposite.clear();
   for (const std::size_t t : on_edge)
     opposite.push_back(third_corner(s.triangles[t], a, b));
   std::sort(opposite.begin(), opposite.end());
   opposite.erase(std::unique(opposite.begin(), opposite.end()), opposite.end());
-  const auto [na, a_on_boundary] = ring(s, stars, a);
-  const auto [nb, b_on_boundary] = ring(s, stars, b);
-  std::vector<VertexIndex> common;
+  std::vector<VertexIndex>&na = scratch.ring_a, &nb = scratch.ring_b;
+  const bool a_on_boundary = ring(s, stars, a, na);
+  const bool b_on_boundary = ring(s, stars, b, nb);
+  std::vector<VertexIndex>& common = scratch.common;
+  common.clear();
   std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
   if (common != opposite) {
     return topology(collapsing(a, b) +
@@ -97,7 +112,8 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Vertex
   }
   // The triangles around the merged vertex: none twice, none of zero area.
   const auto at = [&](VertexIndex v) { return v == a || v == b ? to : s.vertices[v]; };
-  std::vector<Triangle> seen;  // sorted corners
+  std::vector<Triangle>& seen = scratch.seen;  // sorted corners
+  seen.clear();
   for (const VertexIndex end : {a, b}) {
     for (const std::size_t t : stars[end]) {
       if (std::find(on_edge.begin(), on_edge.end(), t) != on_edge.end()) continue;
@@ -113,7 +129,7 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Vertex
       seen.push_back(tri);
     }
   }
-  return CollapsePlan{a, b, to, on_edge};
+  return CollapsePlan{a, b, to, EdgeTrianglesOfOne(on_edge)};
 }
 
 /// The surface with the planned collapses made: each edge's triangles gone (the others in
@@ -140,6 +156,27 @@ Surface collapsed(const Surface& surface, const std::vector<const CollapsePlan*>
 }
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+/// The broad phase's pairs in the order of their operator<=> (lexicographic in their 32-bit
+/// indices), compared as the same indices packed into 64-bit words: the same order, with
+/// cheaper comparisons (a pass sorts tens of thousands).
+void sort_pairs(ccd::MeshCcdCandidates& candidates) {
+  static_assert(std::is_same_v<VertexIndex, std::uint32_t> &&
+                std::is_same_v<FaceIndex, std::uint32_t>);
+  const auto word = [](std::uint32_t high, std::uint32_t low) {
+    return std::uint64_t{high} << 32 | low;
+  };
+  std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end(),
+            [&](const ccd::VertexFacePair& x, const ccd::VertexFacePair& y) {
+              return word(x.vertex, x.face) < word(y.vertex, y.face);
+            });
+  const auto key = [&](const ccd::EdgeEdgePair& p) {
+    return std::pair(word(p.a[0], p.a[1]), word(p.b[0], p.b[1]));
+  };
+  std::sort(
+      candidates.edge_edge.begin(), candidates.edge_edge.end(),
+      [&](const ccd::EdgeEdgePair& x, const ccd::EdgeEdgePair& y) { return key(x) < key(y); });
+}
 
 /// The part of the surface the collapses' motions can reach: the triangles around their
 /// ends, and every triangle whose box meets the box one of those sweeps (its corners and
@@ -169,8 +206,8 @@ struct Reach {
         break;
       }
     }
-    boxes::overlapping_groups<4, 3>(points, swept, s.triangles,
-                                    [&](std::size_t, std::size_t t) { reached[t] = true; });
+    internal::groups_near_triangles<4>(points, swept, s.triangles,
+                                       [&](std::size_t, std::size_t t) { reached[t] = true; });
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       if (!reached[t]) continue;
@@ -214,9 +251,10 @@ class CollapsePass {
     std::vector<CollapsePlan> planned;
     std::vector<std::size_t> planned_collapse;
     std::vector<internal::Footprint> footprints;
+    PlanScratch scratch;
     for (std::size_t i = 0; i < collapses.size(); ++i) {
       const Collapse& c = collapses[i];
-      auto plan_or = plan_collapse(surface_, stars_, c.a, c.b, c.to);
+      auto plan_or = plan_collapse(surface_, stars_, c.a, c.b, c.to, scratch);
       if (auto* refused = std::get_if<Outcome>(&plan_or)) {
         outcomes_[i] = std::move(*refused);
         continue;
@@ -247,7 +285,7 @@ class CollapsePass {
     for (std::size_t k = 0; k < planned.size(); ++k) {
       const std::size_t i = planned_collapse[k];
       if (!ahead[k]) {
-        outcomes_[i] = deferred(collapsing(planned[k].a, planned[k].b),
+        outcomes_[i] = deferred("collapsing", planned[k].a, planned[k].b,
                                 "comes near another collapse of the pass (a shared vertex around "
                                 "their ends, or their moving triangles' boxes)");
         continue;
@@ -327,8 +365,7 @@ class CollapsePass {
         ccd::MeshCcdOptions one_thread;  // a few collapses' neighbourhoods: no workers
         one_thread.threads = 1;
         candidates = mesh_ccd.candidates(positions, one_thread);
-        std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end());
-        std::sort(candidates.edge_edge.begin(), candidates.edge_edge.end());
+        sort_pairs(candidates);
         vf_known.assign(candidates.vertex_face.size(), unknown);
         ee_known.assign(candidates.edge_edge.size(), unknown);
       }
@@ -391,8 +428,9 @@ class CollapsePass {
 }  // namespace
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
-  const auto planned =
-      plan_collapse(surface, VertexTriangles(surface.triangles, surface.vertices.size()), a, b, to);
+  PlanScratch scratch;
+  const auto planned = plan_collapse(
+      surface, VertexTriangles(surface.triangles, surface.vertices.size()), a, b, to, scratch);
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const CollapsePlan& plan = std::get<CollapsePlan>(planned);
   const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};

@@ -136,7 +136,7 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     const std::size_t i = edge_of_plan[k];
     const auto [a, b] = edges[i];
     if (!apart[k]) {
-      outcomes[i] = deferred(flipping(a, b), "shares a vertex with another flip of the pass");
+      outcomes[i] = deferred("flipping", a, b, "shares a vertex with another flip of the pass");
     } else if (auto refused = flip_geometry(surface, plans[k])) {
       outcomes[i] = std::move(*refused);
     } else {
@@ -152,7 +152,7 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     const auto [a, b] = edges[edge_of_plan[k]];
     if (!ahead[n]) {
       outcomes[edge_of_plan[k]] =
-          deferred(flipping(a, b), "sweeps a region that meets another flip's of the pass");
+          deferred("flipping", a, b, "sweeps a region that meets another flip's of the pass");
       continue;
     }
     regions.push_back(plans[k].region);

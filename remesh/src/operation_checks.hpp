@@ -67,10 +67,27 @@ inline std::string operation_name(std::string_view verb, VertexIndex a, VertexIn
   return name;
 }
 
-/// A pass's refusal of an operation that waits for the next pass.
-inline Outcome deferred(std::string operation, std::string_view why) {
-  std::string reason = std::move(operation);
-  reason.append(" ").append(why);
+/// A pass's refusal of an operation that waits for the next pass: "flipping edge 6-12 " and
+/// why, in one allocation of its size (a pass defers thousands).
+inline Outcome deferred(std::string_view verb, VertexIndex a, VertexIndex b, std::string_view why) {
+  std::array<char, 10> digits_a{}, digits_b{};  // a 32-bit number each
+  const char* end_a = std::to_chars(digits_a.data(), digits_a.data() + digits_a.size(), a).ptr;
+  const char* end_b = std::to_chars(digits_b.data(), digits_b.data() + digits_b.size(), b).ptr;
+  const std::string_view number_a(digits_a.data(),
+                                  static_cast<std::size_t>(end_a - digits_a.data()));
+  const std::string_view number_b(digits_b.data(),
+                                  static_cast<std::size_t>(end_b - digits_b.data()));
+  constexpr std::string_view kEdge = " edge ";
+  std::string reason;
+  reason.reserve(verb.size() + kEdge.size() + number_a.size() + 1 + number_b.size() + 1 +
+                 why.size());
+  reason.append(verb)
+      .append(kEdge)
+      .append(number_a)
+      .append("-")
+      .append(number_b)
+      .append(" ")
+      .append(why);
   return {Verdict::deferred, std::move(reason), std::nullopt, std::nullopt};
 }
 

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/boxes/point_groups.hpp"
 #include "exactgeo/remesh/swept_region.hpp"
 
 namespace exactgeo::remesh::internal {
@@ -34,6 +35,23 @@ struct RegionPoints {
     }
   }
 };
+
+/// visit(g, t) for every group g of `groups` and triangle t of `triangles` whose boxes
+/// overlap (boxes/point_groups.hpp). A pass's regions or moving triangles are usually far
+/// fewer than the surface's triangles: then the triangles are scanned down a tree of the
+/// groups (no tree over the whole surface, built again each pass); otherwise the two trees
+/// are walked. The same pairs either way (the same float boxes), in another order.
+template <std::size_t N, class Visit>
+void groups_near_triangles(std::span<const Point3> points,
+                           std::span<const std::array<VertexIndex, N>> groups,
+                           std::span<const Triangle> triangles, Visit&& visit) {
+  constexpr std::size_t kFewer = 4;  // groups per triangle below which the scan pays
+  if (kFewer * groups.size() < triangles.size()) {
+    boxes::overlapping_groups_by_scan<N, 3>(points, groups, triangles, visit);
+  } else {
+    boxes::overlapping_groups<N, 3>(points, groups, triangles, visit);
+  }
+}
 
 /// Pairs (x, y) that a box query found, bucketed by x: the ys of x are of(x), in the order
 /// found (a counting sort into one array, no vector per x).

@@ -107,12 +107,14 @@ bool sides_meet(const Surface& surface, const std::vector<Triangle>& made, const
 ///    numbered after the surface's) turn the same way in its shadow: they are a fan of
 ///    four angles around m, each below a half turn, going round once (their sum is a
 ///    whole number of turns, below two), so they tile without overlap.
-bool sides_apart(const Surface& surface, const SplitPlan& plan, const std::vector<Triangle>& made) {
+/// `off`: orient3d(a, b, c, m) and orient3d(a, b, d, m), which split_geometry has asked
+/// (the sides of the plane of a, b and m that c and d lie on, both the other way round: a
+/// swap of two points turns an exact determinant's sign, so which is which is the same).
+bool sides_apart(const Surface& surface, const SplitPlan& plan, const std::vector<Triangle>& made,
+                 const std::array<Sign, 2>& off) {
   const auto& p = surface.vertices;
   const VertexIndex c = third_corner(surface.triangles[plan.on_edge[0]], plan.a, plan.b);
-  const VertexIndex d = third_corner(surface.triangles[plan.on_edge[1]], plan.a, plan.b);
-  const Sign sc = orient3d(p[plan.a], p[plan.b], plan.at, p[c]);
-  const Sign sd = orient3d(p[plan.a], p[plan.b], plan.at, p[d]);
+  const Sign sc = off[0], sd = off[1];
   if (sc != Sign::zero || sd != Sign::zero) return sc != Sign::zero && sd == -sc;
   const int axis = *shadow_axis(p[plan.a], p[plan.b], p[c]);
   const auto point = [&](VertexIndex v) -> const Point3& { return v < p.size() ? p[v] : plan.at; };
@@ -150,6 +152,7 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
   const auto m = static_cast<VertexIndex>(surface.vertices.size());  // the new vertex
   const std::vector<Triangle> made = split_triangles(surface, plan.on_edge, a, b, m);
   const auto point = [&](VertexIndex v) { return v == m ? at : p[v]; };
+  std::array<Sign, 2> off{};  // per triangle x y c of the edge: orient3d(a, b, c, m)
   for (std::size_t i = 0; i < plan.on_edge.size(); ++i) {
     const Triangle& old = surface.triangles[plan.on_edge[i]];
     const VertexIndex c = third_corner(old, a, b);
@@ -158,11 +161,19 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
     }
     // At a point of the old triangle's plane off the edge, outside the triangle's angle
     // at c, a half would face the other way (lying flat over the other, or the two
-    // turned over together).
-    for (const Triangle& t : {made[2 * i], made[2 * i + 1]}) {
-      if (turns_over_in_plane({p[old[0]], p[old[1]], p[old[2]]},
-                              {point(t[0]), point(t[1]), point(t[2])})) {
-        return turns_over(splitting(a, b), t, c);
+    // turned over together). turns_over_in_plane for both halves, with the plane's side
+    // of m asked once: m is each half's only corner that is not one of the old
+    // triangle's (at is none of them here: the zero-area checks above refuse that), so
+    // off the plane neither half turns over, and in it a half turns over when its shadow
+    // turns the other way.
+    off[i] = orient3d(p[a], p[b], p[c], at);
+    if (off[i] == Sign::zero) {
+      const int axis = *shadow_axis(p[old[0]], p[old[1]], p[old[2]]);
+      const Sign old_turn = orient2d_along(axis, p[old[0]], p[old[1]], p[old[2]]);
+      for (const Triangle& t : {made[2 * i], made[2 * i + 1]}) {
+        if (orient2d_along(axis, point(t[0]), point(t[1]), point(t[2])) != old_turn) {
+          return turns_over(splitting(a, b), t, c);
+        }
       }
     }
     if (!between) {
@@ -173,7 +184,7 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
                                   : kNoVertex);
     }
   }
-  if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan, made) &&
+  if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan, made, off) &&
       sides_meet(surface, made, at)) {
     return Outcome{Verdict::refused_collision,
                    splitting(a, b) + " off the edge would fold its two sides into each other",
@@ -249,7 +260,7 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   for (std::size_t k = 0; k < plans.size(); ++k) {
     const std::size_t i = split_of_plan[k];
     if (!apart[k]) {
-      outcomes[i] = deferred(splitting(plans[k].a, plans[k].b),
+      outcomes[i] = deferred("splitting", plans[k].a, plans[k].b,
                              "shares a vertex with another split of the pass");
     } else if (auto refused = split_geometry(surface, plans[k])) {
       outcomes[i] = std::move(*refused);
@@ -266,7 +277,7 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
     const SplitPlan& plan = plans[candidates[n]];
     if (!ahead[n]) {
       outcomes[split_of_plan[candidates[n]]] = deferred(
-          splitting(plan.a, plan.b), "sweeps a region that meets another split's of the pass");
+          "splitting", plan.a, plan.b, "sweeps a region that meets another split's of the pass");
       continue;
     }
     regions.insert(regions.end(), plan.regions.begin(), plan.regions.end());

@@ -73,6 +73,16 @@ class Region {
     // (in floating point, a choice only; its shadow of those three is checked to be a
     // triangle, so that a flat hull's shadow is its polygon, one to one).
     axis_ = shadow_axis_of(*corners_[0].point, *corners_[1].point, *corners_[2].point);
+    // Each three corners' turn in the shadow, asked once: orient2d_along is the exact sign
+    // of a determinant, which changes sign when two of its points swap, so corners i, j, k
+    // (i < j) turn as the three in increasing order do, the other way when k lies between
+    // i and j. (A split's thin region has its new point all but on the edge's line: that
+    // turn falls to exact arithmetic, and the sides below ask it three times.)
+    std::array<Sign, 4> turn{};  // of the three corners other than l, in increasing order
+    for (int l = 0; l < 4; ++l) {
+      const auto t = face_opposite(l);
+      turn[l] = orient2d_along(axis_, *t[0].point, *t[1].point, *t[2].point);
+    }
     for (int e = 0; e < 6; ++e) {
       const auto [i, j] = kPairs[e];
       Sign inward = Sign::zero;
@@ -80,8 +90,8 @@ class Region {
       unsigned on = (1u << i) | (1u << j);
       for (int k = 0; k < 4; ++k) {
         if (k == i || k == j) continue;
-        const Sign s =
-            orient2d_along(axis_, *corners_[i].point, *corners_[j].point, *corners_[k].point);
+        const Sign turn_ijk = turn[6 - i - j - k];  // the corner left out is 6 - i - j - k
+        const Sign s = i < k && k < j ? -turn_ijk : turn_ijk;
         if (s == Sign::zero) {
           on |= 1u << k;
         } else if (inward == Sign::zero) {
@@ -221,10 +231,12 @@ class Region {
     volume_ =
         orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point);
     if (volume_ == Sign::zero) return;
-    for (int l = 0; l < 4; ++l) {
-      const auto& t = face_opposite(l);
-      inward_[l] = orient3d(*t[0].point, *t[1].point, *t[2].point, *corners_[l].point);
-    }
+    // orient3d(face opposite l, corner l) is the volume's sign times the parity of the
+    // corners' order (an exact determinant's sign changes with every swap): (1 2 3 0) and
+    // (0 1 3 2) are odd, (0 2 3 1) and (0 1 2 3) even. One orient3d, not five: a split's
+    // thin region leaves each to exact arithmetic.
+    for (int l = 0; l < 4; ++l)
+      inward_[l] = l % 2 == 1 ? volume_ : -volume_;
   }
 
   mutable bool oriented_ = false;
@@ -431,8 +443,9 @@ std::vector<std::optional<Blocker>> first_in_regions(
   const internal::RegionPoints boxed(surface.vertices, regions);
   // The triangles near each region.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  boxes::overlapping_groups<4, 3>(boxed.points, boxed.groups, surface.triangles,
-                                  [&](std::size_t r, std::size_t t) { pairs.emplace_back(r, t); });
+  internal::groups_near_triangles<4>(
+      boxed.points, boxed.groups, surface.triangles,
+      [&](std::size_t r, std::size_t t) { pairs.emplace_back(r, t); });
   const internal::Buckets near(regions.size(), pairs);
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());

@@ -1,6 +1,7 @@
 // Overlapping point groups found by box trees (boxes/point_groups.hpp): every pair whose
 // exact boxes meet is reported, once, against brute force over all pairs, for random
-// groups of random sizes at 2^0 and 2^+-1000, groups that only touch included.
+// groups of random sizes at 2^0 and 2^+-1000, groups that only touch included; the scan of
+// many groups against a few finds the same pairs.
 
 #include "exactgeo/boxes/point_groups.hpp"
 
@@ -64,6 +65,24 @@ TEST(PointGroups, EveryPairWhoseExactBoxesMeetIsFoundOnce) {
       EXPECT_EQ(found.count(pair), 1u) << "2^" << e << ": " << pair.first << ", " << pair.second;
     }
     EXPECT_GT(expected.size(), 100u);
+    // A few groups against many, by a scan of the many: the same pairs, each once.
+    std::multiset<std::pair<std::size_t, std::size_t>> scanned;
+    overlapping_groups_by_scan<4, 3>(points, a, b, [&](std::size_t i, std::size_t j) {
+      scanned.insert({i, j});
+    });
+    EXPECT_EQ(scanned, found) << "2^" << e;
+    for (const auto& pair : expected)
+      EXPECT_EQ(scanned.count(pair), 1u) << "2^" << e << ": " << pair.first << ", " << pair.second;
+    std::multiset<std::pair<std::size_t, std::size_t>> few;  // fewer than a leaf holds
+    overlapping_groups_by_scan<4, 3>(points, std::span(a).first(5), b,
+                                     [&](std::size_t i, std::size_t j) {
+                                       few.insert({i, j});
+                                     });
+    std::multiset<std::pair<std::size_t, std::size_t>> few_expected;
+    for (const auto& pair : found)
+      if (pair.first < 5) few_expected.insert(pair);
+    EXPECT_EQ(few, few_expected) << "2^" << e;
+    EXPECT_FALSE(few.empty());
     // Within one set: i < j, each once.
     std::set<std::pair<std::size_t, std::size_t>> within;
     for (std::size_t i = 0; i < b.size(); ++i) {

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -48,6 +50,44 @@ void overlapping_groups(std::span<const Point3> points,
                     [&](const Packet<NA>& pa, std::size_t i, const Packet<NB>& pb, std::size_t j) {
                       visit(pa.id[i], pb.id[j]);
                     });
+}
+
+/// overlapping_groups(points, a, b, visit) for a few groups `a` against many `b`: a tree of
+/// `a` only, and each group of `b` walked down it with its box, so that nothing is built
+/// over `b` (a remesh pass checks tens of regions against every triangle of the surface).
+/// The same float boxes and the same overlap test as the two trees' walk: the same pairs,
+/// each once, in another order.
+template <std::size_t NA, std::size_t NB, class Visit>
+void overlapping_groups_by_scan(std::span<const Point3> points,
+                                std::span<const std::array<VertexIndex, NA>> a,
+                                std::span<const std::array<VertexIndex, NB>> b, Visit&& visit) {
+  if (a.empty() || b.empty()) return;
+  const VertexBoxes at_rest = point_boxes(points);
+  const BoxTree<NA> tree_a(a, at_rest);
+  const FloatBox root = tree_a.node(0).box;
+  std::vector<std::uint32_t> stack;
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    FloatBox box = at_rest.box[b[j][0]];
+    for (std::size_t c = 1; c < NB; ++c)
+      box = united(box, at_rest.box[b[j][c]]);
+    if (!overlap(box, root)) continue;
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const auto& node = tree_a.node(stack.back());
+      const std::uint32_t index = stack.back();
+      stack.pop_back();
+      if (!overlap(box, node.box)) continue;
+      if (!node.is_leaf()) {
+        stack.push_back(node.first);  // the right child
+        stack.push_back(index + 1);   // the left child
+        continue;
+      }
+      const auto& leaf = tree_a.leaf(node);
+      for (unsigned hits = overlap_mask(box, leaf); hits != 0; hits &= hits - 1)
+        visit(static_cast<std::size_t>(leaf.id[static_cast<std::size_t>(std::countr_zero(hits))]),
+              j);
+    }
+  }
 }
 
 /// visit(i, j), i < j, for every two groups of `groups` whose boxes overlap.
