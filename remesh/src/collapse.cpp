@@ -14,7 +14,6 @@
 #include <iterator>
 #include <limits>
 #include <span>
-#include <type_traits>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -28,6 +27,7 @@
 #include "exactgeo/remesh/pseudo_motion.hpp"
 #include "one_mover.hpp"
 #include "operation_checks.hpp"
+#include "pair_order.hpp"
 #include "pass_schedule.hpp"
 #include "region_points.hpp"
 
@@ -156,27 +156,6 @@ Surface collapsed(const Surface& surface, const std::vector<const CollapsePlan*>
 }
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-
-/// The broad phase's pairs in the order of their operator<=> (lexicographic in their 32-bit
-/// indices), compared as the same indices packed into 64-bit words: the same order, with
-/// cheaper comparisons (a pass sorts tens of thousands).
-void sort_pairs(ccd::MeshCcdCandidates& candidates) {
-  static_assert(std::is_same_v<VertexIndex, std::uint32_t> &&
-                std::is_same_v<FaceIndex, std::uint32_t>);
-  const auto word = [](std::uint32_t high, std::uint32_t low) {
-    return std::uint64_t{high} << 32 | low;
-  };
-  std::sort(candidates.vertex_face.begin(), candidates.vertex_face.end(),
-            [&](const ccd::VertexFacePair& x, const ccd::VertexFacePair& y) {
-              return word(x.vertex, x.face) < word(y.vertex, y.face);
-            });
-  const auto key = [&](const ccd::EdgeEdgePair& p) {
-    return std::pair(word(p.a[0], p.a[1]), word(p.b[0], p.b[1]));
-  };
-  std::sort(
-      candidates.edge_edge.begin(), candidates.edge_edge.end(),
-      [&](const ccd::EdgeEdgePair& x, const ccd::EdgeEdgePair& y) { return key(x) < key(y); });
-}
 
 /// The part of the surface the collapses' motions can reach: the triangles around their
 /// ends, and every triangle whose box meets the box one of those sweeps (its corners and

@@ -121,14 +121,21 @@ class Region {
     unsigned mask = 0;
     if (volume_ != Sign::zero) {
       for (int l = 0; l < 4; ++l) {
-        const auto& t = face_opposite(l);
-        if (orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l]) mask |= 1u << l;
+        if (beyond_face(l, x)) mask |= 1u << l;
       }
       return mask;
     }
     const Sign off = orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, x);
     if (off != Sign::zero) mask = off == Sign::positive ? 1u << 10 : 1u << 11;
     return mask;
+  }
+
+  /// Bit l of beyond_planes for a tetrahedron: x strictly beyond its face opposite corner
+  /// l. Precondition: not flat.
+  bool beyond_face(int l, const Point3& x) const noexcept {
+    orient();
+    const auto t = face_opposite(l);
+    return orient3d(*t[0].point, *t[1].point, *t[2].point, x) == -inward_[l];
   }
 
   /// The bits of the shadow's sides (kSideBits).
@@ -305,6 +312,9 @@ struct NearbyElements {
   /// Per vertex, for first_in: which region corner it is, and its separating planes.
   std::vector<int> corner;
   std::vector<unsigned> first, second;
+  /// Per vertex, for a tetrahedron's faces asked one at a time: which are known, and of
+  /// those, which it lies strictly beyond (bit l for the face opposite corner l).
+  std::vector<unsigned> face_known, face_beyond;
   /// Per vertex of the surface: its place in `vertices`, or kAbsent.
   std::vector<std::uint32_t> slot;
 
@@ -377,6 +387,28 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     if (second[i] == kUnknown) second[i] = bits(i, !sides_first);
     return second[i];
   };
+  // A tetrahedron's faces after the sides (a split's region) are asked one at a time,
+  // when needed, the face opposite corner 2 last: a split's region is a, b, c, m, and a, b
+  // and m are all but collinear, so that face's orientations fall to exact arithmetic,
+  // where another face usually decides first. The answers are those of every face's bit
+  // (second_of): an element is passed over when its corners all lie beyond one face, a
+  // vertex is inside when it lies beyond none.
+  const bool faces_one_at_a_time = sides_first && !region.flat();
+  std::vector<unsigned>& face_known = near.face_known;
+  std::vector<unsigned>& face_beyond = near.face_beyond;
+  if (faces_one_at_a_time) {
+    face_known.assign(near.vertices.size(), 0);
+    face_beyond.assign(near.vertices.size(), 0);
+  }
+  constexpr std::array<int, 4> kFaceOrder{3, 0, 1, 2};
+  const auto beyond_face = [&](std::size_t i, int l) {
+    if (corner[i] >= 0) return (region.on_faces(corner[i]) >> l & 1u) != 0;
+    if ((face_known[i] >> l & 1u) == 0) {
+      face_known[i] |= 1u << l;
+      if (region.beyond_face(l, p[near.vertices[i]])) face_beyond[i] |= 1u << l;
+    }
+    return (face_beyond[i] >> l & 1u) != 0;
+  };
   const auto index_of = [&](VertexIndex v) -> std::size_t { return near.slot[v]; };
   // Whether the corners (indices into near.vertices) are all beyond one separating plane.
   const auto apart = [&](std::initializer_list<std::size_t> at) {
@@ -384,6 +416,11 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     for (const std::size_t i : at)
       common &= first[i];
     if (common != 0) return true;
+    if (faces_one_at_a_time) {
+      return std::any_of(kFaceOrder.begin(), kFaceOrder.end(), [&](int l) {
+        return std::all_of(at.begin(), at.end(), [&](std::size_t i) { return beyond_face(i, l); });
+      });
+    }
     common = ~0u;
     for (const std::size_t i : at)
       common &= second_of(i);
@@ -397,8 +434,12 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     // Strictly beyond a separating plane: outside (a tetrahedron's vertex is inside
     // exactly when it is beyond none of its faces; a flat region's, when it is on its
     // plane, beyond none of its sides, and in one of its corner triangles).
-    const bool inside =
-        first[i] == 0 && second_of(i) == 0 && (!region.flat() || region.holds(p[v]));
+    const auto beyond_none = [&] {
+      if (!faces_one_at_a_time) return second_of(i) == 0;
+      return std::none_of(kFaceOrder.begin(), kFaceOrder.end(),
+                          [&](int l) { return beyond_face(i, l); });
+    };
+    const bool inside = first[i] == 0 && beyond_none() && (!region.flat() || region.holds(p[v]));
     if (inside) vertex = v;
   }
   if (vertex) return Blocker{Blocker::Kind::vertex, {*vertex, kNoVertex, kNoVertex}};

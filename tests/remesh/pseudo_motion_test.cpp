@@ -46,7 +46,7 @@ bool edge_edge_contact(const Ends& e, const Edge& a, const Edge& b) {
   return testing::min_separation_oracle(q, 0.0).within;
 }
 
-std::string text(const std::optional<Blocker>& b) {
+std::string blocker_text(const std::optional<Blocker>& b) {
   return b ? to_string(*b) : std::string("nothing");
 }
 
@@ -79,7 +79,7 @@ TEST_P(PseudoMotions, ACollapseWhoseEndPassesThroughAStandingTriangleHitsIt) {
   const Point3 to = at(7, 0, 4);
   const std::optional<Blocker> hit = collapse(s, to);
   ASSERT_TRUE(hit.has_value());
-  EXPECT_EQ(*hit, (Blocker{Blocker::Kind::triangle, {4, 5, 6}})) << text(hit);
+  EXPECT_EQ(*hit, (Blocker{Blocker::Kind::triangle, {4, 5, 6}})) << blocker_text(hit);
   const std::array<Move, 2> moves{Move{0, to}, Move{1, to}};
   const Ends ends(s, moves);
   EXPECT_TRUE(vertex_face_contact(ends, 1, s.triangles[2]));
@@ -107,9 +107,9 @@ TEST_P(PseudoMotions, TheCollapsingEdgesEndsCountAsOneVertex) {
   EXPECT_EQ(first_collision(s, moves, Edge{0, 1}), std::nullopt);
   const std::optional<Blocker> unmerged = first_collision(s, moves);
   ASSERT_TRUE(unmerged.has_value());
-  ASSERT_EQ(unmerged->kind, Blocker::Kind::edge) << text(unmerged);
+  ASSERT_EQ(unmerged->kind, Blocker::Kind::edge) << blocker_text(unmerged);
   const Edge named{unmerged->corners[0], unmerged->corners[1]};
-  EXPECT_LT(named[1], 4u) << "an edge of the collapse's own triangles: " << text(unmerged);
+  EXPECT_LT(named[1], 4u) << "an edge of the collapse's own triangles: " << blocker_text(unmerged);
   // Some moving edge that shares no vertex with the named one touches it.
   const Ends ends(s, moves);
   bool confirmed = false;
@@ -119,7 +119,7 @@ TEST_P(PseudoMotions, TheCollapsingEdgesEndsCountAsOneVertex) {
       confirmed = confirmed || edge_edge_contact(ends, e, named);
     }
   }
-  EXPECT_TRUE(confirmed) << text(unmerged);
+  EXPECT_TRUE(confirmed) << blocker_text(unmerged);
 }
 
 TEST_P(PseudoMotions, ATriangleRisingOverAStandingVertexNamesIt) {
@@ -129,7 +129,7 @@ TEST_P(PseudoMotions, ATriangleRisingOverAStandingVertexNamesIt) {
   const Surface s = scene(at(1, 0.25, 0.25), at(1, 0.25, 3), at(1.5, 0.25, 3));
   const Point3 to = at(1, 0, 1);
   const std::optional<Blocker> hit = collapse(s, to);
-  EXPECT_EQ(hit, (Blocker{Blocker::Kind::vertex, {4, kNoVertex, kNoVertex}})) << text(hit);
+  EXPECT_EQ(hit, (Blocker{Blocker::Kind::vertex, {4, kNoVertex, kNoVertex}})) << blocker_text(hit);
   const std::array<Move, 2> moves{Move{0, to}, Move{1, to}};
   EXPECT_TRUE(vertex_face_contact(Ends(s, moves), 4, s.triangles[0]));
   // The same triangle lifted so that its lowest corner is above the tent's top: nothing.
@@ -144,13 +144,13 @@ TEST_P(PseudoMotions, AnEdgeRisingThroughAStandingEdgeNamesIt) {
   const std::array<Move, 1> up{Move{2, at(1, 2, 4)}};
   const std::optional<Blocker> hit = first_collision(s, up);
   ASSERT_TRUE(hit.has_value());
-  ASSERT_EQ(hit->kind, Blocker::Kind::edge) << text(hit);
+  ASSERT_EQ(hit->kind, Blocker::Kind::edge) << blocker_text(hit);
   const Edge named{hit->corners[0], hit->corners[1]};
-  EXPECT_GE(named[0], 4u) << "an edge of the sliver: " << text(hit);
+  EXPECT_GE(named[0], 4u) << "an edge of the sliver: " << blocker_text(hit);
   const Ends ends(s, up);
   EXPECT_TRUE(edge_edge_contact(ends, Edge{0, 2}, named) ||
               edge_edge_contact(ends, Edge{1, 2}, named))
-      << text(hit);
+      << blocker_text(hit);
   // Rising to 1.5 only, the edges stay under the sliver (below 0.8 over the strip).
   EXPECT_EQ(first_collision(s, std::array{Move{2, at(1, 2, 1.5)}}), std::nullopt);
 }
