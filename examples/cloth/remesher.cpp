@@ -182,6 +182,27 @@ bool keeps_quality(const OldWorst& old_worst, double new_worst) {
   return new_worst >= kMinAngle || new_worst >= old_worst();
 }
 
+/// Whether an edge whose triangles' normals have cross product `c` and dot product `dot`,
+/// and whose material length squared is `length_squared`, surely asks for no less than
+/// max_length (its ask cannot lower a size, which starts there): the angle between the
+/// normals is at most tan of it, |c| / dot for dot > 0, so |c|^2 max^2 below
+/// length^2 turn^2 dot^2 with a relative margin of 1e-6 (far beyond the few ulps by which
+/// the squares, hypot, atan2 and the division round apart) puts the ask computed by
+/// vertex_sizes above max_length. Answers false (work it out) outside the range where the
+/// squares keep their precision. A float shortcut with the same answers, not an exact one.
+bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
+                           const RemeshParameters& p) {
+  constexpr double kMargin = 1.0 + 1e-6;
+  constexpr double kTiny = 1e-280;  // below it, squares may have lost their precision
+  if (!(dot > 0.0)) return false;
+  const double cross_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+  const double lhs = cross_squared * (p.max_length * p.max_length);
+  const double rhs = length_squared * (p.turn_per_edge * p.turn_per_edge) * (dot * dot);
+  const auto usable = [&](double x) { return x > kTiny && std::isfinite(x); };
+  return usable(cross_squared) && usable(dot * dot) && usable(length_squared) && usable(lhs) &&
+         usable(rhs) && kMargin * lhs < rhs;
+}
+
 /// The size every vertex asks for (Remesher's sizing, remesher.hpp).
 std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& edges,
                                  const RemeshParameters& p) {
@@ -190,9 +211,13 @@ std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& ed
     if (!e.right) continue;
     const auto n1 = normal(w.surface, w.surface.triangles[e.left]);
     const auto n2 = normal(w.surface, w.surface.triangles[*e.right]);
-    const double cross = std::hypot(n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
-                                    n1[0] * n2[1] - n1[1] * n2[0]);
-    const double theta = std::atan2(cross, n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2]);
+    const std::array<double, 3> c{n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
+                                  n1[0] * n2[1] - n1[1] * n2[0]};
+    const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+    const Material &ma = w.material[e.a], &mb = w.material[e.b];
+    const double dx = mb[0] - ma[0], dy = mb[1] - ma[1];
+    if (asks_no_less_than_max(c, dot, dx * dx + dy * dy, p)) continue;
+    const double theta = std::atan2(std::hypot(c[0], c[1], c[2]), dot);
     if (!(theta > 0.0)) continue;
     const double ask = material_length(w, e.a, e.b) * p.turn_per_edge / theta;
     size[e.a] = std::min(size[e.a], ask);
@@ -202,6 +227,32 @@ std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& ed
     s = std::clamp(s, p.min_length, p.max_length);
   return size;
 }
+
+/// The sheets' edges and the sizes their vertices ask for, worked out when first asked and
+/// kept while the surface stays as it was: a pass that applies nothing leaves it unchanged
+/// (its triangles, their order, the vertices and their material), so the next pass, of
+/// this kind or another, reads the same tables.
+class SurfaceTables {
+ public:
+  const std::vector<SheetEdge>& edges(const Work& w) {
+    if (!edges_) edges_ = sheet_edges(w.surface);
+    return *edges_;
+  }
+  const std::vector<double>& sizes(const Work& w, const RemeshParameters& p) {
+    if (!sizes_) sizes_ = vertex_sizes(w, edges(w), p);
+    return *sizes_;
+  }
+  /// After a pass: forgotten when it changed the surface.
+  void pass_done(bool changed) {
+    if (!changed) return;
+    edges_.reset();
+    sizes_.reset();
+  }
+
+ private:
+  std::optional<std::vector<SheetEdge>> edges_;
+  std::optional<std::vector<double>> sizes_;
+};
 
 double edge_size(const std::vector<double>& size, VertexIndex a, VertexIndex b) {
   return std::min(size[a], size[b]);
@@ -221,9 +272,9 @@ bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) 
   return true;
 }
 
-bool split_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
-  const std::vector<SheetEdge> edges = sheet_edges(w.surface);
-  const std::vector<double> size = vertex_sizes(w, edges, p);
+bool split_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables, VerdictCounts& counts) {
+  const std::vector<SheetEdge>& edges = tables.edges(w);
+  const std::vector<double>& size = tables.sizes(w, p);
   std::vector<std::pair<double, remesh::Split>> wanted;  // (length / size, split)
   for (const SheetEdge& e : edges) {
     const double ratio = material_length(w, e.a, e.b) / edge_size(size, e.a, e.b);
@@ -327,9 +378,10 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
   return true;
 }
 
-bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
-  const std::vector<SheetEdge> edges = sheet_edges(w.surface);
-  const std::vector<double> size = vertex_sizes(w, edges, p);
+bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
+                   VerdictCounts& counts) {
+  const std::vector<SheetEdge>& edges = tables.edges(w);
+  const std::vector<double>& size = tables.sizes(w, p);
   std::vector<std::pair<double, const SheetEdge*>> wanted;
   for (const SheetEdge& e : edges) {
     const double length = material_length(w, e.a, e.b);
@@ -359,9 +411,9 @@ bool collapse_pass(Work& w, const RemeshParameters& p, VerdictCounts& counts) {
   return any;
 }
 
-bool flip_pass(Work& w, VerdictCounts& counts) {
+bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
   std::vector<Edge> flips;
-  for (const SheetEdge& e : sheet_edges(w.surface)) {
+  for (const SheetEdge& e : tables.edges(w)) {
     if (!e.right) continue;
     const VertexIndex c = remesh::third_corner(w.surface.triangles[e.left], e.a, e.b);
     const VertexIndex d = remesh::third_corner(w.surface.triangles[*e.right], e.a, e.b);
@@ -490,13 +542,17 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters) {
   Work w = work_of(mesh);
   // Split vertices come after the obstacle's (as split_edges appends them), and so do
   // their entries in the work's per-vertex arrays; write_back puts them with the sheets.
-  for (int pass = 0; pass < parameters.passes && split_pass(w, parameters, counts.split); ++pass) {
-  }
-  for (int pass = 0; pass < parameters.passes && collapse_pass(w, parameters, counts.collapse);
-       ++pass) {
-  }
-  for (int pass = 0; pass < parameters.passes && flip_pass(w, counts.flip); ++pass) {
-  }
+  SurfaceTables tables;
+  const auto run = [&](const auto& one_pass) {
+    for (int pass = 0; pass < parameters.passes; ++pass) {
+      const bool changed = one_pass();
+      tables.pass_done(changed);
+      if (!changed) break;
+    }
+  };
+  run([&] { return split_pass(w, parameters, tables, counts.split); });
+  run([&] { return collapse_pass(w, parameters, tables, counts.collapse); });
+  run([&] { return flip_pass(w, tables, counts.flip); });
   write_back(w, mesh);
   counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return counts;
