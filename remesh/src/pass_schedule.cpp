@@ -1,6 +1,7 @@
 #include "pass_schedule.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "exactgeo/boxes/point_groups.hpp"
@@ -21,14 +22,37 @@ std::vector<bool> go_ahead_by_boxes(std::span<const Footprint> operations,
                                     std::span<const std::array<RegionCorner, 4>> regions,
                                     std::span<const std::size_t> first_region,
                                     std::span<const Point3> points) {
+  // The float boxes of the regions' corners only, in the scale of all the points (the
+  // surface's vertices and the regions' new points, as boxes::point_boxes would take it):
+  // the same boxes as the box tree's, without a box for every vertex of the surface.
   std::vector<boxes::FloatBox> region_box(regions.size());
   if (!regions.empty()) {
-    const RegionPoints boxed(points, regions);
-    const boxes::VertexBoxes corner_boxes = boxes::point_boxes(boxed.points);
+    double largest = 0.0;
+    const auto take = [&](const Point3& p) {
+      for (const double x : p)
+        largest = std::max(largest, std::fabs(x));
+    };
+    for (const Point3& p : points)
+      take(p);
+    for (const auto& region : regions) {
+      for (const RegionCorner& c : region)
+        if (c.vertex == kNoVertex) take(c.point);
+    }
+    const boxes::Scale scale(largest);
+    std::vector<boxes::FloatBox> vertex_box(points.size());  // each vertex's, once
+    std::vector<bool> boxed(points.size(), false);
+    const auto corner_box = [&](const RegionCorner& c) {
+      if (c.vertex == kNoVertex) return boxes::point_box(c.point, scale);
+      if (!boxed[c.vertex]) {
+        vertex_box[c.vertex] = boxes::point_box(points[c.vertex], scale);
+        boxed[c.vertex] = true;
+      }
+      return vertex_box[c.vertex];
+    };
     for (std::size_t r = 0; r < regions.size(); ++r) {
-      region_box[r] = corner_boxes.box[boxed.groups[r][0]];
+      region_box[r] = corner_box(regions[r][0]);
       for (std::size_t k = 1; k < 4; ++k)
-        region_box[r] = boxes::united(region_box[r], corner_boxes.box[boxed.groups[r][k]]);
+        region_box[r] = boxes::united(region_box[r], corner_box(regions[r][k]));
     }
   }
   std::vector<bool> ahead(operations.size(), false);
