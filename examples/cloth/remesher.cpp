@@ -108,6 +108,23 @@ double material_length(const Work& w, VertexIndex a, VertexIndex b) {
   return std::hypot(w.material[b][0] - w.material[a][0], w.material[b][1] - w.material[a][1]);
 }
 
+/// Whether the material length of ab is above `limit`, decided by the squares when they
+/// are clearly apart (a relative margin of 1e-9, far beyond the few ulps by which the
+/// squares and hypot round), nullopt otherwise (then material_length decides): the
+/// answers of material_length(w, a, b) > limit, most without hypot. A float shortcut with
+/// the same answers, not an exact one.
+std::optional<bool> clearly_longer(const Work& w, VertexIndex a, VertexIndex b, double limit) {
+  constexpr double kMargin = 1e-9;
+  constexpr double kTiny = 1e-280;  // below it, squares may have lost their precision
+  const double dx = w.material[b][0] - w.material[a][0], dy = w.material[b][1] - w.material[a][1];
+  const double squared = dx * dx + dy * dy, limit_squared = limit * limit;
+  const auto usable = [&](double x) { return x > kTiny && std::isfinite(x); };
+  if (!usable(squared) || !usable(limit_squared)) return std::nullopt;
+  if (squared > (1.0 + kMargin) * limit_squared) return true;
+  if (squared < (1.0 - kMargin) * limit_squared) return false;
+  return std::nullopt;
+}
+
 /// Twice the signed area of the triangle in the material.
 double material_area(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c) {
   const Material &p = w.material[a], &q = w.material[b], &r = w.material[c];
@@ -277,6 +294,8 @@ bool split_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables, Verdi
   const std::vector<double>& size = tables.sizes(w, p);
   std::vector<std::pair<double, remesh::Split>> wanted;  // (length / size, split)
   for (const SheetEdge& e : edges) {
+    // A length clearly below kSplitAbove sizes has a ratio of at most kSplitAbove.
+    if (clearly_longer(w, e.a, e.b, kSplitAbove * edge_size(size, e.a, e.b)) == false) continue;
     const double ratio = material_length(w, e.a, e.b) / edge_size(size, e.a, e.b);
     if (ratio <= kSplitAbove) continue;
     const Point3 &pa = w.surface.vertices[e.a], &pb = w.surface.vertices[e.b];
@@ -358,8 +377,10 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     if (std::abs(area) > 1e-9 * scale) return false;
   }
   for (const VertexIndex x : sides) {
-    if (x != kept && material_length(w, kept, x) > kSplitAbove * edge_size(size, kept, x))
-      return false;
+    if (x == kept) continue;
+    const double limit = kSplitAbove * edge_size(size, kept, x);
+    const std::optional<bool> longer = clearly_longer(w, kept, x, limit);
+    if (longer ? *longer : material_length(w, kept, x) > limit) return false;
   }
   for (const std::size_t t : star) {
     remesh::Triangle tri = w.surface.triangles[t];
@@ -384,8 +405,10 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
   const std::vector<double>& size = tables.sizes(w, p);
   std::vector<std::pair<double, const SheetEdge*>> wanted;
   for (const SheetEdge& e : edges) {
+    const double limit = kCollapseBelow * edge_size(size, e.a, e.b);
+    if (clearly_longer(w, e.a, e.b, limit) == true) continue;  // not below it
     const double length = material_length(w, e.a, e.b);
-    if (length < kCollapseBelow * edge_size(size, e.a, e.b)) wanted.push_back({length, &e});
+    if (length < limit) wanted.push_back({length, &e});
   }
   std::stable_sort(wanted.begin(), wanted.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
