@@ -156,17 +156,14 @@ double world_min_angle(const Point3& p, const Point3& q, const Point3& r) {
   return std::min({angle_at(p, q, r), angle_at(q, r, p), angle_at(r, p, q)});
 }
 
-double world_min_angle(const Surface& s, const remesh::Triangle& t) {
-  return world_min_angle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
-}
-
-/// world_min_angle for the guard's new triangles, with kMinAngle standing for any angle
+/// world_min_angle for the guard's triangles, new and old, with kMinAngle standing for any angle
 /// clearly above it: every corner's sides u and v have |u x v| >= tan(kMinAngle) (u . v)
 /// with a relative margin of 1e-6 in the squares (far beyond the few ulps by which this
 /// and atan2 of hypot may round apart), or u . v <= 0 with u x v not zero (an angle of at
 /// least a right angle). The guard compares a new triangle's angle only with kMinAngle,
-/// and with the old triangles' only when it is below kMinAngle, so its answers are those
-/// of world_min_angle; most new triangles are clear of the floor and need no atan2.
+/// and with the old triangles' only when it is below kMinAngle (where an old angle clear
+/// of the floor is above it, and so is kMinAngle standing for it), so its answers are
+/// those of world_min_angle; most triangles are clear of the floor and need no atan2.
 double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& r) {
   static const double tan_squared = std::pow(std::tan(kMinAngle), 2);
   constexpr double kMargin = 1.0 + 1e-6;
@@ -284,7 +281,7 @@ bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) 
     const Point3 &a = s.vertices[e.a], &b = s.vertices[e.b];
     const double made =
         std::min(world_min_angle_to_floor(a, m, c), world_min_angle_to_floor(m, b, c));
-    if (!keeps_quality([&] { return world_min_angle(s, tri); }, made)) return false;
+    if (!keeps_quality([&] { return world_min_angle_to_floor(s, tri); }, made)) return false;
   }
   return true;
 }
@@ -391,7 +388,7 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
       if (c == gone) c = kept;
     const double after = material_area(w, tri[0], tri[1], tri[2]);
     if (!(before * after > 0.0)) return false;
-    if (!keeps_quality([&] { return world_min_angle(w.surface, old); },
+    if (!keeps_quality([&] { return world_min_angle_to_floor(w.surface, old); },
                        world_min_angle_to_floor(w.surface, tri))) {
       return false;
     }
@@ -451,8 +448,8 @@ bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
       continue;
     }
     const auto old_worst = [&] {
-      return std::min(world_min_angle(w.surface, w.surface.triangles[e.left]),
-                      world_min_angle(w.surface, w.surface.triangles[*e.right]));
+      return std::min(world_min_angle_to_floor(w.surface, w.surface.triangles[e.left]),
+                      world_min_angle_to_floor(w.surface, w.surface.triangles[*e.right]));
     };
     const double new_worst = std::min(world_min_angle_to_floor(w.surface, {c, e.a, d}),
                                       world_min_angle_to_floor(w.surface, {d, e.b, c}));
