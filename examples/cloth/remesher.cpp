@@ -63,7 +63,7 @@ std::vector<SheetEdge> sheet_edges(const Surface& s) {
     bool forward;  // the triangle walks smaller -> larger
   };
   std::vector<std::size_t> first(s.vertices.size() + 1, 0);
-  std::vector<bool> sheet(s.triangles.size());  // asked once per triangle, used twice
+  std::vector<char> sheet(s.triangles.size());  // asked once per triangle, used twice
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const remesh::Triangle& tri = s.triangles[t];
     sheet[t] = sheet_triangle(s, tri);
@@ -84,12 +84,19 @@ std::vector<SheetEdge> sheet_edges(const Surface& s) {
     }
   }
   std::vector<SheetEdge> edges;
+  edges.reserve(sides.size());
   for (VertexIndex v = 0; v + 1 < first.size(); ++v) {
     const auto begin = sides.begin() + static_cast<std::ptrdiff_t>(first[v]);
     const auto end = sides.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
-    std::sort(begin, end, [](const Side& x, const Side& y) {
-      return std::pair(x.other, x.triangle) < std::pair(y.other, y.triangle);
-    });
+    // By (other, triangle): a bucket is filled in triangle order, so a stable insertion
+    // sort by the other end (a bucket holds a few sides) leaves it so.
+    for (auto i = begin; i != end; ++i) {
+      const Side side = *i;
+      auto j = i;
+      for (; j != begin && (j - 1)->other > side.other; --j)
+        *j = *(j - 1);
+      *j = side;
+    }
     for (auto i = begin; i != end;) {
       auto j = i + 1;
       while (j != end && j->other == i->other)
