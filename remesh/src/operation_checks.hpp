@@ -78,16 +78,15 @@ inline Outcome deferred(std::string_view verb, VertexIndex a, VertexIndex b, std
   const std::string_view number_b(digits_b.data(),
                                   static_cast<std::size_t>(end_b - digits_b.data()));
   constexpr std::string_view kEdge = " edge ";
-  std::string reason;
-  reason.reserve(verb.size() + kEdge.size() + number_a.size() + 1 + number_b.size() + 1 +
-                 why.size());
-  reason.append(verb)
-      .append(kEdge)
-      .append(number_a)
-      .append("-")
-      .append(number_b)
-      .append(" ")
-      .append(why);
+  const std::array<std::string_view, 6> parts{verb, kEdge, number_a, "-", number_b, " "};
+  std::size_t size = why.size();
+  for (const std::string_view part : parts)
+    size += part.size();
+  std::string reason(size, ' ');  // one allocation, written in place
+  auto out = reason.begin();
+  for (const std::string_view part : parts)
+    out = std::copy(part.begin(), part.end(), out);
+  std::copy(why.begin(), why.end(), out);
   return {Verdict::deferred, std::move(reason), std::nullopt, std::nullopt};
 }
 
