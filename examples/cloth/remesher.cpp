@@ -380,8 +380,9 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     const double scale = material_length(w, ends[0], gone) * material_length(w, gone, ends[1]);
     if (std::abs(area) > 1e-9 * scale) return false;
   }
-  for (const VertexIndex x : sides) {
-    if (x == kept) continue;
+  for (std::size_t i = 0; i < sides.size(); ++i) {
+    const VertexIndex x = sides[i];
+    if (x == kept || (i > 0 && sides[i - 1] == x)) continue;  // sorted: each neighbour once
     const double limit = kSplitAbove * edge_size(size, kept, x);
     const std::optional<bool> longer = clearly_longer(w, kept, x, limit);
     if (longer ? *longer : material_length(w, kept, x) > limit) return false;
