@@ -108,6 +108,8 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   // 1. Topology.
   std::vector<FlipPlan> plans;
   std::vector<std::size_t> edge_of_plan;
+  plans.reserve(edges.size());  // one allocation, not a chain of growing copies
+  edge_of_plan.reserve(edges.size());
   std::vector<std::size_t> on_edge;  // reused from flip to flip
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];

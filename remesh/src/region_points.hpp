@@ -45,7 +45,7 @@ template <std::size_t N, class Visit>
 void groups_near_triangles(std::span<const Point3> points,
                            std::span<const std::array<VertexIndex, N>> groups,
                            std::span<const Triangle> triangles, Visit&& visit) {
-  constexpr std::size_t kFewer = 4;  // groups per triangle below which the scan pays
+  constexpr std::size_t kFewer = 16;  // groups per triangle below which the scan pays
   if (kFewer * groups.size() < triangles.size()) {
     boxes::overlapping_groups_by_scan<N, 3>(points, groups, triangles, visit);
   } else {

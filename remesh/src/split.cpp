@@ -232,6 +232,8 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   // 1. Topology.
   std::vector<SplitPlan> plans;
   std::vector<std::size_t> split_of_plan;
+  plans.reserve(splits.size());  // one allocation, not a chain of growing copies
+  split_of_plan.reserve(splits.size());
   std::vector<std::size_t> on_edge;  // reused from split to split
   for (std::size_t i = 0; i < splits.size(); ++i) {
     const Split& s = splits[i];
