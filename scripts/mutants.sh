@@ -265,6 +265,23 @@ MUTANTS = [
      "      sides_meet(surface, made, at)) {",
      "      sides_meet(surface, made, at) && false) {",
      ["remesh_tests"]),
+    # A split's halves may not turn over in the old triangle's plane either; the split asks
+    # the plane's side of its new point once for both halves (remesh/src/split.cpp).
+    ("split_turn_over_unchecked",
+     "remesh/src/split.cpp",
+     "        if (orient2d_along(axis, point(t[0]), point(t[1]), point(t[2])) != old_turn) {",
+     "        if (false && orient2d_along(axis, point(t[0]), point(t[1]), point(t[2])) != old_turn) {",
+     ["remesh_tests"]),
+    # A region reads its faces' inward sides and its shadow's turns from one sign each,
+    # times the parity of the corners' order (remesh/src/swept_region.cpp).
+    ("region_face_parity_flipped",
+     "remesh/src/swept_region.cpp",
+     "inward_[l] = l % 2 == 1 ? volume_ : -volume_;",
+     "inward_[l] = l % 2 == 0 ? volume_ : -volume_;", ["remesh_tests"]),
+    ("region_side_parity_flipped",
+     "remesh/src/swept_region.cpp",
+     "const Sign s = i < k && k < j ? -turn_ijk : turn_ijk;",
+     "const Sign s = i < k && k < j ? turn_ijk : -turn_ijk;", ["remesh_tests"]),
     # A flip's or split's new triangle may not turn over in the old triangle's plane
     # (remesh/src/swept_region.cpp).
     ("flat_turn_over_unchecked",
