@@ -1,5 +1,7 @@
 #include "remesher.hpp"
 
+#include "float_shortcuts.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,13 +27,6 @@ constexpr double kCollapseBelow = 4.0 / 5.0;
 /// A flip's two opposite angles (in the material) must exceed pi by this much (radians),
 /// so that a cocircular quad, or one made so by rounding, is not flipped back and forth.
 constexpr double kDelaunaySlack = 1e-6;
-
-/// The quality guard, in the world (where the simulation and the picture see the
-/// triangles): no operation makes a triangle whose smallest angle is below this, unless
-/// the triangles it replaces were worse already (it may improve a sliver, never make one).
-/// El Topo's default floor is 3 degrees; slivers here sat at the tips of the cones the
-/// folds buckle into, which a finer floor keeps from forming where the remesher acts.
-constexpr double kMinAngle = 5.0 * std::numbers::pi / 180.0;
 
 /// The surface being remeshed, with what the operations do not know about its vertices.
 struct Work {
@@ -115,21 +110,11 @@ double material_length(const Work& w, VertexIndex a, VertexIndex b) {
   return std::hypot(w.material[b][0] - w.material[a][0], w.material[b][1] - w.material[a][1]);
 }
 
-/// Whether the material length of ab is above `limit`, decided by the squares when they
-/// are clearly apart (a relative margin of 1e-9, far beyond the few ulps by which the
-/// squares and hypot round), nullopt otherwise (then material_length decides): the
-/// answers of material_length(w, a, b) > limit, most without hypot. A float shortcut with
-/// the same answers, not an exact one.
-std::optional<bool> clearly_longer(const Work& w, VertexIndex a, VertexIndex b, double limit) {
-  constexpr double kMargin = 1e-9;
-  constexpr double kTiny = 1e-280;  // below it, squares may have lost their precision
-  const double dx = w.material[b][0] - w.material[a][0], dy = w.material[b][1] - w.material[a][1];
-  const double squared = dx * dx + dy * dy, limit_squared = limit * limit;
-  const auto usable = [&](double x) { return x > kTiny && std::isfinite(x); };
-  if (!usable(squared) || !usable(limit_squared)) return std::nullopt;
-  if (squared > (1.0 + kMargin) * limit_squared) return true;
-  if (squared < (1.0 - kMargin) * limit_squared) return false;
-  return std::nullopt;
+/// material_length(w, a, b) > limit where the squares tell it (float_shortcuts.hpp).
+std::optional<bool> clearly_longer_in_material(const Work& w, VertexIndex a, VertexIndex b,
+                                               double limit) {
+  return clearly_longer(w.material[b][0] - w.material[a][0], w.material[b][1] - w.material[a][1],
+                        limit);
 }
 
 /// Twice the signed area of the triangle in the material.
@@ -152,47 +137,7 @@ std::array<double, 3> normal(const Surface& s, const remesh::Triangle& t) {
   return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
 }
 
-/// The smallest angle of the triangle p q r in the world (0 for a degenerate one).
-double world_min_angle(const Point3& p, const Point3& q, const Point3& r) {
-  const auto angle_at = [](const Point3& o, const Point3& x, const Point3& y) {
-    const double ux = x[0] - o[0], uy = x[1] - o[1], uz = x[2] - o[2];
-    const double vx = y[0] - o[0], vy = y[1] - o[1], vz = y[2] - o[2];
-    const double cross = std::hypot(uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx);
-    return std::atan2(cross, ux * vx + uy * vy + uz * vz);
-  };
-  return std::min({angle_at(p, q, r), angle_at(q, r, p), angle_at(r, p, q)});
-}
-
-/// world_min_angle for the guard's triangles, new and old, with kMinAngle standing for any angle
-/// clearly above it: every corner's sides u and v have |u x v| >= tan(kMinAngle) (u . v)
-/// with a relative margin of 1e-6 in the squares (far beyond the few ulps by which this
-/// and atan2 of hypot may round apart), or u . v <= 0 with u x v not zero (an angle of at
-/// least a right angle). The guard compares a new triangle's angle only with kMinAngle,
-/// and with the old triangles' only when it is below kMinAngle (where an old angle clear
-/// of the floor is above it, and so is kMinAngle standing for it), so its answers are
-/// those of world_min_angle; most triangles are clear of the floor and need no atan2.
-double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& r) {
-  static const double tan_squared = std::pow(std::tan(kMinAngle), 2);
-  constexpr double kMargin = 1.0 + 1e-6;
-  constexpr double kTiny = 1e-280;  // below it, squares may have lost their precision
-  const auto clear = [&](const Point3& o, const Point3& x, const Point3& y) {
-    const double ux = x[0] - o[0], uy = x[1] - o[1], uz = x[2] - o[2];
-    const double vx = y[0] - o[0], vy = y[1] - o[1], vz = y[2] - o[2];
-    const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-    const double cross_squared = cx * cx + cy * cy + cz * cz;
-    const double dot = ux * vx + uy * vy + uz * vz;
-    if (!(cross_squared > kTiny) || !std::isfinite(cross_squared) || !std::isfinite(dot))
-      return false;
-    if (dot <= 0.0) return true;
-    const double dot_squared = dot * dot;
-    return dot_squared > kTiny && std::isfinite(dot_squared) &&
-           cross_squared >= kMargin * tan_squared * dot_squared;
-  };
-  if (clear(p, q, r) && clear(q, r, p) && clear(r, p, q)) return kMinAngle;
-  return world_min_angle(p, q, r);
-}
-
-double world_min_angle_to_floor(const Surface& s, const remesh::Triangle& t) {
+double triangle_min_angle_to_floor(const Surface& s, const remesh::Triangle& t) {
   return world_min_angle_to_floor(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
 
@@ -201,27 +146,6 @@ double world_min_angle_to_floor(const Surface& s, const remesh::Triangle& t) {
 template <class OldWorst>
 bool keeps_quality(const OldWorst& old_worst, double new_worst) {
   return new_worst >= kMinAngle || new_worst >= old_worst();
-}
-
-/// Whether an edge whose triangles' normals have cross product `c` and dot product `dot`,
-/// and whose material length squared is `length_squared`, surely asks for no less than
-/// max_length (its ask cannot lower a size, which starts there): the angle between the
-/// normals is at most tan of it, |c| / dot for dot > 0, so |c|^2 max^2 below
-/// length^2 turn^2 dot^2 with a relative margin of 1e-6 (far beyond the few ulps by which
-/// the squares, hypot, atan2 and the division round apart) puts the ask computed by
-/// vertex_sizes above max_length. Answers false (work it out) outside the range where the
-/// squares keep their precision. A float shortcut with the same answers, not an exact one.
-bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
-                           const RemeshParameters& p) {
-  constexpr double kMargin = 1.0 + 1e-6;
-  constexpr double kTiny = 1e-280;  // below it, squares may have lost their precision
-  if (!(dot > 0.0)) return false;
-  const double cross_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-  const double lhs = cross_squared * (p.max_length * p.max_length);
-  const double rhs = length_squared * (p.turn_per_edge * p.turn_per_edge) * (dot * dot);
-  const auto usable = [&](double x) { return x > kTiny && std::isfinite(x); };
-  return usable(cross_squared) && usable(dot * dot) && usable(length_squared) && usable(lhs) &&
-         usable(rhs) && kMargin * lhs < rhs;
 }
 
 /// The size every vertex asks for (Remesher's sizing, remesher.hpp).
@@ -237,7 +161,7 @@ std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& ed
     const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
     const Material &ma = w.material[e.a], &mb = w.material[e.b];
     const double dx = mb[0] - ma[0], dy = mb[1] - ma[1];
-    if (asks_no_less_than_max(c, dot, dx * dx + dy * dy, p)) continue;
+    if (asks_no_less_than_max(c, dot, dx * dx + dy * dy, p.max_length, p.turn_per_edge)) continue;
     const double theta = std::atan2(std::hypot(c[0], c[1], c[2]), dot);
     if (!(theta > 0.0)) continue;
     const double ask = material_length(w, e.a, e.b) * p.turn_per_edge / theta;
@@ -288,7 +212,7 @@ bool split_keeps_quality(const Surface& s, const SheetEdge& e, const Point3& m) 
     const Point3 &a = s.vertices[e.a], &b = s.vertices[e.b];
     const double made =
         std::min(world_min_angle_to_floor(a, m, c), world_min_angle_to_floor(m, b, c));
-    if (!keeps_quality([&] { return world_min_angle_to_floor(s, tri); }, made)) return false;
+    if (!keeps_quality([&] { return triangle_min_angle_to_floor(s, tri); }, made)) return false;
   }
   return true;
 }
@@ -299,7 +223,8 @@ bool split_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables, Verdi
   std::vector<std::pair<double, remesh::Split>> wanted;  // (length / size, split)
   for (const SheetEdge& e : edges) {
     // A length clearly below kSplitAbove sizes has a ratio of at most kSplitAbove.
-    if (clearly_longer(w, e.a, e.b, kSplitAbove * edge_size(size, e.a, e.b)) == false) continue;
+    if (clearly_longer_in_material(w, e.a, e.b, kSplitAbove * edge_size(size, e.a, e.b)) == false)
+      continue;
     const double ratio = material_length(w, e.a, e.b) / edge_size(size, e.a, e.b);
     if (ratio <= kSplitAbove) continue;
     const Point3 &pa = w.surface.vertices[e.a], &pb = w.surface.vertices[e.b];
@@ -384,7 +309,7 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     const VertexIndex x = sides[i];
     if (x == kept || (i > 0 && sides[i - 1] == x)) continue;  // sorted: each neighbour once
     const double limit = kSplitAbove * edge_size(size, kept, x);
-    const std::optional<bool> longer = clearly_longer(w, kept, x, limit);
+    const std::optional<bool> longer = clearly_longer_in_material(w, kept, x, limit);
     if (longer ? *longer : material_length(w, kept, x) > limit) return false;
   }
   for (const std::size_t t : star) {
@@ -396,8 +321,8 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
       if (c == gone) c = kept;
     const double after = material_area(w, tri[0], tri[1], tri[2]);
     if (!(before * after > 0.0)) return false;
-    if (!keeps_quality([&] { return world_min_angle_to_floor(w.surface, old); },
-                       world_min_angle_to_floor(w.surface, tri))) {
+    if (!keeps_quality([&] { return triangle_min_angle_to_floor(w.surface, old); },
+                       triangle_min_angle_to_floor(w.surface, tri))) {
       return false;
     }
   }
@@ -411,7 +336,7 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
   std::vector<std::pair<double, const SheetEdge*>> wanted;
   for (const SheetEdge& e : edges) {
     const double limit = kCollapseBelow * edge_size(size, e.a, e.b);
-    if (clearly_longer(w, e.a, e.b, limit) == true) continue;  // not below it
+    if (clearly_longer_in_material(w, e.a, e.b, limit) == true) continue;  // not below it
     const double length = material_length(w, e.a, e.b);
     if (length < limit) wanted.push_back({length, &e});
   }
@@ -456,11 +381,11 @@ bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
       continue;
     }
     const auto old_worst = [&] {
-      return std::min(world_min_angle_to_floor(w.surface, w.surface.triangles[e.left]),
-                      world_min_angle_to_floor(w.surface, w.surface.triangles[*e.right]));
+      return std::min(triangle_min_angle_to_floor(w.surface, w.surface.triangles[e.left]),
+                      triangle_min_angle_to_floor(w.surface, w.surface.triangles[*e.right]));
     };
-    const double new_worst = std::min(world_min_angle_to_floor(w.surface, {c, e.a, d}),
-                                      world_min_angle_to_floor(w.surface, {d, e.b, c}));
+    const double new_worst = std::min(triangle_min_angle_to_floor(w.surface, {c, e.a, d}),
+                                      triangle_min_angle_to_floor(w.surface, {d, e.b, c}));
     if (!keeps_quality(old_worst, new_worst)) continue;
     flips.push_back(remesh::edge_of(e.a, e.b));
   }

@@ -1,0 +1,54 @@
+#pragma once
+
+// The cloth remesher's floating-point shortcuts: cheaper forms of its float decisions (an
+// angle against the quality floor, a length against a limit, a curvature ask against the
+// largest size) that give the answer of the full computation wherever they give one. They
+// are not exact predicates and need not be: the remesher's choices are policy, and every
+// operation it proposes is checked exactly by the library. Each shortcut compares squares
+// with a relative margin far beyond the few ulps by which the squares and the full
+// computation's hypot, atan2 and division round apart, and declines (nullopt, false, or
+// the full computation) where the squares may have lost their precision (below 1e-280,
+// or not finite). Tested against the full computations on random inputs and on inputs a
+// relative 1e-16 to 1e-5 from each limit (tests/examples/float_shortcuts_test.cpp).
+
+#include <array>
+#include <numbers>
+#include <optional>
+
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo::cloth {
+
+/// The quality guard, in the world (where the simulation and the picture see the
+/// triangles): no operation makes a triangle whose smallest angle is below this, unless
+/// the triangles it replaces were worse already (it may improve a sliver, never make one).
+/// El Topo's default floor is 3 degrees; slivers here sat at the tips of the cones the
+/// folds buckle into, which a finer floor keeps from forming where the remesher acts.
+inline constexpr double kMinAngle = 5.0 * std::numbers::pi / 180.0;
+
+/// The smallest angle of the triangle p q r (0 for a degenerate one).
+double world_min_angle(const Point3& p, const Point3& q, const Point3& r);
+
+/// world_min_angle, with kMinAngle standing for any angle clearly above it: every corner's
+/// sides u and v have |u x v|^2 >= (1 + 1e-6) tan^2(kMinAngle) (u . v)^2, or u . v <= 0
+/// with u x v not zero (an angle of at least a right angle). The guard compares a new
+/// triangle's angle only with kMinAngle, and with the old triangles' only when it is
+/// below kMinAngle (where an old angle clear of the floor is above it, and so is kMinAngle
+/// standing for it), so its answers are those of world_min_angle; most triangles are
+/// clear of the floor and need no atan2.
+double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& r);
+
+/// Whether hypot(dx, dy) > limit, decided by the squares when they are a relative 1e-9
+/// apart; nullopt otherwise (then hypot decides).
+std::optional<bool> clearly_longer(double dx, double dy, double limit);
+
+/// Whether an edge whose triangles' normals have cross product `c` and dot product `dot`,
+/// and whose material length squared is `length_squared`, surely asks for a size of at
+/// least `max_length` (the ask is length * turn_per_edge / angle, the angle between the
+/// normals atan2(|c|, dot)): the angle is at most its tangent |c| / dot for dot > 0, so
+/// |c|^2 max_length^2 below length^2 turn^2 dot^2 by a relative 1e-6 puts the ask above
+/// max_length. False means: work it out.
+bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
+                           double max_length, double turn_per_edge);
+
+}  // namespace exactgeo::cloth
