@@ -36,7 +36,7 @@ constexpr std::size_t kPlainDoubleDirections = 64;
 /// which its parts are not worth trying either (their reach is half the box's). Costs,
 /// not certificates: any values give the labels' guarantee.
 constexpr std::size_t kBoxRays = 4;
-constexpr std::size_t kBoxAngles = 256;
+constexpr std::size_t kBoxAngles = 64;
 constexpr double kBoxVariation = 0.5;
 constexpr double kHopelessVariation = 2.0;
 

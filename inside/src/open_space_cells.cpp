@@ -81,6 +81,7 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label) {
   // have been tried.
   std::deque<Block> queue{{{0, 0, 0}, n}};
   const auto most_tries = static_cast<std::size_t>(kTriesPerCell * static_cast<double>(cells()));
+  std::size_t small_tries = 0, labelled_before_window = 0;
   while (!queue.empty() && boxes_tried_ < most_tries) {
     const Block b = queue.front();
     queue.pop_front();
@@ -88,10 +89,18 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label) {
                                           b.last[2] - b.first[2]};
     const bool one_cell = size[0] == 1 && size[1] == 1 && size[2] == 1;
     const bool small = size[0] <= 2 && size[1] <= 2 && size[2] <= 2;
+    // (The queue holds the small blocks last.)
+    if (small && small_tries > 0 && small_tries % kTryWindow == 0 &&
+        labelled_cells_ - labelled_before_window < kCellsPerTry * kTryWindow) {
+      break;
+    }
     const std::uint32_t faces = surface.in(b.first, b.last);
+    if (faces == size[0] * size[1] * size[2]) continue;  // no cell free of faces
     if (faces == 0) {
       const Point3 lower{planes(0)[b.first[0]], planes(1)[b.first[1]], planes(2)[b.first[2]]};
       const Point3 upper{planes(0)[b.last[0]], planes(1)[b.last[1]], planes(2)[b.last[2]]};
+      if (small && small_tries % kTryWindow == 0) labelled_before_window = labelled_cells_;
+      small_tries += small;
       ++boxes_tried_;
       const BoxAnswer answer = label(lower, upper);
       if (const std::optional<Location> known = answer.label) {

@@ -78,9 +78,14 @@ class OpenSpaceCells {
   std::size_t boxes_tried() const noexcept { return boxes_tried_; }
   const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
 
-  /// The most boxes tried, per cell of the grid: where the boundary is near most cells
-  /// (a surface with holes everywhere), the build stops there. A cost only.
+  /// The most boxes tried, per cell of the grid; and once the boxes are two cells a side
+  /// or fewer, the build stops where a window of kTryWindow of them has labelled fewer
+  /// than kCellsPerTry cells per try (a try costs what several points' rays and terms
+  /// cost, and a cell holds a few points at most: small boxes near the boundary, which
+  /// mostly fail, would cost more than they save). Costs only.
   static constexpr double kTriesPerCell = 0.125;
+  static constexpr std::size_t kTryWindow = 64;
+  static constexpr std::size_t kCellsPerTry = 1;
 
  private:
   enum class CellCode : std::uint8_t { unknown, surface, inside, outside };
