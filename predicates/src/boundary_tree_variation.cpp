@@ -70,7 +70,8 @@ std::optional<double> BoundaryTree::variation(const Point3& lower, const Point3&
     }
     const bool separated = d2 > 0.0 && diagonal2 * (kSeparation * kSeparation) <= d2;
     if (node.left == 0 || separated) {
-      if (!(d2 > 0.0)) return std::nullopt;  // the box meets a leaf's box
+      // The box meets a leaf's box; or the square overflowed (L / inf would be 0).
+      if (!(d2 > 0.0) || !std::isfinite(d2)) return std::nullopt;
       sum += node.length / d2;
       ++terms;
       if (!(sum <= limit)) return std::nullopt;

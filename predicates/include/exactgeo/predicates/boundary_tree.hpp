@@ -175,7 +175,8 @@ class BoundaryTree {
   /// An upper bound, in turns, on |w(p) - w(centre)| for every p of the box [lower,
   /// upper], w the generalized winding number of a surface whose boundary is these edges
   /// ("Variation over a box" above). Precondition: the box misses that surface and holds
-  /// `centre`. nullopt where the bound exceeds `most`, or the box meets a leaf's box.
+  /// `centre`. nullopt where the bound exceeds `most`, the box meets a leaf's box, or a
+  /// square overflows (the classifier asks in its unit frame, where none does).
   std::optional<double> variation(const Point3& lower, const Point3& upper, const Point3& centre,
                                   double most) const;
 
