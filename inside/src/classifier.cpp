@@ -222,8 +222,9 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
 /// tree's frame).
 std::optional<Location> Classifier::open_box_label(const State& s, const Point3& lower,
                                                    const Point3& upper, bool& try_parts,
-                                                   ClassifierScratch& scratch) {
+                                                   bool& costly, ClassifierScratch& scratch) {
   try_parts = true;
+  costly = false;
   Point3 centre;
   for (int i = 0; i < 3; ++i)
     centre[i] = std::clamp(lower[i] / 2 + upper[i] / 2, lower[i], upper[i]);
@@ -239,6 +240,7 @@ std::optional<Location> Classifier::open_box_label(const State& s, const Point3&
       s.boundary_tree.variation(tree_lower, tree_upper, origin.exact, kHopelessVariation);
   try_parts = variation.has_value();
   if (!variation || *variation > kBoxVariation) return std::nullopt;
+  costly = true;
   return kernel::with_signs(Arithmetic::exact, [&](const auto& signs) -> std::optional<Location> {
     for (std::size_t k = 0; k < kBoxRays; ++k) {
       const SignedRayCount count = count_ray(s, signs, Arithmetic::exact, origin, k, scratch);
@@ -342,9 +344,10 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     s.open_cells.emplace(
         s.mesh, s.box,
         [&](const Point3& lower, const Point3& upper) {
-          bool try_parts = true;
-          const std::optional<Location> label = open_box_label(s, lower, upper, try_parts, scratch);
-          return internal::OpenSpaceCells::BoxAnswer{label, try_parts};
+          bool try_parts = true, costly = true;
+          const std::optional<Location> label =
+              open_box_label(s, lower, upper, try_parts, costly, scratch);
+          return internal::OpenSpaceCells::BoxAnswer{label, try_parts, costly};
         },
         internal::SpaceCells::cell_count(s.mesh.faces.size(), options.expected_points));
   }

@@ -12,7 +12,8 @@ namespace {
 /// that a block's count takes eight lookups.
 class SurfaceCounts {
  public:
-  SurfaceCounts(std::array<std::size_t, 3> n, const std::function<bool(std::size_t)>& surface)
+  template <class IsSurface>
+  SurfaceCounts(std::array<std::size_t, 3> n, const IsSurface& surface)
       : n_(n), sums_((n[0] + 1) * (n[1] + 1) * (n[2] + 1), 0) {
     for (std::size_t k = 0; k < n[2]; ++k) {
       for (std::size_t j = 0; j < n[1]; ++j) {
@@ -52,7 +53,7 @@ OpenSpaceCells::OpenSpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, con
     axes_[i] = GridAxis(box.lower[i], box.upper[i], n[i]);
   codes_.assign(n[0] * n[1] * n[2], CellCode::unknown);
   mark_faces(mesh);
-  label_blocks(label);
+  if (surface_cells_ < codes_.size()) label_blocks(label);
 }
 
 void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
@@ -81,7 +82,7 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label) {
   // have been tried.
   std::deque<Block> queue{{{0, 0, 0}, n}};
   const auto most_tries = static_cast<std::size_t>(kTriesPerCell * static_cast<double>(cells()));
-  std::size_t small_tries = 0, labelled_before_window = 0;
+  std::size_t costly_tries = 0, labelled_before_window = 0;
   while (!queue.empty() && boxes_tried_ < most_tries) {
     const Block b = queue.front();
     queue.pop_front();
@@ -89,20 +90,14 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label) {
                                           b.last[2] - b.first[2]};
     const bool one_cell = size[0] == 1 && size[1] == 1 && size[2] == 1;
     const bool small = size[0] <= 2 && size[1] <= 2 && size[2] <= 2;
-    // (The queue holds the small blocks last.)
-    if (small && small_tries > 0 && small_tries % kTryWindow == 0 &&
-        labelled_cells_ - labelled_before_window < kCellsPerTry * kTryWindow) {
-      break;
-    }
     const std::uint32_t faces = surface.in(b.first, b.last);
     if (faces == size[0] * size[1] * size[2]) continue;  // no cell free of faces
     if (faces == 0) {
       const Point3 lower{planes(0)[b.first[0]], planes(1)[b.first[1]], planes(2)[b.first[2]]};
       const Point3 upper{planes(0)[b.last[0]], planes(1)[b.last[1]], planes(2)[b.last[2]]};
-      if (small && small_tries % kTryWindow == 0) labelled_before_window = labelled_cells_;
-      small_tries += small;
       ++boxes_tried_;
       const BoxAnswer answer = label(lower, upper);
+      const std::size_t labelled_before = labelled_cells_;
       if (const std::optional<Location> known = answer.label) {
         const CellCode code = *known == Location::inside ? CellCode::inside : CellCode::outside;
         for (std::size_t k = b.first[2]; k < b.last[2]; ++k) {
@@ -111,11 +106,14 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label) {
               codes_[index(i, j, k)] = code;
           }
         }
-        labelled_cells_ +=
-            (b.last[0] - b.first[0]) * (b.last[1] - b.first[1]) * (b.last[2] - b.first[2]);
-        continue;
+        labelled_cells_ += size[0] * size[1] * size[2];
       }
-      if (!answer.try_parts && small) continue;
+      // The window of costly tries: stop where it labelled too few cells.
+      if (answer.costly && ++costly_tries % kTryWindow == 0) {
+        if (labelled_cells_ - labelled_before_window < kCellsPerTry * kTryWindow) break;
+        labelled_before_window = labelled_cells_;
+      }
+      if (labelled_cells_ > labelled_before || (!answer.try_parts && small)) continue;
     }
     if (one_cell) continue;
     // The eight (or fewer) halves.

@@ -171,9 +171,10 @@ class Classifier {
   static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                 ClassifierScratch& scratch);
   /// The label of every point of a box no face reaches, against an open surface.
-  /// `try_parts` false: the boundary is too near for its parts to be labelled either.
+  /// `try_parts` false: the boundary is too near for its parts to be labelled either;
+  /// `costly`: a ray and a term were evaluated.
   static std::optional<Location> open_box_label(const State& s, const Point3& lower,
-                                                const Point3& upper, bool& try_parts,
+                                                const Point3& upper, bool& try_parts, bool& costly,
                                                 ClassifierScratch& scratch);
   /// generalized_winding_number for an open surface.
   static std::optional<Enclosure> open_winding_number(const State& s, const Point3& point,

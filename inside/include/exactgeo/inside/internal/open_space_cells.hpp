@@ -40,13 +40,15 @@ namespace exactgeo::inside::internal {
 
 class OpenSpaceCells {
  public:
-  /// What a box was found to be: the label of every point of it, where certain; and
-  /// whether its parts are worth trying where it has none (false: the boundary is so near
-  /// that they would fail too). A cost only: parts are tried on anyway, except for boxes
-  /// of at most two cells a side.
+  /// What a box was found to be: the label of every point of it, where certain; whether
+  /// its parts are worth trying where it has none (false: the boundary is so near that
+  /// they would fail too; parts are tried anyway, except for boxes of at most two cells a
+  /// side); and whether the answer took a ray and a term (costly) or only the bound. Costs
+  /// only.
   struct BoxAnswer {
     std::optional<Location> label;
     bool try_parts = true;
+    bool costly = true;
   };
   /// The answer for the closed box [lower, upper], which no face reaches.
   using BoxLabel = std::function<BoxAnswer(const Point3& lower, const Point3& upper)>;
@@ -78,14 +80,14 @@ class OpenSpaceCells {
   std::size_t boxes_tried() const noexcept { return boxes_tried_; }
   const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
 
-  /// The most boxes tried, per cell of the grid; and once the boxes are two cells a side
-  /// or fewer, the build stops where a window of kTryWindow of them has labelled fewer
-  /// than kCellsPerTry cells per try (a try costs what several points' rays and terms
-  /// cost, and a cell holds a few points at most: small boxes near the boundary, which
+  /// The most boxes tried, per cell of the grid; and the build stops where a window of
+  /// kTryWindow costly tries has labelled fewer than kCellsPerTry cells per try (a costly
+  /// try costs what several points' rays and terms cost, and a cell holds a point or two
+  /// at most where the grid is sized to the points: small boxes near the boundary, which
   /// mostly fail, would cost more than they save). Costs only.
   static constexpr double kTriesPerCell = 0.125;
   static constexpr std::size_t kTryWindow = 64;
-  static constexpr std::size_t kCellsPerTry = 1;
+  static constexpr std::size_t kCellsPerTry = 8;
 
  private:
   enum class CellCode : std::uint8_t { unknown, surface, inside, outside };
