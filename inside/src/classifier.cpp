@@ -349,7 +349,8 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
               open_box_label(s, lower, upper, try_parts, costly, scratch);
           return internal::OpenSpaceCells::BoxAnswer{label, try_parts, costly};
         },
-        internal::SpaceCells::cell_count(s.mesh.faces.size(), options.expected_points));
+        internal::SpaceCells::cell_count(s.mesh.faces.size(), options.expected_points),
+        options.expected_points);
   }
   if (options.space_cells && s.boundary.empty()) {
     ClassifierScratch scratch;

@@ -1,6 +1,7 @@
 #include "exactgeo/inside/internal/open_space_cells.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 
 #include "exactgeo/inside/internal/corner_boxes.hpp"
@@ -47,13 +48,19 @@ class SurfaceCounts {
 }  // namespace
 
 OpenSpaceCells::OpenSpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const BoxLabel& label,
-                               std::size_t cells) {
+                               std::size_t cells, std::optional<std::size_t> expected_points) {
   const auto n = grid_resolution(box, cells);
   for (int i = 0; i < 3; ++i)
     axes_[i] = GridAxis(box.lower[i], box.upper[i], n[i]);
   codes_.assign(n[0] * n[1] * n[2], CellCode::unknown);
   mark_faces(mesh);
-  if (surface_cells_ < codes_.size()) label_blocks(label);
+  const double points =
+      expected_points ? std::max(1.0, static_cast<double>(*expected_points)) : 0.0;
+  const std::size_t cells_per_try =
+      expected_points ? static_cast<std::size_t>(
+                            std::ceil(kTryCost * static_cast<double>(codes_.size()) / points))
+                      : 1;
+  if (surface_cells_ < codes_.size()) label_blocks(label, cells_per_try);
 }
 
 void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
@@ -73,7 +80,7 @@ void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
       static_cast<std::size_t>(std::count(codes_.begin(), codes_.end(), CellCode::surface));
 }
 
-void OpenSpaceCells::label_blocks(const BoxLabel& label) {
+void OpenSpaceCells::label_blocks(const BoxLabel& label, std::size_t cells_per_try) {
   const std::array<std::size_t, 3> n = resolution();
   const SurfaceCounts surface(n,
                               [&](std::size_t cell) { return codes_[cell] == CellCode::surface; });
@@ -110,7 +117,7 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label) {
       }
       // The window of costly tries: stop where it labelled too few cells.
       if (answer.costly && ++costly_tries % kTryWindow == 0) {
-        if (labelled_cells_ - labelled_before_window < kCellsPerTry * kTryWindow) break;
+        if (labelled_cells_ - labelled_before_window < cells_per_try * kTryWindow) break;
         labelled_before_window = labelled_cells_;
       }
       if (labelled_cells_ > labelled_before || (!answer.try_parts && small)) continue;

@@ -54,9 +54,11 @@ class OpenSpaceCells {
   using BoxLabel = std::function<BoxAnswer(const Point3& lower, const Point3& upper)>;
 
   /// The grid over `box` (the faces' corners' box) with about `cells` cells, shaped like
-  /// the box; `label` is tried on boxes of cells that no face reaches, the largest first.
+  /// the box; `label` is tried on boxes of cells that no face reaches, the largest first,
+  /// while the tries pay for about `expected_points` points (nullopt: as many as there
+  /// are cells, or more).
   OpenSpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const BoxLabel& label,
-                 std::size_t cells);
+                 std::size_t cells, std::optional<std::size_t> expected_points = std::nullopt);
 
   /// The label of every point of a cell containing `p`, or nullopt where that cell has
   /// none. Precondition: p in the closed box.
@@ -81,13 +83,15 @@ class OpenSpaceCells {
   const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
 
   /// The most boxes tried, per cell of the grid; and the build stops where a window of
-  /// kTryWindow costly tries has labelled fewer than kCellsPerTry cells per try (a costly
-  /// try costs what several points' rays and terms cost, and a cell holds a point or two
-  /// at most where the grid is sized to the points: small boxes near the boundary, which
-  /// mostly fail, would cost more than they save). Costs only.
+  /// kTryWindow costly tries has labelled fewer cells per try than pay for it: a costly
+  /// try costs about what kTryCost points' rays and terms cost, so it pays where its
+  /// cells hold that many points, kTryCost cells per try where there are as many points
+  /// as cells (the command line's grid has about two cells per point: 8), one where the
+  /// points are not known (the grid is then sized for the mesh, for many points). Costs
+  /// only.
   static constexpr double kTriesPerCell = 0.125;
   static constexpr std::size_t kTryWindow = 64;
-  static constexpr std::size_t kCellsPerTry = 8;
+  static constexpr double kTryCost = 4.0;
 
  private:
   enum class CellCode : std::uint8_t { unknown, surface, inside, outside };
@@ -100,7 +104,7 @@ class OpenSpaceCells {
     return (k * axes_[1].cells() + j) * axes_[0].cells() + i;
   }
   void mark_faces(const mesh::Mesh& mesh);
-  void label_blocks(const BoxLabel& label);
+  void label_blocks(const BoxLabel& label, std::size_t cells_per_try);
 
   std::array<GridAxis, 3> axes_;
   std::vector<CellCode> codes_;
