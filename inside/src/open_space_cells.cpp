@@ -54,13 +54,12 @@ OpenSpaceCells::OpenSpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, con
     axes_[i] = GridAxis(box.lower[i], box.upper[i], n[i]);
   codes_.assign(n[0] * n[1] * n[2], CellCode::unknown);
   mark_faces(mesh);
-  const double points =
-      expected_points ? std::max(1.0, static_cast<double>(*expected_points)) : 0.0;
-  const std::size_t cells_per_try =
-      expected_points ? static_cast<std::size_t>(
-                            std::ceil(kTryCost * static_cast<double>(codes_.size()) / points))
-                      : 1;
-  if (surface_cells_ < codes_.size()) label_blocks(label, cells_per_try);
+  // Cells per point: from the points expected, or as if a costly try paid with one cell.
+  const double cells_per_point = expected_points
+                                     ? static_cast<double>(codes_.size()) /
+                                           std::max(1.0, static_cast<double>(*expected_points))
+                                     : 1.0 / kTryCost;
+  if (surface_cells_ < codes_.size()) label_blocks(label, cells_per_point);
 }
 
 void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
@@ -80,7 +79,7 @@ void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
       static_cast<std::size_t>(std::count(codes_.begin(), codes_.end(), CellCode::surface));
 }
 
-void OpenSpaceCells::label_blocks(const BoxLabel& label, std::size_t cells_per_try) {
+void OpenSpaceCells::label_blocks(const BoxLabel& label, double cells_per_point) {
   const std::array<std::size_t, 3> n = resolution();
   const SurfaceCounts surface(n,
                               [&](std::size_t cell) { return codes_[cell] == CellCode::surface; });
@@ -89,7 +88,9 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label, std::size_t cells_per_t
   // have been tried.
   std::deque<Block> queue{{{0, 0, 0}, n}};
   const auto most_tries = static_cast<std::size_t>(kTriesPerCell * static_cast<double>(cells()));
-  std::size_t costly_tries = 0, labelled_before_window = 0;
+  // The window: what its tries cost, in points' rays and terms, and what they labelled.
+  double window_cost = 0.0;
+  std::size_t labelled_before_window = 0;
   while (!queue.empty() && boxes_tried_ < most_tries) {
     const Block b = queue.front();
     queue.pop_front();
@@ -115,9 +116,12 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label, std::size_t cells_per_t
         }
         labelled_cells_ += size[0] * size[1] * size[2];
       }
-      // The window of costly tries: stop where it labelled too few cells.
-      if (answer.costly && ++costly_tries % kTryWindow == 0) {
-        if (labelled_cells_ - labelled_before_window < cells_per_try * kTryWindow) break;
+      // The window: stop where its cells hold fewer points than its tries cost.
+      window_cost += answer.costly ? kTryCost : kBoundTryCost;
+      if (window_cost >= kWindowCost) {
+        const auto labelled = static_cast<double>(labelled_cells_ - labelled_before_window);
+        if (labelled < cells_per_point * window_cost) break;
+        window_cost = 0.0;
         labelled_before_window = labelled_cells_;
       }
       if (labelled_cells_ > labelled_before || (!answer.try_parts && small)) continue;

@@ -83,15 +83,14 @@ class OpenSpaceCells {
   const std::vector<double>& planes(int axis) const noexcept { return axes_[axis].planes(); }
 
   /// The most boxes tried, per cell of the grid; and the build stops where a window of
-  /// kTryWindow costly tries has labelled fewer cells per try than pay for it: a costly
-  /// try costs about what kTryCost points' rays and terms cost, so it pays where its
-  /// cells hold that many points, kTryCost cells per try where there are as many points
-  /// as cells (the command line's grid has about two cells per point: 8), one where the
-  /// points are not known (the grid is then sized for the mesh, for many points). Costs
-  /// only.
+  /// tries costing kWindowCost points has labelled cells holding fewer points than that:
+  /// a try that casts a ray costs about what kTryCost points' rays and terms cost, one
+  /// whose bound alone fails kBoundTryCost. With the points not known (the grid is then
+  /// sized for the mesh, for many points) a costly try must label one cell. Costs only.
   static constexpr double kTriesPerCell = 0.125;
-  static constexpr std::size_t kTryWindow = 64;
+  static constexpr double kWindowCost = 256.0;
   static constexpr double kTryCost = 4.0;
+  static constexpr double kBoundTryCost = 1.0;
 
  private:
   enum class CellCode : std::uint8_t { unknown, surface, inside, outside };
@@ -104,7 +103,7 @@ class OpenSpaceCells {
     return (k * axes_[1].cells() + j) * axes_[0].cells() + i;
   }
   void mark_faces(const mesh::Mesh& mesh);
-  void label_blocks(const BoxLabel& label, std::size_t cells_per_try);
+  void label_blocks(const BoxLabel& label, double cells_per_point);
 
   std::array<GridAxis, 3> axes_;
   std::vector<CellCode> codes_;
