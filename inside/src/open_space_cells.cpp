@@ -54,12 +54,14 @@ OpenSpaceCells::OpenSpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, con
     axes_[i] = GridAxis(box.lower[i], box.upper[i], n[i]);
   codes_.assign(n[0] * n[1] * n[2], CellCode::unknown);
   mark_faces(mesh);
-  // Cells per point: from the points expected, or as if a costly try paid with one cell.
+  // Cells per point from the points expected; without them, as if a costly try paid
+  // with one cell, and a bound's failure cost nothing (the cap bounds those).
   const double cells_per_point = expected_points
                                      ? static_cast<double>(codes_.size()) /
                                            std::max(1.0, static_cast<double>(*expected_points))
                                      : 1.0 / kTryCost;
-  if (surface_cells_ < codes_.size()) label_blocks(label, cells_per_point);
+  const double bound_try_cost = expected_points ? kBoundTryCost : 0.0;
+  if (surface_cells_ < codes_.size()) label_blocks(label, cells_per_point, bound_try_cost);
 }
 
 void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
@@ -79,7 +81,8 @@ void OpenSpaceCells::mark_faces(const mesh::Mesh& mesh) {
       static_cast<std::size_t>(std::count(codes_.begin(), codes_.end(), CellCode::surface));
 }
 
-void OpenSpaceCells::label_blocks(const BoxLabel& label, double cells_per_point) {
+void OpenSpaceCells::label_blocks(const BoxLabel& label, double cells_per_point,
+                                  double bound_try_cost) {
   const std::array<std::size_t, 3> n = resolution();
   const SurfaceCounts surface(n,
                               [&](std::size_t cell) { return codes_[cell] == CellCode::surface; });
@@ -117,7 +120,7 @@ void OpenSpaceCells::label_blocks(const BoxLabel& label, double cells_per_point)
         labelled_cells_ += size[0] * size[1] * size[2];
       }
       // The window: stop where its cells hold fewer points than its tries cost.
-      window_cost += answer.costly ? kTryCost : kBoundTryCost;
+      window_cost += answer.costly ? kTryCost : bound_try_cost;
       if (window_cost >= kWindowCost) {
         const auto labelled = static_cast<double>(labelled_cells_ - labelled_before_window);
         if (labelled < cells_per_point * window_cost) break;

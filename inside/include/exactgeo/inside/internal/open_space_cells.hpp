@@ -86,7 +86,8 @@ class OpenSpaceCells {
   /// tries costing kWindowCost points has labelled cells holding fewer points than that:
   /// a try that casts a ray costs about what kTryCost points' rays and terms cost, one
   /// whose bound alone fails kBoundTryCost. With the points not known (the grid is then
-  /// sized for the mesh, for many points) a costly try must label one cell. Costs only.
+  /// sized for the mesh, for many points) a costly try must label one cell, and the
+  /// bound's failures count only against the cap. Costs only.
   static constexpr double kTriesPerCell = 0.125;
   static constexpr double kWindowCost = 256.0;
   static constexpr double kTryCost = 4.0;
@@ -103,7 +104,7 @@ class OpenSpaceCells {
     return (k * axes_[1].cells() + j) * axes_[0].cells() + i;
   }
   void mark_faces(const mesh::Mesh& mesh);
-  void label_blocks(const BoxLabel& label, double cells_per_point);
+  void label_blocks(const BoxLabel& label, double cells_per_point, double bound_try_cost);
 
   std::array<GridAxis, 3> axes_;
   std::vector<CellCode> codes_;
