@@ -8,6 +8,7 @@
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/inside/internal/open_label.hpp"
+#include "exactgeo/inside/internal/open_space_cells.hpp"
 #include "exactgeo/inside/internal/open_winding.hpp"
 #include "exactgeo/inside/internal/space_cells.hpp"
 #include "exactgeo/inside/internal/unit_frame.hpp"
@@ -28,6 +29,16 @@ constexpr std::size_t kExactDirections = std::size_t{1} << 25;
 /// Plain double signs can call every ray degenerate; after this many the point is called
 /// outside (a wrong answer is what that baseline may give).
 constexpr std::size_t kPlainDoubleDirections = 64;
+
+/// An open surface's space cells (open_space_cells.hpp): the rays tried from a box's
+/// centre (a ray that meets a boundary edge gives no decomposition), the most angles its
+/// term may take, the most variation over a box worth a ray, and the variation past
+/// which its parts are not worth trying either (their reach is half the box's). Costs,
+/// not certificates: any values give the labels' guarantee.
+constexpr std::size_t kBoxRays = 4;
+constexpr std::size_t kBoxAngles = 64;
+constexpr double kBoxVariation = 0.5;
+constexpr double kHopelessVariation = 2.0;
 
 std::size_t max_rays(Arithmetic arithmetic) noexcept {
   return arithmetic == Arithmetic::plain_double ? kPlainDoubleDirections : kExactDirections;
@@ -83,6 +94,8 @@ struct Classifier::State {
   std::vector<PatchSpan> double_spans;
   std::optional<internal::EmbreeCandidates> embree;
   std::optional<internal::SpaceCells> cells;
+  /// An open surface's: cells whose points all certainly have one label.
+  std::optional<internal::OpenSpaceCells> open_cells;
   /// The vertices the exact rays see: the mesh's, or the mesh's brought to magnitude 1.
   internal::UnitFrame frame;
   /// The boundary of an open surface (empty for a closed one): the kept faces', the
@@ -174,6 +187,9 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
         internal::open_label(s.rule, 0, point, ray, s.mesh.vertices, s.boundary, arithmetic);
     return label.value_or(Location::undecided);  // a ray that meets no edge: never nullopt
   }
+  if (s.open_cells && certified) {
+    if (const std::optional<Location> known = s.open_cells->lookup(point)) return *known;
+  }
   const RayOrigin origin(s, point);
   // The tree holds the vertices the rays see; a point the frame cannot map sees others.
   const bool tree_sees_origin =
@@ -196,6 +212,48 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
       }
     }
     return Location::outside;  // plain double only (see kPlainDoubleDirections)
+  });
+}
+
+/// The label of every point of the closed box [lower, upper], which no face reaches
+/// (open_space_cells.hpp): w at the box's centre, S along a ray plus the tree's term
+/// enclosed, widened by the tree's bound on w's variation over the box. nullopt where
+/// that does not settle the rule's levels (or the box or its centre do not map into the
+/// tree's frame).
+std::optional<Location> Classifier::open_box_label(const State& s, const Point3& lower,
+                                                   const Point3& upper, bool& try_parts,
+                                                   bool& costly, ClassifierScratch& scratch) {
+  try_parts = true;
+  costly = false;
+  Point3 centre;
+  for (int i = 0; i < 3; ++i)
+    centre[i] = std::clamp(lower[i] / 2 + upper[i] / 2, lower[i], upper[i]);
+  const RayOrigin origin(s, centre);
+  Point3 tree_lower = lower, tree_upper = upper;
+  if (s.frame.on()) {
+    const std::optional<Point3> l = s.frame.map(lower), u = s.frame.map(upper);
+    if (!l || !u || origin.vertices.data() != s.frame.vertices().data()) return std::nullopt;
+    tree_lower = *l;
+    tree_upper = *u;
+  }
+  const std::optional<double> variation =
+      s.boundary_tree.variation(tree_lower, tree_upper, origin.exact, kHopelessVariation);
+  try_parts = variation.has_value();
+  if (!variation || *variation > kBoxVariation) return std::nullopt;
+  costly = true;
+  return kernel::with_signs(Arithmetic::exact, [&](const auto& signs) -> std::optional<Location> {
+    for (std::size_t k = 0; k < kBoxRays; ++k) {
+      const SignedRayCount count = count_ray(s, signs, Arithmetic::exact, origin, k, scratch);
+      if (count.kind == RayCount::origin_on_face) return std::nullopt;  // (no face is there)
+      if (count.kind == RayCount::degenerate) continue;
+      const auto crossings = static_cast<double>(count.total);
+      const std::optional<Enclosure> term = s.boundary_tree.enclosure_apart(
+          origin.exact, ray_direction(k), {-0.5 - crossings, 0.5 - crossings}, *variation,
+          kBoxAngles, scratch.boundary);
+      if (!term) continue;
+      return internal::open_box_label(s.rule, count.total, *term, *variation);
+    }
+    return std::nullopt;
   });
 }
 
@@ -279,7 +337,21 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
   if (!s.boundary.empty()) s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
   if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
-  // A cell's points share one integer winding number; an open surface's vary.
+  // A cell's points share one integer winding number; an open surface's vary, and its
+  // cells are labelled where the variation is bounded (open_space_cells.hpp).
+  if (options.space_cells && !s.boundary.empty() && s.rule != FillRule::parity) {
+    ClassifierScratch scratch;
+    s.open_cells.emplace(
+        s.mesh, s.box,
+        [&](const Point3& lower, const Point3& upper) {
+          bool try_parts = true, costly = true;
+          const std::optional<Location> label =
+              open_box_label(s, lower, upper, try_parts, costly, scratch);
+          return internal::OpenSpaceCells::BoxAnswer{label, try_parts, costly};
+        },
+        internal::SpaceCells::cell_count(s.mesh.faces.size(), options.expected_points),
+        options.expected_points);
+  }
   if (options.space_cells && s.boundary.empty()) {
     ClassifierScratch scratch;
     s.cells.emplace(
@@ -342,6 +414,16 @@ Location Classifier::classify(const Point3& point, Arithmetic arithmetic,
                               ClassifierScratch& scratch) const {
   if (open()) return classify_open(*state_, point, arithmetic, scratch);
   return location_of(signed_count(*state_, point, arithmetic, scratch));
+}
+
+std::optional<Location> Classifier::space_cell_label(const Point3& point) const noexcept {
+  const State& s = *state_;
+  if (internal::strictly_outside(s.box, point)) return std::nullopt;
+  if (s.open_cells) return s.open_cells->lookup(point);
+  if (s.cells) {
+    if (const std::optional<std::int64_t> known = s.cells->lookup(point)) return location_of(known);
+  }
+  return std::nullopt;
 }
 
 Location Classifier::location_of(const std::optional<std::int64_t>& winding) const noexcept {

@@ -1,5 +1,8 @@
 #include "exactgeo/inside/internal/open_label.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace exactgeo::inside::internal {
 namespace {
 
@@ -56,6 +59,20 @@ std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossin
   const std::optional<BoundaryTerm> term = tree.term(point, ray, {-0.5 - s, 0.5 - s}, scratch);
   if (!term) return std::nullopt;
   return verdict(rule, term->versus);
+}
+
+std::optional<Location> open_box_label(FillRule rule, std::int64_t crossings, const Enclosure& term,
+                                       double variation) {
+  const auto s = static_cast<double>(crossings);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  // The term's range over the box, rounded outward; the levels -1/2 - S and 1/2 - S are
+  // exact (S is far below 2^52).
+  const double lower = std::nextafter(term.lower - variation, -kInf);
+  const double upper = std::nextafter(term.upper + variation, kInf);
+  const auto versus = [&](double level) {
+    return upper < level ? Versus::below : lower > level ? Versus::above : Versus::unsure;
+  };
+  return verdict(rule, {versus(-0.5 - s), versus(0.5 - s)});
 }
 
 Vector3 ray_away_from(const mesh::Box& box, const Point3& point) noexcept {

@@ -7,62 +7,6 @@
 #include <cstdint>
 
 namespace exactgeo::inside::internal {
-namespace {
-
-/// Cells per axis: about `target` in all, in proportion to the box's extents. An extent
-/// below 1/1024 of the largest counts as 1/1024, so that a flat box still gets a grid.
-std::array<std::size_t, 3> resolution_for(const mesh::Box& box, std::size_t target) {
-  std::array<double, 3> extent{};
-  for (int i = 0; i < 3; ++i)
-    extent[i] = box.upper[i] / 2 - box.lower[i] / 2;  // halves: cannot overflow
-  const double largest = std::max({extent[0], extent[1], extent[2]});
-  if (!(largest > 0.0)) return {1, 1, 1};
-  std::array<double, 3> relative{};
-  for (int i = 0; i < 3; ++i)
-    relative[i] = std::max(extent[i] / largest, 1.0 / 1024);
-  const double scale =
-      std::cbrt(static_cast<double>(target) / (relative[0] * relative[1] * relative[2]));
-  std::array<std::size_t, 3> cells{};
-  for (int i = 0; i < 3; ++i)
-    cells[i] = static_cast<std::size_t>(std::clamp(std::llround(relative[i] * scale), 1LL, 1024LL));
-  return cells;
-}
-
-}  // namespace
-
-SpaceCells::Axis::Axis(double lower, double upper, std::size_t cells)
-    : planes_(cells + 1), lower_(lower) {
-  // Any nondecreasing planes from lower to upper make a valid grid; these are evenly
-  // spaced up to rounding, and clamped so that rounding cannot break the order.
-  const double width = upper - lower;  // infinite for a box wider than DBL_MAX
-  planes_[0] = lower;
-  for (std::size_t k = 1; k < cells; ++k) {
-    const double t = static_cast<double>(k) / static_cast<double>(cells);
-    const double x =
-        std::isfinite(width) ? lower + width * t : 2 * (lower / 2 + (upper / 2 - lower / 2) * t);
-    planes_[k] = std::clamp(x, planes_[k - 1], upper);
-  }
-  planes_[cells] = upper;
-  const double per_unit = static_cast<double>(cells) / width;
-  cells_per_unit_ = width > 0.0 && std::isfinite(per_unit) ? per_unit : 0.0;
-}
-
-std::array<std::size_t, 2> SpaceCells::Axis::cells_meeting(double lo, double hi) const noexcept {
-  const std::size_t n = cells();
-  // First: the first cell whose upper plane is at or above lo.
-  const auto first_plane = std::lower_bound(planes_.begin() + 1, planes_.end(), lo);
-  const std::size_t first =
-      std::min(static_cast<std::size_t>(first_plane - planes_.begin()) - 1, n - 1);
-  // Last: the last cell whose lower plane is at or below hi.
-  const auto above = std::upper_bound(planes_.begin(), planes_.end() - 1, hi);
-  const auto last = static_cast<std::size_t>(above - planes_.begin());
-  return {first, last == 0 ? 0 : last - 1};
-}
-
-double SpaceCells::Axis::point_in(std::size_t k) const noexcept {
-  // Halves: the sum could overflow. The clamp keeps the rounded midpoint in the cell.
-  return std::clamp(planes_[k] / 2 + planes_[k + 1] / 2, planes_[k], planes_[k + 1]);
-}
 
 std::size_t SpaceCells::cell_count(std::size_t faces, std::optional<std::size_t> expected_points) {
   const std::size_t by_faces = std::clamp(kCellsPerFace * faces, kMinCells, kMaxCells);
@@ -72,9 +16,9 @@ std::size_t SpaceCells::cell_count(std::size_t faces, std::optional<std::size_t>
 
 SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const ExactWinding& winding,
                        std::optional<std::size_t> expected_points) {
-  const auto cells = resolution_for(box, cell_count(mesh.faces.size(), expected_points));
+  const auto cells = grid_resolution(box, cell_count(mesh.faces.size(), expected_points));
   for (int i = 0; i < 3; ++i)
-    axes_[i] = Axis(box.lower[i], box.upper[i], cells[i]);
+    axes_[i] = GridAxis(box.lower[i], box.upper[i], cells[i]);
   // Everything margin, then each row's inner cells unknown.
   codes_.assign(padded(0) * padded(1) * padded(2), kMargin);
   for (std::size_t k = 0; k < cells[2]; ++k) {

@@ -51,6 +51,17 @@ double area_above(const Point3& a, const Point3& b, const Point3& c) noexcept {
   return up(0.5 * length);
 }
 
+/// |b - a|, its upper end in outward-rounded intervals; +inf when that overflows.
+double length_above(const Point3& a, const Point3& b) noexcept {
+  DoubleInterval sum{};
+  for (int i = 0; i < 3; ++i) {
+    const DoubleInterval d = DoubleInterval::difference(b[i], a[i]);
+    sum = sum + d * d;
+  }
+  const double length = sqrt(sum).hi;
+  return std::isfinite(length) ? length : std::numeric_limits<double>::infinity();
+}
+
 // The per-point tests take a priori bounds instead of directed rounding (std::nextafter
 // is a library call, and a point visits many nodes): a difference, product or quotient of
 // doubles is within u = 2^-53 of its exact value relatively, or 2^-1075 absolutely where
@@ -259,6 +270,10 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     return fan;
   };
   node.fan = fan_of(own);
+  for (const BoundaryEdge& e : own) {
+    node.length = up(node.length + up(length_above(vertices_[e.from], vertices_[e.to]) *
+                                      std::abs(static_cast<double>(e.multiplicity))));
+  }
   // The ends: delta(x) = what enters x minus what leaves it; an edge c -> x of multiplicity
   // delta(x) (x -> c of -delta(x) when negative). An end at c itself has no cone term.
   std::vector<std::pair<VertexIndex, std::int64_t>> flow;
@@ -570,6 +585,24 @@ std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vect
   const double radians = width * 2 * std::numbers::pi;
   const auto sum = refine(point, ray, scratch, std::numeric_limits<std::size_t>::max(),
                           [&](double lower, double upper) { return upper - lower <= radians; });
+  if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
+  return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
+}
+
+std::optional<Enclosure> BoundaryTree::enclosure_apart(const Point3& point, const Vector3& ray,
+                                                       std::array<double, 2> levels, double margin,
+                                                       std::size_t most_angles,
+                                                       Refinement& scratch) const {
+  // In radians of half angle, rounded: when to stop is a cost, not a certificate (the
+  // caller compares the enclosure in turns).
+  const double to_radians = 2 * std::numbers::pi;
+  const double gap = margin * to_radians;
+  const auto apart = [&](double lower, double upper) {
+    return std::all_of(levels.begin(), levels.end(), [&](double level) {
+      return upper + gap < level * to_radians || lower - gap > level * to_radians;
+    });
+  };
+  const auto sum = refine(point, ray, scratch, most_angles, apart);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
 }

@@ -119,6 +119,11 @@ class Classifier {
   /// nullopt, a point on the surface).
   Location location_of(const std::optional<std::int64_t>& winding) const noexcept;
 
+  /// The label a certified space cell gives `point` (without a ray), or nullopt where
+  /// no cell labels it (outside the box, a cell some face reaches, no cells): what the
+  /// cells answer, for tests and measurements.
+  std::optional<Location> space_cell_label(const Point3& point) const noexcept;
+
   /// The mesh classified against: the one given, without its faces of zero area.
   const mesh::Mesh& mesh() const noexcept;
   /// The faces of zero area that were dropped (indices into the mesh given).
@@ -165,6 +170,12 @@ class Classifier {
   /// classify for an open surface.
   static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                 ClassifierScratch& scratch);
+  /// The label of every point of a box no face reaches, against an open surface.
+  /// `try_parts` false: the boundary is too near for its parts to be labelled either;
+  /// `costly`: a ray and a term were evaluated.
+  static std::optional<Location> open_box_label(const State& s, const Point3& lower,
+                                                const Point3& upper, bool& try_parts, bool& costly,
+                                                ClassifierScratch& scratch);
   /// generalized_winding_number for an open surface.
   static std::optional<Enclosure> open_winding_number(const State& s, const Point3& point,
                                                       Arithmetic arithmetic,

@@ -80,6 +80,19 @@
 // (k - 1) u times their magnitudes), the far bounds' running total likewise, and each
 // node's errors (its angles', its expansion's) stay counted after it is opened.
 //
+// Variation over a box (the certified space cells of an open surface). Off the surface w
+// is smooth, and its gradient depends on the boundary only: each face's solid angle has
+// the gradient of the Biot-Savart law for a unit current around its edges,
+// grad Omega(y) = sum over its edges of the integral of dl x (x - y) / |x - y|^3 (up to
+// sign), and the faces' shared edges cancel, leaving the boundary's edges with their
+// multiplicities. So |grad w(y)| <= (1/4 pi) sum_E |m| length(e) / dist(y, e)^2, and
+// with E's edges in a node box B, dist(y, e) >= dist(C, B) for y in a box C. Where C
+// misses the surface, the segment from c in C to any p in C lies in C (convex), off the
+// surface, and |w(p) - w(c)| <= |p - c| max |grad w| <= rho G, rho the reach of C from c
+// and G = (1/4 pi) sum over a cut of the tree of L_N / dist(C, B_N)^2, L_N = sum |m|
+// length(e) over N's edges. Any cut gives a bound; the descent takes a node where its
+// box is at least four of its diagonals from C (farther, opening it would gain little).
+//
 // Certified. F is computed once per node in outward-rounded intervals (its upper end);
 // M and Q likewise, kept as midpoints with bounds on their distance from the exact
 // ones; d^2 from below and the ray-box test from the slabs with a priori error bounds
@@ -152,6 +165,21 @@ class BoundaryTree {
   std::optional<Enclosure> enclosure(const Point3& point, const Vector3& ray, double width,
                                      Refinement& scratch) const;
 
+  /// Bounds, in turns, on the same term, refined until each level lies more than `margin`
+  /// turns outside them (or every node is open); nullopt as for enclosure, or where that
+  /// takes more than `most_angles` angles.
+  std::optional<Enclosure> enclosure_apart(const Point3& point, const Vector3& ray,
+                                           std::array<double, 2> levels, double margin,
+                                           std::size_t most_angles, Refinement& scratch) const;
+
+  /// An upper bound, in turns, on |w(p) - w(centre)| for every p of the box [lower,
+  /// upper], w the generalized winding number of a surface whose boundary is these edges
+  /// ("Variation over a box" above). Precondition: the box misses that surface and holds
+  /// `centre`. nullopt where the bound exceeds `most`, the box meets a leaf's box, or a
+  /// square overflows (the classifier asks in its unit frame, where none does).
+  std::optional<double> variation(const Point3& lower, const Point3& upper, const Point3& centre,
+                                  double most) const;
+
   /// The boundary vertices and the nodes' centres.
   std::span<const Point3> vertices() const noexcept { return vertices_; }
   std::size_t edge_count() const noexcept { return edges_.size(); }
@@ -163,6 +191,7 @@ class BoundaryTree {
     std::uint32_t ends_first = 0, ends_count = 0;  // its ends: ends_[...]
     std::uint32_t left = 0, right = 0;             // children; 0 for a leaf
     double fan = 0.0;                              // F, rounded up
+    double length = 0.0;                           // sum |m| length(e), rounded up
     bool far_pays = false;                         // ends fewer than half its edges
     // The expansion ("Second order" above): the centre, the fan's vector area M (its
     // enclosure's midpoint, within moment_error of M, at most moment_size long), the

@@ -31,6 +31,7 @@
 #include <optional>
 #include <vector>
 
+#include "exactgeo/inside/internal/grid_axis.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/check.hpp"
 #include "exactgeo/mesh/mesh.hpp"
@@ -87,38 +88,6 @@ class SpaceCells {
   static constexpr std::size_t kMinCellsForFewPoints = std::size_t{1} << 12;  // 16^3
 
  private:
-  /// One axis of the grid: its planes and the division that proposes a cell.
-  class Axis {
-   public:
-    Axis() = default;
-    Axis(double lower, double upper, std::size_t cells);
-    std::size_t cells() const noexcept { return planes_.size() - 1; }
-    /// A cell k with planes[k] <= x <= planes[k + 1]. Precondition: x in [lower, upper].
-    /// Inline: it runs three times for every point.
-    std::size_t cell_of(double x) const noexcept {
-      const std::size_t n = cells();
-      if (cells_per_unit_ > 0.0) {
-        // A proposal, confirmed exactly below (x - lower_ is finite: the width is).
-        const double g = (x - lower_) * cells_per_unit_;
-        const std::size_t k = g < static_cast<double>(n) ? static_cast<std::size_t>(g) : n - 1;
-        if (planes_[k] <= x && x <= planes_[k + 1]) return k;
-      }
-      // The last plane at or below x (planes_[0] = lower <= x), within the cells.
-      const auto above = std::upper_bound(planes_.begin(), planes_.end(), x);
-      return std::min(static_cast<std::size_t>(above - planes_.begin()) - 1, n - 1);
-    }
-    /// The cells whose closed interval meets [lo, hi] (lo <= hi): first and last.
-    std::array<std::size_t, 2> cells_meeting(double lo, double hi) const noexcept;
-    /// A point of cell k's closed interval.
-    double point_in(std::size_t k) const noexcept;
-    const std::vector<double>& planes() const noexcept { return planes_; }
-
-   private:
-    std::vector<double> planes_;
-    double lower_ = 0.0;
-    double cells_per_unit_ = 0.0;  // 0: no usable division, search only
-  };
-
   /// A cell's code. `kMargin`: a layer of cells around the grid, so that the flood fill
   /// needs no bounds checks (and no divisions to find them); never looked up.
   /// kFirstWinding + i: the winding number windings_[i].
@@ -136,7 +105,7 @@ class SpaceCells {
   /// The code of a component of winding number w, or kSurface when all codes are taken.
   Code code_of(std::int64_t w);
 
-  std::array<Axis, 3> axes_;
+  std::array<GridAxis, 3> axes_;
   std::vector<Code> codes_;
   std::vector<std::int64_t> windings_;  ///< the components' distinct winding numbers
   std::size_t surface_cells_ = 0;

@@ -1,0 +1,166 @@
+// BoundaryTree::variation (boundary_tree.hpp, "Variation over a box"): a bound on how far
+// the generalized winding number moves over a box that misses the surface, checked
+// against the definition (w from the faces' solid angles in 512-bit MPFR,
+// support/solid_angle_oracle.hpp) at the box's corners and at random points of it. The
+// surface is a rectangle in the plane z = 0 whose edges are cut into many boundary edges;
+// boxes on either side of the plane beside a long edge (where w turns around the edge
+// like an angle) and anywhere near the rectangle (where a bound with half the box's
+// reach, or with the distance to a node above the box measured to the box's far side,
+// falls below the change), at 2^0 and 2^+-40.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "exactgeo/predicates/boundary_tree.hpp"
+#include "support/hexfloat.hpp"
+#include "support/seed.hpp"
+#include "support/solid_angle_oracle.hpp"
+
+namespace exactgeo::boundary_tree_variation_test {
+namespace {
+
+/// The rectangle [-x, 0] x [-y, y] in z = 0, counter-clockwise seen from +z, three of its
+/// sides cut into `n` edges each and the side x = 0 into edges 1/8 long at y = 0 and 1.2
+/// times longer one after the other away from it, with its fan of triangles from the
+/// centre (the oracle's surface), all times 2^k.
+struct Rectangle {
+  std::vector<Point3> vertices;
+  std::vector<BoundaryEdge> edges;
+  std::vector<testing::Triangle> triangles;
+};
+
+Rectangle rectangle(double x, double y, int n, int k) {
+  Rectangle r;
+  const auto along = [&](const Point3& a, const Point3& b, int pieces) {
+    for (int i = 0; i < pieces; ++i) {
+      const double t = static_cast<double>(i) / pieces;
+      r.vertices.push_back({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), 0.0});
+    }
+  };
+  along({-x, -y, 0.0}, {0.0, -y, 0.0}, n);
+  std::vector<double> ys{0.0};
+  for (double step = 0.125; ys.back() < y; step *= 1.2)
+    ys.push_back(std::min(y, ys.back() + step));
+  for (std::size_t i = ys.size() - 1; i > 0; --i)
+    r.vertices.push_back({0.0, -ys[i], 0.0});
+  for (std::size_t i = 0; i + 1 < ys.size(); ++i)
+    r.vertices.push_back({0.0, ys[i], 0.0});
+  along({0.0, y, 0.0}, {-x, y, 0.0}, n);
+  along({-x, y, 0.0}, {-x, -y, 0.0}, n);
+  for (Point3& v : r.vertices) {
+    for (double& c : v)
+      c = std::ldexp(c, k);
+  }
+  const auto count = static_cast<VertexIndex>(r.vertices.size());
+  const Point3 centre{std::ldexp(-x / 2, k), 0.0, 0.0};
+  for (VertexIndex i = 0; i < count; ++i) {
+    r.edges.push_back({i, (i + 1) % count, 1});
+    r.triangles.push_back({r.vertices[i], r.vertices[(i + 1) % count], centre});
+  }
+  return r;
+}
+
+/// The largest |w(p) - w(c)| over the box's corners and `samples` random points of it.
+double largest_change(const Rectangle& r, const Point3& lower, const Point3& upper,
+                      const Point3& centre, int samples, std::mt19937_64& rng) {
+  const double at_centre = testing::generalized_winding_oracle(centre, r.triangles);
+  std::vector<Point3> points;
+  for (int corner = 0; corner < 8; ++corner) {
+    points.push_back({corner & 1 ? upper[0] : lower[0], corner & 2 ? upper[1] : lower[1],
+                      corner & 4 ? upper[2] : lower[2]});
+  }
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int s = 0; s < samples; ++s) {
+    Point3 p;
+    for (int i = 0; i < 3; ++i)
+      p[i] = std::clamp(lower[i] + unit(rng) * (upper[i] - lower[i]), lower[i], upper[i]);
+    points.push_back(p);
+  }
+  double largest = 0.0;
+  for (const Point3& p : points) {
+    largest =
+        std::max(largest, std::abs(testing::generalized_winding_oracle(p, r.triangles, at_centre)));
+  }
+  return largest;
+}
+
+Point3 centre_of(const Point3& lower, const Point3& upper) {
+  return {lower[0] / 2 + upper[0] / 2, lower[1] / 2 + upper[1] / 2, lower[2] / 2 + upper[2] / 2};
+}
+
+class VariationAtScale : public ::testing::TestWithParam<int> {};
+
+TEST_P(VariationAtScale, BoxesBesideALongEdgeHoldTheChange) {
+  // Unit cubes 1 to 2 from the edge x = z = 0 of a rectangle 4,000 long, below the plane
+  // (the edge on the cube's upper side) and above it, and across it: w there is about
+  // the angle around the edge over 2 pi, and moves by up to 0.074 from the centre to a
+  // corner.
+  const int k = GetParam();
+  auto rng = testing::seeded_engine("predicates.boundary_tree.variation.edge." + std::to_string(k));
+  const Rectangle r = rectangle(2000.0, 2000.0, 16, k);
+  const BoundaryTree tree(r.vertices, r.edges);
+  const auto at = [&](double x, double y, double z) {
+    return Point3{std::ldexp(x, k), std::ldexp(y, k), std::ldexp(z, k)};
+  };
+  std::size_t bounded = 0;
+  for (const double x : {-0.5, -1.5, 1.0, 0.25}) {
+    for (const double z : {-2.0, 1.0}) {
+      const Point3 lower = at(x, -0.5, z), upper = at(x + 1.0, 0.5, z + 1.0);
+      const Point3 centre = centre_of(lower, upper);
+      const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
+      ASSERT_TRUE(bound.has_value()) << testing::hex(lower);
+      const double change = largest_change(r, lower, upper, centre, 16, rng);
+      EXPECT_GE(*bound, change) << testing::hex(lower) << " " << testing::hex(upper);
+      EXPECT_GT(change, 0.0);
+      ++bounded;
+    }
+  }
+  EXPECT_EQ(bounded, 8u);
+}
+
+TEST_P(VariationAtScale, RandomBoxesNearTheRectangleHoldTheChange) {
+  // Boxes of sides 2^-4 to 2, 2^-3 to 8 from the plane on either side, anywhere over the
+  // rectangle and beyond its edges; the bound where it is given (not past `most`, no leaf
+  // box met) holds the oracle's change.
+  const int k = GetParam();
+  auto rng =
+      testing::seeded_engine("predicates.boundary_tree.variation.random." + std::to_string(k));
+  const Rectangle r = rectangle(6.0, 3.0, 48, k);
+  const BoundaryTree tree(r.vertices, r.edges);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t bounded = 0;
+  for (int n = 0; n < 120; ++n) {
+    const double side = std::ldexp(1.0, -4 + n % 6);
+    const double gap = std::ldexp(1.0, -3 + n % 7) * (n % 2 == 0 ? 1.0 : -1.0);
+    const double x = -7.0 + 8.0 * unit(rng), y = -4.0 + 8.0 * unit(rng);
+    const double z = gap > 0 ? gap : gap - side;
+    Point3 lower{x, y, z}, upper{x + side, y + side * unit(rng) + side / 4, z + side};
+    for (int i = 0; i < 3; ++i) {
+      lower[i] = std::ldexp(lower[i], k);
+      upper[i] = std::ldexp(upper[i], k);
+    }
+    const Point3 centre = centre_of(lower, upper);
+    const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
+    if (!bound) continue;
+    ++bounded;
+    const double change = largest_change(r, lower, upper, centre, 4, rng);
+    ASSERT_GE(*bound, change) << testing::hex(lower) << " " << testing::hex(upper);
+  }
+  EXPECT_GT(bounded, 40u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, VariationAtScale, ::testing::Values(0, 40, -40),
+                         [](const ::testing::TestParamInfo<int>& param_info) {
+                           const int k = param_info.param;
+                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
+                         });
+
+}  // namespace
+}  // namespace exactgeo::boundary_tree_variation_test
