@@ -13,29 +13,19 @@
 
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
+#include "pass_plans.hpp"
 #include "pass_schedule.hpp"
+#include "pass_workspace.hpp"
 
 namespace exactgeo::remesh {
 
-using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
+using namespace internal;  // operation_checks.hpp, pass_plans.hpp, pass_schedule.hpp
 
 namespace {
 
 std::string flipping(VertexIndex a, VertexIndex b) {
   return operation_name("flipping", a, b);
 }
-
-/// A flip that passed its topology checks: its triangles, their replacements, the region
-/// it sweeps (a, b, c, d).
-struct FlipPlan {
-  VertexIndex a = 0;
-  VertexIndex b = 0;
-  std::size_t t1 = 0;  ///< walks a -> b
-  std::size_t t2 = 0;  ///< walks b -> a
-  Triangle new1{};     ///< c a d
-  Triangle new2{};     ///< d b c
-  std::array<RegionCorner, 4> region{};
-};
 
 /// The topology of the flip of edge ab, whose triangles are `on_edge`: the plan, or the
 /// reason it is refused. `edge_exists(c, d)` says whether the surface has edge cd.
@@ -102,12 +92,18 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
   return {};
 }
 
-std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
-  const EdgeTriangles table = edge_triangles(surface);
+std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
+                                PassWorkspace* workspace) {
+  PassWorkspace own;  // used when the caller keeps none
+  PassWorkspace::Arrays& kept = arrays_of(workspace, own);
+  EdgeTriangles& table = kept.edges;
+  table.assign(surface.triangles, surface.vertices.size());
   std::vector<Outcome> outcomes(edges.size());
   // 1. Topology.
-  std::vector<FlipPlan> plans;
-  std::vector<std::size_t> edge_of_plan;
+  std::vector<FlipPlan>& plans = kept.flip_plans;
+  std::vector<std::size_t>& edge_of_plan = kept.operation_of_plan;
+  plans.clear();
+  edge_of_plan.clear();
   plans.reserve(edges.size());  // one allocation, not a chain of growing copies
   edge_of_plan.reserve(edges.size());
   std::vector<std::size_t> on_edge;  // reused from flip to flip
@@ -125,14 +121,16 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     edge_of_plan.push_back(i);
   }
   // 2. No shared vertex with an earlier flip that goes ahead.
-  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
+  std::vector<std::array<VertexIndex, 4>>& by_vertices = kept.by_vertices;
+  by_vertices.resize(plans.size());
   for (std::size_t k = 0; k < plans.size(); ++k) {
     for (std::size_t c = 0; c < 4; ++c)
       by_vertices[k][c] = plans[k].region[c].vertex;
   }
   const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
-  std::vector<std::size_t> candidates;
+  std::vector<std::size_t>& candidates = kept.candidates;
+  candidates.clear();
   std::vector<internal::Footprint> by_regions;
   for (std::size_t k = 0; k < plans.size(); ++k) {
     const std::size_t i = edge_of_plan[k];
@@ -147,8 +145,10 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     }
   }
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
-  std::vector<std::array<RegionCorner, 4>> regions;
-  std::vector<std::size_t> checked;
+  std::vector<std::array<RegionCorner, 4>>& regions = kept.regions;
+  std::vector<std::size_t>& checked = kept.checked;
+  regions.clear();
+  checked.clear();
   for (std::size_t n = 0; n < candidates.size(); ++n) {
     const std::size_t k = candidates[n];
     const auto [a, b] = edges[edge_of_plan[k]];
@@ -162,7 +162,8 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
   }
   // The flips that go ahead change the surface only inside their own regions, which no
   // other one's reaches (pass_schedule.hpp): each is checked on the surface before the pass.
-  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  const std::vector<std::optional<Blocker>> hits =
+      internal::first_in_regions(surface, regions, {}, kept.region_query);
   for (std::size_t n = 0; n < checked.size(); ++n) {
     const FlipPlan& plan = plans[checked[n]];
     if (hits[n]) {
