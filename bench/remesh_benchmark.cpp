@@ -187,16 +187,18 @@ void FullRemesh(benchmark::State& state) {
   const std::vector<Collapse> collapses = coarsening(start, 3, n);
   const std::vector<exactgeo::remesh::Split> splits = midpoint_splits(start.surface);
   std::size_t applied = 0;
+  // One workspace for the three passes and every iteration, as a simulator keeps one.
+  exactgeo::remesh::PassWorkspace workspace;
   for (auto _ : state) {
     Surface s = start.surface;
     applied = 0;
-    for (const auto& o : exactgeo::remesh::split_edges(s, splits))
+    for (const auto& o : exactgeo::remesh::split_edges(s, splits, &workspace))
       applied += o.applied();
     // The collapses name the start's vertices, which the splits keep (new ones come after).
-    for (const auto& o : exactgeo::remesh::collapse_edges(s, collapses))
+    for (const auto& o : exactgeo::remesh::collapse_edges(s, collapses, &workspace))
       applied += o.applied();
     const std::vector<exactgeo::remesh::Edge> edges = s.edges();
-    for (const auto& o : exactgeo::remesh::flip_edges(s, edges))
+    for (const auto& o : exactgeo::remesh::flip_edges(s, edges, &workspace))
       applied += o.applied();
     benchmark::DoNotOptimize(applied);
   }
