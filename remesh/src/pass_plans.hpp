@@ -5,35 +5,33 @@
 
 #include <array>
 #include <cstddef>
-#include <span>
 
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
 
 namespace exactgeo::remesh::internal {
 
-/// A split: the edge's triangles, and once its geometry is checked the regions it sweeps
-/// (none when the new vertex lies exactly on the edge, else one per triangle of the edge)
-/// with their partners, held in place (a pass plans thousands).
+/// A split: the edge's triangles, and once its geometry is checked whether it sweeps
+/// regions (not when the new vertex lies exactly on the edge): one per triangle x y c of
+/// the edge, the hull of a, b, c and the new vertex, with the other side's opposite corner
+/// as its partner (none for an edge of one triangle). The regions are made when asked
+/// for, not held: a pass plans thousands of splits.
 struct SplitPlan {
   VertexIndex a = 0;
   VertexIndex b = 0;
   Point3 at{};
   EdgeTrianglesOfOne on_edge;
-  std::array<std::array<RegionCorner, 4>, 2> region_storage{};
-  std::array<VertexIndex, 2> partner_storage{};  ///< per region: the other side's corner
-  std::size_t region_count = 0;
+  bool sweeps = false;
 
-  void add_region(const std::array<RegionCorner, 4>& region, VertexIndex partner) noexcept {
-    region_storage[region_count] = region;
-    partner_storage[region_count] = partner;
-    ++region_count;
+  std::size_t region_count() const noexcept { return sweeps ? on_edge.size() : 0; }
+  /// Region i (below region_count()) on the surface the split was planned on.
+  std::array<RegionCorner, 4> region(const Surface& s, std::size_t i) const {
+    const VertexIndex c = third_corner(s.triangles[on_edge[i]], a, b);
+    return {RegionCorner{a, s.vertices[a]}, RegionCorner{b, s.vertices[b]},
+            RegionCorner{c, s.vertices[c]}, RegionCorner{kNoVertex, at}};
   }
-  std::span<const std::array<RegionCorner, 4>> regions() const noexcept {
-    return std::span(region_storage).first(region_count);
-  }
-  std::span<const VertexIndex> partners() const noexcept {
-    return std::span(partner_storage).first(region_count);
+  VertexIndex partner(const Surface& s, std::size_t i) const {
+    return on_edge.size() == 2 ? third_corner(s.triangles[on_edge[1 - i]], a, b) : kNoVertex;
   }
 };
 

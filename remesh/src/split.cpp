@@ -172,14 +172,8 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
         }
       }
     }
-    if (!between) {
-      plan.add_region({RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
-                       RegionCorner{kNoVertex, at}},
-                      plan.on_edge.size() == 2
-                          ? third_corner(surface.triangles[plan.on_edge[1 - i]], a, b)
-                          : kNoVertex);
-    }
   }
+  plan.sweeps = !between;
   if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan, made, off) &&
       sides_meet(surface, made, at)) {
     return Outcome{Verdict::refused_collision,
@@ -214,8 +208,8 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   SplitPlan& plan = std::get<SplitPlan>(planned);
   if (auto refused = split_geometry(surface, plan)) return *refused;
-  for (std::size_t r = 0; r < plan.region_count; ++r) {
-    if (auto hit = first_in_region(surface, plan.regions()[r], plan.partners()[r])) {
+  for (std::size_t r = 0; r < plan.region_count(); ++r) {
+    if (auto hit = first_in_region(surface, plan.region(surface, r), plan.partner(surface, r))) {
       return collision(*hit, splitting(a, b));
     }
   }
@@ -272,8 +266,10 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
       outcomes[i] = std::move(*refused);
     } else {
       candidates.push_back(k);
-      const auto regions = plans[k].regions();
-      by_regions.push_back({{}, {regions.begin(), regions.end()}, false});
+      internal::Footprint footprint;
+      for (std::size_t r = 0; r < plans[k].region_count(); ++r)
+        footprint.regions.push_back(plans[k].region(surface, r));
+      by_regions.push_back(std::move(footprint));
     }
   }
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
@@ -290,8 +286,10 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
           "splitting", plan.a, plan.b, "sweeps a region that meets another split's of the pass");
       continue;
     }
-    regions.insert(regions.end(), plan.regions().begin(), plan.regions().end());
-    partners.insert(partners.end(), plan.partners().begin(), plan.partners().end());
+    for (std::size_t r = 0; r < plan.region_count(); ++r) {
+      regions.push_back(plan.region(surface, r));
+      partners.push_back(plan.partner(surface, r));
+    }
     checked.push_back(candidates[n]);
   }
   // As for flips: the splits that go ahead meet nothing another one makes.
@@ -300,7 +298,7 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   std::size_t next_region = 0;
   for (const std::size_t k : checked) {
     std::optional<Blocker> hit;
-    for (std::size_t r = 0; r < plans[k].region_count; ++r, ++next_region) {
+    for (std::size_t r = 0; r < plans[k].region_count(); ++r, ++next_region) {
       if (!hit) hit = hits[next_region];
     }
     const SplitPlan& plan = plans[k];
