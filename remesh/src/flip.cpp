@@ -35,7 +35,7 @@ std::variant<Outcome, FlipPlan> flip_topology(const Surface& surface, VertexInde
                                               const EdgeExists& edge_exists) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
   if (on_edge.size() != 2) return topology("a boundary edge cannot be flipped");
-  FlipPlan plan{a, b, on_edge[0], on_edge[1], {}, {}, {}};
+  FlipPlan plan{a, b, on_edge[0], on_edge[1], {}, {}};
   if (!walks(surface.triangles[plan.t1], a, b)) std::swap(plan.t1, plan.t2);
   if (!walks(surface.triangles[plan.t1], a, b) || !walks(surface.triangles[plan.t2], b, a)) {
     return topology("the edge's triangles are not oriented alike");
@@ -48,9 +48,6 @@ std::variant<Outcome, FlipPlan> flip_topology(const Surface& surface, VertexInde
   }
   plan.new1 = {c, a, d};
   plan.new2 = {d, b, c};
-  const auto& p = surface.vertices;
-  plan.region = {RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
-                 RegionCorner{d, p[d]}};
   return plan;
 }
 
@@ -87,7 +84,8 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const FlipPlan& plan = std::get<FlipPlan>(planned);
   if (auto refused = flip_geometry(surface, plan)) return *refused;
-  if (auto hit = first_in_region(surface, plan.region)) return collision(*hit, flipping(a, b));
+  if (auto hit = first_in_region(surface, plan.region(surface)))
+    return collision(*hit, flipping(a, b));
   apply_flip(surface, plan);
   return {};
 }
@@ -123,10 +121,8 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
   // 2. No shared vertex with an earlier flip that goes ahead.
   std::vector<std::array<VertexIndex, 4>>& by_vertices = kept.by_vertices;
   by_vertices.resize(plans.size());
-  for (std::size_t k = 0; k < plans.size(); ++k) {
-    for (std::size_t c = 0; c < 4; ++c)
-      by_vertices[k][c] = plans[k].region[c].vertex;
-  }
+  for (std::size_t k = 0; k < plans.size(); ++k)
+    by_vertices[k] = plans[k].corners();
   const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
   std::vector<std::size_t>& candidates = kept.candidates;
@@ -141,7 +137,7 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
       outcomes[i] = std::move(*refused);
     } else {
       candidates.push_back(k);
-      by_regions.push_back({{}, {plans[k].region}, false});
+      by_regions.push_back({{}, {plans[k].region(surface)}, false});
     }
   }
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
@@ -157,7 +153,7 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
           deferred("flipping", a, b, "sweeps a region that meets another flip's of the pass");
       continue;
     }
-    regions.push_back(plans[k].region);
+    regions.push_back(plans[k].region(surface));
     checked.push_back(k);
   }
   // The flips that go ahead change the surface only inside their own regions, which no

@@ -35,8 +35,8 @@ struct SplitPlan {
   }
 };
 
-/// A flip that passed its topology checks: its triangles, their replacements, the region
-/// it sweeps (a, b, c, d).
+/// A flip that passed its topology checks: its triangles and their replacements; the
+/// region it sweeps (a, b, c, d) is made when asked for.
 struct FlipPlan {
   VertexIndex a = 0;
   VertexIndex b = 0;
@@ -44,7 +44,13 @@ struct FlipPlan {
   std::size_t t2 = 0;  ///< walks b -> a
   Triangle new1{};     ///< c a d
   Triangle new2{};     ///< d b c
-  std::array<RegionCorner, 4> region{};
+
+  std::array<VertexIndex, 4> corners() const noexcept { return {a, b, new1[0], new1[2]}; }
+  std::array<RegionCorner, 4> region(const Surface& s) const {
+    const std::array<VertexIndex, 4> v = corners();
+    return {RegionCorner{v[0], s.vertices[v[0]]}, RegionCorner{v[1], s.vertices[v[1]]},
+            RegionCorner{v[2], s.vertices[v[2]]}, RegionCorner{v[3], s.vertices[v[3]]}};
+  }
 };
 
 /// A collapse that passed its topology checks.
