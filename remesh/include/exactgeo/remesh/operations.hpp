@@ -45,14 +45,18 @@ enum class Verdict : std::uint8_t {
 std::string_view to_string(Verdict v) noexcept;
 
 /// The working memory of the passes (split_edges, collapse_edges, flip_edges), kept from
-/// one pass to the next by a caller that runs many (a remesher, a simulator): the arrays
-/// of one entry per proposed operation (the plans, the indices of those going ahead, their
-/// vertices), the regions checked together and their partners, the points, corner groups
-/// and near pairs of the regions' box query, and the pass's edge table (the triangles on
-/// every edge). A pass clears what it uses and keeps its storage, so that a later pass
-/// writes into memory already in place instead of allocating, and faulting in, arrays of
-/// the same size again (at thousands of operations a pass, the page faults of a fresh
-/// allocation cost more than the pass's exact tests on some machines).
+/// one pass to the next by a caller that runs many (a remesher, a simulator; one
+/// workspace serves every kind of pass): the arrays of one entry per proposed operation
+/// (the plans, each plan's operation, a split's or flip's vertices, those whose geometry
+/// passed, those checked), the regions checked together and their partners, the points,
+/// corner groups and near pairs of the regions' box query, and the edge table of the
+/// split and flip passes (the triangles on every edge). A pass clears what it uses and
+/// keeps its storage, so that a later pass writes into memory already in place instead of
+/// allocating, and faulting in, arrays of the same size again (at thousands of operations
+/// a pass, the page faults of fresh allocations can cost more than the pass's exact
+/// tests: docs/remesh.md, "What a remesh costs"). Not kept: the outcomes (the caller's),
+/// the box trees of the regions' query, and the collapse pass's own (the surface's stars,
+/// the reach of its motions, the mesh broad phase over it, the surface it makes).
 ///
 /// It carries no state that changes answers: every array is cleared, or filled anew,
 /// before it is read, so a pass with a used workspace returns the same outcomes and leaves
