@@ -306,6 +306,7 @@ int run(const Options& o) {
   exactgeo::cloth::RemeshParameters remesh_parameters;
   remesh_parameters.max_length = scene.spacing;
   remesh_parameters.min_length = scene.spacing / 2.0;
+  exactgeo::remesh::PassWorkspace remesh_workspace;  // the passes' memory, kept for the run
 
   Totals totals;
   if (o.time_narrow_phase) totals.timing.emplace();
@@ -407,7 +408,8 @@ int run(const Options& o) {
     mesh.positions.swap(x1);
     if (intersecting("after the step", step)) return kCollision;
     if (o.remesh) {
-      const exactgeo::cloth::RemeshCounts counts = exactgeo::cloth::remesh(mesh, remesh_parameters);
+      const exactgeo::cloth::RemeshCounts counts =
+          exactgeo::cloth::remesh(mesh, remesh_parameters, &remesh_workspace);
       totals.remesh += counts;
       if (counts.split.applied + counts.collapse.applied + counts.flip.applied > 0) {
         cloth_model->set_topology(mesh.faces, mesh.sheet_faces, mesh.material);

@@ -31,8 +31,9 @@ constexpr double kDelaunaySlack = 1e-6;
 /// The surface being remeshed, with what the operations do not know about its vertices.
 struct Work {
   Surface surface;
-  std::vector<Material> material;  ///< per vertex (the obstacles' are unused)
-  std::vector<Point3> velocity;    ///< per vertex (the obstacles' are unused)
+  std::vector<Material> material;           ///< per vertex (the obstacles' are unused)
+  std::vector<Point3> velocity;             ///< per vertex (the obstacles' are unused)
+  remesh::PassWorkspace* passes = nullptr;  ///< the passes' memory, the caller's (or none)
 };
 
 /// A sheet edge with its triangles: `left` walks a -> b, `right` (if any) b -> a.
@@ -237,7 +238,7 @@ bool split_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables, Verdi
   std::vector<remesh::Split> splits;
   for (const auto& [ratio, split] : wanted)
     splits.push_back(split);
-  const std::vector<remesh::Outcome> outcomes = remesh::split_edges(w.surface, splits);
+  const std::vector<remesh::Outcome> outcomes = remesh::split_edges(w.surface, splits, w.passes);
   bool any = false;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     counts.add(outcomes[i].verdict);
@@ -357,7 +358,7 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
     collapses.push_back({kept, gone, w.surface.vertices[kept]});
   }
   bool any = false;
-  for (const remesh::Outcome& o : remesh::collapse_edges(w.surface, collapses)) {
+  for (const remesh::Outcome& o : remesh::collapse_edges(w.surface, collapses, w.passes)) {
     counts.add(o.verdict);
     any = any || o.applied();
   }
@@ -390,7 +391,7 @@ bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
     flips.push_back(remesh::edge_of(e.a, e.b));
   }
   bool any = false;
-  for (const remesh::Outcome& o : remesh::flip_edges(w.surface, flips)) {
+  for (const remesh::Outcome& o : remesh::flip_edges(w.surface, flips, w.passes)) {
     counts.add(o.verdict);
     any = any || o.applied();
   }
@@ -489,10 +490,12 @@ RemeshCounts& RemeshCounts::operator+=(const RemeshCounts& c) noexcept {
   return *this;
 }
 
-RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters) {
+RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
+                    remesh::PassWorkspace* workspace) {
   const auto start = std::chrono::steady_clock::now();
   RemeshCounts counts;
   Work w = work_of(mesh);
+  w.passes = workspace;
   // Split vertices come after the obstacle's (as split_edges appends them), and so do
   // their entries in the work's per-vertex arrays; write_back puts them with the sheets.
   SurfaceTables tables;

@@ -68,6 +68,10 @@ struct RemeshCounts {
 };
 
 /// Remeshes the sheets of `mesh` (intersection free, as every operation keeps it).
-RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters);
+/// `workspace`: the passes' memory (remesh::PassWorkspace), kept by the caller from one
+/// remesh to the next so that each pass reuses it; none, and each pass makes its own. The
+/// same operations either way.
+RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
+                    remesh::PassWorkspace* workspace = nullptr);
 
 }  // namespace exactgeo::cloth

@@ -28,22 +28,17 @@
 #include "one_mover.hpp"
 #include "operation_checks.hpp"
 #include "pair_order.hpp"
+#include "pass_plans.hpp"
 #include "pass_schedule.hpp"
+#include "pass_workspace.hpp"
 #include "region_points.hpp"
 
 namespace exactgeo::remesh {
 
-using namespace internal;  // one_mover.hpp, operation_checks.hpp, pass_schedule.hpp
+using namespace internal;  // one_mover.hpp, operation_checks.hpp, pass_plans.hpp,
+                           // pass_schedule.hpp
 
 namespace {
-
-/// A collapse that passed its topology checks.
-struct CollapsePlan {
-  VertexIndex a = 0;
-  VertexIndex b = 0;
-  Point3 to{};
-  EdgeTrianglesOfOne on_edge;  ///< the edge's triangles, removed
-};
 
 std::string collapsing(VertexIndex a, VertexIndex b) {
   return operation_name("collapsing", a, b);
@@ -207,11 +202,12 @@ struct Reach {
 /// A pass of collapses (collapse_edges).
 class CollapsePass {
  public:
-  CollapsePass(const Surface& surface, std::span<const Collapse> collapses)
+  CollapsePass(const Surface& surface, std::span<const Collapse> collapses,
+               PassWorkspace::Arrays& kept)
       : surface_(surface),
         stars_(surface.triangles, surface.vertices.size()),
         outcomes_(collapses.size()) {
-    plan(collapses);
+    plan(collapses, kept);
   }
 
   std::vector<Outcome> run(Surface& surface) {
@@ -225,10 +221,12 @@ class CollapsePass {
   /// its ends) share a vertex with those of an earlier one that goes ahead waits for the
   /// next pass: its plan read them (the link condition, the triangles it changes), and the
   /// other changes them. Their motions are checked together (refuse_collisions).
-  void plan(std::span<const Collapse> collapses) {
+  void plan(std::span<const Collapse> collapses, PassWorkspace::Arrays& kept) {
     owner_.assign(surface_.vertices.size(), kNone);
-    std::vector<CollapsePlan> planned;
-    std::vector<std::size_t> planned_collapse;
+    std::vector<CollapsePlan>& planned = kept.collapse_plans;
+    std::vector<std::size_t>& planned_collapse = kept.operation_of_plan;
+    planned.clear();
+    planned_collapse.clear();
     std::vector<internal::Footprint> footprints;
     PlanScratch scratch;
     for (std::size_t i = 0; i < collapses.size(); ++i) {
@@ -270,7 +268,7 @@ class CollapsePass {
         continue;
       }
       owner_[planned[k].a] = owner_[planned[k].b] = plans_.size();
-      plans_.push_back(std::move(planned[k]));
+      plans_.push_back(planned[k]);
       outcome_of_.push_back(i);
     }
   }
@@ -420,8 +418,10 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
   return {};
 }
 
-std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses) {
-  return CollapsePass(surface, collapses).run(surface);
+std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses,
+                                    PassWorkspace* workspace) {
+  PassWorkspace own;  // used when the caller keeps none
+  return CollapsePass(surface, collapses, arrays_of(workspace, own)).run(surface);
 }
 
 }  // namespace exactgeo::remesh

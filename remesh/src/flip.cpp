@@ -13,29 +13,19 @@
 
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
+#include "pass_plans.hpp"
 #include "pass_schedule.hpp"
+#include "pass_workspace.hpp"
 
 namespace exactgeo::remesh {
 
-using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
+using namespace internal;  // operation_checks.hpp, pass_plans.hpp, pass_schedule.hpp
 
 namespace {
 
 std::string flipping(VertexIndex a, VertexIndex b) {
   return operation_name("flipping", a, b);
 }
-
-/// A flip that passed its topology checks: its triangles, their replacements, the region
-/// it sweeps (a, b, c, d).
-struct FlipPlan {
-  VertexIndex a = 0;
-  VertexIndex b = 0;
-  std::size_t t1 = 0;  ///< walks a -> b
-  std::size_t t2 = 0;  ///< walks b -> a
-  Triangle new1{};     ///< c a d
-  Triangle new2{};     ///< d b c
-  std::array<RegionCorner, 4> region{};
-};
 
 /// The topology of the flip of edge ab, whose triangles are `on_edge`: the plan, or the
 /// reason it is refused. `edge_exists(c, d)` says whether the surface has edge cd.
@@ -45,7 +35,7 @@ std::variant<Outcome, FlipPlan> flip_topology(const Surface& surface, VertexInde
                                               const EdgeExists& edge_exists) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
   if (on_edge.size() != 2) return topology("a boundary edge cannot be flipped");
-  FlipPlan plan{a, b, on_edge[0], on_edge[1], {}, {}, {}};
+  FlipPlan plan{a, b, on_edge[0], on_edge[1], {}, {}};
   if (!walks(surface.triangles[plan.t1], a, b)) std::swap(plan.t1, plan.t2);
   if (!walks(surface.triangles[plan.t1], a, b) || !walks(surface.triangles[plan.t2], b, a)) {
     return topology("the edge's triangles are not oriented alike");
@@ -58,9 +48,6 @@ std::variant<Outcome, FlipPlan> flip_topology(const Surface& surface, VertexInde
   }
   plan.new1 = {c, a, d};
   plan.new2 = {d, b, c};
-  const auto& p = surface.vertices;
-  plan.region = {RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
-                 RegionCorner{d, p[d]}};
   return plan;
 }
 
@@ -97,17 +84,24 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const FlipPlan& plan = std::get<FlipPlan>(planned);
   if (auto refused = flip_geometry(surface, plan)) return *refused;
-  if (auto hit = first_in_region(surface, plan.region)) return collision(*hit, flipping(a, b));
+  if (auto hit = first_in_region(surface, plan.region(surface)))
+    return collision(*hit, flipping(a, b));
   apply_flip(surface, plan);
   return {};
 }
 
-std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
-  const EdgeTriangles table = edge_triangles(surface);
+std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
+                                PassWorkspace* workspace) {
+  PassWorkspace own;  // used when the caller keeps none
+  PassWorkspace::Arrays& kept = arrays_of(workspace, own);
+  EdgeTriangles& table = kept.edges;
+  table.assign(surface.triangles, surface.vertices.size());
   std::vector<Outcome> outcomes(edges.size());
   // 1. Topology.
-  std::vector<FlipPlan> plans;
-  std::vector<std::size_t> edge_of_plan;
+  std::vector<FlipPlan>& plans = kept.flip_plans;
+  std::vector<std::size_t>& edge_of_plan = kept.operation_of_plan;
+  plans.clear();
+  edge_of_plan.clear();
   plans.reserve(edges.size());  // one allocation, not a chain of growing copies
   edge_of_plan.reserve(edges.size());
   std::vector<std::size_t> on_edge;  // reused from flip to flip
@@ -125,14 +119,14 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
     edge_of_plan.push_back(i);
   }
   // 2. No shared vertex with an earlier flip that goes ahead.
-  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
-  for (std::size_t k = 0; k < plans.size(); ++k) {
-    for (std::size_t c = 0; c < 4; ++c)
-      by_vertices[k][c] = plans[k].region[c].vertex;
-  }
+  std::vector<std::array<VertexIndex, 4>>& by_vertices = kept.by_vertices;
+  by_vertices.resize(plans.size());
+  for (std::size_t k = 0; k < plans.size(); ++k)
+    by_vertices[k] = plans[k].corners();
   const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
-  std::vector<std::size_t> candidates;
+  std::vector<std::size_t>& candidates = kept.candidates;
+  candidates.clear();
   std::vector<internal::Footprint> by_regions;
   for (std::size_t k = 0; k < plans.size(); ++k) {
     const std::size_t i = edge_of_plan[k];
@@ -143,12 +137,14 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
       outcomes[i] = std::move(*refused);
     } else {
       candidates.push_back(k);
-      by_regions.push_back({{}, {plans[k].region}, false});
+      by_regions.push_back({{}, {plans[k].region(surface)}, false});
     }
   }
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
-  std::vector<std::array<RegionCorner, 4>> regions;
-  std::vector<std::size_t> checked;
+  std::vector<std::array<RegionCorner, 4>>& regions = kept.regions;
+  std::vector<std::size_t>& checked = kept.checked;
+  regions.clear();
+  checked.clear();
   for (std::size_t n = 0; n < candidates.size(); ++n) {
     const std::size_t k = candidates[n];
     const auto [a, b] = edges[edge_of_plan[k]];
@@ -157,12 +153,13 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges) {
           deferred("flipping", a, b, "sweeps a region that meets another flip's of the pass");
       continue;
     }
-    regions.push_back(plans[k].region);
+    regions.push_back(plans[k].region(surface));
     checked.push_back(k);
   }
   // The flips that go ahead change the surface only inside their own regions, which no
   // other one's reaches (pass_schedule.hpp): each is checked on the surface before the pass.
-  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions);
+  const std::vector<std::optional<Blocker>> hits =
+      internal::first_in_regions(surface, regions, {}, kept.region_query);
   for (std::size_t n = 0; n < checked.size(); ++n) {
     const FlipPlan& plan = plans[checked[n]];
     if (hits[n]) {

@@ -1,7 +1,7 @@
 #pragma once
 
 // What the operations share (relocation.cpp, collapse.cpp, flip.cpp, split.cpp): the
-// outcomes of a refusal, the topology checks of an edge, the edge-triangle table.
+// outcomes of a refusal, the topology checks of an edge.
 
 #include <algorithm>
 #include <array>
@@ -136,10 +136,5 @@ class EdgeTrianglesOfOne {
   std::array<std::size_t, 2> triangles_{};
   std::size_t size_ = 0;
 };
-
-/// The triangles on every edge of a surface (surface/triangle_surface.hpp).
-inline EdgeTriangles edge_triangles(const Surface& s) {
-  return EdgeTriangles(s.triangles, s.vertices.size());
-}
 
 }  // namespace exactgeo::remesh::internal

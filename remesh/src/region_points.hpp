@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -20,9 +21,17 @@ struct RegionPoints {
   std::vector<Point3> points;
   std::vector<std::array<VertexIndex, 4>> groups;
 
+  RegionPoints() = default;
   RegionPoints(std::span<const Point3> vertices,
-               std::span<const std::array<RegionCorner, 4>> regions)
-      : points(vertices.begin(), vertices.end()), groups(regions.size()) {
+               std::span<const std::array<RegionCorner, 4>> regions) {
+    assign(vertices, regions);
+  }
+
+  /// These points and groups in place of the ones held, in the same storage.
+  void assign(std::span<const Point3> vertices,
+              std::span<const std::array<RegionCorner, 4>> regions) {
+    points.assign(vertices.begin(), vertices.end());
+    groups.resize(regions.size());
     for (std::size_t r = 0; r < regions.size(); ++r) {
       for (std::size_t k = 0; k < 4; ++k) {
         if (regions[r][k].vertex != kNoVertex) {
@@ -57,15 +66,22 @@ void groups_near_triangles(std::span<const Point3> points,
 /// found (a counting sort into one array, no vector per x).
 class Buckets {
  public:
-  Buckets(std::size_t count, std::span<const std::pair<std::size_t, std::size_t>> pairs)
-      : first_(count + 1, 0), items_(pairs.size()) {
+  Buckets() = default;
+  Buckets(std::size_t count, std::span<const std::pair<std::size_t, std::size_t>> pairs) {
+    assign(count, pairs);
+  }
+
+  /// These pairs in place of the ones held, in the same storage.
+  void assign(std::size_t count, std::span<const std::pair<std::size_t, std::size_t>> pairs) {
+    first_.assign(count + 1, 0);
+    items_.resize(pairs.size());
     for (const auto& [x, y] : pairs)
       ++first_[x + 1];
     for (std::size_t x = 0; x < count; ++x)
       first_[x + 1] += first_[x];
-    std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+    next_.assign(first_.begin(), first_.end() - 1);
     for (const auto& [x, y] : pairs)
-      items_[next[x]++] = y;
+      items_[next_[x]++] = y;
   }
 
   std::span<const std::size_t> of(std::size_t x) const noexcept {
@@ -75,6 +91,20 @@ class Buckets {
  private:
   std::vector<std::size_t> first_;
   std::vector<std::size_t> items_;
+  std::vector<std::size_t> next_;  ///< assign's fill cursor per x, kept for its storage
 };
+
+/// What first_in_regions builds to find the triangles near each region, kept by a caller
+/// that checks many passes (PassWorkspace): every member is filled anew before it is read.
+struct RegionQuery {
+  RegionPoints boxed;
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  Buckets near;
+};
+
+/// first_in_regions (swept_region.hpp) in `query`'s storage.
+std::vector<std::optional<Blocker>> first_in_regions(
+    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
+    std::span<const VertexIndex> partners, RegionQuery& query);
 
 }  // namespace exactgeo::remesh::internal

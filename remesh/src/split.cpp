@@ -20,28 +20,19 @@
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
+#include "pass_plans.hpp"
 #include "pass_schedule.hpp"
+#include "pass_workspace.hpp"
 
 namespace exactgeo::remesh {
 
-using namespace internal;  // operation_checks.hpp, pass_schedule.hpp
+using namespace internal;  // operation_checks.hpp, pass_plans.hpp, pass_schedule.hpp
 
 namespace {
 
 std::string splitting(VertexIndex a, VertexIndex b) {
   return operation_name("splitting", a, b);
 }
-
-/// A split: the edge's triangles, and once its geometry is checked the regions it sweeps
-/// (none when the new vertex lies exactly on the edge) with their partners.
-struct SplitPlan {
-  VertexIndex a = 0;
-  VertexIndex b = 0;
-  Point3 at{};
-  EdgeTrianglesOfOne on_edge;
-  std::vector<std::array<RegionCorner, 4>> regions;
-  std::vector<VertexIndex> partners;  ///< per region: the other side's opposite corner
-};
 
 /// The triangles x m c and m y c that replace each triangle x y c of the edge (walking
 /// x -> y along it), for a new vertex numbered m.
@@ -130,7 +121,12 @@ std::variant<Outcome, SplitPlan> split_topology(const Surface& surface, VertexIn
                                                 VertexIndex b, const Point3& at,
                                                 std::vector<std::size_t>& on_edge) {
   if (auto why = edge_problem(surface, a, b, on_edge)) return topology(*why);
-  return SplitPlan{a, b, at, EdgeTrianglesOfOne(on_edge), {}, {}};
+  SplitPlan plan;
+  plan.a = a;
+  plan.b = b;
+  plan.at = at;
+  plan.on_edge = EdgeTrianglesOfOne(on_edge);
+  return plan;
 }
 
 /// The geometry of a planned split: nullopt with its regions filled in, or why it is
@@ -176,14 +172,8 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
         }
       }
     }
-    if (!between) {
-      plan.regions.push_back({RegionCorner{a, p[a]}, RegionCorner{b, p[b]}, RegionCorner{c, p[c]},
-                              RegionCorner{kNoVertex, at}});
-      plan.partners.push_back(plan.on_edge.size() == 2
-                                  ? third_corner(surface.triangles[plan.on_edge[1 - i]], a, b)
-                                  : kNoVertex);
-    }
   }
+  plan.sweeps = !between;
   if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan, made, off) &&
       sides_meet(surface, made, at)) {
     return Outcome{Verdict::refused_collision,
@@ -218,20 +208,26 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   SplitPlan& plan = std::get<SplitPlan>(planned);
   if (auto refused = split_geometry(surface, plan)) return *refused;
-  for (std::size_t r = 0; r < plan.regions.size(); ++r) {
-    if (auto hit = first_in_region(surface, plan.regions[r], plan.partners[r])) {
+  for (std::size_t r = 0; r < plan.region_count(); ++r) {
+    if (auto hit = first_in_region(surface, plan.region(surface, r), plan.partner(surface, r))) {
       return collision(*hit, splitting(a, b));
     }
   }
   return apply_split(surface, plan);
 }
 
-std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits) {
-  const EdgeTriangles table = edge_triangles(surface);
+std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits,
+                                 PassWorkspace* workspace) {
+  PassWorkspace own;  // used when the caller keeps none
+  PassWorkspace::Arrays& kept = arrays_of(workspace, own);
+  EdgeTriangles& table = kept.edges;
+  table.assign(surface.triangles, surface.vertices.size());
   std::vector<Outcome> outcomes(splits.size());
   // 1. Topology.
-  std::vector<SplitPlan> plans;
-  std::vector<std::size_t> split_of_plan;
+  std::vector<SplitPlan>& plans = kept.split_plans;
+  std::vector<std::size_t>& split_of_plan = kept.operation_of_plan;
+  plans.clear();
+  split_of_plan.clear();
   plans.reserve(splits.size());  // one allocation, not a chain of growing copies
   split_of_plan.reserve(splits.size());
   std::vector<std::size_t> on_edge;  // reused from split to split
@@ -248,7 +244,8 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   }
   // 2. No shared vertex with an earlier split that goes ahead.
   // (Its vertices: the edge's ends and its triangles' opposite corners, one or two.)
-  std::vector<std::array<VertexIndex, 4>> by_vertices(plans.size());
+  std::vector<std::array<VertexIndex, 4>>& by_vertices = kept.by_vertices;
+  by_vertices.resize(plans.size());
   for (std::size_t k = 0; k < plans.size(); ++k) {
     const SplitPlan& plan = plans[k];
     by_vertices[k] = {plan.a, plan.b, kNoVertex, kNoVertex};
@@ -257,7 +254,8 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   }
   const std::vector<bool> apart = internal::share_no_vertex(by_vertices, surface.vertices.size());
   // 3. Geometry, and 4. regions apart from the earlier ones'.
-  std::vector<std::size_t> candidates;
+  std::vector<std::size_t>& candidates = kept.candidates;
+  candidates.clear();
   std::vector<internal::Footprint> by_regions;
   for (std::size_t k = 0; k < plans.size(); ++k) {
     const std::size_t i = split_of_plan[k];
@@ -268,13 +266,19 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
       outcomes[i] = std::move(*refused);
     } else {
       candidates.push_back(k);
-      by_regions.push_back({{}, plans[k].regions, false});
+      internal::Footprint footprint;
+      for (std::size_t r = 0; r < plans[k].region_count(); ++r)
+        footprint.regions.push_back(plans[k].region(surface, r));
+      by_regions.push_back(std::move(footprint));
     }
   }
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
-  std::vector<std::array<RegionCorner, 4>> regions;
-  std::vector<VertexIndex> partners;
-  std::vector<std::size_t> checked;
+  std::vector<std::array<RegionCorner, 4>>& regions = kept.regions;
+  std::vector<VertexIndex>& partners = kept.partners;
+  std::vector<std::size_t>& checked = kept.checked;
+  regions.clear();
+  partners.clear();
+  checked.clear();
   for (std::size_t n = 0; n < candidates.size(); ++n) {
     const SplitPlan& plan = plans[candidates[n]];
     if (!ahead[n]) {
@@ -282,16 +286,19 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
           "splitting", plan.a, plan.b, "sweeps a region that meets another split's of the pass");
       continue;
     }
-    regions.insert(regions.end(), plan.regions.begin(), plan.regions.end());
-    partners.insert(partners.end(), plan.partners.begin(), plan.partners.end());
+    for (std::size_t r = 0; r < plan.region_count(); ++r) {
+      regions.push_back(plan.region(surface, r));
+      partners.push_back(plan.partner(surface, r));
+    }
     checked.push_back(candidates[n]);
   }
   // As for flips: the splits that go ahead meet nothing another one makes.
-  const std::vector<std::optional<Blocker>> hits = first_in_regions(surface, regions, partners);
+  const std::vector<std::optional<Blocker>> hits =
+      internal::first_in_regions(surface, regions, partners, kept.region_query);
   std::size_t next_region = 0;
   for (const std::size_t k : checked) {
     std::optional<Blocker> hit;
-    for (std::size_t r = 0; r < plans[k].regions.size(); ++r, ++next_region) {
+    for (std::size_t r = 0; r < plans[k].region_count(); ++r, ++next_region) {
       if (!hit) hit = hits[next_region];
     }
     const SplitPlan& plan = plans[k];

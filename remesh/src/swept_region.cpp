@@ -481,18 +481,25 @@ std::optional<Blocker> first_in_region(const Surface& surface,
 std::vector<std::optional<Blocker>> first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
     std::span<const VertexIndex> partners) {
-  const internal::RegionPoints boxed(surface.vertices, regions);
+  internal::RegionQuery query;
+  return internal::first_in_regions(surface, regions, partners, query);
+}
+
+std::vector<std::optional<Blocker>> internal::first_in_regions(
+    const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
+    std::span<const VertexIndex> partners, RegionQuery& query) {
+  query.boxed.assign(surface.vertices, regions);
   // The triangles near each region.
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  query.pairs.clear();
   internal::groups_near_triangles<4>(
-      boxed.points, boxed.groups, surface.triangles,
-      [&](std::size_t r, std::size_t t) { pairs.emplace_back(r, t); });
-  const internal::Buckets near(regions.size(), pairs);
+      query.boxed.points, query.boxed.groups, surface.triangles,
+      [&](std::size_t r, std::size_t t) { query.pairs.emplace_back(r, t); });
+  query.near.assign(regions.size(), query.pairs);
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());
   NearbyElements elements(surface.vertices.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {
-    elements.gather(surface, near.of(r));
+    elements.gather(surface, query.near.of(r));
     found.push_back(
         first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
   }

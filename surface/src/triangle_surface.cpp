@@ -18,19 +18,24 @@ bool walks(const Triangle& t, VertexIndex a, VertexIndex b) noexcept {
   return false;
 }
 
-EdgeTriangles::EdgeTriangles(std::span<const Triangle> triangles, std::size_t vertex_count)
-    : first_(vertex_count + 1, 0), sides_(3 * triangles.size()) {
+EdgeTriangles::EdgeTriangles(std::span<const Triangle> triangles, std::size_t vertex_count) {
+  assign(triangles, vertex_count);
+}
+
+void EdgeTriangles::assign(std::span<const Triangle> triangles, std::size_t vertex_count) {
+  first_.assign(vertex_count + 1, 0);
+  sides_.resize(3 * triangles.size());
   for (const Triangle& t : triangles) {
     for (int k = 0; k < 3; ++k)
       ++first_[std::min(t[k], t[(k + 1) % 3]) + 1];
   }
   for (std::size_t v = 1; v < first_.size(); ++v)
     first_[v] += first_[v - 1];
-  std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+  next_.assign(first_.begin(), first_.end() - 1);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
       const Edge e = edge_of(triangles[t][k], triangles[t][(k + 1) % 3]);
-      sides_[next[e[0]]++] = {e[1], t};  // in triangle order within each bucket
+      sides_[next_[e[0]]++] = {e[1], t};  // in triangle order within each bucket
     }
   }
 }

@@ -1,6 +1,7 @@
 // The shared triangle surface's tables (surface/triangle_surface.hpp) against brute force
 // on random triangle sets: the edges each once and sorted, the triangles at an edge, the
-// triangles around a vertex, each in triangle order.
+// triangles around a vertex, each in triangle order; an edge table assigned new triangles
+// in the storage of old ones as one made fresh.
 #include "exactgeo/surface/triangle_surface.hpp"
 
 #include <gtest/gtest.h>
@@ -31,6 +32,7 @@ std::vector<Triangle> random_triangles(std::mt19937_64& rng, std::size_t count,
 
 TEST(TriangleSurface, TablesAgreeWithBruteForce) {
   auto rng = testing::seeded_engine("surface.tables");
+  EdgeTriangles reused;  // assigned each round's triangles, in the storage of the last's
   for (int round = 0; round < 50; ++round) {
     const VertexIndex n = 3 + static_cast<VertexIndex>(rng() % 40);
     const std::vector<Triangle> triangles = random_triangles(rng, 1 + rng() % 60, n);
@@ -44,6 +46,7 @@ TEST(TriangleSurface, TablesAgreeWithBruteForce) {
     EXPECT_EQ(edges, std::vector<Edge>(expected_edges.begin(), expected_edges.end()));
 
     const EdgeTriangles at_edge(triangles, n);
+    reused.assign(triangles, n);
     const VertexTriangles around(triangles, n);
     for (VertexIndex a = 0; a < n; ++a) {
       std::vector<std::size_t> expected_around;
@@ -60,6 +63,8 @@ TEST(TriangleSurface, TablesAgreeWithBruteForce) {
           if (a != b && std::find(c.begin(), c.end(), b) != c.end()) expected_at.push_back(t);
         }
         EXPECT_EQ(at_edge.on(a, b), expected_at) << a << "-" << b;
+        EXPECT_EQ(reused.on(a, b), expected_at) << a << "-" << b << ", assigned";
+        EXPECT_EQ(reused.has(a, b), !expected_at.empty()) << a << "-" << b << ", assigned";
       }
     }
   }

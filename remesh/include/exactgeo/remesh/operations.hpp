@@ -22,6 +22,7 @@
 // triangle folding through another part of the surface is a contact, and refused).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,6 +43,42 @@ enum class Verdict : std::uint8_t {
 };
 
 std::string_view to_string(Verdict v) noexcept;
+
+/// The working memory of the passes (split_edges, collapse_edges, flip_edges), kept from
+/// one pass to the next by a caller that runs many (a remesher, a simulator; one
+/// workspace serves every kind of pass): the arrays of one entry per proposed operation
+/// (the plans, each plan's operation, a split's or flip's vertices, those whose geometry
+/// passed, those checked), the regions checked together and their partners, the points,
+/// corner groups and near pairs of the regions' box query, and the edge table of the
+/// split and flip passes (the triangles on every edge). A pass clears what it uses and
+/// keeps its storage, so that a later pass writes into memory already in place instead of
+/// allocating, and faulting in, arrays of the same size again (at thousands of operations
+/// a pass, the page faults of fresh allocations can cost more than the pass's exact
+/// tests: docs/remesh.md, "What a remesh costs"). Not kept: the outcomes (the caller's),
+/// the box trees of the regions' query, and the collapse pass's own (the surface's stars,
+/// the reach of its motions, the mesh broad phase over it, the surface it makes).
+///
+/// It carries no state that changes answers: every array is cleared, or filled anew,
+/// before it is read, so a pass with a used workspace returns the same outcomes and leaves
+/// the same surface as with a fresh one, or with none (each pass then makes its own).
+/// Caller-owned, movable, not copyable; one pass at a time (not shared between threads).
+class PassWorkspace {
+ public:
+  PassWorkspace();
+  ~PassWorkspace();
+  PassWorkspace(PassWorkspace&&) noexcept;
+  PassWorkspace& operator=(PassWorkspace&&) noexcept;
+  PassWorkspace(const PassWorkspace&) = delete;
+  PassWorkspace& operator=(const PassWorkspace&) = delete;
+
+  /// The arrays (remesh/src/pass_workspace.hpp: the library's own), made on first use
+  /// (a workspace no pass has used, or one moved from, holds none).
+  struct Arrays;
+  Arrays& arrays();
+
+ private:
+  std::unique_ptr<Arrays> arrays_;
+};
 
 struct Outcome {
   Verdict verdict = Verdict::applied;
@@ -85,7 +122,9 @@ struct Collapse {
 /// docs/remesh.md, "Collapse"). One outcome per collapse, in
 /// order; collapse_edge on each applied edge of the surface before the pass would have
 /// applied it too. Removed triangles leave the list; the other triangles keep their order.
-std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses);
+/// `workspace`: memory kept between passes (PassWorkspace), or none (a pass of its own).
+std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses,
+                                    PassWorkspace* workspace = nullptr);
 
 /// Replaces the triangles abc and bad on edge ab by cad and dbc.
 Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
@@ -94,8 +133,10 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
 /// region's box meets the box of an earlier one of the pass is deferred, the others'
 /// regions are checked in one pass over the surface (first_in_regions) and every flip
 /// that meets nothing is made. One outcome per edge, in order; flip_edge on each applied
-/// edge of the surface before the pass would have applied it too.
-std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges);
+/// edge of the surface before the pass would have applied it too. `workspace` as for
+/// collapse_edges.
+std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
+                                PassWorkspace* workspace = nullptr);
 
 /// Adds a vertex at `at` and splits edge ab and its triangles there.
 Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at);
@@ -110,7 +151,8 @@ struct Split {
 /// Many splits at once (a refinement pass), as flip_edges: a split whose box (its
 /// triangles and the new vertex) meets an earlier one's is deferred, the others' regions
 /// are checked in one pass over the surface, and every split that meets nothing is made
-/// (new vertices in the order of the splits).
-std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits);
+/// (new vertices in the order of the splits). `workspace` as for collapse_edges.
+std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits,
+                                 PassWorkspace* workspace = nullptr);
 
 }  // namespace exactgeo::remesh

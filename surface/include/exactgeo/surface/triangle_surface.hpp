@@ -46,8 +46,13 @@ std::vector<Edge> edges_of(std::span<const Triangle> triangles, std::size_t vert
 /// one edge is looked up among its smaller end's few sides.
 class EdgeTriangles {
  public:
+  /// No triangles (assign gives it some).
+  EdgeTriangles() = default;
   /// Precondition: every index below vertex_count.
   EdgeTriangles(std::span<const Triangle> triangles, std::size_t vertex_count);
+  /// The table of `triangles` in place of this one's, in this one's storage (a caller that
+  /// builds one per pass keeps it). Precondition: as the constructor's.
+  void assign(std::span<const Triangle> triangles, std::size_t vertex_count);
 
   /// The triangles with corners a and b, in triangle order (none for indices out of range).
   std::vector<std::size_t> on(VertexIndex a, VertexIndex b) const;
@@ -64,6 +69,7 @@ class EdgeTriangles {
     std::size_t triangle;
   };
   std::vector<Side> sides_;
+  std::vector<std::size_t> next_;  ///< assign's fill cursor per vertex, kept for its storage
 };
 
 /// The triangles around every vertex, by index in triangle order: one array bucketed by
