@@ -32,18 +32,9 @@ SpaceCells::SpaceCells(const mesh::Mesh& mesh, const mesh::Box& box, const Exact
 }
 
 void SpaceCells::mark_faces(const mesh::Mesh& mesh) {
-  for (const mesh::Face& face : mesh.faces) {
-    const auto [lo, hi] = corner_box(mesh, face);
-    const auto x = axes_[0].cells_meeting(lo[0], hi[0]);
-    const auto y = axes_[1].cells_meeting(lo[1], hi[1]);
-    const auto z = axes_[2].cells_meeting(lo[2], hi[2]);
-    for (std::size_t k = z[0]; k <= z[1]; ++k) {
-      for (std::size_t j = y[0]; j <= y[1]; ++j) {
-        for (std::size_t i = x[0]; i <= x[1]; ++i)
-          codes_[index(i, j, k)] = kSurface;
-      }
-    }
-  }
+  for_each_face_cell(axes_, mesh, [&](std::size_t i, std::size_t j, std::size_t k) {
+    codes_[index(i, j, k)] = kSurface;
+  });
 }
 
 SpaceCells::Code SpaceCells::code_of(std::int64_t w) {

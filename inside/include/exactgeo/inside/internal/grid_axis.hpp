@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/mesh/check.hpp"
 
 namespace exactgeo::inside::internal {
@@ -50,5 +51,25 @@ class GridAxis {
 /// Cells per axis: about `target` in all, in proportion to the box's extents. An extent
 /// below 1/1024 of the largest counts as 1/1024, so that a flat box still gets a grid.
 std::array<std::size_t, 3> grid_resolution(const mesh::Box& box, std::size_t target);
+
+/// Calls visit(i, j, k) for every cell that a face's corner box meets (a face lies in the
+/// hull of its corners, bilinear patches included), face by face: the cells a face may
+/// reach, which neither kind of space cell may label.
+template <class Visit>
+void for_each_face_cell(const std::array<GridAxis, 3>& axes, const mesh::Mesh& mesh,
+                        Visit&& visit) {
+  for (const mesh::Face& face : mesh.faces) {
+    const auto [lo, hi] = corner_box(mesh, face);
+    const auto x = axes[0].cells_meeting(lo[0], hi[0]);
+    const auto y = axes[1].cells_meeting(lo[1], hi[1]);
+    const auto z = axes[2].cells_meeting(lo[2], hi[2]);
+    for (std::size_t k = z[0]; k <= z[1]; ++k) {
+      for (std::size_t j = y[0]; j <= y[1]; ++j) {
+        for (std::size_t i = x[0]; i <= x[1]; ++i)
+          visit(i, j, k);
+      }
+    }
+  }
+}
 
 }  // namespace exactgeo::inside::internal
