@@ -4,7 +4,6 @@
 #include <cmath>
 #include <deque>
 
-#include "exactgeo/inside/internal/corner_boxes.hpp"
 
 namespace exactgeo::inside::internal {
 namespace {

@@ -1,6 +1,5 @@
 #include "exactgeo/inside/internal/space_cells.hpp"
 
-#include "exactgeo/inside/internal/corner_boxes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -26,6 +26,7 @@
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "open_meshes.hpp"
+#include "oracle_label.hpp"
 #include "oracle_triangles.hpp"
 #include "support/hexfloat.hpp"
 #include "support/seed.hpp"
@@ -42,16 +43,6 @@ using testing::scaled;
 using testing::Triangle;
 using testing::triangles_of;
 using testing::triangulated;
-
-/// The rule's label for w given w - 1/2; nullopt where the oracle's double cannot tell.
-std::optional<Location> expected(FillRule rule, double above_half) {
-  constexpr double kTooNear = 0x1p-40;  // w +- 1/2 from one double: no closer
-  if (std::abs(above_half) < kTooNear) return std::nullopt;
-  if (rule == FillRule::positive) return above_half > 0 ? Location::inside : Location::outside;
-  const double above_minus_half = above_half + 1.0;
-  if (std::abs(above_minus_half) < kTooNear) return std::nullopt;
-  return above_half > 0 || above_minus_half < 0 ? Location::inside : Location::outside;
-}
 
 struct Tally {
   std::size_t compared = 0;
@@ -108,7 +99,7 @@ void expect_oracle_labels(const Mesh& mesh, int copies, std::mt19937_64& rng, in
   for (const Point3& p : points) {
     const double above_half = copies * testing::generalized_winding_oracle(p, triangles) - 0.5;
     for (const auto* classifier : {&nonzero, &positive}) {
-      const auto want = expected(classifier->rule(), above_half);
+      const auto want = testing::label_from_oracle(classifier->rule(), above_half);
       const Location got = classifier->classify(p);
       ASSERT_NE(got, Location::undecided) << testing::hex(p);
       if (!want) continue;

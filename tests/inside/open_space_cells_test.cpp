@@ -26,6 +26,7 @@
 #include "exactgeo/inside/location.hpp"
 #include "exactgeo/mesh/load.hpp"
 #include "open_meshes.hpp"
+#include "oracle_label.hpp"
 #include "oracle_triangles.hpp"
 #include "support/hexfloat.hpp"
 #include "support/seed.hpp"
@@ -40,16 +41,6 @@ using testing::Triangle;
 std::string scale_name(const ::testing::TestParamInfo<int>& param_info) {
   const int k = param_info.param;
   return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-}
-
-/// The rule's label for w given w - 1/2; nullopt where the oracle's double cannot tell.
-std::optional<Location> expected(FillRule rule, double above_half) {
-  constexpr double kTooNear = 0x1p-40;
-  if (std::abs(above_half) < kTooNear) return std::nullopt;
-  if (rule == FillRule::positive) return above_half > 0 ? Location::inside : Location::outside;
-  const double above_minus_half = above_half + 1.0;
-  if (std::abs(above_minus_half) < kTooNear) return std::nullopt;
-  return above_half > 0 || above_minus_half < 0 ? Location::inside : Location::outside;
 }
 
 struct Tally {
@@ -126,7 +117,8 @@ void expect_cells_right(const Mesh& mesh, std::mt19937_64& rng, int anywhere, in
       }
       if (oracle_left > 0) {
         --oracle_left;
-        const auto want = expected(rule, testing::generalized_winding_oracle(p, triangles, 0.5));
+        const auto want = testing::label_from_oracle(
+            rule, testing::generalized_winding_oracle(p, triangles, 0.5));
         if (!want) continue;
         ASSERT_EQ(to_string(*by_cell), to_string(*want))
             << "point " << testing::hex(p) << ", rule " << to_string(rule);
