@@ -4,7 +4,6 @@
 #include <cmath>
 #include <deque>
 
-
 namespace exactgeo::inside::internal {
 namespace {
 

@@ -1,6 +1,5 @@
 #include "exactgeo/inside/internal/space_cells.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

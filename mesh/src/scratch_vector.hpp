@@ -31,7 +31,7 @@ class HugePageAllocator {
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (!huge(bytes)) return static_cast<T*>(::operator new(bytes, kAlignment));
-    void* memory = ::operator new(rounded(bytes), std::align_val_t{kHugePage});
+    void* memory = ::operator new (rounded(bytes), std::align_val_t{kHugePage});
 #if defined(__linux__)
     madvise(memory, rounded(bytes), MADV_HUGEPAGE);  // advice: ignored where refused
 #endif
@@ -43,7 +43,7 @@ class HugePageAllocator {
     if (!huge(bytes)) {
       ::operator delete(memory, bytes, kAlignment);
     } else {
-      ::operator delete(memory, rounded(bytes), std::align_val_t{kHugePage});
+      ::operator delete (memory, rounded(bytes), std::align_val_t{kHugePage});
     }
   }
 
@@ -59,7 +59,9 @@ class HugePageAllocator {
   static constexpr std::align_val_t kAlignment{alignof(T)};
   static_assert(alignof(T) <= kHugePage);
 
-  static bool huge(std::size_t bytes) noexcept { return bytes >= kHugePage; }
+  static bool huge(std::size_t bytes) noexcept {
+    return bytes >= kHugePage;
+  }
   static std::size_t rounded(std::size_t bytes) noexcept {
     return (bytes + kHugePage - 1) / kHugePage * kHugePage;
   }
