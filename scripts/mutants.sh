@@ -26,7 +26,7 @@ else
   (cd "$here" && git ls-files -z --cached --others --exclude-standard |
     xargs -0 cp --parents -t "$scratch")
   cmake -S "$scratch" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" -j"$(nproc)" --target predicates_tests ccd_tests inside_tests mesh_tests remesh_tests >/dev/null
+  cmake --build "$build" -j"$(nproc)" --target predicates_tests ccd_tests inside_tests mesh_tests remesh_tests examples_tests >/dev/null
 fi
 
 exec python3 - "$here" "$scratch" "$build" "$check_only" "$@" <<'PY'
@@ -252,6 +252,31 @@ MUTANTS = [
     ("open_cells_faces_not_marked",
      "inside/src/open_space_cells.cpp",
      "codes_[index(i, j, k)] = CellCode::surface;", "(void)index(i, j, k);", ["inside_tests"]),
+    # The variation bound's own roundings: the boxes' squared distance taken from below,
+    # and the sum of the cut's terms rounded up (docs/predicates.md: not caught, and why).
+    ("open_cells_distance_not_taken_from_below",
+     "predicates/src/boundary_tree_variation.cpp",
+     "return std::max(0.0, sum * (1 - 0x1p-50) - kTiny);", "return std::max(0.0, sum);",
+     ["predicates_tests", "inside_tests"]),
+    ("open_cells_sum_not_rounded_up",
+     "predicates/src/boundary_tree_variation.cpp",
+     "const double above = up(sum * (1 + static_cast<double>(terms + 2) * 0x1p-52));",
+     "const double above = sum;", ["predicates_tests", "inside_tests"]),
+    # The cloth remesher's float shortcuts (examples/cloth/float_shortcuts.cpp): each margin
+    # turned the wrong way, so that the shortcut answers where the full computation differs.
+    ("cloth_floor_margin_thin",
+     "examples/cloth/float_shortcuts.cpp",
+     "return usable(dot_squared) && cross_squared >= kMargin * tan_squared * dot_squared;",
+     "return usable(dot_squared) && cross_squared * kMargin >= tan_squared * dot_squared;",
+     ["examples_tests"]),
+    ("cloth_length_margin_thin",
+     "examples/cloth/float_shortcuts.cpp",
+     "if (squared > (1.0 + kMargin) * limit_squared) return true;",
+     "if (squared > (1.0 - kMargin) * limit_squared) return true;", ["examples_tests"]),
+    ("cloth_ask_margin_thin",
+     "examples/cloth/float_shortcuts.cpp",
+     "usable(rhs) && kMargin * lhs < rhs;", "usable(rhs) && lhs < kMargin * rhs;",
+     ["examples_tests"]),
     # remesh: a split's partner is only its other triangle; its corner and edges are tested.
     ("swept_region_partner_corner_skipped",
      "remesh/src/swept_region.cpp",
