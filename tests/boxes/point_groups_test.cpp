@@ -82,6 +82,11 @@ TEST(PointGroups, EveryPairWhoseExactBoxesMeetIsFoundOnce) {
     for (const auto& pair : found)
       if (pair.first < 5) few_expected.insert(pair);
     EXPECT_EQ(few, few_expected) << "2^" << e;
+    for (const auto& pair : expected) {  // against brute force too, not only the trees
+      if (pair.first < 5) {
+        EXPECT_EQ(few.count(pair), 1u) << "2^" << e << ": " << pair.first << ", " << pair.second;
+      }
+    }
     EXPECT_FALSE(few.empty());
     // Within one set: i < j, each once.
     std::set<std::pair<std::size_t, std::size_t>> within;
