@@ -220,11 +220,9 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
 /// enclosed, widened by the tree's bound on w's variation over the box. nullopt where
 /// that does not settle the rule's levels (or the box or its centre do not map into the
 /// tree's frame).
-std::optional<Location> Classifier::open_box_label(const State& s, const Point3& lower,
-                                                   const Point3& upper, bool& try_parts,
-                                                   bool& costly, ClassifierScratch& scratch) {
-  try_parts = true;
-  costly = false;
+internal::OpenBoxAnswer Classifier::open_box_label(const State& s, const Point3& lower,
+                                                   const Point3& upper,
+                                                   ClassifierScratch& scratch) {
   Point3 centre;
   for (int i = 0; i < 3; ++i)
     centre[i] = std::clamp(lower[i] / 2 + upper[i] / 2, lower[i], upper[i]);
@@ -232,29 +230,31 @@ std::optional<Location> Classifier::open_box_label(const State& s, const Point3&
   Point3 tree_lower = lower, tree_upper = upper;
   if (s.frame.on()) {
     const std::optional<Point3> l = s.frame.map(lower), u = s.frame.map(upper);
-    if (!l || !u || origin.vertices.data() != s.frame.vertices().data()) return std::nullopt;
+    if (!l || !u || origin.vertices.data() != s.frame.vertices().data()) {
+      return {std::nullopt, true, false};
+    }
     tree_lower = *l;
     tree_upper = *u;
   }
   const std::optional<double> variation =
       s.boundary_tree.variation(tree_lower, tree_upper, origin.exact, kHopelessVariation);
-  try_parts = variation.has_value();
-  if (!variation || *variation > kBoxVariation) return std::nullopt;
-  costly = true;
-  return kernel::with_signs(Arithmetic::exact, [&](const auto& signs) -> std::optional<Location> {
-    for (std::size_t k = 0; k < kBoxRays; ++k) {
-      const SignedRayCount count = count_ray(s, signs, Arithmetic::exact, origin, k, scratch);
-      if (count.kind == RayCount::origin_on_face) return std::nullopt;  // (no face is there)
-      if (count.kind == RayCount::degenerate) continue;
-      const auto crossings = static_cast<double>(count.total);
-      const std::optional<Enclosure> term = s.boundary_tree.enclosure_apart(
-          origin.exact, ray_direction(k), {-0.5 - crossings, 0.5 - crossings}, *variation,
-          kBoxAngles, scratch.boundary);
-      if (!term) continue;
-      return internal::open_box_label(s.rule, count.total, *term, *variation);
-    }
-    return std::nullopt;
-  });
+  if (!variation || *variation > kBoxVariation) return {std::nullopt, variation.has_value(), false};
+  const std::optional<Location> label =
+      kernel::with_signs(Arithmetic::exact, [&](const auto& signs) -> std::optional<Location> {
+        for (std::size_t k = 0; k < kBoxRays; ++k) {
+          const SignedRayCount count = count_ray(s, signs, Arithmetic::exact, origin, k, scratch);
+          if (count.kind == RayCount::origin_on_face) return std::nullopt;  // (no face is there)
+          if (count.kind == RayCount::degenerate) continue;
+          const auto crossings = static_cast<double>(count.total);
+          const std::optional<Enclosure> term = s.boundary_tree.enclosure_apart(
+              origin.exact, ray_direction(k), {-0.5 - crossings, 0.5 - crossings}, *variation,
+              kBoxAngles, scratch.boundary);
+          if (!term) continue;
+          return internal::open_box_label(s.rule, count.total, *term, *variation);
+        }
+        return std::nullopt;
+      });
+  return {label, true, true};
 }
 
 /// The generalized winding number's bounds, rays cast as for its label.
@@ -344,10 +344,7 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
     s.open_cells.emplace(
         s.mesh, s.box,
         [&](const Point3& lower, const Point3& upper) {
-          bool try_parts = true, costly = true;
-          const std::optional<Location> label =
-              open_box_label(s, lower, upper, try_parts, costly, scratch);
-          return internal::OpenSpaceCells::BoxAnswer{label, try_parts, costly};
+          return open_box_label(s, lower, upper, scratch);
         },
         internal::SpaceCells::cell_count(s.mesh.faces.size(), options.expected_points),
         options.expected_points);

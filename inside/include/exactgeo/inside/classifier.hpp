@@ -38,6 +38,10 @@
 
 namespace exactgeo::inside {
 
+namespace internal {
+struct OpenBoxAnswer;  // internal/open_space_cells.hpp
+}  // namespace internal
+
 /// Where candidate faces come from.
 enum class CandidateSearch : std::uint8_t {
   embree,       ///< a BVH over conservative float boxes (the default)
@@ -170,12 +174,10 @@ class Classifier {
   /// classify for an open surface.
   static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                 ClassifierScratch& scratch);
-  /// The label of every point of a box no face reaches, against an open surface.
-  /// `try_parts` false: the boundary is too near for its parts to be labelled either;
-  /// `costly`: a ray and a term were evaluated.
-  static std::optional<Location> open_box_label(const State& s, const Point3& lower,
-                                                const Point3& upper, bool& try_parts, bool& costly,
-                                                ClassifierScratch& scratch);
+  /// The label of every point of a box no face reaches, against an open surface, with
+  /// what finding it cost (internal/open_space_cells.hpp).
+  static internal::OpenBoxAnswer open_box_label(const State& s, const Point3& lower,
+                                                const Point3& upper, ClassifierScratch& scratch);
   /// generalized_winding_number for an open surface.
   static std::optional<Enclosure> open_winding_number(const State& s, const Point3& point,
                                                       Arithmetic arithmetic,

@@ -38,18 +38,20 @@
 
 namespace exactgeo::inside::internal {
 
+/// What a box of the open space cells was found to be: the label of every point of it,
+/// where certain; whether its parts are worth trying where it has none (false: the
+/// boundary is so near that they would fail too; parts are tried anyway, except for boxes
+/// of at most two cells a side); and whether the answer took a ray and a term (costly) or
+/// only the bound. Costs only.
+struct OpenBoxAnswer {
+  std::optional<Location> label;
+  bool try_parts = true;
+  bool costly = true;
+};
+
 class OpenSpaceCells {
  public:
-  /// What a box was found to be: the label of every point of it, where certain; whether
-  /// its parts are worth trying where it has none (false: the boundary is so near that
-  /// they would fail too; parts are tried anyway, except for boxes of at most two cells a
-  /// side); and whether the answer took a ray and a term (costly) or only the bound. Costs
-  /// only.
-  struct BoxAnswer {
-    std::optional<Location> label;
-    bool try_parts = true;
-    bool costly = true;
-  };
+  using BoxAnswer = OpenBoxAnswer;
   /// The answer for the closed box [lower, upper], which no face reaches.
   using BoxLabel = std::function<BoxAnswer(const Point3& lower, const Point3& upper)>;
 
