@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "boundary_term_filter.hpp"
+#include "box_distance.hpp"
 #include "double_interval.hpp"
 
 // The identity, why a ray that misses a node's box makes it exact, and the bound:
@@ -67,16 +68,9 @@ double length_above(const Point3& a, const Point3& b) noexcept {
 // doubles is within u = 2^-53 of its exact value relatively, or 2^-1075 absolutely where
 // it underflows (a difference that underflows is exact).
 
-/// A lower bound on the squared distance from p to the box (0 when p may be in it): each
-/// gap and square within u relatively, the sum of three within 2u more, all within
-/// 5u < 2^-50; underflows lose at most 3 2^-1075, far below kTiny.
+/// A lower bound on the squared distance from p to the box (0 when p may be in it).
 double distance2_below(const Point3& p, const Point3& lower, const Point3& upper) noexcept {
-  double sum = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    const double gap = p[i] < lower[i] ? lower[i] - p[i] : p[i] > upper[i] ? p[i] - upper[i] : 0.0;
-    sum += gap * gap;
-  }
-  return std::max(0.0, sum * (1 - 0x1p-50) - kTiny);
+  return internal::box_distance2_below(p, p, lower, upper);
 }
 
 /// Does the ray p + t r (t >= 0) certainly miss the closed box? From the slabs: it meets

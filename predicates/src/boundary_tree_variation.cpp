@@ -2,6 +2,7 @@
 #include <cmath>
 #include <vector>
 
+#include "box_distance.hpp"
 #include "double_interval.hpp"
 #include "exactgeo/predicates/boundary_tree.hpp"
 
@@ -12,7 +13,6 @@
 namespace exactgeo {
 namespace {
 
-constexpr double kTiny = 0x1p-1000;
 /// Above 1 / (4 pi) = 0.0795774...: the gradient's factor in turns.
 constexpr double kOneOverFourPiAbove = 0.0796;
 /// A node is taken whole where its box is at least this many of its diagonals from the
@@ -21,21 +21,6 @@ constexpr double kSeparation = 2.0;
 
 double up(double x) noexcept {
   return internal::DoubleInterval::up(x);
-}
-
-/// A lower bound on the squared distance between two boxes (0 when they may meet): each
-/// gap and square within u relatively, the sum of three within 2u more, all within
-/// 5u < 2^-50; underflows lose at most 3 2^-1075, far below kTiny.
-double box_distance2_below(const Point3& lower_a, const Point3& upper_a, const Point3& lower_b,
-                           const Point3& upper_b) noexcept {
-  double sum = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    const double gap = lower_b[i] > upper_a[i]   ? lower_b[i] - upper_a[i]
-                       : lower_a[i] > upper_b[i] ? lower_a[i] - upper_b[i]
-                                                 : 0.0;
-    sum += gap * gap;
-  }
-  return std::max(0.0, sum * (1 - 0x1p-50) - kTiny);
 }
 
 }  // namespace
@@ -62,7 +47,7 @@ std::optional<double> BoundaryTree::variation(const Point3& lower, const Point3&
   while (!stack.empty()) {
     const Node& node = nodes_[stack.back()];
     stack.pop_back();
-    const double d2 = box_distance2_below(lower, upper, node.lower, node.upper);
+    const double d2 = internal::box_distance2_below(lower, upper, node.lower, node.upper);
     double diagonal2 = 0.0;
     for (int i = 0; i < 3; ++i) {
       const double extent = node.upper[i] - node.lower[i];
@@ -80,8 +65,8 @@ std::optional<double> BoundaryTree::variation(const Point3& lower, const Point3&
     // The nearer child first: the sum passes the limit soonest there.
     const Node& left = nodes_[node.left];
     const Node& right = nodes_[node.right];
-    const bool left_nearer = box_distance2_below(lower, upper, left.lower, left.upper) <=
-                             box_distance2_below(lower, upper, right.lower, right.upper);
+    const bool left_nearer = internal::box_distance2_below(lower, upper, left.lower, left.upper) <=
+                             internal::box_distance2_below(lower, upper, right.lower, right.upper);
     stack.push_back(left_nearer ? node.right : node.left);
     stack.push_back(left_nearer ? node.left : node.right);
   }
