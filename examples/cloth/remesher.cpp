@@ -343,22 +343,25 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
   }
   std::stable_sort(wanted.begin(), wanted.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
-  // The triangles around each vertex as the pass starts (collapse_edges defers the
-  // collapses whose surroundings another one of the pass changes).
+  // The triangles around each vertex as the pass starts (the pass defers the collapses
+  // whose surroundings another one of it changes).
   const VertexTriangles stars(w.surface.triangles, w.surface.vertices.size());
   RingScratch scratch;
-  std::vector<remesh::Collapse> collapses;
+  // Proposed as they are found, so that an edge near a collapse already going ahead,
+  // which the pass would defer to the next one, is not checked for its shape at all.
+  remesh::CollapsePass pass(w.surface, w.passes);
   for (const auto& [length, e] : wanted) {
+    if (!pass.could_go_ahead(e->a, e->b)) continue;
     const bool boundary = !e->right;
     VertexIndex kept = e->a, gone = e->b;
     if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
       if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) continue;
     }
-    collapses.push_back({kept, gone, w.surface.vertices[kept]});
+    pass.propose({kept, gone, w.surface.vertices[kept]});
   }
   bool any = false;
-  for (const remesh::Outcome& o : remesh::collapse_edges(w.surface, collapses, w.passes)) {
+  for (const remesh::Outcome& o : pass.finish(w.surface)) {
     counts.add(o.verdict);
     any = any || o.applied();
   }

@@ -14,6 +14,7 @@
 #include <iterator>
 #include <limits>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -199,80 +200,86 @@ struct Reach {
   }
 };
 
-/// A pass of collapses (collapse_edges).
-class CollapsePass {
- public:
-  CollapsePass(const Surface& surface, std::span<const Collapse> collapses,
-               PassWorkspace::Arrays& kept)
+}  // namespace
+
+/// A pass of collapses (CollapsePass, collapse_edges): what its proposals made.
+struct CollapsePass::State {
+  State(const Surface& surface, PassWorkspace* workspace)
       : surface_(surface),
         stars_(surface.triangles, surface.vertices.size()),
-        outcomes_(collapses.size()) {
-    plan(collapses, kept);
+        kept_(arrays_of(workspace, own_)),
+        plans_(kept_.collapse_plans),
+        outcome_of_(kept_.operation_of_plan),
+        schedule_(surface.vertices.size()) {
+    plans_.clear();
+    outcome_of_.clear();
+    owner_.assign(surface.vertices.size(), kNone);
   }
 
-  std::vector<Outcome> run(Surface& surface) {
+  /// Whether no vertex around a or b is taken by a collapse going ahead.
+  bool could_go_ahead(VertexIndex a, VertexIndex b) const {
+    for (const VertexIndex end : {a, b}) {
+      if (end >= surface_.vertices.size()) return true;  // propose() refuses it
+      for (const std::size_t t : stars_[end]) {
+        for (const VertexIndex v : surface_.triangles[t])
+          if (schedule_.taken(v)) return false;
+      }
+    }
+    return true;
+  }
+
+  /// Plans the collapse and schedules it: one whose surroundings (the vertices of the
+  /// triangles around its ends) share a vertex with those of an earlier one that goes
+  /// ahead waits for the next pass (its plan read them: the link condition, the
+  /// triangles it changes; the other changes them), and so does one whose moving
+  /// triangles' boxes meet theirs. The motions of those going ahead are checked together
+  /// (refuse_collisions).
+  void propose(const Collapse& c) {
+    const std::size_t i = outcomes_.size();
+    outcomes_.emplace_back();
+    auto plan_or = plan_collapse(surface_, stars_, c.a, c.b, c.to, scratch_);
+    if (auto* refused = std::get_if<Outcome>(&plan_or)) {
+      outcomes_[i] = std::move(*refused);
+      return;
+    }
+    // The vertices around both ends, and the box each triangle with a moving end sweeps.
+    footprint_.by_boxes = true;
+    footprint_.vertices.clear();
+    footprint_.regions.clear();
+    const auto moves = [&](VertexIndex v) {
+      return (v == c.a || v == c.b) && surface_.vertices[v] != c.to;
+    };
+    for (const VertexIndex end : {c.a, c.b}) {
+      for (const std::size_t t : stars_[end]) {
+        const Triangle& tri = surface_.triangles[t];
+        footprint_.vertices.insert(footprint_.vertices.end(), tri.begin(), tri.end());
+        if (end == c.b && std::find(tri.begin(), tri.end(), c.a) != tri.end()) continue;  // once
+        if (!moves(tri[0]) && !moves(tri[1]) && !moves(tri[2])) continue;
+        const auto& p = surface_.vertices;
+        footprint_.regions.push_back(
+            {RegionCorner{tri[0], p[tri[0]]}, RegionCorner{tri[1], p[tri[1]]},
+             RegionCorner{tri[2], p[tri[2]]}, RegionCorner{kNoVertex, c.to}});
+      }
+    }
+    if (!schedule_.take(footprint_)) {
+      outcomes_[i] = deferred("collapsing", c.a, c.b,
+                              "comes near another collapse of the pass (a shared vertex around "
+                              "their ends, or their moving triangles' boxes)");
+      return;
+    }
+    const CollapsePlan& plan = std::get<CollapsePlan>(plan_or);
+    owner_[plan.a] = owner_[plan.b] = plans_.size();
+    plans_.push_back(plan);
+    outcome_of_.push_back(i);
+  }
+
+  std::vector<Outcome> finish(Surface& surface) {
     refuse_collisions();
     surface = collapsed(surface_, live_plans());
     return std::move(outcomes_);
   }
 
  private:
-  /// Plans each collapse; one whose surroundings (the vertices of the triangles around
-  /// its ends) share a vertex with those of an earlier one that goes ahead waits for the
-  /// next pass: its plan read them (the link condition, the triangles it changes), and the
-  /// other changes them. Their motions are checked together (refuse_collisions).
-  void plan(std::span<const Collapse> collapses, PassWorkspace::Arrays& kept) {
-    owner_.assign(surface_.vertices.size(), kNone);
-    std::vector<CollapsePlan>& planned = kept.collapse_plans;
-    std::vector<std::size_t>& planned_collapse = kept.operation_of_plan;
-    planned.clear();
-    planned_collapse.clear();
-    std::vector<internal::Footprint> footprints;
-    PlanScratch scratch;
-    for (std::size_t i = 0; i < collapses.size(); ++i) {
-      const Collapse& c = collapses[i];
-      auto plan_or = plan_collapse(surface_, stars_, c.a, c.b, c.to, scratch);
-      if (auto* refused = std::get_if<Outcome>(&plan_or)) {
-        outcomes_[i] = std::move(*refused);
-        continue;
-      }
-      // The vertices around both ends, and the box each triangle with a moving end sweeps.
-      internal::Footprint footprint;
-      footprint.by_boxes = true;
-      const auto moves = [&](VertexIndex v) {
-        return (v == c.a || v == c.b) && surface_.vertices[v] != c.to;
-      };
-      for (const VertexIndex end : {c.a, c.b}) {
-        for (const std::size_t t : stars_[end]) {
-          const Triangle& tri = surface_.triangles[t];
-          footprint.vertices.insert(footprint.vertices.end(), tri.begin(), tri.end());
-          if (end == c.b && std::find(tri.begin(), tri.end(), c.a) != tri.end()) continue;  // once
-          if (!moves(tri[0]) && !moves(tri[1]) && !moves(tri[2])) continue;
-          const auto& p = surface_.vertices;
-          footprint.regions.push_back(
-              {RegionCorner{tri[0], p[tri[0]]}, RegionCorner{tri[1], p[tri[1]]},
-               RegionCorner{tri[2], p[tri[2]]}, RegionCorner{kNoVertex, c.to}});
-        }
-      }
-      footprints.push_back(std::move(footprint));
-      planned.push_back(std::get<CollapsePlan>(std::move(plan_or)));
-      planned_collapse.push_back(i);
-    }
-    const std::vector<bool> ahead = internal::go_ahead(footprints, surface_.vertices);
-    for (std::size_t k = 0; k < planned.size(); ++k) {
-      const std::size_t i = planned_collapse[k];
-      if (!ahead[k]) {
-        outcomes_[i] = deferred("collapsing", planned[k].a, planned[k].b,
-                                "comes near another collapse of the pass (a shared vertex around "
-                                "their ends, or their moving triangles' boxes)");
-        continue;
-      }
-      owner_[planned[k].a] = owner_[planned[k].b] = plans_.size();
-      plans_.push_back(planned[k]);
-      outcome_of_.push_back(i);
-    }
-  }
-
   bool live(std::size_t k) const { return outcomes_[outcome_of_[k]].applied(); }
 
   std::vector<const CollapsePlan*> live_plans() const {
@@ -396,13 +403,16 @@ class CollapsePass {
 
   const Surface& surface_;
   VertexTriangles stars_;
+  PassWorkspace own_;  ///< used when the caller keeps none
+  PassWorkspace::Arrays& kept_;
   std::vector<Outcome> outcomes_;
-  std::vector<CollapsePlan> plans_;
-  std::vector<std::size_t> outcome_of_;  ///< per plan: its collapse's index
-  std::vector<std::size_t> owner_;       ///< per vertex: the plan it is an end of, or kNone
+  std::vector<CollapsePlan>& plans_;      ///< those going ahead
+  std::vector<std::size_t>& outcome_of_;  ///< per plan: its collapse's index
+  std::vector<std::size_t> owner_;        ///< per vertex: the plan it is an end of, or kNone
+  BoxSchedule schedule_;
+  PlanScratch scratch_;
+  Footprint footprint_;  ///< propose()'s
 };
-
-}  // namespace
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
   PlanScratch scratch;
@@ -418,10 +428,37 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
   return {};
 }
 
+CollapsePass::CollapsePass(const Surface& surface, PassWorkspace* workspace)
+    : state_(std::make_unique<State>(surface, workspace)) {}
+CollapsePass::~CollapsePass() = default;
+CollapsePass::CollapsePass(CollapsePass&&) noexcept = default;
+CollapsePass& CollapsePass::operator=(CollapsePass&&) noexcept = default;
+
+CollapsePass::State& CollapsePass::state() const {
+  if (!state_) throw std::logic_error("remesh::CollapsePass used after finish() or a move");
+  return *state_;
+}
+
+bool CollapsePass::could_go_ahead(VertexIndex a, VertexIndex b) const {
+  return state().could_go_ahead(a, b);
+}
+
+void CollapsePass::propose(const Collapse& collapse) {
+  state().propose(collapse);
+}
+
+std::vector<Outcome> CollapsePass::finish(Surface& surface) {
+  std::vector<Outcome> outcomes = state().finish(surface);
+  state_.reset();
+  return outcomes;
+}
+
 std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses,
                                     PassWorkspace* workspace) {
-  PassWorkspace own;  // used when the caller keeps none
-  return CollapsePass(surface, collapses, arrays_of(workspace, own)).run(surface);
+  CollapsePass pass(surface, workspace);
+  for (const Collapse& c : collapses)
+    pass.propose(c);
+  return pass.finish(surface);
 }
 
 }  // namespace exactgeo::remesh

@@ -38,11 +38,42 @@ struct Footprint {
   bool by_boxes = false;
 };
 
+/// The schedule of a pass whose footprints all ask for boxes (a pass of collapses), made
+/// one operation at a time as the pass is planned: an operation goes ahead when it shares
+/// no vertex with one going ahead and none of its regions' boxes meets one of theirs
+/// (exact boxes of the regions' corners, touching counting). Each is checked against the
+/// operations going ahead only, through the box around all of an operation's regions
+/// first (two region boxes meet only inside both operations' boxes): a remesher proposes
+/// thousands of collapses in a pass and applies tens.
+class BoxSchedule {
+ public:
+  explicit BoxSchedule(std::size_t vertex_count) : taken_(vertex_count, false) {}
+
+  /// Whether v is a vertex of an operation going ahead.
+  bool taken(VertexIndex v) const { return taken_[v]; }
+  /// Whether `operation` goes ahead (then it is taken: later ones are checked against it).
+  bool take(const Footprint& operation);
+
+ private:
+  struct Box {
+    Point3 lower{}, upper{};
+  };
+  static Box box_of(const std::array<RegionCorner, 4>& region) noexcept;
+  static Box united(Box a, const Box& b) noexcept;
+  static bool overlap(const Box& a, const Box& b) noexcept;
+
+  std::vector<bool> taken_;
+  std::vector<Box> going_;             ///< the box around each one's regions
+  std::vector<std::size_t> first_{0};  ///< going_[g]'s region boxes: [first_[g], first_[g+1])
+  std::vector<Box> region_;            ///< their regions' boxes
+  std::vector<Box> own_;               ///< take's: the operation's region boxes
+};
+
 /// For each operation in order, whether it goes ahead: not when it shares a vertex with an
 /// earlier one that goes ahead, or when one of its regions meets one of that one's
 /// (regions_meet, for the pairs whose boxes a box tree finds overlapping; the boxes alone
-/// when either footprint is by_boxes; when every one is, each operation is checked in
-/// order against the boxes of those going ahead, not by a tree of every region). The
+/// when either footprint is by_boxes; when every one is, BoxSchedule's rule, with exact
+/// boxes). The
 /// others wait for the next pass. `points` are the surface's vertices (a region's corners
 /// index them).
 std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<const Point3> points);

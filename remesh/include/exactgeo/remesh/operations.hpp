@@ -126,6 +126,43 @@ struct Collapse {
 std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses,
                                     PassWorkspace* workspace = nullptr);
 
+/// A pass of collapses proposed one at a time: collapse_edges for a caller that decides
+/// what to propose as it goes. Each proposal is planned and scheduled when it is made, by
+/// collapse_edges' rules, so that could_go_ahead can tell beforehand whether a collapse
+/// of edge ab cannot go ahead for coming near one already going ahead (a vertex of the
+/// triangles around a or b taken by one; proposed, it would be deferred, or refused for
+/// its topology, which is checked first): a caller that checks each collapse's shape (a
+/// remesher) skips those, and proposing only the others makes the same collapses, with
+/// the same outcomes, as proposing all. finish() checks the motions of
+/// those going ahead and makes them. The surface must stay as it is until then.
+class CollapsePass {
+ public:
+  /// `workspace` as for collapse_edges.
+  explicit CollapsePass(const Surface& surface, PassWorkspace* workspace = nullptr);
+  ~CollapsePass();
+  CollapsePass(CollapsePass&&) noexcept;
+  CollapsePass& operator=(CollapsePass&&) noexcept;
+  CollapsePass(const CollapsePass&) = delete;
+  CollapsePass& operator=(const CollapsePass&) = delete;
+
+  /// False when a collapse of edge ab cannot go ahead in this pass: a vertex of the
+  /// triangles around a or b belongs to those around the ends of a collapse going ahead.
+  /// (True does not promise that it goes ahead: its topology, and its moving triangles'
+  /// boxes, decide.)
+  bool could_go_ahead(VertexIndex a, VertexIndex b) const;
+  /// Plans and schedules the collapse; its outcome is the next of finish()'s.
+  void propose(const Collapse& collapse);
+  /// One outcome per proposal, in order, with the collapses that go ahead and meet
+  /// nothing made on `surface` (the one the pass was made for). Once: afterwards (or
+  /// once moved from) every member throws std::logic_error.
+  std::vector<Outcome> finish(Surface& surface);
+
+ private:
+  struct State;
+  State& state() const;
+  std::unique_ptr<State> state_;
+};
+
 /// Replaces the triangles abc and bad on edge ab by cad and dbc.
 Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
 
