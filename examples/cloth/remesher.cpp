@@ -292,6 +292,16 @@ struct RingScratch {
 bool collapse_suits(const Work& w, const std::vector<double>& size,
                     std::span<const std::size_t> star, VertexIndex kept, VertexIndex gone,
                     bool boundary_edge, RingScratch& scratch) {
+  // The edges made first: most collapses a pass wants fail there (they would make an edge
+  // too long), and it needs no ring. A neighbour in two triangles is asked twice.
+  for (const std::size_t t : star) {
+    for (const VertexIndex x : w.surface.triangles[t]) {
+      if (x == kept || x == gone) continue;
+      const double limit = kSplitAbove * edge_size(size, kept, x);
+      const std::optional<bool> longer = clearly_longer_in_material(w, kept, x, limit);
+      if (longer ? *longer : material_length(w, kept, x) > limit) return false;
+    }
+  }
   std::vector<VertexIndex>& sides = scratch.sides;
   std::vector<VertexIndex>& ends = scratch.ends;
   ring_sides(w.surface, star, gone, sides);
@@ -305,13 +315,6 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     const double area = material_area(w, ends[0], gone, ends[1]);
     const double scale = material_length(w, ends[0], gone) * material_length(w, gone, ends[1]);
     if (std::abs(area) > 1e-9 * scale) return false;
-  }
-  for (std::size_t i = 0; i < sides.size(); ++i) {
-    const VertexIndex x = sides[i];
-    if (x == kept || (i > 0 && sides[i - 1] == x)) continue;  // sorted: each neighbour once
-    const double limit = kSplitAbove * edge_size(size, kept, x);
-    const std::optional<bool> longer = clearly_longer_in_material(w, kept, x, limit);
-    if (longer ? *longer : material_length(w, kept, x) > limit) return false;
   }
   for (const std::size_t t : star) {
     remesh::Triangle tri = w.surface.triangles[t];
