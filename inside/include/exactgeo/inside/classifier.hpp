@@ -44,12 +44,19 @@ struct OpenBoxAnswer;  // internal/open_space_cells.hpp
 
 /// Where candidate faces come from.
 enum class CandidateSearch : std::uint8_t {
-  embree,       ///< a BVH over conservative float boxes (the default)
-  brute_force,  ///< every face for every ray: the reference the BVH is tested against
+  /// exactgeo's box tree below kBoxTreeFaces faces, Embree from there (the default): a
+  /// small mesh never loads Embree, whose start costs more than its rays there
+  automatic,
+  embree,       ///< Embree's BVH over conservative float boxes
+  box_tree,     ///< exactgeo's box tree over the same boxes, rays tested in double
+  brute_force,  ///< every face for every ray: the reference the trees are tested against
 };
 
+/// Faces from which CandidateSearch::automatic uses Embree (docs/inside.md, "End to end").
+inline constexpr std::size_t kBoxTreeFaces = 4096;
+
 struct ClassifierOptions {
-  CandidateSearch candidates = CandidateSearch::embree;
+  CandidateSearch candidates = CandidateSearch::automatic;
   /// Parity only: accept edges shared by four, six, ... faces (parity is still well
   /// defined when every edge has an even number of faces); by default parity accepts
   /// only closed manifold meshes.
