@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The libraries the exactgeo binary needs at start (its ELF NEEDED entries): none of those
 # it opens on first use (Embree and its TBB, assimp), whose loading at every start was most
-# of a short command's time (docs/inside.md, "End to end").
+# of a short command's time (docs/inside.md, "End to end"). Then, with the dynamic
+# loader's trace (LD_DEBUG=files): classifying against a mesh under the box tree's face
+# count never loads Embree, and against a larger one it does.
 set -u
 exe="$1"
+meshes="$2"
 needed=$(objdump -p "$exe" | awk '$1 == "NEEDED" { print $2 }')
 if [ -z "$needed" ]; then
   echo "FAIL: no NEEDED entries read from $exe"
@@ -17,4 +20,18 @@ for library in embree tbb assimp; do
   fi
 done
 [ "$failures" = 0 ] && echo "needed at start: $(printf '%s\n' "$needed" | tr '\n' ' ')"
+
+loads_embree() {  # loads_embree MESH: whether classifying one point loads libembree3
+  printf '0 0.2 0\n' | LD_DEBUG=files "$exe" inside "$1" 2>&1 >/dev/null |
+    grep -q 'file=libembree3[^ ]* .*dynamically loaded'
+}
+# 2,928 quads, then 11,712 (kBoxTreeFaces = 4,096 in inside/classifier.hpp).
+if loads_embree "$meshes/spot/spot_quadrangulated.obj"; then
+  echo "FAIL: a mesh of 2,928 faces loads Embree"
+  failures=$((failures + 1))
+fi
+if ! loads_embree "$meshes/spot/spot_quad_cc1.ply"; then
+  echo "FAIL: a mesh of 11,712 faces does not load Embree (or the loader's trace is not read)"
+  failures=$((failures + 1))
+fi
 exit "$failures"
