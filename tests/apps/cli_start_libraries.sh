@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The libraries the exactgeo binary needs at start (its ELF NEEDED entries): none of those
 # it opens on first use (Embree and its TBB, assimp), whose loading at every start was most
-# of a short command's time (docs/inside.md, "End to end"). Then, with the dynamic
+# of a short command's time (docs/inside.md, "End to end"), nor those it links statically
+# (GMP, MPFR, libpng, zlib: cmake/StaticLibraries.cmake). Then, with the dynamic
 # loader's trace (LD_DEBUG=files): classifying against a mesh under the box tree's face
 # count never loads Embree, and against a larger one it does.
 set -u
@@ -13,7 +14,7 @@ if [ -z "$needed" ]; then
   exit 1
 fi
 failures=0
-for library in embree tbb assimp; do
+for library in embree tbb assimp gmp mpfr png libz; do
   if printf '%s\n' "$needed" | grep -q "$library"; then
     echo "FAIL: $exe needs $(printf '%s\n' "$needed" | grep "$library" | tr '\n' ' ')at start"
     failures=$((failures + 1))
