@@ -70,6 +70,13 @@ mesh::Mesh without_zero_area_faces(mesh::Mesh mesh, const mesh::MeshCheck& check
   return mesh;
 }
 
+/// The finder CandidateSearch::automatic stands for with these options and faces.
+CandidateSearch candidate_search(const ClassifierOptions& options, std::size_t faces) noexcept {
+  if (options.candidates != CandidateSearch::automatic) return options.candidates;
+  const bool few_points = options.expected_points && *options.expected_points < kEmbreePoints;
+  return faces < kBoxTreeFaces || few_points ? CandidateSearch::box_tree : CandidateSearch::embree;
+}
+
 template <class Signs>
 std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
                                 std::span<const Point3> points) {
@@ -340,10 +347,7 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, ray_vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
   if (!s.boundary.empty()) s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
-  const CandidateSearch search = options.candidates != CandidateSearch::automatic
-                                     ? options.candidates
-                                 : s.mesh.faces.size() < kBoxTreeFaces ? CandidateSearch::box_tree
-                                                                       : CandidateSearch::embree;
+  const CandidateSearch search = candidate_search(options, s.mesh.faces.size());
   if (search == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
   if (search == CandidateSearch::box_tree) s.tree.emplace(s.mesh, s.box);
   // A cell's points share one integer winding number; an open surface's vary, and its

@@ -44,16 +44,20 @@ struct OpenBoxAnswer;  // internal/open_space_cells.hpp
 
 /// Where candidate faces come from.
 enum class CandidateSearch : std::uint8_t {
-  /// exactgeo's box tree below kBoxTreeFaces faces, Embree from there (the default): a
-  /// small mesh never loads Embree, whose start costs more than its rays there
+  /// exactgeo's box tree for a mesh under kBoxTreeFaces faces, or when fewer than
+  /// kEmbreePoints points are expected (ClassifierOptions::expected_points); Embree
+  /// otherwise (the default). Below those counts, loading Embree, starting its device and
+  /// building its BVH cost more than its faster rays save.
   automatic,
   embree,       ///< Embree's BVH over conservative float boxes
   box_tree,     ///< exactgeo's box tree over the same boxes, rays tested in double
   brute_force,  ///< every face for every ray: the reference the trees are tested against
 };
 
-/// Faces from which CandidateSearch::automatic uses Embree (docs/inside.md, "End to end").
+/// CandidateSearch::automatic's counts (docs/inside.md, "End to end"): the faces from
+/// which, and the expected points from which, Embree is used.
 inline constexpr std::size_t kBoxTreeFaces = 4096;
+inline constexpr std::size_t kEmbreePoints = std::size_t{1} << 19;
 
 struct ClassifierOptions {
   CandidateSearch candidates = CandidateSearch::automatic;
@@ -68,7 +72,8 @@ struct ClassifierOptions {
   /// About how many points will be classified, where the caller knows (a points file's
   /// size): the space cells are then sized to the work as well as to the mesh, so that a
   /// few thousand points do not pay for a grid built for millions. Any value gives the
-  /// same labels; nullopt sizes the cells by the mesh alone.
+  /// same labels; nullopt sizes the cells by the mesh alone. CandidateSearch::automatic
+  /// reads it too (nullopt: as many points as make Embree worth loading).
   std::optional<std::size_t> expected_points = std::nullopt;
   /// nonzero and positive need faces oriented alike (no edge run the same way by two more
   /// faces than the other way), closed or open; parity needs a closed surface.
