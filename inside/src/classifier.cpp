@@ -1,6 +1,7 @@
 #include "exactgeo/inside/classifier.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -73,8 +74,11 @@ mesh::Mesh without_zero_area_faces(mesh::Mesh mesh, const mesh::MeshCheck& check
 /// The finder CandidateSearch::automatic stands for with these options and faces.
 CandidateSearch candidate_search(const ClassifierOptions& options, std::size_t faces) noexcept {
   if (options.candidates != CandidateSearch::automatic) return options.candidates;
-  const bool few_points = options.expected_points && *options.expected_points < kEmbreePoints;
-  return faces < kBoxTreeFaces || few_points ? CandidateSearch::box_tree : CandidateSearch::embree;
+  const std::size_t enough_faces = !options.expected_points ? kBoxTreeFaces
+                                   : *options.expected_points < kEmbreePoints
+                                       ? std::numeric_limits<std::size_t>::max()
+                                       : kBoxTreeFacesManyPoints;
+  return faces < enough_faces ? CandidateSearch::box_tree : CandidateSearch::embree;
 }
 
 template <class Signs>

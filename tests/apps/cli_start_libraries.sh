@@ -28,9 +28,10 @@ loads_embree() {  # loads_embree MESH [POINTS]: whether classifying loads libemb
   printf '0 0.2 0\n' | LD_DEBUG=files "$exe" inside "$mesh" "$@" 2>&1 >/dev/null |
     grep -q 'file=libembree3[^ ]* .*dynamically loaded'
 }
-# kBoxTreeFaces = 4,096 and kEmbreePoints = 2^19 (inside/classifier.hpp): 2,928 quads never
-# load Embree; 11,712 do when the points come from standard input (how many is not known),
-# and not from a file of one point.
+# kBoxTreeFaces = 4,096, kEmbreePoints = 2^19 and kBoxTreeFacesManyPoints = 256
+# (inside/classifier.hpp): 2,928 quads do not load Embree for points from standard input
+# (how many is not known) and do for a file of 2^19 points; 11,712 do from standard input,
+# and not for a file of one point.
 if loads_embree "$meshes/spot/spot_quadrangulated.obj"; then
   echo "FAIL: a mesh of 2,928 faces loads Embree"
   failures=$((failures + 1))
@@ -44,6 +45,13 @@ trap 'rm -f "$points"' EXIT
 printf '0 0.2 0\n' >"$points"
 if loads_embree "$meshes/spot/spot_quad_cc1.ply" "$points"; then
   echo "FAIL: a mesh of 11,712 faces loads Embree for a file of one point"
+  failures=$((failures + 1))
+fi
+many=$(mktemp)
+trap 'rm -f "$points" "$many"' EXIT
+head -c $((24 << 19)) /dev/zero >"$many"  # 2^19 points (0, 0, 0) as raw float64
+if ! loads_embree "$meshes/spot/spot_quadrangulated.obj" "$many" --points-format f64; then
+  echo "FAIL: a mesh of 2,928 faces does not load Embree for a file of 2^19 points"
   failures=$((failures + 1))
 fi
 exit "$failures"

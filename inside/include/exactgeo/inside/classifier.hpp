@@ -44,20 +44,22 @@ struct OpenBoxAnswer;  // internal/open_space_cells.hpp
 
 /// Where candidate faces come from.
 enum class CandidateSearch : std::uint8_t {
-  /// exactgeo's box tree for a mesh under kBoxTreeFaces faces, or when fewer than
-  /// kEmbreePoints points are expected (ClassifierOptions::expected_points); Embree
-  /// otherwise (the default). Below those counts, loading Embree, starting its device and
-  /// building its BVH cost more than its faster rays save.
+  /// exactgeo's box tree or Embree by the mesh's faces and the points expected
+  /// (ClassifierOptions::expected_points): the box tree for fewer than kEmbreePoints
+  /// points, for fewer than kBoxTreeFaces faces when the count is not known, and for
+  /// fewer than kBoxTreeFacesManyPoints faces in any case; Embree otherwise (the default).
+  /// Below those counts, loading Embree, starting its device and building its BVH cost
+  /// more than its faster rays save.
   automatic,
   embree,       ///< Embree's BVH over conservative float boxes
   box_tree,     ///< exactgeo's box tree over the same boxes, rays tested in double
   brute_force,  ///< every face for every ray: the reference the trees are tested against
 };
 
-/// CandidateSearch::automatic's counts (docs/inside.md, "End to end"): the faces from
-/// which, and the expected points from which, Embree is used.
+/// CandidateSearch::automatic's counts (docs/inside.md, "End to end").
 inline constexpr std::size_t kBoxTreeFaces = 4096;
 inline constexpr std::size_t kEmbreePoints = std::size_t{1} << 19;
+inline constexpr std::size_t kBoxTreeFacesManyPoints = 256;
 
 struct ClassifierOptions {
   CandidateSearch candidates = CandidateSearch::automatic;
