@@ -41,7 +41,8 @@ std::uint64_t seed() {
 
 /// A torus of about `faces` quads, 4:1 around, each vertex moved by noise.
 mesh::Mesh torus(std::int64_t faces) {
-  const int nv = std::max(4, static_cast<int>(std::lround(std::sqrt(static_cast<double>(faces) / 4.0))));
+  const int nv =
+      std::max(4, static_cast<int>(std::lround(std::sqrt(static_cast<double>(faces) / 4.0))));
   const int nu = std::max(4, static_cast<int>(faces / nv));
   std::mt19937_64 rng(seed());
   std::uniform_real_distribution<double> noise(-0.01, 0.01);
