@@ -8,9 +8,10 @@
 // (fill_rule.hpp): the signed count of the crossings of a ray from it with the faces.
 // Rays follow the fixed sequence of exactgeo/predicates/ray_directions.hpp; a ray that
 // meets a face's edge or vertex, or lies in the plane of a flat face, is discarded for
-// the next one, which the sequence guarantees ends. Embree proposes candidate faces along
-// each ray; the exact predicates (cross_face_signed: ray_patch_crossings,
-// classify_ray_triangle) decide every one.
+// the next one, which the sequence guarantees ends. A tree of boxes (exactgeo's own, or
+// Embree's for large work: CandidateSearch) proposes candidate faces along each ray; the
+// exact predicates (cross_face_signed: ray_patch_crossings, classify_ray_triangle)
+// decide every one.
 //
 // An open surface (boundary edges, each run net once more one way than the other) is
 // labelled by its generalized winding number: the ray's signed count plus a certified
@@ -96,7 +97,8 @@ class Classifier {
   /// Checks the mesh (check_mesh; orientable_surface_problem for nonzero and positive,
   /// closed_surface_problem for parity) and builds the candidate search. Throws
   /// std::invalid_argument with the problem's description if the mesh cannot be classified
-  /// against by the rule, std::runtime_error if Embree fails.
+  /// against by the rule, std::runtime_error if Embree is used and fails (cannot be loaded,
+  /// out of memory).
   explicit Classifier(mesh::Mesh mesh, ClassifierOptions options = {});
   ~Classifier();
   Classifier(Classifier&&) noexcept;
