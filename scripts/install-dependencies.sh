@@ -4,7 +4,7 @@
 set -eu
 
 packages="g++ cmake make pkg-config libgmp-dev libmpfr-dev libgtest-dev libgmock-dev libbenchmark-dev
-libcli11-dev libembree-dev libassimp-dev libeigen3-dev libpng-dev
+libcli11-dev libembree-dev libassimp-dev libeigen3-dev libpng-dev zlib1g-dev
 python3 python3-dev pybind11-dev python3-numpy python3-pytest python3-dask python3-distributed
 python3-pil"
 

@@ -1,6 +1,7 @@
 #include "exactgeo/inside/classifier.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -11,6 +12,7 @@
 #include "exactgeo/inside/internal/open_space_cells.hpp"
 #include "exactgeo/inside/internal/open_winding.hpp"
 #include "exactgeo/inside/internal/space_cells.hpp"
+#include "exactgeo/inside/internal/tree_candidates.hpp"
 #include "exactgeo/inside/internal/unit_frame.hpp"
 #include "exactgeo/mesh/boundary_chain.hpp"
 #include "exactgeo/mesh/check.hpp"
@@ -69,6 +71,16 @@ mesh::Mesh without_zero_area_faces(mesh::Mesh mesh, const mesh::MeshCheck& check
   return mesh;
 }
 
+/// The finder CandidateSearch::automatic stands for with these options and faces.
+CandidateSearch candidate_search(const ClassifierOptions& options, std::size_t faces) noexcept {
+  if (options.candidates != CandidateSearch::automatic) return options.candidates;
+  const std::size_t enough_faces = !options.expected_points ? kBoxTreeFaces
+                                   : *options.expected_points < kEmbreePoints
+                                       ? std::numeric_limits<std::size_t>::max()
+                                       : kBoxTreeFacesManyPoints;
+  return faces < enough_faces ? CandidateSearch::box_tree : CandidateSearch::embree;
+}
+
 template <class Signs>
 std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
                                 std::span<const Point3> points) {
@@ -93,6 +105,7 @@ struct Classifier::State {
   std::vector<PatchSpan> exact_spans;
   std::vector<PatchSpan> double_spans;
   std::optional<internal::EmbreeCandidates> embree;
+  std::optional<internal::TreeCandidates> tree;
   std::optional<internal::SpaceCells> cells;
   /// An open surface's: cells whose points all certainly have one label.
   std::optional<internal::OpenSpaceCells> open_cells;
@@ -139,7 +152,9 @@ template <class Signs>
 SignedRayCount Classifier::count_ray(const State& s, const Signs& signs, Arithmetic arithmetic,
                                      const RayOrigin& origin, std::size_t k,
                                      ClassifierScratch& scratch) {
-  if (s.embree && k < kFloatExactRayDirections) {
+  if (s.tree) {  // any direction the exact rays cast: exact in double
+    s.tree->find(origin.given, k, scratch.candidates);
+  } else if (s.embree && k < kFloatExactRayDirections) {
     s.embree->find(origin.given, k, scratch.candidates);
   } else {
     internal::all_faces(s.mesh, scratch.candidates);
@@ -152,7 +167,7 @@ SignedRayCount Classifier::count_ray(const State& s, const Signs& signs, Arithme
                                 kernel::Offset::vector(direction));
 }
 
-/// The signed crossing count of `point` along the ray sequence, Embree proposing the
+/// The signed crossing count of `point` along the ray sequence, a tree proposing the
 /// candidate faces. Precondition: point in s.box, the closed box of the faces' corners.
 std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& point,
                                                   Arithmetic arithmetic,
@@ -336,7 +351,9 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, ray_vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
   if (!s.boundary.empty()) s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
-  if (options.candidates == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
+  const CandidateSearch search = candidate_search(options, s.mesh.faces.size());
+  if (search == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
+  if (search == CandidateSearch::box_tree) s.tree.emplace(s.mesh, s.box);
   // A cell's points share one integer winding number; an open surface's vary, and its
   // cells are labelled where the variation is bounded (open_space_cells.hpp).
   if (options.space_cells && !s.boundary.empty() && s.rule != FillRule::parity) {

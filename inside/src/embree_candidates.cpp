@@ -75,17 +75,18 @@ EmbreeCandidates::EmbreeCandidates(const mesh::Mesh& mesh, const mesh::Box& box)
   }
 
   Scene& s = *scene_;
-  rtcSetSceneBuildQuality(s.embree.scene(), RTC_BUILD_QUALITY_HIGH);
-  RTCGeometry geometry = rtcNewGeometry(s.embree.device(), RTC_GEOMETRY_TYPE_USER);
+  const EmbreeFunctions& rtc = s.embree.rtc();
+  rtc.rtcSetSceneBuildQuality(s.embree.scene(), RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geometry = rtc.rtcNewGeometry(s.embree.device(), RTC_GEOMETRY_TYPE_USER);
   if (geometry == nullptr) throw_embree_error(s.embree.device(), "cannot create user geometry");
-  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(s.boxes.size()));
-  rtcSetGeometryUserData(geometry, s.boxes.data());
-  rtcSetGeometryBoundsFunction(geometry, face_bounds, nullptr);
-  rtcSetGeometryIntersectFunction(geometry, record_intersect);
-  rtcSetGeometryOccludedFunction(geometry, record_occluded);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(s.embree.scene(), geometry);
-  rtcReleaseGeometry(geometry);
+  rtc.rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned>(s.boxes.size()));
+  rtc.rtcSetGeometryUserData(geometry, s.boxes.data());
+  rtc.rtcSetGeometryBoundsFunction(geometry, face_bounds, nullptr);
+  rtc.rtcSetGeometryIntersectFunction(geometry, record_intersect);
+  rtc.rtcSetGeometryOccludedFunction(geometry, record_occluded);
+  rtc.rtcCommitGeometry(geometry);
+  rtc.rtcAttachGeometry(s.embree.scene(), geometry);
+  rtc.rtcReleaseGeometry(geometry);
   s.embree.commit();
 }
 
@@ -115,7 +116,7 @@ void EmbreeCandidates::find(const Point3& origin, std::size_t direction_index,
   RecordingContext context{};
   rtcInitIntersectContext(&context.embree);
   context.faces = &out;
-  rtcOccluded1(scene_->embree.scene(), &context.embree, &ray);
+  scene_->embree.rtc().rtcOccluded1(scene_->embree.scene(), &context.embree, &ray);
   // A primitive may be visited more than once; parity must count it once.
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -50,25 +50,27 @@ void require_valid_indices(const mesh::Mesh& mesh) {
 
 /// The faces with `corners` corners (3 or 4) as one Embree geometry of that type over
 /// every vertex, with the counting filter; nothing if there are none.
-void attach_faces(RTCDevice device, RTCScene scene, const mesh::Mesh& mesh,
+void attach_faces(const internal::EmbreeScene& embree, const mesh::Mesh& mesh,
                   const std::vector<std::array<float, 3>>& vertices, std::size_t corners) {
   const auto count = static_cast<std::size_t>(
       std::count_if(mesh.faces.begin(), mesh.faces.end(),
                     [&](const mesh::Face& f) { return f.size() == corners; }));
   if (count == 0) return;
   const bool quads = corners == 4;
+  const internal::EmbreeFunctions& rtc = embree.rtc();
+  const RTCDevice device = embree.device();
   RTCGeometry geometry =
-      rtcNewGeometry(device, quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
+      rtc.rtcNewGeometry(device, quads ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
   if (geometry == nullptr) internal::throw_embree_error(device, "cannot create a geometry");
 
-  auto* vertex_buffer = static_cast<float*>(rtcSetNewGeometryBuffer(
+  auto* vertex_buffer = static_cast<float*>(rtc.rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size()));
-  auto* index_buffer = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+  auto* index_buffer = static_cast<unsigned*>(rtc.rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, quads ? RTC_FORMAT_UINT4 : RTC_FORMAT_UINT3,
       corners * sizeof(unsigned), count));
   if (vertex_buffer == nullptr || index_buffer == nullptr) {
-    const RTCError error = rtcGetDeviceError(device);
-    rtcReleaseGeometry(geometry);
+    const RTCError error = rtc.rtcGetDeviceError(device);
+    rtc.rtcReleaseGeometry(geometry);
     internal::throw_embree_error(error, "cannot allocate a geometry buffer");
   }
   for (const std::array<float, 3>& v : vertices) {
@@ -80,10 +82,10 @@ void attach_faces(RTCDevice device, RTCScene scene, const mesh::Mesh& mesh,
     if (f.size() != corners) continue;
     index_buffer = std::copy_n(f.corners.begin(), corners, index_buffer);
   }
-  rtcSetGeometryIntersectFilterFunction(geometry, count_and_reject);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometry(scene, geometry);
-  rtcReleaseGeometry(geometry);
+  rtc.rtcSetGeometryIntersectFilterFunction(geometry, count_and_reject);
+  rtc.rtcCommitGeometry(geometry);
+  rtc.rtcAttachGeometry(embree.scene(), geometry);
+  rtc.rtcReleaseGeometry(geometry);
 }
 
 }  // namespace
@@ -105,12 +107,12 @@ FloatRayParity::FloatRayParity(const mesh::Mesh& mesh) : scene_(std::make_unique
     for (int i = 0; i < 3; ++i)
       vertices[v][static_cast<std::size_t>(i)] = s.frame.origin(i, mesh.vertices[v][i]);
 
-  const RTCDevice device = s.embree.device();
-  if (rtcGetDeviceProperty(device, RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) == 0) {
+  if (s.embree.rtc().rtcGetDeviceProperty(s.embree.device(),
+                                          RTC_DEVICE_PROPERTY_FILTER_FUNCTION_SUPPORTED) == 0) {
     throw std::runtime_error("Embree: this build has no filter functions");
   }
-  attach_faces(device, s.embree.scene(), mesh, vertices, 4);
-  attach_faces(device, s.embree.scene(), mesh, vertices, 3);
+  attach_faces(s.embree, mesh, vertices, 4);
+  attach_faces(s.embree, mesh, vertices, 3);
   s.embree.commit();
 }
 
@@ -139,7 +141,7 @@ Location FloatRayParity::classify(const Point3& point) const {
 
   HitCountingContext context{};
   rtcInitIntersectContext(&context.embree);
-  rtcIntersect1(s.embree.scene(), &context.embree, &rayhit);
+  s.embree.rtc().rtcIntersect1(s.embree.scene(), &context.embree, &rayhit);
   return context.hits % 2 == 1 ? Location::inside : Location::outside;
 }
 

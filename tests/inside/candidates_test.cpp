@@ -1,6 +1,5 @@
-// Embree's candidates against the exact truth: for every ray, every face whose corners'
-// convex hull the exact ray touches must be proposed (the hull contains the patch, so this
-// is stronger than "every face the predicate says the ray crosses or touches"). Rays are
+// Embree's candidates against the exact truth (candidate_oracle.hpp): for every ray, every
+// face whose corners' convex hull the exact ray touches must be proposed. Rays are
 // random, and grazing: through mesh vertices, through edge points, along the planes of
 // flat faces, from points on faces, at magnitudes from 2^-1000 to 2^1000.
 
@@ -13,92 +12,19 @@
 #include <string>
 #include <vector>
 
+#include "candidate_oracle.hpp"
 #include "exactgeo/inside/internal/candidates.hpp"
 #include "exactgeo/inside/internal/corner_boxes.hpp"
 #include "exactgeo/predicates/ray_directions.hpp"
-#include "exactgeo/predicates/ray_triangle.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::inside {
 namespace {
 
+using candidate_oracle::bumpy_torus;
+using candidate_oracle::expect_complete;
 using mesh::Face;
-using mesh::make_quad;
-using mesh::make_triangle;
 using mesh::Mesh;
-
-/// A closed torus of nu x nv quads with dyadic coordinates (at most about 24 significant
-/// bits), every vertex moved by random dyadic noise so most quads are skew; the first
-/// `flat_rings` rings are left planar (flat faces, rays in their planes).
-Mesh bumpy_torus(std::mt19937_64& rng, int nu, int nv, int scale_exponent, double offset) {
-  std::uniform_int_distribution<int> noise(-64, 64);
-  Mesh mesh;
-  for (int i = 0; i < nu; ++i) {
-    for (int j = 0; j < nv; ++j) {
-      const double a = 2 * M_PI * i / nu, b = 2 * M_PI * j / nv;
-      Point3 p{(2 + std::cos(b)) * std::cos(a), (2 + std::cos(b)) * std::sin(a), std::sin(b)};
-      for (double& c : p) {
-        c = std::ldexp(std::round(std::ldexp(c, 12)) + (i == 0 ? 0 : noise(rng)), -12);
-        c = std::ldexp(c, scale_exponent) + offset;
-      }
-      mesh.vertices.push_back(p);
-    }
-  }
-  const auto index = [&](int i, int j) {
-    return static_cast<VertexIndex>(((i + nu) % nu) * nv + (j + nv) % nv);
-  };
-  for (int i = 0; i < nu; ++i) {
-    for (int j = 0; j < nv; ++j) {
-      if ((i + j) % 7 == 3) {  // some triangles too
-        mesh.faces.push_back(make_triangle(index(i, j), index(i + 1, j), index(i + 1, j + 1)));
-        mesh.faces.push_back(make_triangle(index(i, j), index(i + 1, j + 1), index(i, j + 1)));
-      } else {
-        mesh.faces.push_back(
-            make_quad(index(i, j), index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)));
-      }
-    }
-  }
-  return mesh;
-}
-
-/// Whether the exact ray touches the convex hull of the face's corners: some face of the
-/// corners' tetrahedron (or the triangle itself) is met (classify_ray_triangle is exact,
-/// and reports rays meeting degenerate triangles as `coplanar`, never as a miss).
-bool touches_hull(const Mesh& mesh, const Face& face, const Point3& origin, const Vector3& d) {
-  const auto& v = mesh.vertices;
-  const auto& c = face.corners;
-  if (face.is_triangle()) {
-    return classify_ray_triangle(origin, d, v[c[0]], v[c[1]], v[c[2]]).kind != RayTriangle::miss;
-  }
-  constexpr int kTetrahedron[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 1, 3}, {1, 2, 3}};
-  for (const auto& t : kTetrahedron) {
-    if (classify_ray_triangle(origin, d, v[c[t[0]]], v[c[t[1]]], v[c[t[2]]]).kind !=
-        RayTriangle::miss) {
-      return true;
-    }
-  }
-  return false;
-}
-
-/// Asserts that the candidates for (origin, direction k) include every touched face.
-/// Returns how many faces were touched.
-std::size_t expect_complete(const Mesh& mesh, const internal::EmbreeCandidates& embree,
-                            const Point3& origin, std::size_t k) {
-  std::vector<FaceIndex> candidates;
-  embree.find(origin, k, candidates);
-  EXPECT_TRUE(std::is_sorted(candidates.begin(), candidates.end()));
-  const Vector3 d = ray_direction(k);
-  std::size_t touched = 0;
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    if (!touches_hull(mesh, mesh.faces[f], origin, d)) continue;
-    ++touched;
-    const bool proposed = std::binary_search(candidates.begin(), candidates.end(), f);
-    EXPECT_TRUE(proposed) << "face " << f << " missed; origin " << std::hexfloat << origin[0] << " "
-                          << origin[1] << " " << origin[2] << std::defaultfloat << ", direction "
-                          << k;
-  }
-  return touched;
-}
 
 struct Magnitude {
   int exponent;
@@ -173,40 +99,13 @@ INSTANTIATE_TEST_SUITE_P(Magnitudes, EmbreeCandidatesTest,
 /// proposed. (With kPad at 2^-25 or below, or 0, this test finds misses.)
 TEST(EmbreeCandidates, OriginsOnAxisAlignedFacesWhoseCoordinatesAreNotFloats) {
   auto rng = testing::seeded_engine("inside.candidates.ties");
-  // Mapped coordinates: the box's half-extent 1/2 + 3 2^-25 (between two floats, rounds
-  // up, away from the centre), grid lines at +-(1/4 + 3 2^-26) (also ties) and 0.
-  const double h = 0.5 + 3 * 0x1p-25;
-  const std::array<double, 5> lines{-h, -(0.25 + 3 * 0x1p-26), 0.0, 0.25 + 3 * 0x1p-26, h};
+  const double h = candidate_oracle::kTieHalfExtent;
+  const auto& lines = candidate_oracle::kTieLines;
   for (const auto& [k, centre] :
        {std::pair{0, 0.0}, std::pair{1000, 0.0}, std::pair{-1000, 0.0}, std::pair{0, 3.0}}) {
     SCOPED_TRACE(k);
     const auto at = [&](double x) { return std::ldexp(x, k) + centre; };
-    // Each face a 4 x 4 grid of quads on its plane.
-    Mesh mesh;
-    const auto vertex = [&](const Point3& p) {
-      mesh.vertices.push_back({at(p[0]), at(p[1]), at(p[2])});
-      return static_cast<VertexIndex>(mesh.vertices.size() - 1);
-    };
-    for (int axis = 0; axis < 3; ++axis) {
-      for (const double side : {-h, h}) {
-        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-        for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
-          for (std::size_t j = 0; j + 1 < lines.size(); ++j) {
-            std::array<VertexIndex, 4> c;
-            const std::array<std::pair<std::size_t, std::size_t>, 4> corners{
-                {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
-            for (std::size_t m = 0; m < 4; ++m) {
-              Point3 p;
-              p[axis] = side;
-              p[u] = lines[corners[m].first];
-              p[v] = lines[corners[m].second];
-              c[m] = vertex(p);
-            }
-            mesh.faces.push_back(make_quad(c[0], c[1], c[2], c[3]));
-          }
-        }
-      }
-    }
+    const Mesh mesh = candidate_oracle::split_box(k, centre);
     const internal::EmbreeCandidates embree(mesh, *internal::corner_box(mesh));
     std::uniform_int_distribution<std::size_t> line(0, lines.size() - 1);
     std::uniform_int_distribution<int> odd(0, (1 << 20) - 1);

@@ -117,8 +117,8 @@ std::string describe(const Mesh& mesh) {
   return s.str();
 }
 
-/// Embree candidates with the space cells on; brute force, the reference, without them:
-/// every comparison of the two checks the cells' labels too.
+/// Embree's and the box tree's candidates with the space cells on; brute force, the
+/// reference, without them: every comparison with it checks the cells' labels too.
 /// The options for `mesh`: the default nonzero rule when its faces are oriented, parity
 /// (which needs no orientation) otherwise. The solids here are embedded, so both rules
 /// label alike; check_solid checks that they do where both apply.
@@ -126,7 +126,7 @@ ClassifierOptions search(CandidateSearch candidates, const Mesh& mesh) {
   ClassifierOptions options;
   options.candidates = candidates;
   options.allow_non_manifold = true;
-  options.space_cells = candidates == CandidateSearch::embree;
+  options.space_cells = candidates != CandidateSearch::brute_force;
   if (mesh::check_mesh(mesh).unbalanced_edges.count > 0) options.rule = FillRule::parity;
   return options;
 }
@@ -154,7 +154,8 @@ struct SolidReport {
   std::size_t with_truth = 0;
 };
 
-/// Classifies every probe with Embree and brute-force candidates, in batches of 1 and 3
+/// Classifies every probe with Embree's, the box tree's and brute-force candidates, in
+/// batches of 1 and 3
 /// threads, with rational arithmetic where asked and with plain double (only counted).
 /// Expects every exact label to equal the truth and all exact ways to agree.
 SolidReport check_solid(std::string_view name, const Mesh& mesh, const std::vector<Probe>& probes,
@@ -189,6 +190,13 @@ SolidReport check_solid(std::string_view name, const Mesh& mesh, const std::vect
     for (std::size_t i = 0; i < points.size(); i += options.brute_force_stride) {
       const Location b = brute.classify(points[i], Arithmetic::exact, scratch);
       if (b != r.exact[i]) bad(i, cat("brute force ", b, ", embree ", r.exact[i]));
+    }
+  }
+  {
+    const Classifier tree(mesh, search(CandidateSearch::box_tree, mesh));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Location t = tree.classify(points[i], Arithmetic::exact, scratch);
+      if (t != r.exact[i]) bad(i, cat("box tree ", t, ", embree ", r.exact[i]));
     }
   }
   if (options.batch) {

@@ -2,7 +2,9 @@
 // (internal/embree_scene.hpp): the message names what failed and Embree's error code (the
 // device's pending one when a device is given, which reading clears; RTC_ERROR_UNKNOWN
 // without a device); the scene is robust, and once committed a ray finds the triangle
-// attached to it; commit() reports an error Embree left on the device.
+// attached to it; commit() reports an error Embree left on the device. Embree's library is
+// opened once per process (internal/embree_library.hpp), and one that cannot be opened is
+// named with the reason.
 
 #include "exactgeo/inside/internal/embree_scene.hpp"
 
@@ -12,6 +14,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 namespace exactgeo::inside {
 namespace {
@@ -47,14 +50,15 @@ TEST(EmbreeScene, ErrorsNameWhatFailedAndTheCode) {
 
 TEST(EmbreeScene, ARobustSceneFindsItsTriangle) {
   EmbreeScene embree;
+  const internal::EmbreeFunctions& rtc = embree.rtc();
   ASSERT_NE(embree.device(), nullptr);
   ASSERT_NE(embree.scene(), nullptr);
-  EXPECT_EQ(rtcGetSceneFlags(embree.scene()), RTC_SCENE_FLAG_ROBUST);
-  RTCGeometry triangle = rtcNewGeometry(embree.device(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  EXPECT_EQ(rtc.rtcGetSceneFlags(embree.scene()), RTC_SCENE_FLAG_ROBUST);
+  RTCGeometry triangle = rtc.rtcNewGeometry(embree.device(), RTC_GEOMETRY_TYPE_TRIANGLE);
   ASSERT_NE(triangle, nullptr);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(triangle, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                        RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3));
-  auto* i = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+  auto* v = static_cast<float*>(rtc.rtcSetNewGeometryBuffer(
+      triangle, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3));
+  auto* i = static_cast<unsigned*>(rtc.rtcSetNewGeometryBuffer(
       triangle, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), 1));
   ASSERT_NE(v, nullptr);
   ASSERT_NE(i, nullptr);
@@ -64,9 +68,9 @@ TEST(EmbreeScene, ARobustSceneFindsItsTriangle) {
   i[0] = 0;
   i[1] = 1;
   i[2] = 2;
-  rtcCommitGeometry(triangle);
-  rtcAttachGeometry(embree.scene(), triangle);
-  rtcReleaseGeometry(triangle);
+  rtc.rtcCommitGeometry(triangle);
+  rtc.rtcAttachGeometry(embree.scene(), triangle);
+  rtc.rtcReleaseGeometry(triangle);
   EXPECT_NO_THROW(embree.commit());
   // Straight down through (1/4, 1/4, 0), and beside the triangle at (1, 1, 0).
   for (const float x : {0.25f, 1.0f}) {
@@ -80,7 +84,7 @@ TEST(EmbreeScene, ARobustSceneFindsItsTriangle) {
     hit.ray.tfar = std::numeric_limits<float>::infinity();
     hit.ray.mask = std::numeric_limits<unsigned>::max();
     hit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(embree.scene(), &context, &hit);
+    rtc.rtcIntersect1(embree.scene(), &context, &hit);
     if (x < 0.5f) {
       EXPECT_NE(hit.hit.geomID, RTC_INVALID_GEOMETRY_ID);
       EXPECT_EQ(hit.ray.tfar, 1.0f);
@@ -92,21 +96,56 @@ TEST(EmbreeScene, ARobustSceneFindsItsTriangle) {
 
 TEST(EmbreeScene, CommitReportsAnErrorLeftOnTheDevice) {
   EmbreeScene embree;
+  const internal::EmbreeFunctions& rtc = embree.rtc();
   EXPECT_NO_THROW(embree.commit());  // an empty scene builds
   // A geometry type Embree does not know: no geometry, and an error on the device.
-  EXPECT_EQ(rtcNewGeometry(embree.device(), kNoGeometryType), nullptr);
+  EXPECT_EQ(rtc.rtcNewGeometry(embree.device(), kNoGeometryType), nullptr);
   const std::string message = error_of([&] { embree.commit(); });
   EXPECT_EQ(message.rfind("Embree: cannot build the scene (error ", 0), 0u) << message;
   EXPECT_EQ(message.find("(error " + code(RTC_ERROR_NONE) + ")"), std::string::npos) << message;
   // The code was read, and reading cleared it: the next commit succeeds, and a device's
   // error is read from the device.
   EXPECT_NO_THROW(embree.commit());
-  EXPECT_EQ(rtcNewGeometry(embree.device(), kNoGeometryType), nullptr);
+  EXPECT_EQ(rtc.rtcNewGeometry(embree.device(), kNoGeometryType), nullptr);
   const std::string from_device =
       error_of([&] { throw_embree_error(embree.device(), "cannot create user geometry"); });
   const std::string the_code = message.substr(message.find("(error"));  // the same error
   EXPECT_EQ(from_device, "Embree: cannot create user geometry " + the_code);
-  EXPECT_EQ(rtcGetDeviceError(embree.device()), RTC_ERROR_NONE);
+  EXPECT_EQ(rtc.rtcGetDeviceError(embree.device()), RTC_ERROR_NONE);
+}
+
+TEST(EmbreeLibrary, IsLoadedOncePerProcessWithEveryFunction) {
+  const internal::EmbreeFunctions& rtc = internal::embree();
+  EXPECT_EQ(&rtc, &internal::embree());
+  EXPECT_EQ(&EmbreeScene().rtc(), &rtc);
+  EXPECT_STREQ(internal::embree_soname(), "libembree3.so.3");
+  const auto again = internal::load_embree(internal::embree_soname());
+  ASSERT_TRUE(std::holds_alternative<internal::EmbreeFunctions>(again));
+  // dlopen hands out the one copy of a library: the same functions.
+  EXPECT_EQ(std::get<internal::EmbreeFunctions>(again).rtcOccluded1, rtc.rtcOccluded1);
+  EXPECT_NE(rtc.rtcNewDevice, nullptr);
+  EXPECT_NE(rtc.rtcSetGeometryIntersectFilterFunction, nullptr);
+}
+
+TEST(EmbreeLibrary, ALibraryThatCannotBeOpenedIsNamedWithTheReason) {
+  const auto missing = internal::load_embree("libembree3-not-installed.so.3");
+  ASSERT_TRUE(std::holds_alternative<std::string>(missing));
+  const std::string why = std::get<std::string>(missing);
+  EXPECT_NE(why.find("libembree3-not-installed.so.3"), std::string::npos) << why;
+  const std::string message = internal::embree_load_error("libembree3.so.3", why);
+  EXPECT_EQ(message.rfind("Embree (libembree3.so.3; Debian package libembree3-3) could not be "
+                          "loaded: ",
+                          0),
+            0u)
+      << message;
+  EXPECT_NE(message.find(why), std::string::npos) << message;
+}
+
+TEST(EmbreeLibrary, ALibraryWithoutEmbreesFunctionsNamesTheFirstMissing) {
+  // The C library opens, and has no rtc function.
+  const auto other = internal::load_embree("libc.so.6");
+  ASSERT_TRUE(std::holds_alternative<std::string>(other));
+  EXPECT_EQ(std::get<std::string>(other), "libc.so.6 has no function rtcNewDevice");
 }
 
 }  // namespace

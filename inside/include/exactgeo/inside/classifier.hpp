@@ -8,9 +8,10 @@
 // (fill_rule.hpp): the signed count of the crossings of a ray from it with the faces.
 // Rays follow the fixed sequence of exactgeo/predicates/ray_directions.hpp; a ray that
 // meets a face's edge or vertex, or lies in the plane of a flat face, is discarded for
-// the next one, which the sequence guarantees ends. Embree proposes candidate faces along
-// each ray; the exact predicates (cross_face_signed: ray_patch_crossings,
-// classify_ray_triangle) decide every one.
+// the next one, which the sequence guarantees ends. A tree of boxes (exactgeo's own, or
+// Embree's for large work: CandidateSearch) proposes candidate faces along each ray; the
+// exact predicates (cross_face_signed: ray_patch_crossings, classify_ray_triangle)
+// decide every one.
 //
 // An open surface (boundary edges, each run net once more one way than the other) is
 // labelled by its generalized winding number: the ray's signed count plus a certified
@@ -44,12 +45,25 @@ struct OpenBoxAnswer;  // internal/open_space_cells.hpp
 
 /// Where candidate faces come from.
 enum class CandidateSearch : std::uint8_t {
-  embree,       ///< a BVH over conservative float boxes (the default)
-  brute_force,  ///< every face for every ray: the reference the BVH is tested against
+  /// exactgeo's box tree or Embree by the mesh's faces and the points expected
+  /// (ClassifierOptions::expected_points): the box tree for fewer than kEmbreePoints
+  /// points, for fewer than kBoxTreeFaces faces when the count is not known, and for
+  /// fewer than kBoxTreeFacesManyPoints faces in any case; Embree otherwise (the default).
+  /// Below those counts, loading Embree, starting its device and building its BVH cost
+  /// more than its faster rays save.
+  automatic,
+  embree,       ///< Embree's BVH over conservative float boxes
+  box_tree,     ///< exactgeo's box tree over the same boxes, rays tested in double
+  brute_force,  ///< every face for every ray: the reference the trees are tested against
 };
 
+/// CandidateSearch::automatic's counts (docs/inside.md, "End to end").
+inline constexpr std::size_t kBoxTreeFaces = 4096;
+inline constexpr std::size_t kEmbreePoints = std::size_t{1} << 19;
+inline constexpr std::size_t kBoxTreeFacesManyPoints = 256;
+
 struct ClassifierOptions {
-  CandidateSearch candidates = CandidateSearch::embree;
+  CandidateSearch candidates = CandidateSearch::automatic;
   /// Parity only: accept edges shared by four, six, ... faces (parity is still well
   /// defined when every edge has an even number of faces); by default parity accepts
   /// only closed manifold meshes.
@@ -61,7 +75,8 @@ struct ClassifierOptions {
   /// About how many points will be classified, where the caller knows (a points file's
   /// size): the space cells are then sized to the work as well as to the mesh, so that a
   /// few thousand points do not pay for a grid built for millions. Any value gives the
-  /// same labels; nullopt sizes the cells by the mesh alone.
+  /// same labels; nullopt sizes the cells by the mesh alone. CandidateSearch::automatic
+  /// reads it too (nullopt: as many points as make Embree worth loading).
   std::optional<std::size_t> expected_points = std::nullopt;
   /// nonzero and positive need faces oriented alike (no edge run the same way by two more
   /// faces than the other way), closed or open; parity needs a closed surface.
@@ -82,7 +97,8 @@ class Classifier {
   /// Checks the mesh (check_mesh; orientable_surface_problem for nonzero and positive,
   /// closed_surface_problem for parity) and builds the candidate search. Throws
   /// std::invalid_argument with the problem's description if the mesh cannot be classified
-  /// against by the rule, std::runtime_error if Embree fails.
+  /// against by the rule, std::runtime_error if Embree is used and fails (cannot be loaded,
+  /// out of memory).
   explicit Classifier(mesh::Mesh mesh, ClassifierOptions options = {});
   ~Classifier();
   Classifier(Classifier&&) noexcept;
