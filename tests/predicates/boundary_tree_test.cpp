@@ -291,6 +291,41 @@ TEST(BoundaryTree, AFarLoopWhoseFanFillsMostOfItsBoundIsHeld) {
   }
 }
 
+TEST(BoundaryTree, AFarOpenTrailClosedByItsChordIsHeld) {
+  // The same rectangle without its side x = -1: an open trail from (-1, -0.025) to
+  // (-1, 0.025), which the root stands in for by its chord (the missing side) and the
+  // bound of the rectangle its chord closes, F = 0.1 again, of which the chord's triangle
+  // about the centre is a quarter: a nested bound without the node's own chords (its
+  // children's fans and chords alone) falls below the rectangle's solid angle.
+  for (const int n : {5, 7, 11}) {
+    Chain chain;
+    for (int i = 0; i <= n; ++i)
+      chain.vertices.push_back({-1.0 + 2.0 * i / n, -0.025, 0.0});
+    for (int i = 0; i <= n; ++i)
+      chain.vertices.push_back({1.0 - 2.0 * i / n, 0.025, 0.0});
+    const auto size = static_cast<VertexIndex>(chain.vertices.size());
+    for (VertexIndex i = 0; i + 1 < size; ++i)
+      chain.edges.push_back({i, i + 1, 1});
+    const BoundaryTree tree(chain.vertices, chain.edges);
+    for (std::size_t k = 0; k < 3; ++k) {
+      for (const double h : {1.5, -1.5}) {
+        const Point3 p{0.0, 0.0, h};
+        Vector3 ray = ray_direction(k);
+        if (h < 0) ray = {-ray[0], -ray[1], -ray[2]};  // away from the rectangle
+        BoundaryTree::Refinement refinement;
+        const std::optional<Enclosure> e = tree.enclosure(p, ray, 0.5, refinement);
+        ASSERT_TRUE(e.has_value());
+        // The root alone: its chord's angle and its bound.
+        EXPECT_EQ(refinement.far_nodes, 1u);
+        EXPECT_EQ(refinement.angles, 1u);
+        const double truth = oracle_term(p, ray, chain);
+        EXPECT_LE(e->lower, truth) << h << ", " << n;
+        EXPECT_GE(e->upper, truth) << h << ", " << n;
+      }
+    }
+  }
+}
+
 class BoundaryTreeLevels : public ::testing::TestWithParam<int> {};
 
 TEST_P(BoundaryTreeLevels, SettledLevelsAreOnTheOraclesSide) {
