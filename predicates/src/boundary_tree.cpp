@@ -477,11 +477,13 @@ std::optional<BoundaryTree::FarValue> BoundaryTree::far_value(const Node& node, 
 template <class Done>
 std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, const Vector3& ray,
                                                           Refinement& r, std::size_t most_angles,
+                                                          double first_cut,
                                                           const Done& done) const {
   r.heap.clear();
   r.stack.clear();
   r.angles = r.far_nodes = r.expansions = 0;
   r.slack = 0.0;
+  r.opened = false;
   if (nodes_.empty()) return Refined{};
   constexpr double kLargeComponent = 0x1p1000;
   if (!(std::abs(ray[0]) < kLargeComponent && std::abs(ray[1]) < kLargeComponent &&
@@ -526,7 +528,8 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
   };
   // The nodes on the stack into the sum: far ones onto the heap, leaves' edges, the rest
   // opened.
-  double limit = kBoundaryTreeFirstCut;  // the largest bound a far node may enter with
+  double limit = first_cut;  // the largest bound a far node may enter with
+  bool opened = false;       // whether the first cut left the point unsettled
   // The far nodes become a heap only when the first cut does not settle the point (most
   // points are settled there).
   bool heaped = false;
@@ -577,6 +580,7 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
                          kTiny;
     const double lower = sum - error, upper = sum + error;
     if (done(lower, upper) || r.heap.empty()) {
+      r.opened = opened;
       r.far_nodes = r.heap.size();
       for (const Refinement::Far& far : r.heap) {
         r.expansions += far.expanded;
@@ -585,6 +589,7 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
       return Refined{BoundaryTermKind::enclosed, lower, upper};
     }
     if (r.angles > most_angles) return std::nullopt;
+    opened = true;
     // The far node of largest bound opened; its children enter as far nodes only with
     // at most kBoundaryTreeOpening times less (else they are opened before their ends
     // are computed).
@@ -619,10 +624,17 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
   std::optional<BoundaryTerm> settled;  // the last enclosure's verdict
   // Past as many angles as there are edges, the term over every edge is the better next
   // step.
-  const auto sum = refine(point, ray, scratch, edges_.size(), [&](double lower, double upper) {
-    settled = internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
-    return settled.has_value();
-  });
+  const auto sum = refine(
+      point, ray, scratch, edges_.size(), scratch.first_cut, [&](double lower, double upper) {
+        settled = internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
+        return settled.has_value();
+      });
+  // The next point's first cut (a cost, carried in the scratch): down to
+  // kBoundaryTreeFinestFirstCut while points need opening, back up to
+  // kBoundaryTreeFirstCut, doubling, while the first cut settles them.
+  scratch.first_cut = !sum || scratch.opened
+                          ? std::max(kBoundaryTreeFinestFirstCut, scratch.first_cut / 2)
+                          : std::min(kBoundaryTreeFirstCut, scratch.first_cut * 2);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return settled;
 }
@@ -630,8 +642,9 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
 std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vector3& ray,
                                                  double width, Refinement& scratch) const {
   const double radians = width * 2 * std::numbers::pi;
-  const auto sum = refine(point, ray, scratch, std::numeric_limits<std::size_t>::max(),
-                          [&](double lower, double upper) { return upper - lower <= radians; });
+  const auto sum =
+      refine(point, ray, scratch, std::numeric_limits<std::size_t>::max(), kBoundaryTreeFirstCut,
+             [&](double lower, double upper) { return upper - lower <= radians; });
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
 }
@@ -649,7 +662,7 @@ std::optional<Enclosure> BoundaryTree::enclosure_apart(const Point3& point, cons
       return upper + gap < level * to_radians || lower - gap > level * to_radians;
     });
   };
-  const auto sum = refine(point, ray, scratch, most_angles, apart);
+  const auto sum = refine(point, ray, scratch, most_angles, kBoundaryTreeFirstCut, apart);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
 }
