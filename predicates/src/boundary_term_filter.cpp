@@ -44,22 +44,28 @@ namespace {
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
 
+/// normalized's rare case (the largest component beyond 2^+-1000, zero or not finite),
+/// through the library; kept out of line so that the common case inlines.
+[[gnu::noinline]] std::optional<Vector3> normalized_by_ldexp(const Vector3& v, double largest) {
+  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
+  const int shift = -std::ilogb(largest);
+  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
+}
+
 /// The vector scaled by a power of two so that its largest component is in [1, 2);
 /// nullopt when it is zero or not finite.
-std::optional<Vector3> normalized(const Vector3& v) {
+inline std::optional<Vector3> normalized(const Vector3& v) {
   const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
   // The common case without library calls: largest = 1.f 2^(b - 1023) with b its biased
   // exponent; for 2^-1000 <= largest < 2^1000 the factor 2^(1023 - b) is a normal double
   // (biased exponent 2046 - b), and a product by it is what ldexp gives (exact, or rounded
   // once where it underflows).
   const auto biased = static_cast<int>(std::bit_cast<std::uint64_t>(largest) >> 52);
-  if (biased > 23 && biased < 2023) {
+  if (biased > 23 && biased < 2023) [[likely]] {
     const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(2046 - biased) << 52);
     return Vector3{v[0] * scale, v[1] * scale, v[2] * scale};
   }
-  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
-  const int shift = -std::ilogb(largest);
-  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
+  return normalized_by_ldexp(v, largest);
 }
 
 double dot(const Vector3& a, const Vector3& b) {

@@ -226,6 +226,51 @@ BoundaryTree::BoundaryTree(std::span<const Point3> vertices, std::span<const Bou
   places_ = {};
 }
 
+/// Chords from `starts` to `finishes` (vertices with the flow they lack and carry in
+/// excess, equal in total) onto chords_: each start joined to the nearest finish with flow
+/// left, as often as both allow; a chord whose two vertices coincide in space has no
+/// cone term (its triangles have no area) and is left out. Nearest, not optimal: any
+/// joining closes the node's edges (boundary_tree.hpp, "Chords"), and shorter chords
+/// only make the bounds
+/// smaller (a cost); past kChordSearch pairs the finishes are taken in order.
+void BoundaryTree::join_chords(std::vector<std::pair<VertexIndex, std::int64_t>>& starts,
+                               std::vector<std::pair<VertexIndex, std::int64_t>>& finishes) {
+  constexpr std::size_t kChordSearch = 4096;
+  const bool nearest = starts.size() * finishes.size() <= kChordSearch;
+  std::size_t next = 0;  // finishes before it are spent (in order)
+  for (auto& [s, left] : starts) {
+    while (left > 0) {
+      std::size_t best = next;
+      if (nearest) {
+        double best_d2 = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < finishes.size(); ++k) {
+          if (finishes[k].second == 0) continue;
+          double d2 = 0.0;
+          for (int i = 0; i < 3; ++i) {
+            const double d = vertices_[finishes[k].first][i] - vertices_[s][i];
+            d2 += d * d;
+          }
+          if (d2 < best_d2 || best_d2 == std::numeric_limits<double>::infinity()) {
+            best_d2 = d2;
+            best = k;
+          }
+        }
+      } else {
+        while (finishes[next].second == 0)
+          ++next;
+        best = next;
+      }
+      auto& [f, carried] = finishes[best];
+      const std::int64_t m = std::min(left, carried);
+      left -= m;
+      carried -= m;
+      if (vertices_[s] != vertices_[f]) {
+        chords_.push_back({s, f, static_cast<std::int32_t>(m)});
+      }
+    }
+  }
+}
+
 std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
   const auto index = static_cast<std::uint32_t>(nodes_.size());
   nodes_.emplace_back();
@@ -250,11 +295,37 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
   for (int i = 0; i < 3; ++i) {
     centre[i] = std::clamp(0.5 * node.lower[i] + 0.5 * node.upper[i], node.lower[i], node.upper[i]);
   }
-  const auto c = static_cast<VertexIndex>(vertices_.size());
-  vertices_.push_back(centre);
   node.centre = centre;
-  set_expansion(node, own);
-  // F = sum |m| area(a, b, c), rounded up (the children may give a smaller one, below).
+  // The chords (boundary_tree.hpp, "Chords"): delta(x) = what enters x minus what leaves
+  // it; each start (delta < 0) joined to ends (delta > 0), the nearest first, until its
+  // flow is spent. The node's edges with its chords reversed are a closed chain Z.
+  std::vector<std::pair<VertexIndex, std::int64_t>> flow;
+  flow.reserve(2 * count);
+  for (const BoundaryEdge& e : own) {
+    flow.emplace_back(e.to, e.multiplicity);
+    flow.emplace_back(e.from, -std::int64_t{e.multiplicity});
+  }
+  std::sort(flow.begin(), flow.end());
+  std::vector<std::pair<VertexIndex, std::int64_t>> starts, finishes;
+  for (std::size_t i = 0; i < flow.size();) {
+    std::int64_t delta = 0;
+    std::size_t j = i;
+    for (; j < flow.size() && flow[j].first == flow[i].first; ++j)
+      delta += flow[j].second;
+    if (delta < 0) starts.emplace_back(flow[i].first, -delta);
+    if (delta > 0) finishes.emplace_back(flow[i].first, delta);
+    i = j;
+  }
+  node.chords_first = static_cast<std::uint32_t>(chords_.size());
+  join_chords(starts, finishes);
+  node.chords_count = static_cast<std::uint32_t>(chords_.size()) - node.chords_first;
+  const std::span<const BoundaryEdge> chords(chords_.data() + node.chords_first, node.chords_count);
+  std::vector<BoundaryEdge> closed(own.begin(), own.end());
+  for (const BoundaryEdge& e : chords)
+    closed.push_back({e.to, e.from, e.multiplicity});
+  set_expansion(node, closed);
+  // F = sum |m| area(a, b, c) over Z, rounded up (the children may give a smaller one,
+  // below).
   const auto fan_of = [&](std::span<const BoundaryEdge> edges) {
     double fan = 0.0;
     for (const BoundaryEdge& e : edges) {
@@ -263,34 +334,15 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     }
     return fan;
   };
-  node.fan = fan_of(own);
+  node.fan = fan_of(closed);
   for (const BoundaryEdge& e : own) {
     node.length = up(node.length + up(length_above(vertices_[e.from], vertices_[e.to]) *
                                       std::abs(static_cast<double>(e.multiplicity))));
   }
-  // The ends: delta(x) = what enters x minus what leaves it; an edge c -> x of multiplicity
-  // delta(x) (x -> c of -delta(x) when negative). An end at c itself has no cone term.
-  std::vector<std::pair<VertexIndex, std::int64_t>> flow;
-  flow.reserve(2 * count);
-  for (const BoundaryEdge& e : own) {
-    flow.emplace_back(e.to, e.multiplicity);
-    flow.emplace_back(e.from, -std::int64_t{e.multiplicity});
+  for (const BoundaryEdge& e : chords) {
+    node.end_length = up(node.end_length + up(length_above(vertices_[e.from], vertices_[e.to]) *
+                                              std::abs(static_cast<double>(e.multiplicity))));
   }
-  std::sort(flow.begin(), flow.end());
-  node.ends_first = static_cast<std::uint32_t>(ends_.size());
-  for (std::size_t i = 0; i < flow.size();) {
-    std::int64_t delta = 0;
-    std::size_t j = i;
-    for (; j < flow.size() && flow[j].first == flow[i].first; ++j)
-      delta += flow[j].second;
-    const VertexIndex x = flow[i].first;
-    if (delta != 0 && vertices_[x] != centre) {
-      const auto m = static_cast<std::int32_t>(std::abs(delta));
-      ends_.push_back(delta > 0 ? BoundaryEdge{c, x, m} : BoundaryEdge{x, c, m});
-    }
-    i = j;
-  }
-  node.ends_count = static_cast<std::uint32_t>(ends_.size()) - node.ends_first;
   if (count > kBoundaryTreeLeafEdges) {
     // Halves by the edges' midpoints along the box's longest axis.
     int axis = 0;
@@ -333,18 +385,19 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     }
     node.left = build(first, half);
     node.right = build(first + half, count - half);
-    // The children's bounds and the fan of their ends about this centre
+    // The children's bounds and the fan of their and this node's chords about this centre
     // (boundary_tree.hpp, "Nested bounds"): far smaller than the direct F where the
     // edges form small closed loops, whose fans about a distant centre are long and thin.
-    double nested = up(nodes_[node.left].fan + nodes_[node.right].fan);
+    double nested = up(up(nodes_[node.left].fan + nodes_[node.right].fan) +
+                       fan_of(std::span(chords_).subspan(node.chords_first, node.chords_count)));
     for (const std::uint32_t child : {node.left, node.right}) {
       const Node& n = nodes_[child];
-      nested = up(nested + fan_of(std::span(ends_).subspan(n.ends_first, n.ends_count)));
+      nested = up(nested + fan_of(std::span(chords_).subspan(n.chords_first, n.chords_count)));
     }
     node.fan = std::min(node.fan, nested);
   }
-  // (A node of more ends costs nearly what its edges cost, and is opened.)
-  node.far_pays = 2 * node.ends_count < node.count && std::isfinite(node.fan);
+  // (A node of more chords costs nearly what its edges cost, and is opened.)
+  node.far_pays = 2 * node.chords_count < node.count && std::isfinite(node.fan);
   nodes_[index] = node;
   return index;
 }
@@ -404,31 +457,33 @@ std::optional<BoundaryTree::FarValue> BoundaryTree::far_value(const Node& node, 
     expansion = 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
   }
   double value = expansion, magnitudes = std::abs(expansion), errors = 0.0;
-  for (std::uint32_t i = 0; i < node.ends_count; ++i) {
-    const BoundaryEdge& e = ends_[node.ends_first + i];
+  for (std::uint32_t i = 0; i < node.chords_count; ++i) {
+    const BoundaryEdge& e = chords_[node.chords_first + i];
     const auto angle =
         internal::half_angle(p, q.d, q.ld, vertices_[e.from], vertices_[e.to], q.apex);
-    // (The ray misses the box, which holds the ends: never ray_on_edge.)
+    // (The ray misses the box, which holds the chords: never ray_on_edge.)
     if (!angle || angle->kind != BoundaryTermKind::enclosed) return std::nullopt;
     const double m = e.multiplicity;
     value += m * angle->theta;
     magnitudes += std::abs(m * angle->theta);
     errors += std::abs(m) * angle->error;
   }
-  // The sum of ends + 1 terms rounds within (ends + 1) u of their magnitudes, and each
-  // product by a multiplicity within u of its own: (ends + 3) u covers both.
-  errors += (static_cast<double>(node.ends_count) + 3) * kU * magnitudes;
+  // The sum of chords + 1 terms rounds within (chords + 1) u of their magnitudes, and
+  // each product by a multiplicity within u of its own: (chords + 3) u covers both.
+  errors += (static_cast<double>(node.chords_count) + 3) * kU * magnitudes;
   return FarValue{value, errors, bound, expanded};
 }
 
 template <class Done>
 std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, const Vector3& ray,
                                                           Refinement& r, std::size_t most_angles,
+                                                          double first_cut,
                                                           const Done& done) const {
   r.heap.clear();
   r.stack.clear();
   r.angles = r.far_nodes = r.expansions = 0;
   r.slack = 0.0;
+  r.opened = false;
   if (nodes_.empty()) return Refined{};
   constexpr double kLargeComponent = 0x1p1000;
   if (!(std::abs(ray[0]) < kLargeComponent && std::abs(ray[1]) < kLargeComponent &&
@@ -473,7 +528,8 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
   };
   // The nodes on the stack into the sum: far ones onto the heap, leaves' edges, the rest
   // opened.
-  double limit = kBoundaryTreeFirstCut;  // the largest bound a far node may enter with
+  double limit = first_cut;  // the largest bound a far node may enter with
+  bool opened = false;       // whether the first cut left the point unsettled
   // The far nodes become a heap only when the first cut does not settle the point (most
   // points are settled there).
   bool heaped = false;
@@ -494,7 +550,7 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
         bounds += far->bound;
         bound_magnitudes += far->bound;
         ++bound_terms;
-        r.angles += node.ends_count;
+        r.angles += node.chords_count;
         r.heap.push_back({far->bound, far->value, n, far->expanded});
         if (heaped) std::push_heap(r.heap.begin(), r.heap.end(), by_bound);
         continue;
@@ -524,6 +580,7 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
                          kTiny;
     const double lower = sum - error, upper = sum + error;
     if (done(lower, upper) || r.heap.empty()) {
+      r.opened = opened;
       r.far_nodes = r.heap.size();
       for (const Refinement::Far& far : r.heap) {
         r.expansions += far.expanded;
@@ -532,6 +589,7 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
       return Refined{BoundaryTermKind::enclosed, lower, upper};
     }
     if (r.angles > most_angles) return std::nullopt;
+    opened = true;
     // The far node of largest bound opened; its children enter as far nodes only with
     // at most kBoundaryTreeOpening times less (else they are opened before their ends
     // are computed).
@@ -566,10 +624,17 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
   std::optional<BoundaryTerm> settled;  // the last enclosure's verdict
   // Past as many angles as there are edges, the term over every edge is the better next
   // step.
-  const auto sum = refine(point, ray, scratch, edges_.size(), [&](double lower, double upper) {
-    settled = internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
-    return settled.has_value();
-  });
+  const auto sum = refine(
+      point, ray, scratch, edges_.size(), scratch.first_cut, [&](double lower, double upper) {
+        settled = internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
+        return settled.has_value();
+      });
+  // The next point's first cut (a cost, carried in the scratch): down to
+  // kBoundaryTreeFinestFirstCut while points need opening, back up to
+  // kBoundaryTreeFirstCut, doubling, while the first cut settles them.
+  scratch.first_cut = !sum || scratch.opened
+                          ? std::max(kBoundaryTreeFinestFirstCut, scratch.first_cut / 2)
+                          : std::min(kBoundaryTreeFirstCut, scratch.first_cut * 2);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return settled;
 }
@@ -577,8 +642,9 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
 std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vector3& ray,
                                                  double width, Refinement& scratch) const {
   const double radians = width * 2 * std::numbers::pi;
-  const auto sum = refine(point, ray, scratch, std::numeric_limits<std::size_t>::max(),
-                          [&](double lower, double upper) { return upper - lower <= radians; });
+  const auto sum =
+      refine(point, ray, scratch, std::numeric_limits<std::size_t>::max(), kBoundaryTreeFirstCut,
+             [&](double lower, double upper) { return upper - lower <= radians; });
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
 }
@@ -596,7 +662,7 @@ std::optional<Enclosure> BoundaryTree::enclosure_apart(const Point3& point, cons
       return upper + gap < level * to_radians || lower - gap > level * to_radians;
     });
   };
-  const auto sum = refine(point, ray, scratch, most_angles, apart);
+  const auto sum = refine(point, ray, scratch, most_angles, kBoundaryTreeFirstCut, apart);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
 }

@@ -19,11 +19,34 @@ constexpr double kOneOverFourPiAbove = 0.0796;
 /// cell (opening it would gain little); a cost, not a certificate.
 constexpr double kSeparation = 2.0;
 
+/// Covers the rounding of dipole_bound's operations (a root, two products, two
+/// quotients, a sum: within 7u relatively, u = 2^-53) with room to spare.
+constexpr double kDipoleRounding = 1 + 0x1p-49;
+
 double up(double x) noexcept {
   return internal::DoubleInterval::up(x);
 }
 
+/// |b - a| from above: three differences, three squares, two sums and a root, each within
+/// u relatively (a difference that underflows is exact; the squares' underflow is covered
+/// by the absolute term), within 9u < 2^-49 of the exact length.
+double edge_length_above(const Point3& a, const Point3& b) noexcept {
+  double sum = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double d = b[i] - a[i];
+    sum += d * d;
+  }
+  return std::sqrt(sum) * (1 + 0x1p-49) + 0x1p-500;
+}
+
 }  // namespace
+
+/// 2 F / d^3 + X / d^2, from above, for d^2 >= d2 > 0 (boundary_tree.hpp, "Variation
+/// over a box": the node's triangle loops and ends as currents); +inf where F or X is.
+double BoundaryTree::dipole_bound(const Node& node, double d2) noexcept {
+  const double d = std::sqrt(d2);
+  return (2 * node.fan / (d2 * d) + node.end_length / d2) * kDipoleRounding;
+}
 
 std::optional<double> BoundaryTree::variation(const Point3& lower, const Point3& upper,
                                               const Point3& centre, double most) const {
@@ -54,10 +77,28 @@ std::optional<double> BoundaryTree::variation(const Point3& lower, const Point3&
       diagonal2 += extent * extent;
     }
     const bool separated = d2 > 0.0 && diagonal2 * (kSeparation * kSeparation) <= d2;
-    if (node.left == 0 || separated) {
-      // The box meets a leaf's box; or the square overflowed (L / inf would be 0).
-      if (!(d2 > 0.0) || !std::isfinite(d2)) return std::nullopt;
-      sum += node.length / d2;
+    if (node.left == 0 && !separated) {
+      // A near leaf: its edges one by one, each from its own box (the field of an edge
+      // is at most |m| length / d^2 with d its distance from C, at least its box's).
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+        const BoundaryEdge& e = edges_[i];
+        const Point3& a = vertices_[e.from];
+        const Point3& b = vertices_[e.to];
+        const Point3 low{std::min(a[0], b[0]), std::min(a[1], b[1]), std::min(a[2], b[2])};
+        const Point3 high{std::max(a[0], b[0]), std::max(a[1], b[1]), std::max(a[2], b[2])};
+        const double e2 = internal::box_distance2_below(lower, upper, low, high);
+        // The box meets the edge's box; or the square overflowed (L / inf would be 0).
+        if (!(e2 > 0.0) || !std::isfinite(e2)) return std::nullopt;
+        sum += edge_length_above(a, b) * std::abs(static_cast<double>(e.multiplicity)) / e2;
+        ++terms;
+      }
+      if (!(sum <= limit)) return std::nullopt;
+      continue;
+    }
+    if (separated) {
+      // The square overflowed (L / inf would be 0).
+      if (!std::isfinite(d2)) return std::nullopt;
+      sum += std::min(node.length / d2, dipole_bound(node, d2));
       ++terms;
       if (!(sum <= limit)) return std::nullopt;
       continue;

@@ -1,13 +1,16 @@
 #pragma once
 
 // Intervals of doubles rounded outward: every operation's result is the correctly rounded
-// one moved one ulp outward (std::nextafter), which holds the exact result because IEEE 754
+// one moved one ulp outward (what std::nextafter gives, computed from the bits), which holds the
+// exact result because IEEE 754
 // +, -, *, / and sqrt are correctly rounded (within half an ulp, or half the subnormal
 // spacing when the result underflows). An overflow gives an infinite bound, and the caller
 // gives up on the stage. Used by the first stage of boundary_term.cpp.
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace exactgeo::internal {
@@ -16,12 +19,19 @@ struct DoubleInterval {
   double lo = 0.0;
   double hi = 0.0;
 
-  static double down(double x) noexcept {
-    return std::nextafter(x, -std::numeric_limits<double>::infinity());
-  }
+  /// std::nextafter(x, +inf) without the library call, from the bits: finite doubles of
+  /// one sign are ordered as their bit patterns are (IEEE 754), so the next one up is the
+  /// pattern plus one for x > 0 and minus one for x < 0 (-inf to -DBL_MAX, DBL_MAX to
+  /// +inf, -2^-1074 to -0); either zero goes to 2^-1074; NaN and +inf stay.
+  /// (DoubleInterval.UpAndDownAreNextafter holds it to std::nextafter.)
   static double up(double x) noexcept {
-    return std::nextafter(x, std::numeric_limits<double>::infinity());
+    if (!(x < std::numeric_limits<double>::infinity())) return x;
+    if (x == 0.0) return std::numeric_limits<double>::denorm_min();
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    return std::bit_cast<double>(x > 0.0 ? bits + 1 : bits - 1);
   }
+  /// std::nextafter(x, -inf): the mirror image of up.
+  static double down(double x) noexcept { return -up(-x); }
 
   static DoubleInterval exact(double x) noexcept { return {x, x}; }
 

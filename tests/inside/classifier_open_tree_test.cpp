@@ -3,8 +3,9 @@
 // every edge near a level: labels against the definition, w = (1/4 pi) sum of the faces'
 // solid angles in 512-bit MPFR (support/solid_angle_oracle.hpp), which shares no code with
 // the library. Spot (its quads split into triangles) with 1 to 1,000 faces cut, a ribbon
-// whose two rims have 10,000 edges, and a sphere with holes of every size repeated three
-// times (every rim edge of multiplicity 3); points anywhere in the box, next to a rim
+// whose two rims have 10,000 edges, a sphere with holes of every size repeated three
+// times (every rim edge of multiplicity 3), and a wavy sheet with hundreds of small holes
+// and long slits, once and three times; points anywhere in the box, next to a rim
 // and far beyond the box, at 2^0 and 2^+-1000. And an open box of 16 x 16 quads a side:
 // points in its hole, w = 1/2 exactly, stay undecided, and one ulp off they are decided.
 
@@ -38,6 +39,7 @@ namespace {
 using mesh::Mesh;
 using testing::holed_sphere;
 using testing::open_box_of_quads;
+using testing::perforated_sheet;
 using testing::ribbon;
 using testing::scaled;
 using testing::Triangle;
@@ -164,6 +166,32 @@ TEST_P(HoledSphereThreeTimes, LabelsAreThoseOfTheDefinition) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, HoledSphereThreeTimes, ::testing::Values(0, 1000, -1000),
+                         [](const ::testing::TestParamInfo<int>& param_info) {
+                           const int k = param_info.param;
+                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
+                         });
+
+class PerforatedSheet : public ::testing::TestWithParam<int> {};
+
+TEST_P(PerforatedSheet, LabelsAreThoseOfTheDefinition) {
+  // Hundreds of small holes and long slits: the far nodes of most points are pieces of
+  // rim, each standing in by its chords (boundary_tree.hpp, "Chords"), the holes by their
+  // expansions; and three times over, every rim edge then of multiplicity 3.
+  const int scale = GetParam();
+  auto rng = testing::seeded_engine("inside.open_tree.sheet." + std::to_string(scale));
+  const Mesh mesh = perforated_sheet(rng, 56, 14);
+  Tally tally;
+  for (const int copies : {1, 3}) {
+    expect_oracle_labels(scaled(mesh, scale), copies, rng, 18, 14, 4, tally);
+    ASSERT_FALSE(HasFatalFailure());
+  }
+  const Classifier classifier(mesh);
+  EXPECT_GT(classifier.boundary().size(), 1500u);
+  EXPECT_GT(tally.inside, tally.compared / 20);
+  EXPECT_GT(tally.compared - tally.inside, tally.compared / 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, PerforatedSheet, ::testing::Values(0, 1000, -1000),
                          [](const ::testing::TestParamInfo<int>& param_info) {
                            const int k = param_info.param;
                            return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));

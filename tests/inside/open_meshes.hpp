@@ -1,7 +1,8 @@
 #pragma once
 
 // Open surfaces for the open-surface tests: a mesh scaled by a power of two, a ribbon
-// with long rims, a sphere with holes of every size, and a box without its top.
+// with long rims, a sphere with holes of every size, a sheet with hundreds of holes and
+// long slits, and a box without its top.
 
 #include <array>
 #include <cmath>
@@ -69,6 +70,36 @@ inline Mesh holed_sphere(std::mt19937_64& rng, std::size_t rings, std::size_t se
       // A window of 6 x 8 quads on one side, and one face in 41 elsewhere.
       const bool window = i >= rings / 3 && i < rings / 3 + 6 && j < 8;
       if (window) continue;
+      if (coin(rng) != 0)
+        mesh.faces.push_back(mesh::make_triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1)));
+      if (coin(rng) != 0)
+        mesh.faces.push_back(mesh::make_triangle(at(i, j), at(i + 1, j + 1), at(i, j + 1)));
+    }
+  }
+  return mesh;
+}
+
+/// A wavy sheet of 2 n^2 triangles over the unit square with many holes: each triangle
+/// cut out with probability 1 / `one_in` (hundreds of small holes, some merged), and
+/// slits, every fourth row of cells from the third, cut along all but two cells at each
+/// end (long rims: about 4 n edges each).
+inline Mesh perforated_sheet(std::mt19937_64& rng, std::size_t n, std::size_t one_in) {
+  Mesh mesh;
+  for (std::size_t j = 0; j <= n; ++j) {
+    for (std::size_t i = 0; i <= n; ++i) {
+      const double x = static_cast<double>(i) / static_cast<double>(n);
+      const double y = static_cast<double>(j) / static_cast<double>(n);
+      mesh.vertices.push_back({x, y, 0.15 * std::sin(3 * x) * std::cos(2 * y) + 0.05 * x * y});
+    }
+  }
+  const auto at = [&](std::size_t i, std::size_t j) {
+    return static_cast<VertexIndex>(j * (n + 1) + i);
+  };
+  std::uniform_int_distribution<std::size_t> coin(0, one_in - 1);
+  for (std::size_t j = 0; j < n; ++j) {
+    const bool slit_row = j % 4 == 2 && j + 2 < n;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (slit_row && i >= 2 && i + 2 < n) continue;
       if (coin(rng) != 0)
         mesh.faces.push_back(mesh::make_triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1)));
       if (coin(rng) != 0)

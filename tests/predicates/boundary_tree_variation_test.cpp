@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <string>
@@ -154,6 +155,73 @@ TEST_P(VariationAtScale, RandomBoxesNearTheRectangleHoldTheChange) {
     ASSERT_GE(*bound, change) << testing::hex(lower) << " " << testing::hex(upper);
   }
   EXPECT_GT(bounded, 40u);
+}
+
+TEST_P(VariationAtScale, AFarLoopIsBoundedAsADipoleAndTightly) {
+  // A unit square loop in z = 0 (one leaf, no chords, its fan about the centre the square:
+  // F = 1), and thin boxes along its axis from z0 - r to z0 + r: the bound taken is
+  // r (1/4 pi) 2 F / d^3 with d = z0 - r (the loop's field falls as a dipole's, where its
+  // rim's length over d^2 would be 2 d / F times more), and the change from the centre
+  // to the near end, (1/4 pi) (Omega(z0 - r) - Omega(z0)) with
+  // Omega(z) = 4 asin(1 / (1 + 4 z^2)), is 0.92 of it at z0 = 10, r = 1/2. A bound with
+  // half the dipole's factor, or the rim's length alone, misses it (by 0.54 and 19 times).
+  const int k = GetParam();
+  auto rng = testing::seeded_engine("predicates.boundary_tree.variation.loop." + std::to_string(k));
+  Rectangle r;
+  for (const auto& [x, y] :
+       std::array<std::array<double, 2>, 4>{{{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}}) {
+    r.vertices.push_back({std::ldexp(x, k), std::ldexp(y, k), 0.0});
+  }
+  for (VertexIndex i = 0; i < 4; ++i)
+    r.edges.push_back({i, (i + 1) % 4, 1});
+  r.triangles = {{r.vertices[0], r.vertices[1], r.vertices[2]},
+                 {r.vertices[0], r.vertices[2], r.vertices[3]}};
+  const BoundaryTree tree(r.vertices, r.edges);
+  for (const double z0 : {10.0, 20.0, -10.0}) {
+    const double thin = 0x1p-20, reach = 0.5;
+    const Point3 lower{std::ldexp(-thin, k), std::ldexp(-thin, k), std::ldexp(z0 - reach, k)};
+    const Point3 upper{std::ldexp(thin, k), std::ldexp(thin, k), std::ldexp(z0 + reach, k)};
+    const Point3 centre = centre_of(lower, upper);
+    const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
+    ASSERT_TRUE(bound.has_value()) << z0;
+    const double change = largest_change(r, lower, upper, centre, 4, rng);
+    EXPECT_GE(*bound, change) << z0;
+    EXPECT_GT(change, 0.85 * *bound) << z0;
+  }
+}
+
+TEST_P(VariationAtScale, NearLeavesOnARingAreBoundedEdgeByEdgeAndTightly) {
+  // A regular 32-gon of radius 1 in z = 0 and thin boxes on its axis, from z = 0.05 to
+  // 0.15 and the same below: every leaf's box reaches the axis, so each edge is taken on
+  // its own, at its own box's distance (0.81 to 0.96). There every edge's field is
+  // nearly perpendicular to it and along the axis, so the bound, 0.05 (1/4 pi) sum
+  // length / d^2 = 0.029, is near the change from the centre to an end, 0.05 times the
+  // disc's dw/dz = R^2 / (2 (z^2 + R^2)^(3/2)), 0.025: 0.86 of it. A bound with the
+  // edges' lengths halved misses it.
+  const int k = GetParam();
+  auto rng = testing::seeded_engine("predicates.boundary_tree.variation.ring." + std::to_string(k));
+  Rectangle r;
+  constexpr int kCorners = 32;
+  for (int i = 0; i < kCorners; ++i) {
+    const double angle = 2 * std::numbers::pi * i / kCorners;
+    r.vertices.push_back({std::ldexp(std::cos(angle), k), std::ldexp(std::sin(angle), k), 0.0});
+  }
+  for (VertexIndex i = 0; i < kCorners; ++i) {
+    r.edges.push_back({i, (i + 1) % kCorners, 1});
+    r.triangles.push_back({r.vertices[i], r.vertices[(i + 1) % kCorners], {0.0, 0.0, 0.0}});
+  }
+  const BoundaryTree tree(r.vertices, r.edges);
+  for (const double z : {0.05, -0.15}) {
+    const double thin = 0x1p-20;
+    const Point3 lower{std::ldexp(-thin, k), std::ldexp(-thin, k), std::ldexp(z, k)};
+    const Point3 upper{std::ldexp(thin, k), std::ldexp(thin, k), std::ldexp(z + 0.1, k)};
+    const Point3 centre = centre_of(lower, upper);
+    const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
+    ASSERT_TRUE(bound.has_value()) << z;
+    const double change = largest_change(r, lower, upper, centre, 4, rng);
+    EXPECT_GE(*bound, change) << z;
+    EXPECT_GT(change, 0.75 * *bound) << z;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, VariationAtScale, ::testing::Values(0, 40, -40),

@@ -38,15 +38,29 @@
 //
 // p lies on the cone triangle (a, b, q) itself only if the ray meets a-b, also in B.
 //
+// Chords. The ends come in pairs: the deltas add up to 0, so the starts (delta < 0) and
+// the finishes (delta > 0) can be joined by chords s -> f of multiplicity m (each start's
+// lack and each finish's excess spent exactly). E plus its chords reversed is a closed
+// chain Z (delta = 0 everywhere), whose cone terms are its fan about c plus 4 pi K by
+// the identity above, with no ends; and E's cone terms are Z's plus its chords'. So
+//
+//     sum_E m Omega(a, b, q) = sum_chords m Omega(s, f, q) + sum_Z m Omega(a, b, c) + 4 pi K,
+//
+// one angle per chord where the ends took two (a piece of trail s -> ... -> f: one chord
+// s -> f instead of c -> f and s -> c). Every chord and every triangle (a, b, c) of Z
+// lies in B (s, f in B, convex), so a ray that misses B meets none: K = 0, and the
+// bound, the nested bound and the expansion below hold with Z for E: F = sum over Z of
+// |m| area(a, b, c). (With the centre's ends the node's edges were closed by the two
+// radii c -> f and s -> c; a chord closes them by one segment. Which ends a chord joins
+// is a cost, not part of the argument: the nearest first, for small triangles.)
+//
 // Nested bounds. The bound holds for any set of triangles in B whose solid angles add up
 // to the difference, with F the sum of |m| area over them. A node's children L and R give
-// one: E's sum is L's ends' and R's ends' cone terms plus their differences (bounded by
-// F_L and F_R, their triangles in their boxes, inside B), and L's and R's ends together
-// are an edge set with the same flow as E (an edge set and its ends have one boundary:
-// sum delta(x) (x - c) = sum delta(x) x, since the deltas add up to 0), whose ends about
-// c are E's; so F_N = F_L + F_R + sum over L's and R's ends of |m| area(end, c) bounds it
-// too, and the node keeps the smaller. For small closed loops far from c the direct fan
-// is a set of long thin triangles, and the nested bound is about the loops' own areas.
+// one: as chains, Z_N = Z_L + Z_R + (L's chords + R's chords - N's chords), the last a
+// closed chain (the others are, and E_N = E_L + E_R), all of it in B; so
+// F_N = F_L + F_R + sum over L's, R's and N's chords of |m| area(s, f, c) bounds it too,
+// and the node keeps the smaller. For small closed loops far from c the direct fan is a
+// set of long thin triangles, and the nested bound is about the loops' own areas.
 //
 // Second order. With g(y) = (y - p) / |y - p|^3 = -grad 1/|y - p|, a triangle's solid
 // angle is the integral of n.g over it. The k-th derivative of 1/|y - p| has norm
@@ -61,16 +75,16 @@
 //     Q_ij = sum m (vector area)_i (centroid - c)_j,
 //
 // within 3 rho^2 F / d^4 (in half angles, half of all three). M depends only on the
-// decompositions' common boundary (E less its ends); Q differs between two of them by
+// decompositions' common boundary (Z); Q differs between two of them by
 // delta_ij times the volume their difference encloses (the divergence theorem), which
 // Dg(c) = (I - 3 u u^T) / |c - p|^3 (u the unit vector along c - p) does not see: its
-// trace is 0. So Q is taken from the direct fan, where Q = sum m (1/6) (a - c) x (b - c)
+// trace is 0. So Q is taken from Z's direct fan, where Q = sum m (1/6) (a - c) x (b - c)
 // ((a - c) + (b - c))^T, and its symmetric part kept. Where d > 2 rho this bound is
 // below the zero-order one (by 3 rho^2 / d^2), and the node adds the expansion to the sum
 // and that bound to the error. (The first-order bound, rho F / d^3, is larger than this
 // one wherever d > 1.5 rho.)
 //
-// Refinement. A point's term is the sum over a cut of the tree: far nodes (their ends,
+// Refinement. A point's term is the sum over a cut of the tree: far nodes (their chords,
 // expansion and bound) and leaves' edges. The cut starts where every far node's bound is
 // at most kBoundaryTreeFirstCut; then, while the sum's enclosure holds a level (or is
 // wider than asked), the far node of largest bound is opened: its value and bound leave
@@ -91,13 +105,25 @@
 // surface, and |w(p) - w(c)| <= |p - c| max |grad w| <= rho G, rho the reach of C from c
 // and G = (1/4 pi) sum over a cut of the tree of L_N / dist(C, B_N)^2, L_N = sum |m|
 // length(e) over N's edges. Any cut gives a bound; the descent takes a node where its
-// box is at least four of its diagonals from C (farther, opening it would gain little).
+// box is at least two of its diagonals from C (farther, opening it would gain little),
+// and a near leaf's edges one by one, each at its own box's distance from C.
+//
+// A node's part of that field is also bounded through its decomposition ("Chords"
+// below): as currents, E is the triangle loops (a, b, c) of its closed chain Z (or the
+// nested ones) plus its chords. A triangle loop's Biot-Savart field is the gradient of
+// the triangle's solid angle, the integral over it of the derivative of g, whose norm is
+// at most 2 / |x - y|^3 (the eigenvalues of (I - 3 u u^T) / |u|^3 are 1, 1 and -2 over
+// |u|^3): at most 2 area / d^3 for y at least d from the node's box, which holds the
+// triangle. A chord s -> e adds at most |m| |e - s| / d^2. So N contributes at most
+// min(L_N / d^2, 2 F_N / d^3 + X_N / d^2), X_N = sum over the chords of |m| |e - s|:
+// for a far closed loop the field of a dipole, falling as 1 / d^3, where L_N / d^2
+// counts its rim as if no part of it cancelled another.
 //
 // Certified. F is computed once per node in outward-rounded intervals (its upper end);
 // M and Q likewise, kept as midpoints with bounds on their distance from the exact
 // ones; d^2 from below and the ray-box test from the slabs with a priori error bounds
 // (in the source), so that the test says "misses" only when the ray does. c is the box's
-// centre, a double clamped into the box. The cone terms of the ends and of the near
+// centre, a double clamped into the box. The cone terms of the chords and of the near
 // edges are the filter's of boundary_term_filter.cpp, each with its error bound; what the
 // refinement cannot settle goes back to the full term over every edge (the caller's),
 // whose stages reach the exact ones. Far from magnitude 1 (areas beyond the doubles'
@@ -108,6 +134,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/predicates/boundary_term.hpp"
@@ -122,6 +149,14 @@ namespace exactgeo {
 /// guarantee. (Instructions per point on Spot with 10, 100 and 1,000 faces cut, against
 /// 2^-2 and a half: 3,308, 5,624 and 146,104 against 3,472, 6,981 and 147,804.)
 inline constexpr double kBoundaryTreeFirstCut = 1.0;
+/// The finest first cut a point's term (BoundaryTree::term) starts from: after a point
+/// whose first cut did not settle it, the next one's is halved down to this; after one it
+/// settled, doubled back up to kBoundaryTreeFirstCut. A cost, not a certificate, and the
+/// labels do not depend on it (enclosures and winding numbers keep the fixed first cut,
+/// so that their digits do not depend on the points' order). (Instructions per point
+/// classifying, the first 4,000 points of issue 43's runs: b9_mesh.off 11% fewer than a
+/// fixed cut of 1, Spot with 1,000 faces cut 6% fewer, with 10 and 100 0.1% and 0.2% more.)
+inline constexpr double kBoundaryTreeFinestFirstCut = 0.125;
 /// The ratio between a node's bound and the largest its children may enter with.
 inline constexpr double kBoundaryTreeOpening = 8.0;
 /// The most edges a leaf holds.
@@ -140,16 +175,19 @@ class BoundaryTree {
   struct Refinement {
     struct Far {
       double bound = 0.0;  ///< radians of half angle
-      double value = 0.0;  ///< its ends' angles and its expansion, in the sum
+      double value = 0.0;  ///< its chords' angles and its expansion, in the sum
       std::uint32_t node = 0;
       bool expanded = false;
     };
     std::vector<Far> heap;  ///< a max-heap by bound
     std::vector<std::uint32_t> stack;
-    std::size_t angles = 0;      ///< edges and ends whose angle was computed
+    std::size_t angles = 0;      ///< edges and chords whose angle was computed
     std::size_t far_nodes = 0;   ///< far nodes in the final cut
     std::size_t expansions = 0;  ///< of those, with a second-order expansion
     double slack = 0.0;          ///< their bounds' sum, radians of half angle
+    bool opened = false;         ///< whether the first cut left it unsettled
+    /// The next term's first cut (kBoundaryTreeFinestFirstCut, a cost).
+    double first_cut = kBoundaryTreeFirstCut;
   };
 
   /// The term of boundary_term.hpp with both levels settled (kind enclosed), refined
@@ -180,19 +218,20 @@ class BoundaryTree {
   std::optional<double> variation(const Point3& lower, const Point3& upper, const Point3& centre,
                                   double most) const;
 
-  /// The boundary vertices and the nodes' centres.
+  /// The boundary vertices.
   std::span<const Point3> vertices() const noexcept { return vertices_; }
   std::size_t edge_count() const noexcept { return edges_.size(); }
 
  private:
   struct Node {
-    Point3 lower{}, upper{};                       // the box of the node's edges' vertices
-    std::uint32_t first = 0, count = 0;            // its edges: edges_[first, first + count)
-    std::uint32_t ends_first = 0, ends_count = 0;  // its ends: ends_[...]
-    std::uint32_t left = 0, right = 0;             // children; 0 for a leaf
-    double fan = 0.0;                              // F, rounded up
-    double length = 0.0;                           // sum |m| length(e), rounded up
-    bool far_pays = false;                         // ends fewer than half its edges
+    Point3 lower{}, upper{};                           // the box of the node's edges' vertices
+    std::uint32_t first = 0, count = 0;                // its edges: edges_[first, first + count)
+    std::uint32_t chords_first = 0, chords_count = 0;  // its chords: chords_[...]
+    std::uint32_t left = 0, right = 0;                 // children; 0 for a leaf
+    double fan = 0.0;                                  // F, rounded up
+    double length = 0.0;                               // sum |m| length(e), rounded up
+    double end_length = 0.0;                           // sum |m| length over its chords, rounded up
+    bool far_pays = false;                             // chords fewer than half its edges
     // The expansion ("Second order" above): the centre, the fan's vector area M (its
     // enclosure's midpoint, within moment_error of M, at most moment_size long), the
     // symmetric part of Q (xx, yy, zz, xy, xz, yz: midpoints, whose nine entries' errors
@@ -205,7 +244,7 @@ class BoundaryTree {
     double reach = 0.0;
     bool expansion = false;  // all of these finite
   };
-  /// A far node's part of the sum: its ends' angles and expansion, their errors (in
+  /// A far node's part of the sum: its chords' angles and expansion, their errors (in
   /// radians) and its bound.
   struct FarValue {
     double value = 0.0, error = 0.0, bound = 0.0;
@@ -213,6 +252,9 @@ class BoundaryTree {
   };
   struct Query;
   std::uint32_t build(std::uint32_t first, std::uint32_t count);
+  static double dipole_bound(const Node& node, double d2) noexcept;
+  void join_chords(std::vector<std::pair<VertexIndex, std::int64_t>>& starts,
+                   std::vector<std::pair<VertexIndex, std::int64_t>>& finishes);
   void set_expansion(Node& node, std::span<const BoundaryEdge> edges) const;
   std::optional<FarValue> far_value(const Node& node, const Query& query, double limit) const;
   /// The refinement's sum: kind enclosed with its bounds in radians of half angle, or
@@ -224,7 +266,7 @@ class BoundaryTree {
   };
   template <class Done>
   std::optional<Refined> refine(const Point3& point, const Vector3& ray, Refinement& scratch,
-                                std::size_t most_angles, const Done& done) const;
+                                std::size_t most_angles, double first_cut, const Done& done) const;
 
  public:
   /// While building: an edge's piece of trail and its place in it (boundary_tree.cpp).
@@ -239,7 +281,7 @@ class BoundaryTree {
 
   std::vector<Point3> vertices_;
   std::vector<BoundaryEdge> edges_;
-  std::vector<BoundaryEdge> ends_;
+  std::vector<BoundaryEdge> chords_;
   std::vector<Node> nodes_;
 };
 
