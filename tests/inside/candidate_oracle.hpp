@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -146,6 +147,59 @@ inline Mesh split_box(int k, double centre) {
     }
   }
   return mesh;
+}
+
+/// The scales the finders are tested at: 2^0, 2^+-1000, and coordinates moved off centre
+/// (so that the float frame's origin is not 0).
+struct Magnitude {
+  int exponent;
+  double offset;
+};
+
+inline auto magnitudes() {
+  return ::testing::Values(Magnitude{0, 0.0}, Magnitude{1000, 0.0}, Magnitude{-1000, 0.0},
+                           Magnitude{0, 0x1p30}, Magnitude{-40, -0x1p-10});
+}
+
+inline std::string magnitude_name(const ::testing::TestParamInfo<Magnitude>& info) {
+  const Magnitude& m = info.param;
+  std::string name = m.exponent < 0 ? "scale_2m" : "scale_2p";
+  name.append(std::to_string(std::abs(m.exponent)));
+  if (m.offset != 0) name.append("_offset");
+  return name;
+}
+
+/// The padding at its edge: on split_box (at 2^0, 2^+-1000 and off centre), origins on its
+/// faces, edges and corners, which the nearest float moves off the box by the full
+/// rounding, outward on half of them; every face the exact ray touches must still be
+/// proposed by the finder make_finder(mesh) builds.
+template <class MakeFinder>
+void expect_complete_from_split_box(std::mt19937_64& rng, const MakeFinder& make_finder) {
+  const double h = kTieHalfExtent;
+  const auto& lines = kTieLines;
+  for (const auto& [k, centre] :
+       {std::pair{0, 0.0}, std::pair{1000, 0.0}, std::pair{-1000, 0.0}, std::pair{0, 3.0}}) {
+    SCOPED_TRACE(k);
+    const auto at = [&](double x) { return std::ldexp(x, k) + centre; };
+    const Mesh mesh = split_box(k, centre);
+    const auto finder = make_finder(mesh);
+    std::uniform_int_distribution<std::size_t> line(0, lines.size() - 1);
+    std::uniform_int_distribution<int> odd(0, (1 << 20) - 1);
+    std::uniform_int_distribution<std::size_t> direction(0, 40);
+    std::size_t touched = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+      // On a face: its coordinate +-h; the others on grid lines (edges and corners) or
+      // odd multiples of 2^-26 (ties too, inside a grid cell).
+      Point3 p;
+      const int axis = trial % 3;
+      p[axis] = trial % 2 ? h : -h;
+      for (const int other : {(axis + 1) % 3, (axis + 2) % 3}) {
+        p[other] = trial % 4 < 2 ? lines[line(rng)] : (2.0 * odd(rng) + 1) * 0x1p-26 - 0.5 * h;
+      }
+      touched += expect_complete(mesh, finder, {at(p[0]), at(p[1]), at(p[2])}, direction(rng));
+    }
+    EXPECT_GE(touched, 400u);  // every origin lies on at least one face
+  }
 }
 
 }  // namespace exactgeo::inside::candidate_oracle

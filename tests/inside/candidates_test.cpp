@@ -26,10 +26,7 @@ using candidate_oracle::expect_complete;
 using mesh::Face;
 using mesh::Mesh;
 
-struct Magnitude {
-  int exponent;
-  double offset;
-};
+using candidate_oracle::Magnitude;
 
 class EmbreeCandidatesTest : public ::testing::TestWithParam<Magnitude> {};
 
@@ -78,17 +75,8 @@ TEST_P(EmbreeCandidatesTest, IncludeEveryFaceTheExactRayTouches) {
   EXPECT_GT(touched, 10u * static_cast<std::size_t>(trials));
 }
 
-INSTANTIATE_TEST_SUITE_P(Magnitudes, EmbreeCandidatesTest,
-                         ::testing::Values(Magnitude{0, 0.0}, Magnitude{1000, 0.0},
-                                           Magnitude{-1000, 0.0}, Magnitude{0, 0x1p30},
-                                           Magnitude{-40, -0x1p-10}),
-                         [](const ::testing::TestParamInfo<Magnitude>& param_info) {
-                           const Magnitude& m = param_info.param;
-                           std::string name = m.exponent < 0 ? "scale_2m" : "scale_2p";
-                           name.append(std::to_string(std::abs(m.exponent)));
-                           if (m.offset != 0) name.append("_offset");
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Magnitudes, EmbreeCandidatesTest, candidate_oracle::magnitudes(),
+                         candidate_oracle::magnitude_name);
 
 /// The padding at its edge: an axis-aligned box, its faces split in a grid, whose face
 /// and grid coordinates map into the float frame exactly halfway between two floats, so
@@ -99,31 +87,9 @@ INSTANTIATE_TEST_SUITE_P(Magnitudes, EmbreeCandidatesTest,
 /// proposed. (With kPad at 2^-25 or below, or 0, this test finds misses.)
 TEST(EmbreeCandidates, OriginsOnAxisAlignedFacesWhoseCoordinatesAreNotFloats) {
   auto rng = testing::seeded_engine("inside.candidates.ties");
-  const double h = candidate_oracle::kTieHalfExtent;
-  const auto& lines = candidate_oracle::kTieLines;
-  for (const auto& [k, centre] :
-       {std::pair{0, 0.0}, std::pair{1000, 0.0}, std::pair{-1000, 0.0}, std::pair{0, 3.0}}) {
-    SCOPED_TRACE(k);
-    const auto at = [&](double x) { return std::ldexp(x, k) + centre; };
-    const Mesh mesh = candidate_oracle::split_box(k, centre);
-    const internal::EmbreeCandidates embree(mesh, *internal::corner_box(mesh));
-    std::uniform_int_distribution<std::size_t> line(0, lines.size() - 1);
-    std::uniform_int_distribution<int> odd(0, (1 << 20) - 1);
-    std::uniform_int_distribution<std::size_t> direction(0, 40);
-    std::size_t touched = 0;
-    for (int trial = 0; trial < 400; ++trial) {
-      // On a face: its coordinate +-h; the others on grid lines (edges and corners) or
-      // odd multiples of 2^-26 (ties too, inside a grid cell).
-      Point3 p;
-      const int axis = trial % 3;
-      p[axis] = trial % 2 ? h : -h;
-      for (const int other : {(axis + 1) % 3, (axis + 2) % 3}) {
-        p[other] = trial % 4 < 2 ? lines[line(rng)] : (2.0 * odd(rng) + 1) * 0x1p-26 - 0.5 * h;
-      }
-      touched += expect_complete(mesh, embree, {at(p[0]), at(p[1]), at(p[2])}, direction(rng));
-    }
-    EXPECT_GE(touched, 400u);  // every origin lies on at least one face
-  }
+  candidate_oracle::expect_complete_from_split_box(rng, [](const Mesh& mesh) {
+    return internal::EmbreeCandidates(mesh, *internal::corner_box(mesh));
+  });
 }
 
 }  // namespace

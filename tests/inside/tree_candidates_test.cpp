@@ -30,10 +30,7 @@ using internal::TreeCandidates;
 using mesh::Face;
 using mesh::Mesh;
 
-struct Magnitude {
-  int exponent;
-  double offset;
-};
+using candidate_oracle::Magnitude;
 
 /// `faces` random triangles and quads (every third a triangle) over 64 random vertices
 /// with dyadic coordinates in [-1, 1] (24 bits), scaled by 2^exponent and moved by
@@ -127,46 +124,16 @@ TEST_P(TreeCandidatesTest, IncludeEveryFaceTheExactRayTouchesInRandomSoups) {
   EXPECT_GT(touched, 10u * static_cast<std::size_t>(trials));
 }
 
-INSTANTIATE_TEST_SUITE_P(Magnitudes, TreeCandidatesTest,
-                         ::testing::Values(Magnitude{0, 0.0}, Magnitude{1000, 0.0},
-                                           Magnitude{-1000, 0.0}, Magnitude{0, 0x1p30},
-                                           Magnitude{-40, -0x1p-10}),
-                         [](const ::testing::TestParamInfo<Magnitude>& param_info) {
-                           const Magnitude& m = param_info.param;
-                           std::string name = m.exponent < 0 ? "scale_2m" : "scale_2p";
-                           name.append(std::to_string(std::abs(m.exponent)));
-                           if (m.offset != 0) name.append("_offset");
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Magnitudes, TreeCandidatesTest, candidate_oracle::magnitudes(),
+                         candidate_oracle::magnitude_name);
 
 /// Axis-parallel faces whose coordinates map halfway between floats (split_box), origins
 /// on the faces, edges and corners (candidate_oracle.hpp): every face the exact ray touches
 /// is proposed, at 2^0, 2^+-1000 and off centre.
 TEST(TreeCandidates, OriginsOnAxisParallelFacesWhoseCoordinatesAreNotFloats) {
   auto rng = testing::seeded_engine("inside.tree_candidates.ties");
-  const double h = candidate_oracle::kTieHalfExtent;
-  const auto& lines = candidate_oracle::kTieLines;
-  for (const auto& [k, centre] :
-       {std::pair{0, 0.0}, std::pair{1000, 0.0}, std::pair{-1000, 0.0}, std::pair{0, 3.0}}) {
-    SCOPED_TRACE(k);
-    const auto at = [&](double x) { return std::ldexp(x, k) + centre; };
-    const Mesh mesh = candidate_oracle::split_box(k, centre);
-    const TreeCandidates tree(mesh, *internal::corner_box(mesh));
-    std::uniform_int_distribution<std::size_t> line(0, lines.size() - 1);
-    std::uniform_int_distribution<int> odd(0, (1 << 20) - 1);
-    std::uniform_int_distribution<std::size_t> direction(0, 40);
-    std::size_t touched = 0;
-    for (int trial = 0; trial < 400; ++trial) {
-      Point3 p;
-      const int axis = trial % 3;
-      p[axis] = trial % 2 ? h : -h;
-      for (const int other : {(axis + 1) % 3, (axis + 2) % 3}) {
-        p[other] = trial % 4 < 2 ? lines[line(rng)] : (2.0 * odd(rng) + 1) * 0x1p-26 - 0.5 * h;
-      }
-      touched += expect_complete(mesh, tree, {at(p[0]), at(p[1]), at(p[2])}, direction(rng));
-    }
-    EXPECT_GE(touched, 400u);  // every origin lies on at least one face
-  }
+  candidate_oracle::expect_complete_from_split_box(
+      rng, [](const Mesh& mesh) { return TreeCandidates(mesh, *internal::corner_box(mesh)); });
 }
 
 /// The tree prunes: on the torus, a random ray gets a small share of the faces, and a
