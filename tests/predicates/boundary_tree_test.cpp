@@ -251,6 +251,22 @@ TEST(BoundaryTree, AFarFanCarriedByItsExpansionIsHeld) {
   }
 }
 
+/// The rectangle [-1, 1] x [-0.025, 0.025] in the plane z = 0, n edges along each long
+/// side, one across each end; without its side x = -1 when not `closed` (an open trail
+/// from (-1, -0.025) to (-1, 0.025)).
+Chain rectangle(int n, bool closed) {
+  Chain chain;
+  for (int i = 0; i <= n; ++i)
+    chain.vertices.push_back({-1.0 + 2.0 * i / n, -0.025, 0.0});
+  for (int i = 0; i <= n; ++i)
+    chain.vertices.push_back({1.0 - 2.0 * i / n, 0.025, 0.0});
+  const auto size = static_cast<VertexIndex>(chain.vertices.size());
+  for (VertexIndex i = 0; i + 1 < size; ++i)
+    chain.edges.push_back({i, i + 1, 1});
+  if (closed) chain.edges.push_back({size - 1, 0, 1});
+  return chain;
+}
+
 TEST(BoundaryTree, AFarLoopWhoseFanFillsMostOfItsBoundIsHeld) {
   // A closed rectangle 2 x 0.05 in the plane z = 0 (one leaf, no ends, its fan about the
   // centre the rectangle itself, F = 0.1), seen from (0, 0, 1.5): the box reaches
@@ -261,14 +277,7 @@ TEST(BoundaryTree, AFarLoopWhoseFanFillsMostOfItsBoundIsHeld) {
   // With n edges along each long side (a node of children whose ends' fans the nested
   // bound must count) as well as one.
   for (const int n : {1, 5, 7}) {
-    Chain chain;
-    for (int i = 0; i <= n; ++i)
-      chain.vertices.push_back({-1.0 + 2.0 * i / n, -0.025, 0.0});
-    for (int i = 0; i <= n; ++i)
-      chain.vertices.push_back({1.0 - 2.0 * i / n, 0.025, 0.0});
-    const auto size = static_cast<VertexIndex>(chain.vertices.size());
-    for (VertexIndex i = 0; i < size; ++i)
-      chain.edges.push_back({i, (i + 1) % size, 1});
+    const Chain chain = rectangle(n, true);
     const BoundaryTree tree(chain.vertices, chain.edges);
     for (std::size_t k = 0; k < 3; ++k) {
       for (const double h : {1.5, -1.5}) {
@@ -298,14 +307,7 @@ TEST(BoundaryTree, AFarOpenTrailClosedByItsChordIsHeld) {
   // about the centre is a quarter: a nested bound without the node's own chords (its
   // children's fans and chords alone) falls below the rectangle's solid angle.
   for (const int n : {5, 7, 11}) {
-    Chain chain;
-    for (int i = 0; i <= n; ++i)
-      chain.vertices.push_back({-1.0 + 2.0 * i / n, -0.025, 0.0});
-    for (int i = 0; i <= n; ++i)
-      chain.vertices.push_back({1.0 - 2.0 * i / n, 0.025, 0.0});
-    const auto size = static_cast<VertexIndex>(chain.vertices.size());
-    for (VertexIndex i = 0; i + 1 < size; ++i)
-      chain.edges.push_back({i, i + 1, 1});
+    const Chain chain = rectangle(n, false);
     const BoundaryTree tree(chain.vertices, chain.edges);
     for (std::size_t k = 0; k < 3; ++k) {
       for (const double h : {1.5, -1.5}) {

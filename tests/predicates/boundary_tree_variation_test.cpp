@@ -157,6 +157,21 @@ TEST_P(VariationAtScale, RandomBoxesNearTheRectangleHoldTheChange) {
   EXPECT_GT(bounded, 40u);
 }
 
+/// On the z axis, the thin box [-2^-20, 2^-20]^2 x [z_lo, z_hi], all times 2^k: the bound
+/// must hold the largest change found from its centre, and be less than 1 / `tight` of it.
+void expect_tight_on_axis(const BoundaryTree& tree, const Rectangle& r, int k, double z_lo,
+                          double z_hi, double tight, std::mt19937_64& rng) {
+  const double thin = 0x1p-20;
+  const Point3 lower{std::ldexp(-thin, k), std::ldexp(-thin, k), std::ldexp(z_lo, k)};
+  const Point3 upper{std::ldexp(thin, k), std::ldexp(thin, k), std::ldexp(z_hi, k)};
+  const Point3 centre = centre_of(lower, upper);
+  const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
+  ASSERT_TRUE(bound.has_value()) << z_lo;
+  const double change = largest_change(r, lower, upper, centre, 4, rng);
+  EXPECT_GE(*bound, change) << z_lo;
+  EXPECT_GT(change, tight * *bound) << z_lo;
+}
+
 TEST_P(VariationAtScale, AFarLoopIsBoundedAsADipoleAndTightly) {
   // A unit square loop in z = 0 (one leaf, no chords, its fan about the centre the square:
   // F = 1), and thin boxes along its axis from z0 - r to z0 + r: the bound taken is
@@ -177,17 +192,8 @@ TEST_P(VariationAtScale, AFarLoopIsBoundedAsADipoleAndTightly) {
   r.triangles = {{r.vertices[0], r.vertices[1], r.vertices[2]},
                  {r.vertices[0], r.vertices[2], r.vertices[3]}};
   const BoundaryTree tree(r.vertices, r.edges);
-  for (const double z0 : {10.0, 20.0, -10.0}) {
-    const double thin = 0x1p-20, reach = 0.5;
-    const Point3 lower{std::ldexp(-thin, k), std::ldexp(-thin, k), std::ldexp(z0 - reach, k)};
-    const Point3 upper{std::ldexp(thin, k), std::ldexp(thin, k), std::ldexp(z0 + reach, k)};
-    const Point3 centre = centre_of(lower, upper);
-    const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
-    ASSERT_TRUE(bound.has_value()) << z0;
-    const double change = largest_change(r, lower, upper, centre, 4, rng);
-    EXPECT_GE(*bound, change) << z0;
-    EXPECT_GT(change, 0.85 * *bound) << z0;
-  }
+  for (const double z0 : {10.0, 20.0, -10.0})
+    expect_tight_on_axis(tree, r, k, z0 - 0.5, z0 + 0.5, 0.85, rng);
 }
 
 TEST_P(VariationAtScale, NearLeavesOnARingAreBoundedEdgeByEdgeAndTightly) {
@@ -211,17 +217,8 @@ TEST_P(VariationAtScale, NearLeavesOnARingAreBoundedEdgeByEdgeAndTightly) {
     r.triangles.push_back({r.vertices[i], r.vertices[(i + 1) % kCorners], {0.0, 0.0, 0.0}});
   }
   const BoundaryTree tree(r.vertices, r.edges);
-  for (const double z : {0.05, -0.15}) {
-    const double thin = 0x1p-20;
-    const Point3 lower{std::ldexp(-thin, k), std::ldexp(-thin, k), std::ldexp(z, k)};
-    const Point3 upper{std::ldexp(thin, k), std::ldexp(thin, k), std::ldexp(z + 0.1, k)};
-    const Point3 centre = centre_of(lower, upper);
-    const std::optional<double> bound = tree.variation(lower, upper, centre, 1.0);
-    ASSERT_TRUE(bound.has_value()) << z;
-    const double change = largest_change(r, lower, upper, centre, 4, rng);
-    EXPECT_GE(*bound, change) << z;
-    EXPECT_GT(change, 0.75 * *bound) << z;
-  }
+  for (const double z : {0.05, -0.15})
+    expect_tight_on_axis(tree, r, k, z, z + 0.1, 0.75, rng);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, VariationAtScale, ::testing::Values(0, 40, -40),
