@@ -146,16 +146,14 @@ namespace exactgeo {
 /// angle; the levels lie 2 pi apart) are opened before any angle is computed; later, a
 /// node is opened straight away where its bound exceeds an eighth of the smallest bound
 /// opened so far. Costs, not certificates: any positive values give the enclosures'
-/// guarantee. (Instructions per point on Spot with 10, 100 and 1,000 faces cut, against
-/// 2^-2 and a half: 3,308, 5,624 and 146,104 against 3,472, 6,981 and 147,804.)
+/// guarantee (their costs as measured: docs/predicates.md, "Refinement").
 inline constexpr double kBoundaryTreeFirstCut = 1.0;
 /// The finest first cut a point's term (BoundaryTree::term) starts from: after a point
 /// whose first cut did not settle it, the next one's is halved down to this; after one it
 /// settled, doubled back up to kBoundaryTreeFirstCut. A cost, not a certificate, and the
 /// labels do not depend on it (enclosures and winding numbers keep the fixed first cut,
-/// so that their digits do not depend on the points' order). (Instructions per point
-/// classifying, the first 4,000 points of issue 43's runs: b9_mesh.off 11% fewer than a
-/// fixed cut of 1, Spot with 1,000 faces cut 6% fewer, with 10 and 100 0.1% and 0.2% more.)
+/// so that their digits do not depend on the points' order; its cost as measured:
+/// docs/predicates.md, "Refinement").
 inline constexpr double kBoundaryTreeFinestFirstCut = 0.125;
 /// The ratio between a node's bound and the largest its children may enter with.
 inline constexpr double kBoundaryTreeOpening = 8.0;

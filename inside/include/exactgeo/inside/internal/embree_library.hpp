@@ -2,9 +2,9 @@
 
 // Embree, loaded the first time a mesh needs it instead of with every program that links
 // exactgeo::inside. Linked at build time, libembree3 (and the TBB it pulls in) is mapped
-// and relocated at every start of the command line and of the Python module: 4.6 ms of
-// CPU and 137 page faults of `exactgeo --version`'s 12.7 ms and 330 (docs/inside.md,
-// "End to end"), a large share of a short command's run. So it is opened with dlopen on
+// and relocated at every start of the command line and of the Python module, a large
+// share of a short command's run (measured in docs/inside.md, "End to end"). So it is
+// opened with dlopen on
 // first use, and the few rtc functions exactgeo::inside calls are found by dlsym and
 // called through this table. Its headers stay: the types, constants and inline helpers
 // (rtcInitIntersectContext) come from them. No public header includes this one: Embree
