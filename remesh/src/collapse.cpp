@@ -243,7 +243,6 @@ struct CollapsePass::State {
       return;
     }
     // The vertices around both ends, and the box each triangle with a moving end sweeps.
-    footprint_.by_boxes = true;
     footprint_.vertices.clear();
     footprint_.regions.clear();
     const auto moves = [&](VertexIndex v) {

@@ -137,7 +137,7 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
       outcomes[i] = std::move(*refused);
     } else {
       candidates.push_back(k);
-      by_regions.push_back({{}, {plans[k].region(surface)}, false});
+      by_regions.push_back({{}, {plans[k].region(surface)}});
     }
   }
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);

@@ -58,14 +58,6 @@ bool BoxSchedule::take(const Footprint& operation) {
 }
 
 std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<const Point3> points) {
-  if (std::all_of(operations.begin(), operations.end(),
-                  [](const Footprint& f) { return f.by_boxes; })) {
-    BoxSchedule schedule(points.size());
-    std::vector<bool> ahead(operations.size());
-    for (std::size_t i = 0; i < operations.size(); ++i)
-      ahead[i] = schedule.take(operations[i]);
-    return ahead;
-  }
   // Every region of the pass, with its operation, and the pairs whose boxes overlap.
   std::vector<std::array<RegionCorner, 4>> regions;
   std::vector<std::size_t> operation_of;
@@ -101,8 +93,7 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
       for (const std::size_t other : near.of(r)) {
         const std::size_t j = operation_of[other];
         if (!ahead[j]) continue;  // later, or waiting
-        const bool by_boxes = operations[i].by_boxes || operations[j].by_boxes;
-        if (by_boxes || regions_meet(regions[r], regions[other])) {
+        if (regions_meet(regions[r], regions[other])) {
           apart = false;
           break;
         }

@@ -29,17 +29,16 @@ namespace exactgeo::remesh::internal {
 
 /// What an operation of a pass asks of the others: the vertices it changes or whose
 /// neighbourhood its plan read, and the regions it sweeps (none when nothing moves). A
-/// region is the closed hull of its four corners; `by_boxes` takes each region's box
-/// instead (the swept box of a collapse's moving triangle, whose hull may be flat or
-/// degenerate: a coarser test that asks nothing of the corners).
+/// region is the closed hull of its four corners (go_ahead), or its box (BoxSchedule).
 struct Footprint {
   std::vector<VertexIndex> vertices;
   std::vector<std::array<RegionCorner, 4>> regions;
-  bool by_boxes = false;
 };
 
-/// The schedule of a pass whose footprints all ask for boxes (a pass of collapses), made
-/// one operation at a time as the pass is planned: an operation goes ahead when it shares
+/// The schedule of a pass whose regions are taken as boxes (a pass of collapses, whose
+/// regions are the swept boxes of its moving triangles: their hulls may be flat or
+/// degenerate, and the boxes ask nothing of the corners), made one operation at a time
+/// as the pass is planned: an operation goes ahead when it shares
 /// no vertex with one going ahead and none of its regions' boxes meets one of theirs
 /// (exact boxes of the regions' corners, touching counting). Each is checked against the
 /// operations going ahead only, through the box around all of an operation's regions
@@ -71,9 +70,7 @@ class BoxSchedule {
 
 /// For each operation in order, whether it goes ahead: not when it shares a vertex with an
 /// earlier one that goes ahead, or when one of its regions meets one of that one's
-/// (regions_meet, for the pairs whose boxes a box tree finds overlapping; the boxes alone
-/// when either footprint is by_boxes; when every one is, BoxSchedule's rule, with exact
-/// boxes). The
+/// (regions_meet, for the pairs whose boxes a box tree finds overlapping). The
 /// others wait for the next pass. `points` are the surface's vertices (a region's corners
 /// index them).
 std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<const Point3> points);

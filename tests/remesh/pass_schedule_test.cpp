@@ -25,6 +25,7 @@
 namespace exactgeo::remesh {
 namespace {
 
+using internal::BoxSchedule;
 using internal::Footprint;
 using internal::go_ahead;
 using Region = std::array<RegionCorner, 4>;
@@ -57,8 +58,7 @@ TEST_P(PassSchedule, ASharedVertexDefersTheLaterOperation) {
   // No regions: only the vertices decide. Operation 2 shares vertex 2 with operation 1
   // only, which waits (it shares 1 with operation 0): 2 goes ahead.
   const std::vector<Footprint> pass{
-      {{0, 1}, {}, false}, {{1, 2}, {}, false}, {{2, 3}, {}, false},
-      {{4, 5}, {}, false}, {{5, 0}, {}, false}, {{}, {}, false},
+      {{0, 1}, {}}, {{1, 2}, {}}, {{2, 3}, {}}, {{4, 5}, {}}, {{5, 0}, {}}, {{}, {}},
   };
   EXPECT_EQ(go_ahead(pass, points), (std::vector<bool>{true, false, true, true, false, true}));
   // The order decides: the same operations the other way round.
@@ -75,30 +75,34 @@ TEST_P(PassSchedule, RegionsTouchingAtAPointWaitAndOneUlpApartGoAhead) {
       for (const Point3& p : corners)
         points.push_back(p);
     }
-    const std::vector<Footprint> pass{{{0, 1, 2, 3}, {region_of(points, 0)}, false},
-                                      {{4, 5, 6, 7}, {region_of(points, 4)}, false}};
+    const std::vector<Footprint> pass{{{0, 1, 2, 3}, {region_of(points, 0)}},
+                                      {{4, 5, 6, 7}, {region_of(points, 4)}}};
     EXPECT_EQ(go_ahead(pass, points), (std::vector<bool>{true, both})) << "moved by " << dx;
   }
 }
 
-TEST_P(PassSchedule, OverlappingBoxesWaitOnlyWhenAFootprintAsksForBoxes) {
-  // The corner tetrahedron (x + y + z <= 4) and one with x + y + z >= 10 in the same box.
+TEST_P(PassSchedule, OverlappingBoxesWaitOnlyInABoxSchedule) {
+  // The corner tetrahedron (x + y + z <= 4) and one with x + y + z >= 10 in the same box:
+  // apart as hulls (go_ahead lets both go ahead), not as boxes (a BoxSchedule defers the
+  // second).
   std::vector<Point3> points;
   for (const Point3& p : tetrahedron(0.0))
     points.push_back(p);
   for (const Point3& p : {at(4, 4, 4), at(2, 4, 4), at(4, 2, 4), at(4, 4, 2)})
     points.push_back(p);
-  for (const int boxes : {0, 1, 2, 3}) {  // bit 0: the first asks for boxes, bit 1: the second
-    const std::vector<Footprint> pass{{{0, 1, 2, 3}, {region_of(points, 0)}, (boxes & 1) != 0},
-                                      {{4, 5, 6, 7}, {region_of(points, 4)}, (boxes & 2) != 0}};
-    EXPECT_EQ(go_ahead(pass, points), (std::vector<bool>{true, boxes == 0})) << "boxes " << boxes;
-  }
+  const auto both_ways = [&](const std::vector<bool>& as_boxes) {
+    const std::vector<Footprint> pass{{{0, 1, 2, 3}, {region_of(points, 0)}},
+                                      {{4, 5, 6, 7}, {region_of(points, 4)}}};
+    EXPECT_EQ(go_ahead(pass, points), (std::vector<bool>{true, true}));
+    BoxSchedule schedule(points.size());
+    EXPECT_EQ(schedule.take(pass[0]), as_boxes[0]);
+    EXPECT_EQ(schedule.take(pass[1]), as_boxes[1]);
+  };
+  both_ways({true, false});
   // Boxes far apart: both go ahead either way.
   for (std::size_t i = 4; i < points.size(); ++i)
     points[i][0] += 10 * scale();
-  const std::vector<Footprint> apart{{{0, 1, 2, 3}, {region_of(points, 0)}, true},
-                                     {{4, 5, 6, 7}, {region_of(points, 4)}, true}};
-  EXPECT_EQ(go_ahead(apart, points), (std::vector<bool>{true, true}));
+  both_ways({true, true});
 }
 
 TEST_P(PassSchedule, OnlyOperationsThatGoAheadHoldOthersBack) {
@@ -111,7 +115,7 @@ TEST_P(PassSchedule, OnlyOperationsThatGoAheadHoldOthersBack) {
   }
   std::vector<Footprint> pass;
   for (VertexIndex first : {0u, 4u, 8u})
-    pass.push_back({{first, first + 1, first + 2, first + 3}, {region_of(points, first)}, false});
+    pass.push_back({{first, first + 1, first + 2, first + 3}, {region_of(points, first)}});
   EXPECT_EQ(go_ahead(pass, points), (std::vector<bool>{true, false, true}));
 }
 
@@ -126,8 +130,7 @@ TEST_P(PassSchedule, ASplitsNewPointIsACornerOfItsRegion) {
                                at(1, -3, -6), at(5, 1, -6), at(-3, 1, -6)};
     const Region split{RegionCorner{0, points[0]}, RegionCorner{1, points[1]},
                        RegionCorner{2, points[2]}, RegionCorner{kNoVertex, at(1, 1, -2)}};
-    const std::vector<Footprint> pass{{{0, 1, 2}, {split}, false},
-                                      {{3, 4, 5, 6}, {region_of(points, 3)}, false}};
+    const std::vector<Footprint> pass{{{0, 1, 2}, {split}}, {{3, 4, 5, 6}, {region_of(points, 3)}}};
     EXPECT_EQ(go_ahead(pass, points), (std::vector<bool>{true, both})) << "z = " << z;
   }
 }
@@ -201,12 +204,12 @@ TEST_P(PassSchedule, RandomPassesFollowTheRule) {
   EXPECT_GT(waiting_for_a_region, 50);
 }
 
-TEST_P(PassSchedule, FootprintsThatAllAskForBoxesWaitForOverlappingBoxes) {
-  // A pass of collapses: every footprint asks for boxes, and go_ahead checks each against
-  // those going ahead (not every region against every other). Grid points (exact in the
-  // float boxes at every scale, a power of two): the rule as the header states it, with
-  // the regions' exact boxes, touching counting; a pass of forty operations over a pool of
-  // sixty vertices, so that both reasons to wait occur.
+TEST_P(PassSchedule, ABoxScheduleWaitsForOverlappingBoxes) {
+  // A pass of collapses: BoxSchedule takes each footprint's regions as boxes and checks
+  // each operation against those going ahead. Grid points at every scale (a power of two),
+  // so that boxes touch: the rule as the header states it, with the regions' exact boxes,
+  // touching counting; a pass of forty operations over a pool of sixty vertices, so that
+  // both reasons to wait occur.
   auto rng = testing::seeded_engine("remesh.pass_schedule.boxes");
   std::uniform_int_distribution<int> coordinate(-8, 8);
   std::uniform_int_distribution<int> reach(0, 4);
@@ -219,7 +222,6 @@ TEST_P(PassSchedule, FootprintsThatAllAskForBoxesWaitForOverlappingBoxes) {
       points.push_back(at(coordinate(rng), coordinate(rng), coordinate(rng)));
     std::vector<Footprint> pass(40);
     for (Footprint& f : pass) {
-      f.by_boxes = true;
       for (int k = count(rng); k > 0; --k)
         f.vertices.push_back(vertex(rng));
       const Point3& centre = points[f.vertices[0]];
@@ -267,7 +269,9 @@ TEST_P(PassSchedule, FootprintsThatAllAskForBoxesWaitForOverlappingBoxes) {
       waiting_for_a_vertex += by_vertex ? 1 : 0;
       waiting_for_a_box += by_box && !by_vertex ? 1 : 0;
     }
-    EXPECT_EQ(go_ahead(pass, points), expected) << "trial " << trial;
+    BoxSchedule schedule(points.size());
+    for (std::size_t i = 0; i < pass.size(); ++i)
+      EXPECT_EQ(schedule.take(pass[i]), expected[i]) << "trial " << trial << ", operation " << i;
   }
   EXPECT_GT(ahead, 200);
   EXPECT_GT(waiting_for_a_vertex, 100);
