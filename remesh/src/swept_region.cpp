@@ -298,12 +298,12 @@ std::string to_string(const Blocker& blocker) {
 namespace {
 
 /// The elements of the surface near one region: the triangles whose boxes meet its box
-/// (found by a box tree), their corners, each once, and their edges (walked as the
-/// triangles' sides: an edge of two of them is tested twice, which only repeats a test).
-/// Every element that meets the region has its box meeting the region's box, and so has
-/// a triangle of it; the others are tested and pass. Nothing is sorted: first_in keeps the
-/// least element it finds meeting the region, in the order first_in_region reports them
-/// (vertices by index, then edges by their ends, then triangles by index).
+/// (found by a box tree), their corners, each once, and their edges (the triangles'
+/// sides). Every element that meets the region has its box meeting the region's box, and
+/// so has a triangle of it; the others are tested and pass. Only what is left after the
+/// separating planes is sorted: first_in reports the least element meeting the region,
+/// in the order first_in_region reports them (vertices by index, then edges by their
+/// ends, then triangles by index).
 struct NearbyElements {
   static constexpr std::uint32_t kAbsent = ~std::uint32_t{0};
 
@@ -317,6 +317,9 @@ struct NearbyElements {
   std::vector<unsigned> face_known, face_beyond;
   /// Per vertex of the surface: its place in `vertices`, or kAbsent.
   std::vector<std::uint32_t> slot;
+  /// first_in's edges and triangles that no separating plane passes over, to be tested.
+  std::vector<Edge> edges_to_test;
+  std::vector<std::size_t> triangles_to_test;
 
   explicit NearbyElements(std::size_t vertex_count) : slot(vertex_count, kAbsent) {}
 
@@ -426,7 +429,9 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
       common &= second_of(i);
     return common != 0;
   };
-  // The least of each kind that meets the region (NearbyElements is unsorted).
+  // The least of each kind that meets the region (NearbyElements is unsorted: the edges
+  // and triangles left to test are sorted, each once, and tested from the least up to the
+  // first that meets it; an edge of two nearby triangles is then tested once).
   std::optional<VertexIndex> vertex;
   for (std::size_t i = 0; i < near.vertices.size(); ++i) {
     const VertexIndex v = near.vertices[i];
@@ -443,30 +448,39 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     if (inside) vertex = v;
   }
   if (vertex) return Blocker{Blocker::Kind::vertex, {*vertex, kNoVertex, kNoVertex}};
-  std::optional<Edge> edge;
+  std::vector<Edge>& edges = near.edges_to_test;
+  edges.clear();
   for (const std::size_t t : near.triangles) {
     const Triangle& c = surface.triangles[t];
     for (int k = 0; k < 3; ++k) {
       const Edge e = edge_of(c[k], c[(k + 1) % 3]);
-      if (edge && !(e < *edge)) continue;
       if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
       if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
-      if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}})) edge = e;
+      edges.push_back(e);
     }
   }
-  if (edge) return Blocker{Blocker::Kind::edge, {(*edge)[0], (*edge)[1], kNoVertex}};
-  std::optional<std::size_t> triangle;
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (const Edge& e : edges) {
+    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}}))
+      return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
+  }
+  std::vector<std::size_t>& triangles = near.triangles_to_test;
+  triangles.clear();
   for (const std::size_t t : near.triangles) {
-    if (triangle && *triangle < t) continue;
     const Triangle& c = surface.triangles[t];
     if (apart({index_of(c[0]), index_of(c[1]), index_of(c[2])})) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
-    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}}))
-      triangle = t;
+    triangles.push_back(t);
   }
-  if (triangle) return Blocker{Blocker::Kind::triangle, surface.triangles[*triangle]};
+  std::sort(triangles.begin(), triangles.end());  // each once: the query finds a pair once
+  for (const std::size_t t : triangles) {
+    const Triangle& c = surface.triangles[t];
+    if (pierces(region, {Corner{c[0], &p[c[0]]}, Corner{c[1], &p[c[1]]}, Corner{c[2], &p[c[2]]}}))
+      return Blocker{Blocker::Kind::triangle, c};
+  }
   return std::nullopt;
 }
 
