@@ -73,7 +73,8 @@ std::vector<bool> go_ahead(std::span<const Footprint> operations, std::span<cons
   // The regions whose boxes meet each region's.
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   if (!regions.empty()) {
-    const RegionPoints boxed(points, regions);
+    CornerPoints boxed;  // the corners only: the regions are a few of the surface
+    boxed.assign(points.size(), regions);
     boxes::overlapping_groups<4>(boxed.points, boxed.groups, [&](std::size_t x, std::size_t y) {
       if (operation_of[x] == operation_of[y]) return;
       pairs.emplace_back(x, y);

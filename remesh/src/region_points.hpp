@@ -45,6 +45,45 @@ struct RegionPoints {
   }
 };
 
+/// A pass's regions as groups of their corners alone: each surface vertex among them
+/// once (in the order first met), then the new points; for a query of the regions against
+/// each other, which needs no box of the surface's other vertices (a pass of a few
+/// hundred regions on a surface of thousands of vertices). The boxes are in the scale of
+/// these points, not of the whole surface: float boxes rounded outward in either scale
+/// hold the exact ones, so every pair whose exact boxes meet is found in both, and the
+/// pairs found in one only are apart (their exact boxes are), which the caller's exact
+/// test decides.
+struct CornerPoints {
+  std::vector<Point3> points;
+  std::vector<std::array<VertexIndex, 4>> groups;
+  std::vector<VertexIndex> slot;  ///< per surface vertex: its place in `points`, or kNoVertex
+
+  /// `vertex_count`: the surface's (every corner's vertex is below it).
+  void assign(std::size_t vertex_count, std::span<const std::array<RegionCorner, 4>> regions) {
+    slot.assign(vertex_count, kNoVertex);
+    points.clear();
+    groups.resize(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        const RegionCorner& c = regions[r][k];
+        if (c.vertex == kNoVertex) continue;
+        if (slot[c.vertex] == kNoVertex) {
+          slot[c.vertex] = static_cast<VertexIndex>(points.size());
+          points.push_back(c.point);  // a vertex's corners are all at its place
+        }
+        groups[r][k] = slot[c.vertex];
+      }
+    }
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+      for (std::size_t k = 0; k < 4; ++k) {
+        if (regions[r][k].vertex != kNoVertex) continue;
+        groups[r][k] = static_cast<VertexIndex>(points.size());
+        points.push_back(regions[r][k].point);
+      }
+    }
+  }
+};
+
 /// visit(g, t) for every group g of `groups` and triangle t of `triangles` whose boxes
 /// overlap (boxes/point_groups.hpp). A pass's regions or moving triangles are usually far
 /// fewer than the surface's triangles: then the triangles are scanned down a tree of the

@@ -65,12 +65,30 @@ void overlapping_groups_by_scan(std::span<const Point3> points,
   const VertexBoxes at_rest = point_boxes(points);
   const BoxTree<NA> tree_a(a, at_rest);
   const FloatBox root = tree_a.node(0).box;
+  // Per point, the sides of the root's box its box lies strictly beyond: bit k below it
+  // along axis k, bit 3 + k above it. A group's box (the union of its points') misses the
+  // root's exactly when, along some axis, every point's box lies below it or every one
+  // above it: when the points' bits have one in common. Most of `b` is far from every
+  // group of `a`, and is passed over with no box made.
+  std::vector<std::uint8_t> beyond(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const FloatBox& box = at_rest.box[i];
+    unsigned bits = 0;
+    for (int k = 0; k < 3; ++k) {
+      bits |= box.hi[k] < root.lo[k] ? 1u << k : 0u;
+      bits |= root.hi[k] < box.lo[k] ? 8u << k : 0u;
+    }
+    beyond[i] = static_cast<std::uint8_t>(bits);
+  }
   std::vector<std::uint32_t> stack;
   for (std::size_t j = 0; j < b.size(); ++j) {
+    unsigned common = beyond[b[j][0]];
+    for (std::size_t c = 1; c < NB; ++c)
+      common &= beyond[b[j][c]];
+    if (common != 0) continue;  // the box misses the root's
     FloatBox box = at_rest.box[b[j][0]];
     for (std::size_t c = 1; c < NB; ++c)
       box = united(box, at_rest.box[b[j][c]]);
-    if (!overlap(box, root)) continue;
     stack.assign(1, 0);
     while (!stack.empty()) {
       const auto& node = tree_a.node(stack.back());
