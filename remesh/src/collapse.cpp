@@ -128,27 +128,26 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Vertex
   return CollapsePlan{a, b, to, EdgeTrianglesOfOne(on_edge)};
 }
 
-/// The surface with the planned collapses made: each edge's triangles gone (the others in
-/// order), b replaced by a, both at `to`.
-Surface collapsed(const Surface& surface, const std::vector<const CollapsePlan*>& plans) {
-  Surface after = surface;
+/// Makes the planned collapses on `surface` (the one they were planned on), in place:
+/// each edge's triangles gone (the others in order), b replaced by a, both at `to`.
+void collapse(Surface& surface, const std::vector<const CollapsePlan*>& plans) {
   std::vector<bool> removed(surface.triangles.size(), false);
   std::vector<VertexIndex> merged_into(surface.vertices.size(), kNoVertex);
   for (const CollapsePlan* p : plans) {
-    after.vertices[p->a] = after.vertices[p->b] = p->to;
+    surface.vertices[p->a] = surface.vertices[p->b] = p->to;
     for (const std::size_t t : p->on_edge)
       removed[t] = true;
     merged_into[p->b] = p->a;
   }
-  after.triangles.clear();
+  std::size_t kept = 0;  // the triangles kept so far, moved down in order
   for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
     if (removed[t]) continue;
     Triangle tri = surface.triangles[t];
     for (VertexIndex& c : tri)
       if (merged_into[c] != kNoVertex) c = merged_into[c];
-    after.triangles.push_back(tri);
+    surface.triangles[kept++] = tri;
   }
-  return after;
+  surface.triangles.resize(kept);
 }
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
@@ -216,6 +215,8 @@ struct CollapsePass::State {
     owner_.assign(surface.vertices.size(), kNone);
   }
 
+  std::span<const std::size_t> triangles_around(VertexIndex v) const { return stars_[v]; }
+
   /// Whether no vertex around a or b is taken by a collapse going ahead.
   bool could_go_ahead(VertexIndex a, VertexIndex b) const {
     for (const VertexIndex end : {a, b}) {
@@ -274,7 +275,8 @@ struct CollapsePass::State {
 
   std::vector<Outcome> finish(Surface& surface) {
     refuse_collisions();
-    surface = collapsed(surface_, live_plans());
+    if (&surface != &surface_) surface = surface_;
+    collapse(surface, live_plans());
     return std::move(outcomes_);
   }
 
@@ -423,7 +425,7 @@ Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Poin
   if (auto hit = first_collision(surface, moves, edge_of(a, b))) {
     return collision(*hit, collapsing(a, b));
   }
-  surface = collapsed(surface, {&plan});
+  collapse(surface, {&plan});
   return {};
 }
 
@@ -440,6 +442,10 @@ CollapsePass::State& CollapsePass::state() const {
 
 bool CollapsePass::could_go_ahead(VertexIndex a, VertexIndex b) const {
   return state().could_go_ahead(a, b);
+}
+
+std::span<const std::size_t> CollapsePass::triangles_around(VertexIndex v) const {
+  return state().triangles_around(v);
 }
 
 void CollapsePass::propose(const Collapse& collapse) {

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <vector>
 
@@ -186,6 +187,12 @@ TEST(CollapsePass, ProposingOnlyWhatCouldGoAheadMakesTheSameCollapses) {
       }
       const std::vector<Outcome> every = collapse_edges(all, collapses);
       CollapsePass proposed(some);
+      // Its table of the triangles around each vertex is the surface's, through the pass.
+      for (VertexIndex v = 0; v < some.vertices.size(); ++v) {
+        const std::span<const std::size_t> around = proposed.triangles_around(v);
+        ASSERT_EQ(std::vector<std::size_t>(around.begin(), around.end()), some.triangles_around(v))
+            << "vertex " << v << ", pass " << pass;
+      }
       std::vector<std::size_t> asked;  // the collapses proposed, in order
       for (std::size_t i = 0; i < collapses.size(); ++i) {
         if (!proposed.could_go_ahead(collapses[i].a, collapses[i].b)) {
@@ -197,6 +204,11 @@ TEST(CollapsePass, ProposingOnlyWhatCouldGoAheadMakesTheSameCollapses) {
         }
         proposed.propose(collapses[i]);
         asked.push_back(i);
+        if (i % 7 == 0) {  // and stays so while collapses are proposed
+          const std::span<const std::size_t> around = proposed.triangles_around(collapses[i].a);
+          ASSERT_EQ(std::vector<std::size_t>(around.begin(), around.end()),
+                    some.triangles_around(collapses[i].a));
+        }
       }
       const std::vector<Outcome> fewer = proposed.finish(some);
       ASSERT_EQ(fewer.size(), asked.size());
@@ -220,6 +232,7 @@ TEST(CollapsePass, ProposingOnlyWhatCouldGoAheadMakesTheSameCollapses) {
     EXPECT_TRUE(used.finish(some).empty());
     EXPECT_THROW(static_cast<void>(used.could_go_ahead(0, 1)), std::logic_error);
     EXPECT_THROW(used.propose({0, 1, Point3{}}), std::logic_error);
+    EXPECT_THROW(static_cast<void>(used.triangles_around(0)), std::logic_error);
   }
   std::cout << skipped << " collapses left unproposed, " << applied << " applied\n";
   EXPECT_GT(skipped, 500);

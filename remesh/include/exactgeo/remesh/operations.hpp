@@ -150,6 +150,11 @@ class CollapsePass {
   /// (True does not promise that it goes ahead: its topology, and its moving triangles'
   /// boxes, decide.)
   bool could_go_ahead(VertexIndex a, VertexIndex b) const;
+  /// The triangles around vertex v (indices, in triangle order) on the surface the pass
+  /// was made for: the table the pass plans with, for a caller that reads the same (a
+  /// remesher checking each collapse's shape), so that it builds none of its own.
+  /// Precondition: v is a vertex of that surface.
+  std::span<const std::size_t> triangles_around(VertexIndex v) const;
   /// Plans and schedules the collapse; its outcome is the next of finish()'s.
   void propose(const Collapse& collapse);
   /// One outcome per proposal, in order, with the collapses that go ahead and meet
