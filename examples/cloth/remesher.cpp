@@ -59,10 +59,15 @@ std::vector<SheetEdge> sheet_edges(const Surface& s) {
     bool forward;  // the triangle walks smaller -> larger
   };
   std::vector<std::size_t> first(s.vertices.size() + 1, 0);
-  std::vector<char> sheet(s.triangles.size());  // asked once per triangle, used twice
+  // Which vertices are fixed, a byte each (read three times per triangle), and which
+  // triangles are the sheets' (sheet_triangle: no corner fixed), asked once, used twice.
+  std::vector<char> fixed(s.vertices.size(), 0);
+  for (VertexIndex v = 0; v < s.vertices.size(); ++v)
+    fixed[v] = s.is_fixed(v) ? 1 : 0;
+  std::vector<char> sheet(s.triangles.size());
   for (std::size_t t = 0; t < s.triangles.size(); ++t) {
     const remesh::Triangle& tri = s.triangles[t];
-    sheet[t] = sheet_triangle(s, tri);
+    sheet[t] = (fixed[tri[0]] | fixed[tri[1]] | fixed[tri[2]]) == 0;
     if (!sheet[t]) continue;
     for (int k = 0; k < 3; ++k)
       ++first[std::min(tri[k], tri[(k + 1) % 3]) + 1];
@@ -153,10 +158,20 @@ bool keeps_quality(const OldWorst& old_worst, double new_worst) {
 std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& edges,
                                  const RemeshParameters& p) {
   std::vector<double> size(w.surface.vertices.size(), p.max_length);
+  // Each triangle's normal, worked out once for its (up to three) inner edges.
+  std::vector<std::array<double, 3>> normals(w.surface.triangles.size());
+  std::vector<char> known(w.surface.triangles.size(), 0);
+  const auto normal_of = [&](std::size_t t) -> const std::array<double, 3>& {
+    if (!known[t]) {
+      normals[t] = normal(w.surface, w.surface.triangles[t]);
+      known[t] = 1;
+    }
+    return normals[t];
+  };
   for (const SheetEdge& e : edges) {
     if (!e.right) continue;
-    const auto n1 = normal(w.surface, w.surface.triangles[e.left]);
-    const auto n2 = normal(w.surface, w.surface.triangles[*e.right]);
+    const auto& n1 = normal_of(e.left);
+    const auto& n2 = normal_of(*e.right);
     const std::array<double, 3> c{n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
                                   n1[0] * n2[1] - n1[1] * n2[0]};
     const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
@@ -346,20 +361,20 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
   }
   std::stable_sort(wanted.begin(), wanted.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
-  // The triangles around each vertex as the pass starts (the pass defers the collapses
-  // whose surroundings another one of it changes).
-  const VertexTriangles stars(w.surface.triangles, w.surface.vertices.size());
   RingScratch scratch;
   // Proposed as they are found, so that an edge near a collapse already going ahead,
   // which the pass would defer to the next one, is not checked for its shape at all.
   remesh::CollapsePass pass(w.surface, w.passes);
+  // The triangles around each vertex as the pass starts (the pass defers the collapses
+  // whose surroundings another one of it changes): the pass's own table.
+  const auto stars = [&pass](VertexIndex v) { return pass.triangles_around(v); };
   for (const auto& [length, e] : wanted) {
     if (!pass.could_go_ahead(e->a, e->b)) continue;
     const bool boundary = !e->right;
     VertexIndex kept = e->a, gone = e->b;
-    if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) {
+    if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
-      if (!collapse_suits(w, size, stars[gone], kept, gone, boundary, scratch)) continue;
+      if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) continue;
     }
     pass.propose({kept, gone, w.surface.vertices[kept]});
   }
