@@ -2,14 +2,15 @@
 
 // The cloth remesher's floating-point shortcuts: cheaper forms of its float decisions (an
 // angle against the quality floor, a length against a limit, a curvature ask against the
-// largest size) that give the answer of the full computation wherever they give one. They
-// are not exact predicates and need not be: the remesher's choices are policy, and every
-// operation it proposes is checked exactly by the library. Each shortcut compares squares
-// with a relative margin far beyond the few ulps by which the squares and the full
-// computation's hypot, atan2 and division round apart, and declines (nullopt, false, or
-// the full computation) where the squares may have lost their precision (below 1e-280,
-// or not finite). Tested against the full computations on random inputs and on inputs a
-// relative 1e-16 to 1e-5 from each limit (tests/examples/float_shortcuts_test.cpp).
+// largest size, two opposite angles' sum against a half turn) that give the answer of the
+// full computation wherever they give one. They are not exact predicates and need not be:
+// the remesher's choices are policy, and every operation it proposes is checked exactly
+// by the library. Each shortcut compares squares or products with a relative margin far
+// beyond the few ulps by which they and the full computation's hypot, atan2 and division
+// round apart, and declines (nullopt, false, or the full computation) where they may have
+// lost their precision (below 1e-280, or not finite). Tested against the full
+// computations on random inputs and on inputs a relative 1e-16 to 1e-5 from each limit
+// (tests/examples/float_shortcuts_test.cpp).
 
 #include <array>
 #include <numbers>
@@ -50,5 +51,19 @@ std::optional<bool> clearly_longer(double dx, double dy, double limit);
 /// max_length. False means: work it out.
 bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
                            double max_length, double turn_per_edge);
+
+/// Whether two angles, atan2(cross1, dot1) + atan2(cross2, dot2) (cross1, cross2 >= 0: each
+/// in [0, pi], a corner's of a triangle, from its sides' cross and dot products), sum to
+/// more than pi + slack (slack >= 0, below a quarter turn), decided without atan2 where it
+/// is clear; nullopt otherwise (then atan2 decides). The sum less pi is the angle theta of
+/// (-s, -c), s = cross1 dot2 + dot1 cross2 and c = dot1 dot2 - cross1 cross2 (N sin and N
+/// cos of the sum, N the four sides' lengths' product): for c < 0, theta is within a
+/// quarter turn of 0 and theta - slack has the sign of t c - s (N sin(theta - slack) /
+/// cos(slack), t = tan(slack)); for c >= 0, theta is at least a quarter turn from 0 and
+/// has the sign of -s. Either is taken only when it exceeds 1e-9 m, m = (cross1 + |dot1|)
+/// (cross2 + |dot2|) >= N: then theta lies at least 1e-9 from slack, far beyond the few
+/// ulps by which the products and the full computation's atan2 round.
+std::optional<bool> clearly_beyond_half_turn(double cross1, double dot1, double cross2, double dot2,
+                                             double slack);
 
 }  // namespace exactgeo::cloth

@@ -129,11 +129,24 @@ double material_area(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c)
   return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
 }
 
-/// The angle at c of the triangle a b c in the material.
-double material_angle(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c) {
+/// The angle at c of the triangle a b c in the material, as the absolute cross product and
+/// the dot product of its sides (its atan2).
+std::array<double, 2> material_corner(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c) {
   const Material &p = w.material[a], &q = w.material[b], &r = w.material[c];
   const double ux = p[0] - r[0], uy = p[1] - r[1], vx = q[0] - r[0], vy = q[1] - r[1];
-  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy);
+  return {std::abs(ux * vy - uy * vx), ux * vx + uy * vy};
+}
+
+/// Whether edge ab, with opposite corners c and d, is not Delaunay in the material: the
+/// angles at c and d sum to more than pi + kDelaunaySlack (decided without atan2 where
+/// clearly_beyond_half_turn can: float_shortcuts.hpp).
+bool not_delaunay(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
+  const auto [cross_c, dot_c] = material_corner(w, a, b, c);
+  const auto [cross_d, dot_d] = material_corner(w, a, b, d);
+  if (const auto clear = clearly_beyond_half_turn(cross_c, dot_c, cross_d, dot_d, kDelaunaySlack))
+    return *clear;
+  return std::atan2(cross_c, dot_c) + std::atan2(cross_d, dot_d) >
+         std::numbers::pi + kDelaunaySlack;
 }
 
 std::array<double, 3> normal(const Surface& s, const remesh::Triangle& t) {
@@ -392,10 +405,7 @@ bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
     if (!e.right) continue;
     const VertexIndex c = remesh::third_corner(w.surface.triangles[e.left], e.a, e.b);
     const VertexIndex d = remesh::third_corner(w.surface.triangles[*e.right], e.a, e.b);
-    if (material_angle(w, e.a, e.b, c) + material_angle(w, e.a, e.b, d) <=
-        std::numbers::pi + kDelaunaySlack) {
-      continue;
-    }
+    if (!not_delaunay(w, e.a, e.b, c, d)) continue;
     // The new triangles c a d and d b c must turn as the old a b c does.
     const double old_turn = material_area(w, e.a, e.b, c);
     if (!(material_area(w, c, e.a, d) * old_turn > 0.0) ||

@@ -6,8 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <iostream>
+#include <numbers>
+#include <optional>
 #include <random>
 
 #include "support/seed.hpp"
@@ -128,6 +132,49 @@ TEST(FloatShortcuts, AnAskThatCannotLowerASizeIsAtLeastTheLargest) {
     ASSERT_GE(length * kTurn / angle, max_length) << "trial " << trial << " theta " << theta;
   }
   EXPECT_GT(answered, 20000);
+}
+
+TEST(FloatShortcuts, AHalfTurnIsExceededAsTheAnglesSumSays) {
+  // Two corners in the plane (a quadrilateral's opposite corners c and d, as the remesher's
+  // Delaunay test sees them: the cross and dot products of each corner's sides), whose
+  // angles sum to near pi + slack on every other trial, near pi (a grid's right
+  // triangles) or 0 or 2 pi (slivers) on some, and anything on the rest.
+  std::mt19937_64 rng = seeded_engine("FloatShortcuts.HalfTurn");
+  std::uniform_real_distribution<double> unit(0.05, 1.0), angle(0.0, std::numbers::pi),
+      turn(0.0, 2.0 * std::numbers::pi);
+  constexpr double kSlack = 1e-6;
+  int answered = 0, beyond = 0;
+  const auto corner = [&](double at, double scale) {
+    const double a = unit(rng) * scale, b = unit(rng) * scale, phi = turn(rng);
+    const double ux = a * std::cos(phi), uy = a * std::sin(phi);
+    const double vx = b * std::cos(phi + at), vy = b * std::sin(phi + at);
+    return std::array<double, 2>{std::abs(ux * vy - uy * vx), ux * vx + uy * vy};
+  };
+  for (int trial = 0; trial < 300000; ++trial) {
+    const double scale = pick(rng, kScales);
+    double sum = angle(rng) + angle(rng);
+    if (trial % 2 == 0) sum = relative(rng, std::numbers::pi + kSlack) - std::numbers::pi;
+    if (trial % 2 == 0 && trial % 3 == 0) sum = relative(rng, 1.0) * 1e-300;  // below pi
+    sum = trial % 10 == 1 ? relative(rng, std::numbers::pi) - std::numbers::pi : sum;
+    sum = trial % 10 == 3 ? relative(rng, 1e-3) : sum;
+    sum = trial % 10 == 5 ? relative(rng, 2.0 * std::numbers::pi - 1e-3) : sum;
+    if (trial % 2 == 0 && trial % 3 != 0) sum += std::numbers::pi;
+    const double first = std::clamp(sum - angle(rng), std::max(0.0, sum - std::numbers::pi),
+                                    std::min(sum, std::numbers::pi));
+    const auto [cross1, dot1] = corner(first, scale);
+    const auto [cross2, dot2] = corner(sum - first, scale);
+    const std::optional<bool> clear = clearly_beyond_half_turn(cross1, dot1, cross2, dot2, kSlack);
+    const bool full =
+        std::atan2(cross1, dot1) + std::atan2(cross2, dot2) > std::numbers::pi + kSlack;
+    beyond += full;
+    if (!clear) continue;
+    ++answered;
+    ASSERT_EQ(*clear, full) << "trial " << trial << " sum " << sum << " scale " << scale;
+  }
+  std::cout << answered << " of 300000 answered, " << beyond << " beyond a half turn\n";
+  EXPECT_GT(answered, 100000);  // every scale but the two whose products overflow or underflow
+  EXPECT_GT(beyond, 50000);
+  EXPECT_LT(beyond, 250000);
 }
 
 }  // namespace
