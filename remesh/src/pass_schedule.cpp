@@ -32,7 +32,7 @@ bool BoxSchedule::overlap(const Box& a, const Box& b) noexcept {
 
 bool BoxSchedule::take(const Footprint& operation) {
   const std::vector<VertexIndex>& vertices = operation.vertices;
-  if (std::any_of(vertices.begin(), vertices.end(), [&](VertexIndex v) { return taken_[v]; }))
+  if (std::any_of(vertices.begin(), vertices.end(), [&](VertexIndex v) { return taken_[v] != 0; }))
     return false;
   own_.clear();
   for (const auto& region : operation.regions)
@@ -53,7 +53,7 @@ bool BoxSchedule::take(const Footprint& operation) {
     first_.push_back(region_.size());
   }
   for (const VertexIndex v : vertices)
-    taken_[v] = true;
+    taken_[v] = 1;
   return true;
 }
 

@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -46,10 +47,10 @@ struct Footprint {
 /// thousands of collapses in a pass and applies tens.
 class BoxSchedule {
  public:
-  explicit BoxSchedule(std::size_t vertex_count) : taken_(vertex_count, false) {}
+  explicit BoxSchedule(std::size_t vertex_count) : taken_(vertex_count, 0) {}
 
   /// Whether v is a vertex of an operation going ahead.
-  bool taken(VertexIndex v) const { return taken_[v]; }
+  bool taken(VertexIndex v) const { return taken_[v] != 0; }
   /// Whether `operation` goes ahead (then it is taken: later ones are checked against it).
   bool take(const Footprint& operation);
 
@@ -61,7 +62,8 @@ class BoxSchedule {
   static Box united(Box a, const Box& b) noexcept;
   static bool overlap(const Box& a, const Box& b) noexcept;
 
-  std::vector<bool> taken_;
+  std::vector<std::uint8_t> taken_;    ///< a byte per vertex: asked for every vertex around
+                                       ///< each proposed collapse's ends
   std::vector<Box> going_;             ///< the box around each one's regions
   std::vector<std::size_t> first_{0};  ///< going_[g]'s region boxes: [first_[g], first_[g+1])
   std::vector<Box> region_;            ///< their regions' boxes
