@@ -44,10 +44,6 @@ struct SheetEdge {
   std::optional<std::size_t> right;
 };
 
-bool sheet_triangle(const Surface& s, const remesh::Triangle& t) {
-  return !s.is_fixed(t[0]) && !s.is_fixed(t[1]) && !s.is_fixed(t[2]);
-}
-
 /// Every edge of the sheets' triangles with its triangles (edges of more than two, which
 /// the sheets never have, are left out), ordered by their ends. The triangles' sides are
 /// bucketed by their smaller vertex (a counting sort: linear, not a sort of all sides),
@@ -60,7 +56,7 @@ std::vector<SheetEdge> sheet_edges(const Surface& s) {
   };
   std::vector<std::size_t> first(s.vertices.size() + 1, 0);
   // Which vertices are fixed, a byte each (read three times per triangle), and which
-  // triangles are the sheets' (sheet_triangle: no corner fixed), asked once, used twice.
+  // triangles are the sheets' (no corner fixed: the obstacles' are), asked once, used twice.
   std::vector<char> fixed(s.vertices.size(), 0);
   for (VertexIndex v = 0; v < s.vertices.size(); ++v)
     fixed[v] = s.is_fixed(v) ? 1 : 0;
@@ -453,16 +449,19 @@ Work work_of(const ClothMesh& mesh) {
 /// sheet faces first.
 void write_back(const Work& w, ClothMesh& mesh) {
   const Surface& s = w.surface;
-  std::vector<bool> used(s.vertices.size(), false);
+  std::vector<char> used(s.vertices.size(), 0), fixed(s.vertices.size(), 0);  // bytes
   for (const remesh::Triangle& t : s.triangles) {
     for (const VertexIndex v : t)
-      used[v] = true;
+      used[v] = 1;
   }
+  for (VertexIndex v = 0; v < s.vertices.size(); ++v)
+    fixed[v] = s.is_fixed(v) ? 1 : 0;
   std::vector<VertexIndex> renumber(s.vertices.size(), remesh::kNoVertex);
   std::vector<VertexIndex> order;
+  order.reserve(s.vertices.size());
   for (const bool obstacle : {false, true}) {
     for (VertexIndex v = 0; v < s.vertices.size(); ++v) {
-      if (s.is_fixed(v) != obstacle || (!obstacle && !used[v])) continue;
+      if ((fixed[v] != 0) != obstacle || (!obstacle && !used[v])) continue;
       renumber[v] = static_cast<VertexIndex>(order.size());
       order.push_back(v);
     }
@@ -470,16 +469,24 @@ void write_back(const Work& w, ClothMesh& mesh) {
   mesh.positions.clear();
   mesh.velocity.clear();
   mesh.material.clear();
+  mesh.positions.reserve(3 * order.size());
+  mesh.velocity.reserve(3 * order.size());
+  mesh.material.reserve(order.size());
   for (const VertexIndex v : order) {
     mesh.positions.insert(mesh.positions.end(), s.vertices[v].begin(), s.vertices[v].end());
-    if (s.is_fixed(v)) continue;
+    if (fixed[v]) continue;
     mesh.velocity.insert(mesh.velocity.end(), w.velocity[v].begin(), w.velocity[v].end());
     mesh.material.push_back(w.material[v]);
   }
+  // Sheet faces (no corner fixed) first, then the obstacles'.
+  const auto sheet = [&](const remesh::Triangle& t) {
+    return (fixed[t[0]] | fixed[t[1]] | fixed[t[2]]) == 0;
+  };
   mesh.faces.clear();
+  mesh.faces.reserve(s.triangles.size());
   for (const bool obstacle : {false, true}) {
     for (const remesh::Triangle& t : s.triangles) {
-      if (sheet_triangle(s, t) == obstacle) continue;
+      if (sheet(t) == obstacle) continue;
       mesh.faces.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
     }
     if (!obstacle) mesh.sheet_faces = mesh.faces.size();
