@@ -162,22 +162,25 @@ struct Reach {
   std::vector<VertexIndex> vertices;
   std::vector<ccd::Triangle> triangles;
 
-  Reach(const Surface& s, const std::vector<const CollapsePlan*>& plans) {
+  /// `stars`: the triangles around each vertex of `s`.
+  Reach(const Surface& s, const VertexTriangles& stars,
+        const std::vector<const CollapsePlan*>& plans) {
     std::vector<Point3> points = s.vertices;
     std::vector<std::array<VertexIndex, 4>> swept;  // a moving triangle's corners and `to`
-    std::vector<VertexIndex> moving(s.vertices.size(), kNoVertex);  // its collapse's `to`
-    for (const CollapsePlan* p : plans) {
-      moving[p->a] = moving[p->b] = static_cast<VertexIndex>(points.size());
-      points.push_back(p->to);
-    }
     std::vector<bool> reached(s.triangles.size(), false);
-    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-      const Triangle& tri = s.triangles[t];
-      for (const VertexIndex v : tri) {
-        if (moving[v] == kNoVertex) continue;
-        swept.push_back({tri[0], tri[1], tri[2], moving[v]});
-        reached[t] = true;
-        break;
+    // The triangles around the collapses' ends, each once (around both ends: the edge's),
+    // found from the stars, not by a walk of every triangle. A triangle has the ends of
+    // one collapse only (those going ahead share no vertex around their ends).
+    for (const CollapsePlan* p : plans) {
+      const auto to = static_cast<VertexIndex>(points.size());
+      points.push_back(p->to);
+      for (const VertexIndex end : {p->a, p->b}) {
+        for (const std::size_t t : stars[end]) {
+          if (reached[t]) continue;
+          const Triangle& tri = s.triangles[t];
+          swept.push_back({tri[0], tri[1], tri[2], to});
+          reached[t] = true;
+        }
       }
     }
     internal::groups_near_triangles<4>(points, swept, s.triangles,
@@ -311,7 +314,7 @@ struct CollapsePass::State {
   /// motion makes it (no moving triangle of one comes near another's: plan), and the rest
   /// is checked again, until a step is clean.
   void refuse_collisions() {
-    const Reach reach(surface_, live_plans());
+    const Reach reach(surface_, stars_, live_plans());
     if (reach.triangles.empty()) return;
     ccd::MeshCcd mesh_ccd(reach.vertices.size(), reach.triangles);
     std::vector<Point3> start(reach.vertices.size());
