@@ -89,12 +89,13 @@ struct CornerPoints {
 /// fewer than the surface's triangles: then the triangles are scanned down a tree of the
 /// groups (no tree over the whole surface, built again each pass); otherwise the two trees
 /// are walked. The same pairs either way (the same float boxes), in another order.
+/// `fewer`: the triangles per group above which the scan is taken (a choice of cost only).
 template <std::size_t N, class Visit>
 void groups_near_triangles(std::span<const Point3> points,
                            std::span<const std::array<VertexIndex, N>> groups,
-                           std::span<const Triangle> triangles, Visit&& visit) {
-  constexpr std::size_t kFewer = 16;  // groups per triangle below which the scan pays
-  if (kFewer * groups.size() < triangles.size()) {
+                           std::span<const Triangle> triangles, Visit&& visit,
+                           std::size_t fewer = 16) {
+  if (fewer * groups.size() < triangles.size()) {
     boxes::overlapping_groups_by_scan<N, 3>(points, groups, triangles, visit);
   } else {
     boxes::overlapping_groups<N, 3>(points, groups, triangles, visit);
