@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "arctan2.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 
 // The error bound, with u = 2^-53 and every vector first scaled by a power of two so that
@@ -33,7 +34,8 @@
 //    branch cut (N = 0, D < 0): it does not where |N| > |dN| (same half plane, upper or
 //    lower) or D > |dD| (right half plane); where D < -|dD| the exact sign of N* (an exact
 //    predicate) is given to the computed N, which moves it no further from N*. Otherwise
-//    the filter gives up. atan2 adds its own error, bounded as in boundary_term.hpp.
+//    the filter gives up. The arctangent adds its own error, at most kArctanError
+//    (arctan2.hpp derives it; the C library's atan2 is not called here).
 //  - The sum of the B weighted half angles rounds within (B + 1) u times the sum of their
 //    magnitudes (gamma_B, and the products by the multiplicities); 2 pi times a level
 //    rounds within 1.5u of its magnitude (pi's double is within 0.4u of pi).
@@ -117,8 +119,8 @@ std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld
     if (side == Sign::zero) return HalfAngle{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
     num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
   }
-  return HalfAngle{BoundaryTermKind::enclosed, std::atan2(num, den),
-                   (4.0 / 3.0) * e / radius + kAtan2Error};
+  return HalfAngle{BoundaryTermKind::enclosed, arctan2(num, den),
+                   (4.0 / 3.0) * e / radius + kArctanError};
 }
 
 std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,

@@ -13,8 +13,10 @@
 
 namespace exactgeo::internal {
 
-/// How far the C library's atan2 is trusted, in radians, by both double stages: 2^11 ulps
-/// of pi (whose ulp is 2^-51), where every libm in use is within a few.
+/// How far the C library's atan2 is trusted, in radians, by the outward-rounded stage
+/// (boundary_term.cpp): 2^11 ulps of pi (whose ulp is 2^-51), where every libm in use is
+/// within a few. The filter's half angles take arctan2.hpp's instead, whose error bound
+/// is derived there.
 inline constexpr double kAtan2Error = 0x1p-40;
 
 /// One edge's half angle theta(p; a, b, p + apex) in plain doubles, and a bound on its
