@@ -147,7 +147,7 @@ MUTANTS = [
     # The boundary term of an open surface (predicates/src/boundary_term_filter.cpp).
     ("boundary_filter_numerator_bound_dropped",
      "predicates/src/boundary_term_filter.cpp",
-     "const double num_error = 8 * kU * permanent + kTiny;",
+     "const double num_error = 16 * kU * length + kTiny;",
      "const double num_error = kTiny;", ["predicates_tests", "inside_tests"]),
     ("boundary_filter_denominator_bound_dropped",
      "predicates/src/boundary_term_filter.cpp",

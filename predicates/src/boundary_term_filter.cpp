@@ -18,9 +18,15 @@
 //    at most 2^-1075. The direction -r is exact. So each input is within u|A| + 2^-1074.
 //  - N = fl(A . fl(B x D)): the cross product and the dot add up to gamma_5 P, with P the
 //    permanent sum |A_i| (|B_j||D_k| + |B_k||D_j|); the inputs' own errors, through
-//    trilinearity, add (2u + u^2) P. So |N - N*| <= 8u P (P itself computed, within 3u).
+//    trilinearity, add (2u + u^2) P. So |N - N*| <= 7.01u P.
 //  - |A| = fl(sqrt(fl(A . A))): within (1.5 gamma_3 + u) of the computed vector's length,
 //    and that within u + 2^-1074 of the exact one's: 7u in all, relative.
+//  - P is not computed: P = sum_i |A_i| w_i with w_i = |B_j||D_k| + |B_k||D_j|, and each of
+//    the two vectors (|B_j||D_k|)_i has length at most |B||D| (its squares are some of the
+//    products B_j^2 D_k^2, which add up to |B|^2 |D|^2), so |w| <= 2 |B||D| and, by
+//    Cauchy-Schwarz, P <= |A||w| <= 2 |A||B||D|. The computed L = fl(fl(|A||B|)|D|) is
+//    within (1 - 7u)^-3 (1 - u)^-2 < 1 + 24u of it, so |N - N*| <= 14.02u (1 + 24u) L
+//    < 14.1u L, and 16u L, rounded down by at most u, covers it.
 //  - D = |A||B||D| + (A.B)|D| + (A.D)|B| + (B.D)|A|, with L = |A||B||D|: every term is at
 //    most L (Cauchy-Schwarz); the first is off by at most (3 x 7 + 2)u L, each of the
 //    others by (gamma_3 + 2.01u + 7u + u) L <= 13u L (dot, inputs, a length, a product),
@@ -91,15 +97,10 @@ std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld
   const Vector3 bxd{B[1] * D[2] - B[2] * D[1], B[2] * D[0] - B[0] * D[2],
                     B[0] * D[1] - B[1] * D[0]};
   double num = dot(A, bxd);
-  double permanent = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    permanent += std::abs(A[i]) * (std::abs(B[j] * D[k]) + std::abs(B[k] * D[j]));
-  }
   const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B));
   const double length = la * lb * ld;
   const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
-  const double num_error = 8 * kU * permanent + kTiny;
+  const double num_error = 16 * kU * length + kTiny;
   const double den_error = 96 * kU * length + kTiny;
   // r = |(N, D)| from below: the squares and their sum within u each, the root within
   // u/2 (2.5u in all, below the 4u taken off), where the sum is at least 2^-1000 (an
