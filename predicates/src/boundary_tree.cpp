@@ -78,23 +78,28 @@ double distance2_below(const Point3& p, const Point3& lower, const Point3& upper
 /// (lower - p) / r and (upper - p) / r (ordered by r's sign), computed as
 /// (lower - p) times `inverse`, 1 / r rounded. Each computed t is within 3u |t| + 2^-1075
 /// of its exact value (a difference, a reciprocal and a product; the reciprocal of a
-/// component below 2^1000 does not underflow); an entry moved down and an exit moved up by
-/// 2^-50 |t| + kTiny (more than that, their own rounding included) bound the exact ones,
-/// and a miss found with them is a miss. A t that is not finite (an overflow, or a
-/// reciprocal that overflows) is left out, which can only hide a miss.
-bool ray_misses(const Point3& p, const Vector3& r, const Vector3& inverse, const Point3& lower,
-                const Point3& upper) noexcept {
+/// component between 2^-1000 and 2^1000 in magnitude neither underflows nor overflows,
+/// which refine checks); the largest entry moved down and the smallest exit moved up by
+/// 2^-50 |t| + kTiny (more than that, their own rounding included) bound the exact
+/// entry of the same slab, hence the exact largest, from below, and the exact exit of the
+/// same slab, hence the exact smallest, from above: a miss found with them is a miss. (Only
+/// the two extremes take a margin.) A difference that overflows makes a t infinite: an
+/// infinite largest entry or smallest exit then gives NaN, which finds no miss.
+[[gnu::always_inline]] inline bool ray_misses(const Point3& p, const Vector3& r,
+                                              const Vector3& inverse, const Point3& lower,
+                                              const Point3& upper) noexcept {
   double enter = 0.0, exit = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
     if (r[i] == 0.0) {
       if (p[i] < lower[i] || p[i] > upper[i]) return true;  // parallel to the slab, outside
       continue;
     }
-    double t0 = (lower[i] - p[i]) * inverse[i], t1 = (upper[i] - p[i]) * inverse[i];
-    if (r[i] < 0) std::swap(t0, t1);
-    if (std::isfinite(t0)) enter = std::max(enter, t0 - (std::abs(t0) * 0x1p-50 + kTiny));
-    if (std::isfinite(t1)) exit = std::min(exit, t1 + (std::abs(t1) * 0x1p-50 + kTiny));
+    const double t0 = (lower[i] - p[i]) * inverse[i], t1 = (upper[i] - p[i]) * inverse[i];
+    enter = std::max(enter, std::min(t0, t1));
+    exit = std::min(exit, std::max(t0, t1));
   }
+  enter -= std::abs(enter) * 0x1p-50 + kTiny;
+  exit += std::abs(exit) * 0x1p-50 + kTiny;
   return enter > exit;
 }
 
@@ -501,10 +506,13 @@ std::optional<BoundaryTree::Refined> BoundaryTree::refine(const Point3& point, c
   r.slack = 0.0;
   r.opened = false;
   if (nodes_.empty()) return Refined{};
-  constexpr double kLargeComponent = 0x1p1000;
-  if (!(std::abs(ray[0]) < kLargeComponent && std::abs(ray[1]) < kLargeComponent &&
-        std::abs(ray[2]) < kLargeComponent)) {
-    return std::nullopt;  // (not reached for the rays in use)
+  // Each component 0 or between 2^-1000 and 2^1000 in magnitude (ray_misses' reciprocals).
+  constexpr double kLargeComponent = 0x1p1000, kSmallComponent = 0x1p-1000;
+  for (int i = 0; i < 3; ++i) {
+    const double c = std::abs(ray[i]);
+    if (!(c < kLargeComponent && (c == 0.0 || c > kSmallComponent))) {
+      return std::nullopt;  // (not reached for the rays in use)
+    }
   }
   const Vector3 apex{-ray[0], -ray[1], -ray[2]};
   const std::optional<Vector3> d = internal::normalized_apex(apex);
