@@ -144,22 +144,22 @@ MUTANTS = [
      "predicates/include/exactgeo/predicates/internal/ray_patch_core.hpp",
      "signed_count += to_int(diagonal_turn[0]);", "signed_count += 1;",
      ["predicates_tests", "inside_tests"]),
-    # The boundary term of an open surface (predicates/src/boundary_term_filter.cpp).
+    # The boundary term of an open surface (predicates/src/boundary_term_filter.hpp and .cpp).
     ("boundary_filter_numerator_bound_dropped",
-     "predicates/src/boundary_term_filter.cpp",
+     "predicates/src/boundary_term_filter.hpp",
      "const double num_error = 16 * kU * length + kTiny;",
      "const double num_error = kTiny;", ["predicates_tests", "inside_tests"]),
     ("boundary_filter_denominator_bound_dropped",
-     "predicates/src/boundary_term_filter.cpp",
+     "predicates/src/boundary_term_filter.hpp",
      "const double den_error = 96 * kU * length + kTiny;",
      "const double den_error = kTiny;", ["predicates_tests", "inside_tests"]),
     ("boundary_filter_angle_bound_dropped",
-     "predicates/src/boundary_term_filter.cpp",
+     "predicates/src/boundary_term_filter.hpp",
      "(4.0 / 3.0) * e / radius + kArctanError};",
      "kArctanError};", ["predicates_tests", "inside_tests"]),
     ("boundary_filter_branch_side_ignored",
-     "predicates/src/boundary_term_filter.cpp",
-     "num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);",
+     "predicates/src/boundary_term_filter.hpp",
+     "num = std::copysign(std::abs(num), side);",
      "(void)num;", ["predicates_tests", "inside_tests"]),
     # The radius |(N, D)| taken from below (rounded squares and root: 2.5u, 4u taken off)
     # and only where N^2 + D^2 is at least 2^-1000 (underflowing squares then negligible):
@@ -167,11 +167,11 @@ MUTANTS = [
     # is expected to see them (argued harmless in docs/predicates.md) unless the radius is
     # overstated grossly, which the second mutant does.
     ("boundary_filter_radius_margin_dropped",
-     "predicates/src/boundary_term_filter.cpp",
+     "predicates/src/boundary_term_filter.hpp",
      "const double radius = std::sqrt(radius2) * (1 - 4 * kU);",
      "const double radius = std::sqrt(radius2);", ["predicates_tests", "inside_tests"]),
     ("boundary_filter_radius_overstated",
-     "predicates/src/boundary_term_filter.cpp",
+     "predicates/src/boundary_term_filter.hpp",
      "const double radius = std::sqrt(radius2) * (1 - 4 * kU);",
      "const double radius = std::sqrt(radius2) * 64;", ["predicates_tests", "inside_tests"]),
     # The filter's arctangent (predicates/src/arctan2.hpp): its series and its table.

@@ -52,76 +52,22 @@ namespace {
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
 
-/// normalized's rare case (the largest component beyond 2^+-1000, zero or not finite),
-/// through the library; kept out of line so that the common case inlines.
-[[gnu::noinline]] std::optional<Vector3> normalized_by_ldexp(const Vector3& v, double largest) {
-  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
-  const int shift = -std::ilogb(largest);
-  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
-}
-
-/// The vector scaled by a power of two so that its largest component is in [1, 2);
-/// nullopt when it is zero or not finite.
-inline std::optional<Vector3> normalized(const Vector3& v) {
-  const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-  // The common case without library calls: largest = 1.f 2^(b - 1023) with b its biased
-  // exponent; for 2^-1000 <= largest < 2^1000 the factor 2^(1023 - b) is a normal double
-  // (biased exponent 2046 - b), and a product by it is what ldexp gives (exact, or rounded
-  // once where it underflows).
-  const auto biased = static_cast<int>(std::bit_cast<std::uint64_t>(largest) >> 52);
-  if (biased > 23 && biased < 2023) [[likely]] {
-    const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(2046 - biased) << 52);
-    return Vector3{v[0] * scale, v[1] * scale, v[2] * scale};
-  }
-  return normalized_by_ldexp(v, largest);
-}
-
-double dot(const Vector3& a, const Vector3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 }  // namespace
 
 std::optional<Vector3> normalized_apex(const Vector3& apex) {
   return normalized(apex);
 }
 
-std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld, const Point3& pa,
-                                    const Point3& pb, const Vector3& apex) {
-  const auto a = normalized({pa[0] - p[0], pa[1] - p[1], pa[2] - p[2]});
-  const auto b = normalized({pb[0] - p[0], pb[1] - p[1], pb[2] - p[2]});
-  if (!a || !b) return std::nullopt;  // the point on a corner, or an overflow
-  const Vector3& A = *a;
-  const Vector3& B = *b;
-  const Vector3& D = d;
-  const Vector3 bxd{B[1] * D[2] - B[2] * D[1], B[2] * D[0] - B[0] * D[2],
-                    B[0] * D[1] - B[1] * D[0]};
-  double num = dot(A, bxd);
-  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B));
-  const double length = la * lb * ld;
-  const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
-  const double num_error = 16 * kU * length + kTiny;
-  const double den_error = 96 * kU * length + kTiny;
-  // r = |(N, D)| from below: the squares and their sum within u each, the root within
-  // u/2 (2.5u in all, below the 4u taken off), where the sum is at least 2^-1000 (an
-  // underflowing square then changes it by 2^-75 of itself at most); a smaller one (the
-  // point within 2^-500 of an edge's line) is left to the intervals.
-  const double radius2 = num * num + den * den;
-  if (!(radius2 >= 0x1p-1000)) return std::nullopt;
-  const double radius = std::sqrt(radius2) * (1 - 4 * kU);
-  const double e = num_error + den_error;
-  if (!(e <= radius / 4)) return std::nullopt;
-  if (!(std::abs(num) > num_error) && !(den > den_error)) {
-    if (!(den < -den_error)) return std::nullopt;
-    // Near the branch cut: the exact side.
-    const Sign side = kernel::ExactSigns{}.det3_by_vector(kernel::Offset::between(p, pa),
-                                                          kernel::Offset::between(p, pb),
-                                                          kernel::Offset::vector(apex));
-    if (side == Sign::zero) return HalfAngle{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
-    num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
-  }
-  return HalfAngle{BoundaryTermKind::enclosed, arctan2(num, den),
-                   (4.0 / 3.0) * e / radius + kArctanError};
+std::optional<Vector3> normalized_by_ldexp(const Vector3& v, double largest) {
+  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
+  const int shift = -std::ilogb(largest);
+  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
+}
+
+double branch_cut_side(const Point3& p, const Point3& pa, const Point3& pb, const Vector3& apex) {
+  const Sign side = kernel::ExactSigns{}.det3_by_vector(
+      kernel::Offset::between(p, pa), kernel::Offset::between(p, pb), kernel::Offset::vector(apex));
+  return side == Sign::zero ? 0.0 : side == Sign::positive ? 1.0 : -1.0;
 }
 
 std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
@@ -130,7 +76,7 @@ std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
                                         double slack) {
   const auto d = normalized(apex);
   if (!d) return std::nullopt;
-  const double ld = std::sqrt(dot(*d, *d));
+  const double ld = std::sqrt((*d)[0] * (*d)[0] + (*d)[1] * (*d)[1] + (*d)[2] * (*d)[2]);
   double sum = offset, magnitudes = std::abs(offset), errors = 0.0;
   for (const BoundaryEdge& edge : edges) {
     const auto angle = half_angle(p, *d, ld, vertices[edge.from], vertices[edge.to], apex);
