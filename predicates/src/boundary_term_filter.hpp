@@ -64,9 +64,10 @@ inline std::optional<Vector3> normalized(const Vector3& v) {
 /// Inline: the boundary tree calls it for every chord and near edge, and the call itself
 /// (registers saved, the optional returned through memory) was 3% of the instructions on
 /// `b9_mesh.off`.
-inline std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld,
-                                           const Point3& pa, const Point3& pb,
-                                           const Vector3& apex) {
+[[gnu::always_inline]] inline std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d,
+                                                                  double ld, const Point3& pa,
+                                                                  const Point3& pb,
+                                                                  const Vector3& apex) {
   constexpr double kU = 0x1p-53, kTiny = 0x1p-1000;
   const auto dot = [](const Vector3& x, const Vector3& y) {
     return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
