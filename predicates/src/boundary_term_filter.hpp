@@ -47,7 +47,8 @@ std::optional<Vector3> normalized_apex(const Vector3& apex);
 /// The vector scaled by a power of two so that its largest component is in [1, 2);
 /// nullopt when it is zero or not finite.
 inline std::optional<Vector3> normalized(const Vector3& v) {
-  const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  // (Nested std::max: two instructions, where std::max of an initializer list loops.)
+  const double largest = std::max(std::abs(v[0]), std::max(std::abs(v[1]), std::abs(v[2])));
   // The common case without library calls: largest = 1.f 2^(b - 1023) with b its biased
   // exponent; for 2^-1000 <= largest < 2^1000 the factor 2^(1023 - b) is a normal double
   // (biased exponent 2046 - b), and a product by it is what ldexp gives (exact, or rounded
