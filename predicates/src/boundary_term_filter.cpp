@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "arctan2.hpp"
 #include "exactgeo/predicates/kernel/signs.hpp"
 
 // The error bound, with u = 2^-53 and every vector first scaled by a power of two so that
@@ -17,9 +18,15 @@
 //    at most 2^-1075. The direction -r is exact. So each input is within u|A| + 2^-1074.
 //  - N = fl(A . fl(B x D)): the cross product and the dot add up to gamma_5 P, with P the
 //    permanent sum |A_i| (|B_j||D_k| + |B_k||D_j|); the inputs' own errors, through
-//    trilinearity, add (2u + u^2) P. So |N - N*| <= 8u P (P itself computed, within 3u).
+//    trilinearity, add (2u + u^2) P. So |N - N*| <= 7.01u P.
 //  - |A| = fl(sqrt(fl(A . A))): within (1.5 gamma_3 + u) of the computed vector's length,
 //    and that within u + 2^-1074 of the exact one's: 7u in all, relative.
+//  - P is not computed: P = sum_i |A_i| w_i with w_i = |B_j||D_k| + |B_k||D_j|, and each of
+//    the two vectors (|B_j||D_k|)_i has length at most |B||D| (its squares are some of the
+//    products B_j^2 D_k^2, which add up to |B|^2 |D|^2), so |w| <= 2 |B||D| and, by
+//    Cauchy-Schwarz, P <= |A||w| <= 2 |A||B||D|. The computed L = fl(fl(|A||B|)|D|) is
+//    within (1 - 7u)^-3 (1 - u)^-2 < 1 + 24u of it, so |N - N*| <= 14.02u (1 + 24u) L
+//    < 14.1u L, and 16u L, rounded down by at most u, covers it.
 //  - D = |A||B||D| + (A.B)|D| + (A.D)|B| + (B.D)|A|, with L = |A||B||D|: every term is at
 //    most L (Cauchy-Schwarz); the first is off by at most (3 x 7 + 2)u L, each of the
 //    others by (gamma_3 + 2.01u + 7u + u) L <= 13u L (dot, inputs, a length, a product),
@@ -33,7 +40,8 @@
 //    branch cut (N = 0, D < 0): it does not where |N| > |dN| (same half plane, upper or
 //    lower) or D > |dD| (right half plane); where D < -|dD| the exact sign of N* (an exact
 //    predicate) is given to the computed N, which moves it no further from N*. Otherwise
-//    the filter gives up. atan2 adds its own error, bounded as in boundary_term.hpp.
+//    the filter gives up. The arctangent adds its own error, at most kArctanError
+//    (arctan2.hpp derives it; the C library's atan2 is not called here).
 //  - The sum of the B weighted half angles rounds within (B + 1) u times the sum of their
 //    magnitudes (gamma_B, and the products by the multiplicities); 2 pi times a level
 //    rounds within 1.5u of its magnitude (pi's double is within 0.4u of pi).
@@ -44,81 +52,22 @@ namespace {
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
 
-/// normalized's rare case (the largest component beyond 2^+-1000, zero or not finite),
-/// through the library; kept out of line so that the common case inlines.
-[[gnu::noinline]] std::optional<Vector3> normalized_by_ldexp(const Vector3& v, double largest) {
-  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
-  const int shift = -std::ilogb(largest);
-  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
-}
-
-/// The vector scaled by a power of two so that its largest component is in [1, 2);
-/// nullopt when it is zero or not finite.
-inline std::optional<Vector3> normalized(const Vector3& v) {
-  const double largest = std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-  // The common case without library calls: largest = 1.f 2^(b - 1023) with b its biased
-  // exponent; for 2^-1000 <= largest < 2^1000 the factor 2^(1023 - b) is a normal double
-  // (biased exponent 2046 - b), and a product by it is what ldexp gives (exact, or rounded
-  // once where it underflows).
-  const auto biased = static_cast<int>(std::bit_cast<std::uint64_t>(largest) >> 52);
-  if (biased > 23 && biased < 2023) [[likely]] {
-    const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(2046 - biased) << 52);
-    return Vector3{v[0] * scale, v[1] * scale, v[2] * scale};
-  }
-  return normalized_by_ldexp(v, largest);
-}
-
-double dot(const Vector3& a, const Vector3& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 }  // namespace
 
 std::optional<Vector3> normalized_apex(const Vector3& apex) {
   return normalized(apex);
 }
 
-std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d, double ld, const Point3& pa,
-                                    const Point3& pb, const Vector3& apex) {
-  const auto a = normalized({pa[0] - p[0], pa[1] - p[1], pa[2] - p[2]});
-  const auto b = normalized({pb[0] - p[0], pb[1] - p[1], pb[2] - p[2]});
-  if (!a || !b) return std::nullopt;  // the point on a corner, or an overflow
-  const Vector3& A = *a;
-  const Vector3& B = *b;
-  const Vector3& D = d;
-  const Vector3 bxd{B[1] * D[2] - B[2] * D[1], B[2] * D[0] - B[0] * D[2],
-                    B[0] * D[1] - B[1] * D[0]};
-  double num = dot(A, bxd);
-  double permanent = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    permanent += std::abs(A[i]) * (std::abs(B[j] * D[k]) + std::abs(B[k] * D[j]));
-  }
-  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B));
-  const double length = la * lb * ld;
-  const double den = length + dot(A, B) * ld + dot(A, D) * lb + dot(B, D) * la;
-  const double num_error = 8 * kU * permanent + kTiny;
-  const double den_error = 96 * kU * length + kTiny;
-  // r = |(N, D)| from below: the squares and their sum within u each, the root within
-  // u/2 (2.5u in all, below the 4u taken off), where the sum is at least 2^-1000 (an
-  // underflowing square then changes it by 2^-75 of itself at most); a smaller one (the
-  // point within 2^-500 of an edge's line) is left to the intervals.
-  const double radius2 = num * num + den * den;
-  if (!(radius2 >= 0x1p-1000)) return std::nullopt;
-  const double radius = std::sqrt(radius2) * (1 - 4 * kU);
-  const double e = num_error + den_error;
-  if (!(e <= radius / 4)) return std::nullopt;
-  if (!(std::abs(num) > num_error) && !(den > den_error)) {
-    if (!(den < -den_error)) return std::nullopt;
-    // Near the branch cut: the exact side.
-    const Sign side = kernel::ExactSigns{}.det3_by_vector(kernel::Offset::between(p, pa),
-                                                          kernel::Offset::between(p, pb),
-                                                          kernel::Offset::vector(apex));
-    if (side == Sign::zero) return HalfAngle{BoundaryTermKind::ray_on_edge, 0.0, 0.0};
-    num = std::copysign(std::abs(num), side == Sign::positive ? 1.0 : -1.0);
-  }
-  return HalfAngle{BoundaryTermKind::enclosed, std::atan2(num, den),
-                   (4.0 / 3.0) * e / radius + kAtan2Error};
+std::optional<Vector3> normalized_by_ldexp(const Vector3& v, double largest) {
+  if (largest == 0.0 || !std::isfinite(largest)) return std::nullopt;
+  const int shift = -std::ilogb(largest);
+  return Vector3{std::ldexp(v[0], shift), std::ldexp(v[1], shift), std::ldexp(v[2], shift)};
+}
+
+double branch_cut_side(const Point3& p, const Point3& pa, const Point3& pb, const Vector3& apex) {
+  const Sign side = kernel::ExactSigns{}.det3_by_vector(
+      kernel::Offset::between(p, pa), kernel::Offset::between(p, pb), kernel::Offset::vector(apex));
+  return side == Sign::zero ? 0.0 : side == Sign::positive ? 1.0 : -1.0;
 }
 
 std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
@@ -127,7 +76,7 @@ std::optional<FilteredSum> filtered_sum(const Point3& p, const Vector3& apex,
                                         double slack) {
   const auto d = normalized(apex);
   if (!d) return std::nullopt;
-  const double ld = std::sqrt(dot(*d, *d));
+  const double ld = std::sqrt((*d)[0] * (*d)[0] + (*d)[1] * (*d)[1] + (*d)[2] * (*d)[2]);
   double sum = offset, magnitudes = std::abs(offset), errors = 0.0;
   for (const BoundaryEdge& edge : edges) {
     const auto angle = half_angle(p, *d, ld, vertices[edge.from], vertices[edge.to], apex);

@@ -349,10 +349,9 @@ TEST(OpenSurface, GeneralizedWindingNumbersOfKnownPoints) {
   EXPECT_TRUE(holds(classifier.generalized_winding_number({0.5, 0.5, 1.0}), 0.5));
   const double d = 0.75;
   const double above = std::asin(1.0 / (1.0 + 4 * d * d)) / std::numbers::pi;
-  const auto bounds = classifier.generalized_winding_number({0.5, 0.5, 1.0 + d});
-  ASSERT_TRUE(bounds);
-  EXPECT_NEAR(bounds->lower, above, 1e-15);
-  EXPECT_NEAR(bounds->upper, above, 1e-15);
+  // (The bounds are up to 2^-40 wide, the first stage's when narrow enough; asin's and the
+  // quotient's few ulps lie far inside them.)
+  EXPECT_TRUE(holds(classifier.generalized_winding_number({0.5, 0.5, 1.0 + d}), above));
   // On a face or a boundary edge: no value.
   EXPECT_FALSE(classifier.generalized_winding_number({0.25, 0.5, 0.0}));
   EXPECT_FALSE(classifier.generalized_winding_number({0.25, 0.0, 1.0}));

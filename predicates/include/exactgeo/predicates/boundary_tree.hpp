@@ -177,8 +177,14 @@ class BoundaryTree {
       std::uint32_t node = 0;
       bool expanded = false;
     };
+    /// A node to visit, and whether the ray is known to miss its box (it missed its
+    /// parent's: a child's box lies in its parent's).
+    struct Visit {
+      std::uint32_t node = 0;
+      bool misses = false;
+    };
     std::vector<Far> heap;  ///< a max-heap by bound
-    std::vector<std::uint32_t> stack;
+    std::vector<Visit> stack;
     std::size_t angles = 0;      ///< edges and chords whose angle was computed
     std::size_t far_nodes = 0;   ///< far nodes in the final cut
     std::size_t expansions = 0;  ///< of those, with a second-order expansion
@@ -241,6 +247,10 @@ class BoundaryTree {
     double moment_error = 0.0, moment_size = 0.0, quad_error = 0.0, quad_size = 0.0;
     double reach = 0.0;
     bool expansion = false;  // all of these finite
+    // The expansion's bound's coefficients, each rounded up (boundary_tree.cpp,
+    // set_bound_coefficients): 4 rho^2, where it is first tried, and the numerators of
+    // its three terms over d^4, d^2 and d^3.
+    double reach4 = 0.0, second_fan = 0.0, second_moment = 0.0, second_quad = 0.0;
   };
   /// A far node's part of the sum: its chords' angles and expansion, their errors (in
   /// radians) and its bound.
@@ -254,7 +264,9 @@ class BoundaryTree {
   void join_chords(std::vector<std::pair<VertexIndex, std::int64_t>>& starts,
                    std::vector<std::pair<VertexIndex, std::int64_t>>& finishes);
   void set_expansion(Node& node, std::span<const BoundaryEdge> edges) const;
-  std::optional<FarValue> far_value(const Node& node, const Query& query, double limit) const;
+  static void set_bound_coefficients(Node& node) noexcept;
+  std::optional<FarValue> far_value(const Node& node, const Query& query, double limit,
+                                    bool misses) const;
   /// The refinement's sum: kind enclosed with its bounds in radians of half angle, or
   /// ray_on_edge; nullopt when the filter cannot bound an angle or the refinement costs
   /// more than `most_angles` angles. `done(lower, upper)` ends it early.
