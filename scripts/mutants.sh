@@ -256,16 +256,28 @@ MUTANTS = [
      "sum -= top.value;", "(void)top.value;",
      ["predicates_tests", "inside_tests"]),
     # Costs, not certificates (docs/predicates.md, "not caught, and why"): the finest
-    # first cut a point's term starts from, and how far the chords' nearest search goes.
+    # first cuts a point's term starts from (in any order, and in a batch's spatial
+    # order), and how far the chords' nearest search goes.
     ("boundary_tree_finest_first_cut_2_to_the_minus_60",
      "predicates/include/exactgeo/predicates/boundary_tree.hpp",
      "inline constexpr double kBoundaryTreeFinestFirstCut = 0.125;",
      "inline constexpr double kBoundaryTreeFinestFirstCut = 0x1p-60;",
      ["predicates_tests", "inside_tests"]),
+    ("boundary_tree_spatial_first_cut_2_to_the_minus_60",
+     "predicates/include/exactgeo/predicates/boundary_tree.hpp",
+     "inline constexpr double kBoundaryTreeSpatialFirstCut = 0x1p-6;",
+     "inline constexpr double kBoundaryTreeSpatialFirstCut = 0x1p-60;",
+     ["predicates_tests", "inside_tests"]),
     ("boundary_tree_chords_joined_in_order",
      "predicates/src/boundary_tree.cpp",
      "constexpr std::size_t kChordSearch = 4096;", "constexpr std::size_t kChordSearch = 0;",
      ["predicates_tests", "inside_tests"]),
+    # The batch's spatial order (inside/src/batch.cpp): a label written to its place in
+    # the order instead of its point's place in the input.
+    ("batch_label_at_its_place_in_the_spatial_order",
+     "inside/src/batch.cpp",
+     "locations[i] = classify(points[i]);", "locations[k] = classify(points[i]);",
+     ["inside_tests"]),
     ("boundary_tree_running_sums_rounding_dropped",
      "predicates/src/boundary_tree.cpp",
      "kU * (static_cast<double>(terms + 2) * magnitudes +",

@@ -654,11 +654,11 @@ std::optional<BoundaryTerm> BoundaryTree::term(const Point3& point, const Vector
         settled = internal::settled({BoundaryTermKind::enclosed, lower, upper}, levels);
         return settled.has_value();
       });
-  // The next point's first cut (a cost, carried in the scratch): down to
-  // kBoundaryTreeFinestFirstCut while points need opening, back up to
-  // kBoundaryTreeFirstCut, doubling, while the first cut settles them.
+  // The next point's first cut (a cost, carried in the scratch): down to the scratch's
+  // floor (kBoundaryTreeFinestFirstCut, or kBoundaryTreeSpatialFirstCut) while points need
+  // opening, back up to kBoundaryTreeFirstCut, doubling, while the first cut settles them.
   scratch.first_cut = !sum || scratch.opened
-                          ? std::max(kBoundaryTreeFinestFirstCut, scratch.first_cut / 2)
+                          ? std::max(scratch.finest_first_cut, scratch.first_cut / 2)
                           : std::min(kBoundaryTreeFirstCut, scratch.first_cut * 2);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return settled;

@@ -3,6 +3,7 @@
 // Classifying many points at once, on all cores. The output depends only on the input:
 // locations[i] is the location of points[i], whatever the thread count or schedule.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -13,8 +14,17 @@
 
 namespace exactgeo::inside {
 
+/// The fewest boundary edges an open surface has for classify_batch to visit the points in
+/// a spatial order (docs/inside.md, "Points in a spatial order"): with fewer, the boundary
+/// tree's term costs too little for the order to pay for its sort. A cost only: the
+/// labels are the same in any order.
+inline constexpr std::size_t kSpatialOrderEdges = 1024;
+
 /// Writes classify(points[i]) into locations[i] for every i, using `threads` threads
-/// (0: one per hardware thread). Precondition: locations.size() == points.size().
+/// (0: one per hardware thread). Against an open surface of at least kSpatialOrderEdges
+/// boundary edges, in the certified arithmetics, the points are visited along a Morton
+/// curve (each thread taking runs of consecutive points of it); the labels are the same.
+/// Precondition: locations.size() == points.size().
 /// Rethrows the first exception a worker threw (only std::bad_alloc is possible).
 void classify_batch(const Classifier& classifier, std::span<const Point3> points,
                     std::span<Location> locations, Arithmetic arithmetic, unsigned threads = 0);

@@ -155,6 +155,10 @@ inline constexpr double kBoundaryTreeFirstCut = 1.0;
 /// so that their digits do not depend on the points' order; its cost as measured:
 /// docs/predicates.md, "Refinement").
 inline constexpr double kBoundaryTreeFinestFirstCut = 0.125;
+/// The same floor for points visited in a spatial order (inside::classify_batch), where
+/// the point before is a neighbour whose cut fits: finer pays there, and costs in a random
+/// order. A cost, not a certificate, as above.
+inline constexpr double kBoundaryTreeSpatialFirstCut = 0x1p-6;
 /// The ratio between a node's bound and the largest its children may enter with.
 inline constexpr double kBoundaryTreeOpening = 8.0;
 /// The most edges a leaf holds.
@@ -192,6 +196,9 @@ class BoundaryTree {
     bool opened = false;         ///< whether the first cut left it unsettled
     /// The next term's first cut (kBoundaryTreeFinestFirstCut, a cost).
     double first_cut = kBoundaryTreeFirstCut;
+    /// The floor it is halved down to: kBoundaryTreeFinestFirstCut, or
+    /// kBoundaryTreeSpatialFirstCut for points visited in a spatial order (a cost).
+    double finest_first_cut = kBoundaryTreeFinestFirstCut;
   };
 
   /// The term of boundary_term.hpp with both levels settled (kind enclosed), refined
