@@ -404,6 +404,25 @@ MUTANTS = [
      "remesh/src/swept_region.cpp",
      "const Sign s = i < k && k < j ? -turn_ijk : turn_ijk;",
      "const Sign s = i < k && k < j ? turn_ijk : -turn_ijk;", ["remesh_tests"]),
+    # An edge is tested against three faces of a tetrahedral region, the face left out
+    # holding its shared corner; one without it lets an edge from the opposite corner
+    # through (remesh/src/swept_region.cpp, face_left_out).
+    ("region_face_left_out_ignores_the_shared_corner",
+     "remesh/src/swept_region.cpp",
+     "  if (shared != preferred) return preferred;",
+     "  if (shared != preferred || true) return preferred;", ["remesh_tests"]),
+    # An element apart by a line of its own in the shadow: a triangle's third corner must
+    # lie on the line or away from the region's corners, and every corner not shared
+    # strictly off the line (remesh/src/swept_region.cpp, element_apart_in_shadow).
+    ("element_line_third_corner_unchecked",
+     "remesh/src/swept_region.cpp",
+     "if (n == 2 || orient2d_along(region.axis(), p[x], p[y], p[vertex((k + 2) % 3)]) != side)",
+     "if (n == 2 || true)", ["remesh_tests"]),
+    ("element_line_corner_on_it_allowed",
+     "remesh/src/swept_region.cpp",
+     "      if (s == Sign::zero || (side != Sign::zero && s != side)) return Sign::zero;",
+     "      if (s == Sign::zero) continue; if (side != Sign::zero && s != side) return Sign::zero;",
+     ["remesh_tests"]),
     # A flip's or split's new triangle may not turn over in the old triangle's plane
     # (remesh/src/swept_region.cpp).
     ("flat_turn_over_unchecked",
