@@ -420,8 +420,17 @@ MUTANTS = [
      "if (n == 2 || true)", ["remesh_tests"]),
     ("element_line_corner_on_it_allowed",
      "remesh/src/swept_region.cpp",
-     "      if (s == Sign::zero || (side != Sign::zero && s != side)) return Sign::zero;",
-     "      if (s == Sign::zero) continue; if (side != Sign::zero && s != side) return Sign::zero;",
+     "      const Sign s = orient2d_along(axis_, x, y, *c.point);",
+     "      const Sign s0 = orient2d_along(axis_, x, y, *c.point); "
+     "const Sign s = s0 != Sign::zero ? s0 : side != Sign::zero ? side : Sign::positive;",
+     ["remesh_tests"]),
+    # ... or by the plane of its triangle, every corner not shared strictly off it
+    # (remesh/src/swept_region.cpp, apart_by_plane_of).
+    ("element_plane_corner_on_it_allowed",
+     "remesh/src/swept_region.cpp",
+     "      const Sign off = orient3d(*t[0], *t[1], *t[2], *c.point);",
+     "      const Sign o0 = orient3d(*t[0], *t[1], *t[2], *c.point); "
+     "const Sign off = o0 != Sign::zero ? o0 : side != Sign::zero ? side : Sign::positive;",
      ["remesh_tests"]),
     # A flip's or split's new triangle may not turn over in the old triangle's plane
     # (remesh/src/swept_region.cpp).

@@ -165,6 +165,22 @@ class Region {
     return side;
   }
 
+  /// The side of the plane of the triangle t (its corners' vertices tv) that every corner
+  /// other than t's (by vertex) lies strictly on, or zero when there is none (a triangle of
+  /// zero area makes every orientation zero).
+  Sign corners_side_of_plane(const std::array<const Point3*, 3>& t,
+                             const Triangle& tv) const noexcept {
+    Sign side = Sign::zero;
+    for (const Corner& c : corners_) {
+      if (c.vertex != kNoVertex && (c.vertex == tv[0] || c.vertex == tv[1] || c.vertex == tv[2]))
+        continue;
+      const Sign off = orient3d(*t[0], *t[1], *t[2], *c.point);
+      if (off == Sign::zero || (side != Sign::zero && off != side)) return Sign::zero;
+      side = off;
+    }
+    return side;
+  }
+
   int axis() const noexcept { return axis_; }
 
   static constexpr unsigned kPlaneBits = 0xFu | (1u << 10) | (1u << 11);
@@ -380,6 +396,10 @@ struct NearbyElements {
   /// first_in's edges and triangles that no separating plane passes over, to be tested.
   std::vector<Edge> edges_to_test;
   std::vector<std::size_t> triangles_to_test;
+  /// Per triangle of `triangles`, for first_in: whether the region lies beyond its plane
+  /// (kPlaneUnknown until asked).
+  std::vector<std::uint8_t> beyond_plane;
+  static constexpr std::uint8_t kPlaneUnknown = 2;
 
   explicit NearbyElements(std::size_t vertex_count) : slot(vertex_count, kAbsent) {}
 
@@ -501,8 +521,28 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     }
     return false;
   };
+  // A triangle of the surface apart from the region by its own plane: every corner of the
+  // region that is no corner of the triangle lies strictly on one side of it, so the
+  // region meets the plane only in the hull of the shared corners (its points there are
+  // the convex combinations of its corners on the plane), and the triangle and its edges,
+  // which lie in the plane, meet the region only there: apart beyond what they share (an
+  // edge's shared corners are the triangle's on it, whose hull the edge meets only in
+  // them: a corner strictly off the plane makes the triangle's area non-zero). Exact:
+  // orient3d signs. Asked of a tetrahedron's elements only, as element_apart_in_shadow;
+  // once per triangle (by its place in near.triangles), for it and its edges.
+  std::vector<std::uint8_t>& beyond_plane = near.beyond_plane;
+  beyond_plane.assign(near.triangles.size(), NearbyElements::kPlaneUnknown);
+  const auto apart_by_plane_of = [&](std::size_t j) {
+    if (beyond_plane[j] == NearbyElements::kPlaneUnknown) {
+      const Triangle& c = surface.triangles[near.triangles[j]];
+      beyond_plane[j] =
+          region.corners_side_of_plane({&p[c[0]], &p[c[1]], &p[c[2]]}, c) != Sign::zero;
+    }
+    return beyond_plane[j] != 0;
+  };
   // Whether the corners (indices into near.vertices) are all beyond one separating plane:
-  // the first kind's (cheap, asked first), then the others.
+  // the first kind's (cheap, asked first), then the others, with the plane of the
+  // element's triangle (near.triangles[j]) before a split's thin face.
   const auto apart_by_first = [&](std::initializer_list<std::size_t> at) {
     unsigned common = ~0u;
     for (const std::size_t i : at)
@@ -515,15 +555,16 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     }
     return true;
   };
-  const auto apart_by_second = [&](std::initializer_list<std::size_t> at) {
+  const auto apart_by_second = [&](std::initializer_list<std::size_t> at, std::size_t j) {
     if (faces_one_at_a_time) {
       // The face opposite corner 2 (a b m, a split's rounding-thin face, whose
       // orientations fall to exact arithmetic) after the element's own lines in the
       // shadow: the elements the sides and the other faces leave are mostly edges and
       // triangles around a region corner (the link of its star), on both sides of it,
-      // which a line of their own keeps apart.
+      // which a line of their own keeps apart, or elements of another layer close to the
+      // region, which the plane of their triangle keeps apart.
       return beyond_all(at, 3) || beyond_all(at, 0) || beyond_all(at, 1) ||
-             element_apart_in_shadow(at) || beyond_all(at, 2);
+             element_apart_in_shadow(at) || apart_by_plane_of(j) || beyond_all(at, 2);
     }
     unsigned common = ~0u;
     for (const std::size_t i : at)
@@ -551,14 +592,14 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   if (vertex) return Blocker{Blocker::Kind::vertex, {*vertex, kNoVertex, kNoVertex}};
   std::vector<Edge>& edges = near.edges_to_test;
   edges.clear();
-  for (const std::size_t t : near.triangles) {
-    const Triangle& c = surface.triangles[t];
+  for (std::size_t j = 0; j < near.triangles.size(); ++j) {
+    const Triangle& c = surface.triangles[near.triangles[j]];
     for (int k = 0; k < 3; ++k) {
       const Edge e = edge_of(c[k], c[(k + 1) % 3]);
       const std::initializer_list<std::size_t> at{index_of(e[0]), index_of(e[1])};
       if (apart_by_first(at)) continue;                                // beyond one plane
       if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
-      if (apart_by_second(at)) continue;                               // beyond one plane
+      if (apart_by_second(at, j)) continue;                            // beyond one plane
       edges.push_back(e);
     }
   }
@@ -572,14 +613,15 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   }
   std::vector<std::size_t>& triangles = near.triangles_to_test;
   triangles.clear();
-  for (const std::size_t t : near.triangles) {
+  for (std::size_t j = 0; j < near.triangles.size(); ++j) {
+    const std::size_t t = near.triangles[j];
     const Triangle& c = surface.triangles[t];
     const std::initializer_list<std::size_t> at{index_of(c[0]), index_of(c[1]), index_of(c[2])};
     if (apart_by_first(at)) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
-    if (apart_by_second(at)) continue;  // beyond one plane
+    if (apart_by_second(at, j)) continue;  // beyond one plane
     triangles.push_back(t);
   }
   std::sort(triangles.begin(), triangles.end());  // each once: the query finds a pair once
