@@ -432,6 +432,12 @@ MUTANTS = [
      "      const Sign o0 = orient3d(*t[0], *t[1], *t[2], *c.point); "
      "const Sign off = o0 != Sign::zero ? o0 : side != Sign::zero ? side : Sign::positive;",
      ["remesh_tests"]),
+    # A split pass gives each region the volume's sign split_geometry asked, instead of
+    # asking it again (remesh/src/split.cpp).
+    ("split_region_volume_negated",
+     "remesh/src/split.cpp",
+     "      volumes.push_back(plan.volume[r]);",
+     "      volumes.push_back(-plan.volume[r]);", ["remesh_tests"]),
     # A flip's or split's new triangle may not turn over in the old triangle's plane
     # (remesh/src/swept_region.cpp).
     ("flat_turn_over_unchecked",

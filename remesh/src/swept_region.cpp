@@ -63,7 +63,10 @@ int shadow_axis_of(const Point3& p, const Point3& q, const Point3& r) noexcept {
 
 class Region {
  public:
-  explicit Region(const std::array<RegionCorner, 4>& corners) {
+  /// `volume`: orient3d of the four corners in order, when the caller knows it.
+  explicit Region(const std::array<RegionCorner, 4>& corners,
+                  std::optional<Sign> volume = std::nullopt) {
+    if (volume) set_volume(*volume);
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
     // The hull's shadow on a coordinate plane is a convex polygon, whose sides are the
@@ -267,9 +270,12 @@ class Region {
   /// shadow's sides usually decide without them.
   void orient() const noexcept {
     if (oriented_) return;
+    set_volume(
+        orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point));
+  }
+  void set_volume(Sign volume) const noexcept {
     oriented_ = true;
-    volume_ =
-        orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point);
+    volume_ = volume;
     if (volume_ == Sign::zero) return;
     // orient3d(face opposite l, corner l) is the volume's sign times the parity of the
     // corners' order (an exact determinant's sign changes with every swap): (1 2 3 0) and
@@ -421,11 +427,12 @@ struct NearbyElements {
 };
 
 std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
-                                const std::array<RegionCorner, 4>& corners, VertexIndex partner) {
+                                const std::array<RegionCorner, 4>& corners, VertexIndex partner,
+                                std::optional<Sign> volume) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
   // triangle are the surface's own vertices and edges, tested before it).
-  const Region region(corners);
+  const Region region(corners, volume);
   const auto& p = surface.vertices;
   // The operation's own elements: those of the region's corners only, and the partner's
   // triangle abd (a, b: the first two corners), which the split replaces. Not its corner d
@@ -650,7 +657,7 @@ std::vector<std::optional<Blocker>> first_in_regions(
 
 std::vector<std::optional<Blocker>> internal::first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
-    std::span<const VertexIndex> partners, RegionQuery& query) {
+    std::span<const VertexIndex> partners, RegionQuery& query, std::span<const Sign> volumes) {
   query.boxed.assign(surface.vertices, regions);
   // The triangles near each region.
   query.pairs.clear();
@@ -663,8 +670,9 @@ std::vector<std::optional<Blocker>> internal::first_in_regions(
   NearbyElements elements(surface.vertices.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {
     elements.gather(surface, query.near.of(r));
-    found.push_back(
-        first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
+    found.push_back(first_in(surface, elements, regions[r],
+                             partners.empty() ? kNoVertex : partners[r],
+                             volumes.empty() ? std::nullopt : std::optional<Sign>(volumes[r])));
   }
   return found;
 }
