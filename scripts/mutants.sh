@@ -416,6 +416,40 @@ MUTANTS = [
      "remesh/src/swept_region.cpp",
      "const Sign s = i < k && k < j ? -turn_ijk : turn_ijk;",
      "const Sign s = i < k && k < j ? turn_ijk : -turn_ijk;", ["remesh_tests"]),
+    # An edge is tested against three faces of a tetrahedral region, the face left out
+    # holding its shared corner; one without it lets an edge from the opposite corner
+    # through (remesh/src/swept_region.cpp, face_left_out).
+    ("region_face_left_out_ignores_the_shared_corner",
+     "remesh/src/swept_region.cpp",
+     "  if (shared != preferred) return preferred;",
+     "  if (shared != preferred || true) return preferred;", ["remesh_tests"]),
+    # An element apart by a line of its own in the shadow: a triangle's third corner must
+    # lie on the line or away from the region's corners, and every corner not shared
+    # strictly off the line (remesh/src/swept_region.cpp, element_apart_in_shadow).
+    ("element_line_third_corner_unchecked",
+     "remesh/src/swept_region.cpp",
+     "if (n == 2 || orient2d_along(region.axis(), p[x], p[y], p[vertex((k + 2) % 3)]) != side)",
+     "if (n == 2 || true)", ["remesh_tests"]),
+    ("element_line_corner_on_it_allowed",
+     "remesh/src/swept_region.cpp",
+     "      const Sign s = orient2d_along(axis_, x, y, *c.point);",
+     "      const Sign s0 = orient2d_along(axis_, x, y, *c.point); "
+     "const Sign s = s0 != Sign::zero ? s0 : side != Sign::zero ? side : Sign::positive;",
+     ["remesh_tests"]),
+    # ... or by the plane of its triangle, every corner not shared strictly off it
+    # (remesh/src/swept_region.cpp, apart_by_plane_of).
+    ("element_plane_corner_on_it_allowed",
+     "remesh/src/swept_region.cpp",
+     "      const Sign off = orient3d(*t[0], *t[1], *t[2], *c.point);",
+     "      const Sign o0 = orient3d(*t[0], *t[1], *t[2], *c.point); "
+     "const Sign off = o0 != Sign::zero ? o0 : side != Sign::zero ? side : Sign::positive;",
+     ["remesh_tests"]),
+    # A split pass gives each region the volume's sign split_geometry asked, instead of
+    # asking it again (remesh/src/split.cpp).
+    ("split_region_volume_negated",
+     "remesh/src/split.cpp",
+     "      volumes.push_back(plan.volume[r]);",
+     "      volumes.push_back(-plan.volume[r]);", ["remesh_tests"]),
     # A flip's or split's new triangle may not turn over in the old triangle's plane
     # (remesh/src/swept_region.cpp).
     ("flat_turn_over_unchecked",

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 
+#include "exactgeo/predicates/sign.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "operation_checks.hpp"
 
@@ -22,6 +23,9 @@ struct SplitPlan {
   Point3 at{};
   EdgeTrianglesOfOne on_edge;
   bool sweeps = false;
+  /// Per triangle x y c of the edge, orient3d(a, b, c, at), which split_geometry asks:
+  /// region i's volume's sign, its corners in region()'s order.
+  std::array<Sign, 2> volume{};
 
   std::size_t region_count() const noexcept { return sweeps ? on_edge.size() : 0; }
   /// Region i (below region_count()) on the surface the split was planned on.

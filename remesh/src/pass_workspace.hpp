@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "exactgeo/predicates/sign.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "pass_plans.hpp"
 #include "region_points.hpp"
@@ -25,6 +26,7 @@ struct PassWorkspace::Arrays {
   std::vector<std::size_t> checked;                     ///< plans whose regions are checked
   std::vector<std::array<RegionCorner, 4>> regions;     ///< the checked plans' regions
   std::vector<VertexIndex> partners;                    ///< and their partners
+  std::vector<Sign> volumes;                            ///< and their volumes' signs
   internal::RegionQuery region_query;                   ///< first_in_regions' arrays
 };
 

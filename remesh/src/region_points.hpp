@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "exactgeo/boxes/point_groups.hpp"
+#include "exactgeo/predicates/sign.hpp"
 #include "exactgeo/remesh/swept_region.hpp"
 
 namespace exactgeo::remesh::internal {
@@ -142,9 +143,11 @@ struct RegionQuery {
   Buckets near;
 };
 
-/// first_in_regions (swept_region.hpp) in `query`'s storage.
+/// first_in_regions (swept_region.hpp) in `query`'s storage. `volumes`: empty, or per
+/// region the sign of orient3d of its four corners in order, when the caller has asked it
+/// already (a split's, split_geometry), so that the region need not ask it again.
 std::vector<std::optional<Blocker>> first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
-    std::span<const VertexIndex> partners, RegionQuery& query);
+    std::span<const VertexIndex> partners, RegionQuery& query, std::span<const Sign> volumes = {});
 
 }  // namespace exactgeo::remesh::internal

@@ -174,6 +174,7 @@ std::optional<Outcome> split_geometry(const Surface& surface, SplitPlan& plan) {
     }
   }
   plan.sweeps = !between;
+  plan.volume = off;
   if (!between && plan.on_edge.size() == 2 && !sides_apart(surface, plan, made, off) &&
       sides_meet(surface, made, at)) {
     return Outcome{Verdict::refused_collision,
@@ -275,9 +276,11 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   const std::vector<bool> ahead = internal::go_ahead(by_regions, surface.vertices);
   std::vector<std::array<RegionCorner, 4>>& regions = kept.regions;
   std::vector<VertexIndex>& partners = kept.partners;
+  std::vector<Sign>& volumes = kept.volumes;
   std::vector<std::size_t>& checked = kept.checked;
   regions.clear();
   partners.clear();
+  volumes.clear();
   checked.clear();
   for (std::size_t n = 0; n < candidates.size(); ++n) {
     const SplitPlan& plan = plans[candidates[n]];
@@ -289,12 +292,13 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
     for (std::size_t r = 0; r < plan.region_count(); ++r) {
       regions.push_back(plan.region(surface, r));
       partners.push_back(plan.partner(surface, r));
+      volumes.push_back(plan.volume[r]);
     }
     checked.push_back(candidates[n]);
   }
   // As for flips: the splits that go ahead meet nothing another one makes.
   const std::vector<std::optional<Blocker>> hits =
-      internal::first_in_regions(surface, regions, partners, kept.region_query);
+      internal::first_in_regions(surface, regions, partners, kept.region_query, volumes);
   std::size_t next_region = 0;
   for (const std::size_t k : checked) {
     std::optional<Blocker> hit;

@@ -63,7 +63,10 @@ int shadow_axis_of(const Point3& p, const Point3& q, const Point3& r) noexcept {
 
 class Region {
  public:
-  explicit Region(const std::array<RegionCorner, 4>& corners) {
+  /// `volume`: orient3d of the four corners in order, when the caller knows it.
+  explicit Region(const std::array<RegionCorner, 4>& corners,
+                  std::optional<Sign> volume = std::nullopt) {
+    if (volume) set_volume(*volume);
     for (int i = 0; i < 4; ++i)
       corners_[i] = {corners[i].vertex, &corners[i].point};
     // The hull's shadow on a coordinate plane is a convex polygon, whose sides are the
@@ -150,6 +153,39 @@ class Region {
     return mask;
   }
 
+  /// The side of the shadow line through x and y that every corner other than x and y (by
+  /// vertex) lies strictly on, or zero when there is none (x and y with one shadow make
+  /// every turn zero: no line, no side).
+  Sign corners_side_of_line(const Point3& x, VertexIndex xv, const Point3& y,
+                            VertexIndex yv) const noexcept {
+    Sign side = Sign::zero;
+    for (const Corner& c : corners_) {
+      if (c.vertex != kNoVertex && (c.vertex == xv || c.vertex == yv)) continue;
+      const Sign s = orient2d_along(axis_, x, y, *c.point);
+      if (s == Sign::zero || (side != Sign::zero && s != side)) return Sign::zero;
+      side = s;
+    }
+    return side;
+  }
+
+  /// The side of the plane of the triangle t (its corners' vertices tv) that every corner
+  /// other than t's (by vertex) lies strictly on, or zero when there is none (a triangle of
+  /// zero area makes every orientation zero).
+  Sign corners_side_of_plane(const std::array<const Point3*, 3>& t,
+                             const Triangle& tv) const noexcept {
+    Sign side = Sign::zero;
+    for (const Corner& c : corners_) {
+      if (c.vertex != kNoVertex && (c.vertex == tv[0] || c.vertex == tv[1] || c.vertex == tv[2]))
+        continue;
+      const Sign off = orient3d(*t[0], *t[1], *t[2], *c.point);
+      if (off == Sign::zero || (side != Sign::zero && off != side)) return Sign::zero;
+      side = off;
+    }
+    return side;
+  }
+
+  int axis() const noexcept { return axis_; }
+
   static constexpr unsigned kPlaneBits = 0xFu | (1u << 10) | (1u << 11);
   static constexpr unsigned kSideBits = 0x3Fu << 4;
 
@@ -234,9 +270,12 @@ class Region {
   /// shadow's sides usually decide without them.
   void orient() const noexcept {
     if (oriented_) return;
+    set_volume(
+        orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point));
+  }
+  void set_volume(Sign volume) const noexcept {
     oriented_ = true;
-    volume_ =
-        orient3d(*corners_[0].point, *corners_[1].point, *corners_[2].point, *corners_[3].point);
+    volume_ = volume;
     if (volume_ == Sign::zero) return;
     // orient3d(face opposite l, corner l) is the volume's sign times the parity of the
     // corners' order (an exact determinant's sign changes with every swap): (1 2 3 0) and
@@ -257,12 +296,55 @@ class Region {
   std::array<unsigned, 6> on_side_{};  ///< per side: the corners on its line, as bits
 };
 
-/// An edge of the surface crosses or touches one of the region's triangles outside
-/// their shared corners.
-bool edge_meets(const Region& region, const std::array<Corner, 2>& edge) {
+/// The face of a tetrahedral region that an edge need not be tested against (by the
+/// corner it is opposite), or -1 to test all four: a flat region, or an edge with two
+/// region corners. `preferred`: the corner whose opposite face is dearest to test (a
+/// split's a b m, corner 2, whose orientations fall to exact arithmetic, as a, b and m
+/// are all but collinear), left out unless the edge has that corner.
+///
+/// Why three faces decide (edge_meets' precondition: neither end of the edge that is no
+/// region corner lies in the closed tetrahedron T, which first_in and regions_meet test
+/// first). Let F be a face of T holding every corner the edge shares with T (at most one;
+/// S, their hull, is that corner or empty). Suppose the edge meets T at a point y outside
+/// S. Its part in T is a segment [s1, s2] (a point when s1 = s2), and an end of the edge
+/// in T is a shared corner, so it is s1 or s2. (1) y inside T: s1 and s2 lie on T's
+/// boundary on either side of y. Were both on F alone, or one the shared corner (on F)
+/// and the other on F, the segment would lie in F's plane, which holds no inner point of
+/// T; so one of them that is not in S lies on a face other than F. (2) The part in T in
+/// T's boundary: it lies in one closed face (the supporting plane at its midpoint holds
+/// it). On a face other than F, done. In F: if y lies on an edge of F, it lies on another
+/// face too; otherwise y is inside F and not an end of the edge (an end in T is in S), so
+/// the edge lies in F's plane through y, and its part in T is a segment of F whose two
+/// ends lie on F's edges (an end of the edge there is a corner of T), one of them not in
+/// S, and on another face. So the edge meets T outside S exactly when it meets one of the
+/// other three faces outside S: the answer of all four. A face without the shared corner
+/// cannot be left out: an edge from the opposite corner through T leaves it through that
+/// face alone.
+int face_left_out(const Region& region, const std::array<Corner, 2>& edge, int preferred) {
+  if (region.flat()) return -1;  // the cover's triangles are no faces: all are needed
+  const int k0 = region.corner_of(edge[0].vertex), k1 = region.corner_of(edge[1].vertex);
+  if (k0 >= 0 && k1 >= 0) return -1;
+  const int shared = k0 >= 0 ? k0 : k1;
+  if (shared != preferred) return preferred;
+  return preferred == 3 ? 2 : 3;
+}
+
+/// The corner face_left_out prefers: 2 for a split's region (corner 3 its new point), 3
+/// otherwise (a flip's faces cost alike).
+int preferred_corner(const std::array<RegionCorner, 4>& corners) {
+  return corners[3].vertex == kNoVertex ? 2 : 3;
+}
+
+/// An edge of the surface crosses or touches the region outside their shared corners
+/// (given that neither end that is no region corner lies in the region: face_left_out),
+/// by the region's triangles.
+bool edge_meets(const Region& region, const std::array<Corner, 2>& edge, int preferred) {
   const auto triangles = region.triangles();
-  return std::any_of(triangles.begin(), triangles.end(),
-                     [&](const auto& t) { return edge_meets_triangle(edge, t); });
+  const int left_out = face_left_out(region, edge, preferred);
+  for (int l = 0; l < 4; ++l) {
+    if (l != left_out && edge_meets_triangle(edge, triangles[l])) return true;
+  }
+  return false;
 }
 
 /// An edge of the region crosses or touches a triangle of the surface outside their
@@ -320,6 +402,10 @@ struct NearbyElements {
   /// first_in's edges and triangles that no separating plane passes over, to be tested.
   std::vector<Edge> edges_to_test;
   std::vector<std::size_t> triangles_to_test;
+  /// Per triangle of `triangles`, for first_in: whether the region lies beyond its plane
+  /// (kPlaneUnknown until asked).
+  std::vector<std::uint8_t> beyond_plane;
+  static constexpr std::uint8_t kPlaneUnknown = 2;
 
   explicit NearbyElements(std::size_t vertex_count) : slot(vertex_count, kAbsent) {}
 
@@ -341,11 +427,12 @@ struct NearbyElements {
 };
 
 std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
-                                const std::array<RegionCorner, 4>& corners, VertexIndex partner) {
+                                const std::array<RegionCorner, 4>& corners, VertexIndex partner,
+                                std::optional<Sign> volume) {
   // By the argument at the top of the header: a vertex in the hull, an edge meeting one of
   // its triangles, or one of its edges meeting a triangle (the corners and edges of a
   // triangle are the surface's own vertices and edges, tested before it).
-  const Region region(corners);
+  const Region region(corners, volume);
   const auto& p = surface.vertices;
   // The operation's own elements: those of the region's corners only, and the partner's
   // triangle abd (a, b: the first two corners), which the split replaces. Not its corner d
@@ -413,18 +500,80 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
     return (face_beyond[i] >> l & 1u) != 0;
   };
   const auto index_of = [&](VertexIndex v) -> std::size_t { return near.slot[v]; };
-  // Whether the corners (indices into near.vertices) are all beyond one separating plane.
-  const auto apart = [&](std::initializer_list<std::size_t> at) {
+  // An element apart from the region by a line L of its own in the shadow (along the
+  // region's axis): an edge's line, or a triangle's side with its third corner on L or on
+  // the other side from the region's corners. Every corner of the region that is no
+  // corner of the element (by vertex) lies strictly on one side of L, and the element's
+  // shadow on the closed other side, so a common point of the two lies over L; the
+  // region's points over L are the convex combinations of its corners on L (a corner
+  // strictly off L has weight zero there), which are shared corners: the common points lie
+  // in the hull of the shared corners, and the element is apart beyond what it shares.
+  // Exact: orient2d_along signs; a zero proves nothing (an element whose shadow is a point
+  // has none but zeros). Asked of a tetrahedron's elements only: its corners are
+  // affinely independent, so an element apart beyond what it shares meets each of its
+  // faces and edges only in their own shared corners, and the segment tests below would
+  // pass it too (a flat region's tests may report more, tests/remesh/swept_region_test.cpp,
+  // Deviations); the blocker reported, the least element that meets the region, is the
+  // same.
+  const auto element_apart_in_shadow = [&](std::initializer_list<std::size_t> at) {
+    const std::size_t* c = at.begin();
+    const auto vertex = [&](std::size_t k) { return near.vertices[c[k]]; };
+    const int n = static_cast<int>(at.size());
+    for (int k = 0; k < (n == 2 ? 1 : 3); ++k) {
+      const VertexIndex x = vertex(k), y = vertex((k + 1) % n);
+      const Sign side = region.corners_side_of_line(p[x], x, p[y], y);
+      if (side == Sign::zero) continue;
+      if (n == 2 || orient2d_along(region.axis(), p[x], p[y], p[vertex((k + 2) % 3)]) != side)
+        return true;
+    }
+    return false;
+  };
+  // A triangle of the surface apart from the region by its own plane: every corner of the
+  // region that is no corner of the triangle lies strictly on one side of it, so the
+  // region meets the plane only in the hull of the shared corners (its points there are
+  // the convex combinations of its corners on the plane), and the triangle and its edges,
+  // which lie in the plane, meet the region only there: apart beyond what they share (an
+  // edge's shared corners are the triangle's on it, whose hull the edge meets only in
+  // them: a corner strictly off the plane makes the triangle's area non-zero). Exact:
+  // orient3d signs. Asked of a tetrahedron's elements only, as element_apart_in_shadow;
+  // once per triangle (by its place in near.triangles), for it and its edges.
+  std::vector<std::uint8_t>& beyond_plane = near.beyond_plane;
+  beyond_plane.assign(near.triangles.size(), NearbyElements::kPlaneUnknown);
+  const auto apart_by_plane_of = [&](std::size_t j) {
+    if (beyond_plane[j] == NearbyElements::kPlaneUnknown) {
+      const Triangle& c = surface.triangles[near.triangles[j]];
+      beyond_plane[j] =
+          region.corners_side_of_plane({&p[c[0]], &p[c[1]], &p[c[2]]}, c) != Sign::zero;
+    }
+    return beyond_plane[j] != 0;
+  };
+  // Whether the corners (indices into near.vertices) are all beyond one separating plane:
+  // the first kind's (cheap, asked first), then the others, with the plane of the
+  // element's triangle (near.triangles[j]) before a split's thin face.
+  const auto apart_by_first = [&](std::initializer_list<std::size_t> at) {
     unsigned common = ~0u;
     for (const std::size_t i : at)
       common &= first[i];
-    if (common != 0) return true;
-    if (faces_one_at_a_time) {
-      return std::any_of(kFaceOrder.begin(), kFaceOrder.end(), [&](int l) {
-        return std::all_of(at.begin(), at.end(), [&](std::size_t i) { return beyond_face(i, l); });
-      });
+    return common != 0;
+  };
+  const auto beyond_all = [&](std::initializer_list<std::size_t> at, int l) {
+    for (const std::size_t i : at) {
+      if (!beyond_face(i, l)) return false;
     }
-    common = ~0u;
+    return true;
+  };
+  const auto apart_by_second = [&](std::initializer_list<std::size_t> at, std::size_t j) {
+    if (faces_one_at_a_time) {
+      // The face opposite corner 2 (a b m, a split's rounding-thin face, whose
+      // orientations fall to exact arithmetic) after the element's own lines in the
+      // shadow: the elements the sides and the other faces leave are mostly edges and
+      // triangles around a region corner (the link of its star), on both sides of it,
+      // which a line of their own keeps apart, or elements of another layer close to the
+      // region, which the plane of their triangle keeps apart.
+      return beyond_all(at, 3) || beyond_all(at, 0) || beyond_all(at, 1) ||
+             element_apart_in_shadow(at) || apart_by_plane_of(j) || beyond_all(at, 2);
+    }
+    unsigned common = ~0u;
     for (const std::size_t i : at)
       common &= second_of(i);
     return common != 0;
@@ -450,29 +599,36 @@ std::optional<Blocker> first_in(const Surface& surface, NearbyElements& near,
   if (vertex) return Blocker{Blocker::Kind::vertex, {*vertex, kNoVertex, kNoVertex}};
   std::vector<Edge>& edges = near.edges_to_test;
   edges.clear();
-  for (const std::size_t t : near.triangles) {
-    const Triangle& c = surface.triangles[t];
+  for (std::size_t j = 0; j < near.triangles.size(); ++j) {
+    const Triangle& c = surface.triangles[near.triangles[j]];
     for (int k = 0; k < 3; ++k) {
       const Edge e = edge_of(c[k], c[(k + 1) % 3]);
-      if (apart({index_of(e[0]), index_of(e[1])})) continue;           // beyond one plane
+      const std::initializer_list<std::size_t> at{index_of(e[0]), index_of(e[1])};
+      if (apart_by_first(at)) continue;                                // beyond one plane
       if (region.is_corner(e[0]) && region.is_corner(e[1])) continue;  // own
+      if (apart_by_second(at, j)) continue;                            // beyond one plane
       edges.push_back(e);
     }
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  // No vertex that is no region corner lies in the region (above): edge_meets' precondition.
+  const int preferred = preferred_corner(corners);
   for (const Edge& e : edges) {
-    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}}))
+    if (edge_meets(region, {Corner{e[0], &p[e[0]]}, Corner{e[1], &p[e[1]]}}, preferred))
       return Blocker{Blocker::Kind::edge, {e[0], e[1], kNoVertex}};
   }
   std::vector<std::size_t>& triangles = near.triangles_to_test;
   triangles.clear();
-  for (const std::size_t t : near.triangles) {
+  for (std::size_t j = 0; j < near.triangles.size(); ++j) {
+    const std::size_t t = near.triangles[j];
     const Triangle& c = surface.triangles[t];
-    if (apart({index_of(c[0]), index_of(c[1]), index_of(c[2])})) continue;  // beyond one plane
+    const std::initializer_list<std::size_t> at{index_of(c[0]), index_of(c[1]), index_of(c[2])};
+    if (apart_by_first(at)) continue;  // beyond one plane
     if (region.is_corner(c[0]) && region.is_corner(c[1]) && region.is_corner(c[2])) continue;
     // abd (its corners are distinct)
     if (has_partner && on_other_side(c[0]) && on_other_side(c[1]) && on_other_side(c[2])) continue;
+    if (apart_by_second(at, j)) continue;  // beyond one plane
     triangles.push_back(t);
   }
   std::sort(triangles.begin(), triangles.end());  // each once: the query finds a pair once
@@ -501,7 +657,7 @@ std::vector<std::optional<Blocker>> first_in_regions(
 
 std::vector<std::optional<Blocker>> internal::first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
-    std::span<const VertexIndex> partners, RegionQuery& query) {
+    std::span<const VertexIndex> partners, RegionQuery& query, std::span<const Sign> volumes) {
   query.boxed.assign(surface.vertices, regions);
   // The triangles near each region.
   query.pairs.clear();
@@ -514,8 +670,9 @@ std::vector<std::optional<Blocker>> internal::first_in_regions(
   NearbyElements elements(surface.vertices.size());
   for (std::size_t r = 0; r < regions.size(); ++r) {
     elements.gather(surface, query.near.of(r));
-    found.push_back(
-        first_in(surface, elements, regions[r], partners.empty() ? kNoVertex : partners[r]));
+    found.push_back(first_in(surface, elements, regions[r],
+                             partners.empty() ? kNoVertex : partners[r],
+                             volumes.empty() ? std::nullopt : std::optional<Sign>(volumes[r])));
   }
   return found;
 }
@@ -554,10 +711,11 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
     for (const RegionCorner& c : *a_corners) {
       if (b->holds(c.point)) return true;
     }
+    // No corner of a lies in b (just tested), and the corners are points sharing nothing:
+    // edge_meets' precondition.
+    const int preferred = preferred_corner(b == &rx ? x : y);
     for (const auto& edge : a->edges()) {
-      for (const auto& triangle : b->triangles()) {
-        if (edge_meets_triangle(edge, triangle)) return true;
-      }
+      if (edge_meets(*b, edge, preferred)) return true;
     }
   }
   return false;

@@ -609,6 +609,94 @@ TEST_P(SweptRegions, FirstInRegionAgreesWithTheHullOracle) {
   EXPECT_GT(partnered, 10);  // compared exactly with a partner
 }
 
+/// A point nudged by `steps` doubles (up or down) in one coordinate.
+Point3 nudged(Point3 p, int axis, int steps) {
+  for (int i = 0; i < std::abs(steps); ++i)
+    p[axis] = std::nextafter(p[axis], steps > 0 ? HUGE_VAL : -HUGE_VAL);
+  return p;
+}
+
+TEST_P(SweptRegions, ThinSplitRegionsAgreeWithTheHullOracle) {
+  // A split's region a b c m with m a double or two off the midpoint of ab (a rounded
+  // midpoint: a, b and m all but collinear), among elements around its corners (their
+  // stars' links, on both sides of a corner: what the region test's own lines in the
+  // shadow and its three faces of four decide) and points a few doubles off the edge's
+  // line; first_in_region against the rational hull oracle.
+  auto rng = testing::seeded_engine("remesh.swept_region.thin_split");
+  GridPoints grid(rng, scale());
+  std::uniform_int_distribution<int> coin(0, 1), axis(0, 2), steps(-2, 2), kind(0, 3);
+  std::uniform_int_distribution<int> quarter(-2, 6);
+  int found[4] = {};  // vertex, edge, triangle, nothing
+  int deviating = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    grid.choose_frame();
+    Surface s;
+    const auto add = [&](const Point3& p) {
+      if (std::find(s.vertices.begin(), s.vertices.end(), p) != s.vertices.end()) return false;
+      s.vertices.push_back(p);
+      return true;
+    };
+    while (s.vertices.size() < 4)  // a, b, c and d, the partner
+      add(grid.point(4));
+    const Point3 a = s.vertices[0], b = s.vertices[1];
+    const auto on_line = [&](int q) {  // a + (q / 4)(b - a), exact on the grid's scale
+      Point3 p{};
+      for (int k = 0; k < 3; ++k)
+        p[k] = a[k] + (b[k] - a[k]) * (q / 4.0);
+      return p;
+    };
+    while (s.vertices.size() < 11) {
+      switch (kind(rng)) {
+        case 0:  // a few doubles off the edge's line
+          add(nudged(on_line(quarter(rng)), axis(rng), steps(rng)));
+          break;
+        case 1:  // near a or b
+          add(nudged(s.vertices[static_cast<std::size_t>(coin(rng))], axis(rng), steps(rng)));
+          break;
+        default:
+          add(grid.point(4));
+      }
+    }
+    const Point3 midpoint = on_line(2);
+    Point3 m = nudged(midpoint, axis(rng), steps(rng));
+    if (coin(rng) == 1) m = nudged(m, axis(rng), steps(rng));
+    const Region region{RegionCorner{0, a}, RegionCorner{1, b}, RegionCorner{2, s.vertices[2]},
+                        RegionCorner{kNoVertex, m}};
+    if (!well_formed(region)) continue;
+    // Triangles: abc and abd (the split's), and random ones, most at a corner of the
+    // region (fans around a, b and c, whose far edges pass around the corner).
+    s.triangles = {{0, 1, 2}, {1, 0, 3}};
+    std::uniform_int_distribution<VertexIndex> vertex(0, 10), corner(0, 2);
+    const std::size_t triangles = std::uniform_int_distribution<std::size_t>(3, 9)(rng);
+    while (s.triangles.size() < triangles) {
+      const Triangle t{coin(rng) == 1 ? corner(rng) : vertex(rng), vertex(rng), vertex(rng)};
+      if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
+      if (collinear_oracle(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]])) continue;
+      s.triangles.push_back(t);
+    }
+    const VertexIndex partner = coin(rng) == 1 ? 3 : kNoVertex;
+    const std::optional<Blocker> one = first_in_region(s, region, partner);
+    const std::optional<Blocker> expected = first_in_region_oracle(s, region, partner);
+    const std::string what = "trial " + std::to_string(trial) + ": new point " + text(m) +
+                             ", partner " + std::to_string(partner) + "; surface " + text(s);
+    if (deviations_of(s, region).reports_more) {
+      ++deviating;
+      EXPECT_TRUE(one.has_value() || !expected.has_value()) << what;
+      continue;
+    }
+    EXPECT_EQ(one, expected) << what << ": found " << text(one) << ", the oracle "
+                             << text(expected);
+    ++found[expected ? static_cast<int>(expected->kind) : 3];
+  }
+  EXPECT_GT(found[0] + found[1] + found[2] + found[3], 4 * deviating);
+  EXPECT_GT(found[0], 10);  // a vertex
+  EXPECT_GT(found[1], 10);  // an edge
+  EXPECT_GT(found[2], 5);   // a triangle
+  EXPECT_GT(found[3], 20);  // nothing
+  std::printf("thin split regions: %d vertex, %d edge, %d triangle, %d nothing, %d deviating\n",
+              found[0], found[1], found[2], found[3], deviating);
+}
+
 TEST(SweptRegion, TheHullOracleAgreesWithTheSegmentTriangleOracle) {
   // The hull oracle's linear program against the support oracle's clipping, on segments
   // and triangles of small integers (the check of the oracle the tests above rely on).
