@@ -63,8 +63,8 @@ inline std::optional<Vector3> normalized(const Vector3& v) {
 
 /// One edge's half angle (above); its error bound is derived in boundary_term_filter.cpp.
 /// Inline: the boundary tree calls it for every chord and near edge, and the call itself
-/// (registers saved, the optional returned through memory) was 3% of the instructions on
-/// `b9_mesh.off`.
+/// (registers saved, the optional returned through memory) costs more than its rare
+/// branches (its cost measured: docs/inside.md, "Many boundary edges near most points").
 [[gnu::always_inline]] inline std::optional<HalfAngle> half_angle(const Point3& p, const Vector3& d,
                                                                   double ld, const Point3& pa,
                                                                   const Point3& pb,

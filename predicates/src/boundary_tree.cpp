@@ -432,9 +432,8 @@ struct BoundaryTree::Query {
 
 /// The node as a far node, where its bound is at most `limit` and the ray misses its
 /// box (known already where `misses`); nullopt otherwise, or where an end's angle cannot
-/// be bounded. Inlined into the refinement, which calls it for every node it visits: the
-/// call itself (registers saved, the optional returned through memory) was 3% of the
-/// instructions on `b9_mesh.off`.
+/// be bounded. Inlined into the refinement, which calls it for every node it visits (the
+/// call's cost measured: docs/inside.md, "Many boundary edges near most points").
 [[gnu::always_inline]] inline std::optional<BoundaryTree::FarValue> BoundaryTree::far_value(
     const Node& node, const Query& q, double limit, bool misses) const {
   if (!node.far_pays) return std::nullopt;

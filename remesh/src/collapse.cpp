@@ -184,8 +184,9 @@ struct Reach {
       }
     }
     // The moving triangles against every triangle: by two trees unless they are fewer than
-    // a quarter of the triangles (measured: the reach's groups cluster around the
-    // collapses, and a scan down their tree pays only when they are few).
+    // a quarter of the triangles (the reach's groups cluster around the collapses, and a
+    // scan down their tree pays only when they are few: docs/remesh.md, "What a remesh
+    // costs").
     internal::groups_near_triangles<4>(
         points, swept, s.triangles, [&](std::size_t, std::size_t t) { reached[t] = true; }, 4);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
