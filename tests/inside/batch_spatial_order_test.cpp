@@ -5,7 +5,8 @@
 // of holes and long slits (both with at least kSpatialOrderEdges boundary edges, so that
 // the batch takes the spatial order); points anywhere in the box grown by a fifth, points next to
 // rim edges (a relative offset of 2^-20 and 2^-40 from an edge's midpoint) and points beyond the
-// box; at 2^0 and 2^+-1000.
+// box; at 2^0 and 2^+-1000. A sample of the batch's labels is also checked against the
+// definition: the solid-angle oracle's w on the same triangles, unscaled.
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,8 @@
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/location.hpp"
 #include "open_meshes.hpp"
+#include "oracle_label.hpp"
+#include "oracle_triangles.hpp"
 #include "support/hexfloat.hpp"
 #include "support/seed.hpp"
 
@@ -65,8 +68,16 @@ std::vector<Point3> probes(std::mt19937_64& rng, const Classifier& classifier, s
   return points;
 }
 
-/// Every point's label from classify_batch equals its own call's, on every thread count.
-void expect_batch_equals_one_by_one(const Mesh& mesh, std::mt19937_64& rng, std::size_t random) {
+/// Points of the batch checked against the definition (the oracle integrates every
+/// triangle for each, so a sample): every kOracleEvery-th.
+constexpr std::size_t kOracleEvery = 320;
+
+/// Every point's label from classify_batch equals its own call's, on every thread count,
+/// and, on a sample, the label of the generalized winding number's definition (`unscaled`:
+/// the mesh before its scaling by 2^scale, whose triangles the oracle integrates).
+void expect_batch_equals_one_by_one(const Mesh& unscaled, int scale, std::mt19937_64& rng,
+                                    std::size_t random) {
+  const Mesh mesh = testing::scaled(unscaled, scale);
   const Classifier classifier(mesh);
   ASSERT_TRUE(classifier.open());
   ASSERT_GE(classifier.boundary().size(), kSpatialOrderEdges);
@@ -81,6 +92,22 @@ void expect_batch_equals_one_by_one(const Mesh& mesh, std::mt19937_64& rng, std:
       ASSERT_EQ(batch[i], one_by_one[i])
           << "point " << i << " " << testing::hex(points[i]) << ", " << threads << " threads";
     }
+    if (threads != kThreadCounts[0]) continue;
+    const std::vector<testing::Triangle> triangles = testing::triangles_of(unscaled);
+    std::size_t compared = 0;
+    for (std::size_t i = 0; i < points.size(); i += kOracleEvery) {
+      if (batch[i] == Location::boundary) continue;  // the oracle needs a point off the faces
+      Point3 p = points[i];
+      for (double& x : p)
+        x = std::ldexp(x, -scale);  // exact: the points are normal doubles at every scale
+      const auto want = testing::label_from_oracle(
+          classifier.rule(), testing::generalized_winding_oracle(p, triangles, 0.5));
+      if (!want) continue;
+      ASSERT_EQ(to_string(batch[i]), to_string(*want))
+          << "point " << i << " " << testing::hex(points[i]);
+      ++compared;
+    }
+    EXPECT_GE(compared, points.size() / kOracleEvery / 2) << "too few points the oracle could tell";
   }
 }
 
@@ -89,15 +116,14 @@ class SpatialOrder : public ::testing::TestWithParam<int> {};
 TEST_P(SpatialOrder, RibbonBatchEqualsEachPointsOwnCall) {
   const int scale = GetParam();
   auto rng = testing::seeded_engine("inside.batch_order.ribbon." + std::to_string(scale));
-  const Mesh mesh = testing::scaled(testing::ribbon(1100), scale);
-  expect_batch_equals_one_by_one(mesh, rng, 3000);
+  expect_batch_equals_one_by_one(testing::triangulated(testing::ribbon(1100)), scale, rng, 3000);
 }
 
 TEST_P(SpatialOrder, PerforatedSheetBatchEqualsEachPointsOwnCall) {
   const int scale = GetParam();
   auto rng = testing::seeded_engine("inside.batch_order.sheet." + std::to_string(scale));
-  const Mesh mesh = testing::scaled(testing::perforated_sheet(rng, 56, 14), scale);
-  expect_batch_equals_one_by_one(mesh, rng, 3000);
+  expect_batch_equals_one_by_one(testing::triangulated(testing::perforated_sheet(rng, 56, 14)),
+                                 scale, rng, 3000);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, SpatialOrder, ::testing::Values(0, 1000, -1000));
