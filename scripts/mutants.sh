@@ -366,6 +366,10 @@ MUTANTS = [
      "examples/cloth/float_shortcuts.cpp",
      "usable(rhs) && kMargin * lhs < rhs;", "usable(rhs) && lhs < kMargin * rhs;",
      ["examples_tests"]),
+    ("cloth_half_turn_margin_thin",
+     "examples/cloth/float_shortcuts.cpp",
+     "const double margin = kMargin * m;", "const double margin = -kMargin * m;",
+     ["examples_tests"]),
     # remesh: a split's partner is only its other triangle; its corner and edges are tested.
     ("swept_region_partner_corner_skipped",
      "remesh/src/swept_region.cpp",
