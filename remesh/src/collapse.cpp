@@ -2,9 +2,10 @@
 // pseudo-motion (both ends move there on straight lines while everything else stands).
 //
 // collapse_edge decides one collapse by pair CCD on every pair with a moving corner
-// (first_collision); collapse_edges decides a pass through the mesh broad phase. Both are
-// exact, and the pass agrees with the single collapse on every collapse it does not defer
-// (tested). The surface after the collapse needs no check of its own: a pair of triangles
+// (first_collision); collapse_edges decides a pass through a broad phase around the moving
+// vertices (moving_pairs.hpp) that finds the mesh broad phase's pairs that can collide.
+// Both are exact, and the pass agrees with the single collapse on every collapse it does
+// not defer (tested). The surface after the collapse needs no check of its own: a pair of triangles
 // that intersects there was in contact during the motion, through a vertex-face or an
 // edge-edge pair the motion check decides (docs/remesh.md, "Collapse", has the argument;
 // Collapses.AnEndStateThatIntersectsIsRefusedByTheMotion, the evidence).
@@ -13,6 +14,7 @@
 #include <cstdint>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -26,6 +28,7 @@
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
+#include "moving_pairs.hpp"
 #include "one_mover.hpp"
 #include "operation_checks.hpp"
 #include "pair_order.hpp"
@@ -151,22 +154,27 @@ void collapse(Surface& surface, const std::vector<const CollapsePlan*>& plans) {
 }
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+constexpr std::uint32_t kNoStar = std::numeric_limits<std::uint32_t>::max();
 
 /// The part of the surface the collapses' motions can reach: the triangles around their
 /// ends, and every triangle whose box meets the box one of those sweeps (its corners and
 /// its collapse's new point), found by box trees; as a small mesh of its own (triangles
-/// in surface order, over `vertices`, which maps its indices to the surface's). Every
-/// vertex-face or edge-edge pair with a moving corner whose swept boxes meet lies in it:
-/// a static element lies in the box of each of its triangles.
+/// in surface order, over `vertices`, which maps its indices to the surface's), with the
+/// star of each moving end (moving_pairs.hpp) in its indices. Every vertex-face or
+/// edge-edge pair with a moving corner whose swept boxes meet lies in it: a static
+/// element lies in the box of each of its triangles.
 struct Reach {
   std::vector<VertexIndex> vertices;
   std::vector<ccd::Triangle> triangles;
+  std::vector<MovingStar> stars;
 
-  /// `stars`: the triangles around each vertex of `s`.
-  Reach(const Surface& s, const VertexTriangles& stars,
+  /// `around`: the triangles around each vertex of `s`.
+  Reach(const Surface& s, const VertexTriangles& around,
         const std::vector<const CollapsePlan*>& plans) {
     std::vector<Point3> points = s.vertices;
-    std::vector<std::array<VertexIndex, 4>> swept;  // a moving triangle's corners and `to`
+    std::vector<std::array<VertexIndex, 4>> swept;          // a moving triangle's corners and `to`
+    std::vector<std::uint32_t> swept_triangle;              // its index in the surface
+    std::vector<std::array<std::uint32_t, 2>> swept_stars;  // the stars of its moving ends
     std::vector<bool> reached(s.triangles.size(), false);
     // The triangles around the collapses' ends, each once (around both ends: the edge's),
     // found from the stars, not by a walk of every triangle. A triangle has the ends of
@@ -174,13 +182,31 @@ struct Reach {
     for (const CollapsePlan* p : plans) {
       const auto to = static_cast<VertexIndex>(points.size());
       points.push_back(p->to);
+      const std::size_t first_star = stars.size();
       for (const VertexIndex end : {p->a, p->b}) {
-        for (const std::size_t t : stars[end]) {
+        if (s.vertices[end] != p->to) stars.push_back({end, {}, {}});
+      }
+      const std::size_t first_swept = swept.size();
+      for (const VertexIndex end : {p->a, p->b}) {
+        for (const std::size_t t : around[end]) {
           if (reached[t]) continue;
           const Triangle& tri = s.triangles[t];
           swept.push_back({tri[0], tri[1], tri[2], to});
+          swept_triangle.push_back(static_cast<std::uint32_t>(t));
+          std::array<std::uint32_t, 2> moving{kNoStar, kNoStar};
+          for (std::size_t k = first_star; k < stars.size(); ++k) {
+            if (std::find(tri.begin(), tri.end(), stars[k].vertex) != tri.end())
+              moving[k - first_star] = static_cast<std::uint32_t>(k);
+          }
+          swept_stars.push_back(moving);
           reached[t] = true;
         }
+      }
+      // Near each moving end: every triangle of its collapse (their motions reach beyond
+      // their boxes at rest, which the trees see; another collapse's are apart: plan).
+      for (std::size_t k = first_star; k < stars.size(); ++k) {
+        for (std::size_t g = first_swept; g < swept.size(); ++g)
+          stars[k].near.push_back(swept_triangle[g]);
       }
     }
     // The moving triangles against every triangle: by two trees unless they are fewer than
@@ -188,8 +214,15 @@ struct Reach {
     // scan down their tree pays only when they are few: docs/remesh.md, "What a remesh
     // costs").
     internal::groups_near_triangles<4>(
-        points, swept, s.triangles, [&](std::size_t, std::size_t t) { reached[t] = true; }, 4);
+        points, swept, s.triangles,
+        [&](std::size_t g, std::size_t t) {
+          reached[t] = true;
+          for (const std::uint32_t k : swept_stars[g])
+            if (k != kNoStar) stars[k].near.push_back(static_cast<std::uint32_t>(t));
+        },
+        4);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
+    const auto local_triangle = std::make_unique_for_overwrite<std::uint32_t[]>(s.triangles.size());
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       if (!reached[t]) continue;
       ccd::Triangle tri{};
@@ -201,7 +234,15 @@ struct Reach {
         }
         tri[k] = local[v];
       }
+      local_triangle[t] = static_cast<std::uint32_t>(triangles.size());
       triangles.push_back(tri);
+    }
+    for (MovingStar& star : stars) {
+      for (const std::size_t t : around[star.vertex])
+        star.around.push_back(local_triangle[t]);
+      for (std::uint32_t& t : star.near)
+        t = local_triangle[t];
+      star.vertex = local[star.vertex];
     }
   }
 };
@@ -313,21 +354,24 @@ struct CollapsePass::State {
     return k != kNone && live(k) && plans_[k].b == v ? plans_[k].a : v;
   }
 
-  /// The motions of the live collapses, checked together by the mesh broad phase over the
-  /// part of the surface they can reach: every collision refuses the collapse whose
+  /// The motions of the live collapses, checked together as one step of the part of the
+  /// surface they can reach: every collision refuses the collapse whose
   /// motion makes it (no moving triangle of one comes near another's: plan), and the rest
   /// is checked again, until a step is clean.
   void refuse_collisions() {
     const Reach reach(surface_, stars_, live_plans());
     if (reach.triangles.empty()) return;
-    ccd::MeshCcd mesh_ccd(reach.vertices.size(), reach.triangles);
     std::vector<Point3> start(reach.vertices.size());
     for (std::size_t i = 0; i < start.size(); ++i)
       start[i] = surface_.vertices[reach.vertices[i]];
     const std::vector<double> t0 = ccd::flat_positions(start);
     // The broad phase's pairs, once, in the order step() reports its collisions: a later
     // round's motions are this one's with refused collapses standing still, whose swept
-    // boxes lie in the first round's, so its colliding pairs are among these. The narrow
+    // boxes lie in the first round's, so its colliding pairs are among these. They are
+    // found around the moving ends (moving_pairs.hpp): the pairs of the mesh broad phase
+    // of the reach (MeshCcd::candidates) whose swept boxes meet exactly, in its order
+    // (the reach's indices); the others it finds (float boxes rounded outward) have boxes
+    // apart, which exact CCD finds clear, and a clear pair decides nothing. The narrow
     // phase (exact, as step() runs it) on those that are not the collapse itself (pairs
     // that share a vertex once each live collapse's ends are merged meet at its new point
     // at the end of the step, by construction: a touch exact CCD spends the most on;
@@ -354,10 +398,7 @@ struct CollapsePass::State {
       const std::vector<double> t1 = ccd::flat_positions(end);
       const ccd::StepPositions positions{t0, t1};
       if (first_round) {
-        ccd::MeshCcdOptions one_thread;  // a few collapses' neighbourhoods: no workers
-        one_thread.threads = 1;
-        candidates = mesh_ccd.candidates(positions, one_thread);
-        sort_pairs(candidates);
+        candidates = moving_pairs(reach.triangles, start, end, reach.stars);
         vf_known.assign(candidates.vertex_face.size(), unknown);
         ee_known.assign(candidates.edge_edge.size(), unknown);
       }
