@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
 
 #include "exactgeo/predicates/kernel/error_free.hpp"
 #include "pair_order.hpp"
@@ -17,7 +18,7 @@ constexpr std::uint32_t kUnseen = std::numeric_limits<std::uint32_t>::max();
 
 /// A closed box: the least and the greatest coordinates of its points, exactly.
 struct Box {
-  Point3 lo{}, hi{};
+  Point3 lo, hi;
 };
 
 Box united(Box a, const Box& b) noexcept {
@@ -44,28 +45,38 @@ Edge edge(VertexIndex u, VertexIndex w) noexcept {
   return u < w ? Edge{u, w} : Edge{w, u};
 }
 
-/// The step's vertices: their swept boxes and motions, read where they lie.
+bool before(const Edge& a, const Edge& b) noexcept {
+  return a[0] != b[0] ? a[0] < b[0] : a[1] < b[1];
+}
+
+bool same(const ccd::EdgeEdgePair& p, const ccd::EdgeEdgePair& q) noexcept {
+  return p.a[0] == q.a[0] && p.a[1] == q.a[1] && p.b[0] == q.b[0] && p.b[1] == q.b[1];
+}
+
+/// The step's vertices: their swept boxes and whether they move, made once for all.
 class Step {
  public:
-  Step(std::span<const Point3> start, std::span<const Point3> end) : start_(start), end_(end) {}
-
-  Box box(VertexIndex v) const noexcept {
-    Box b;
-    for (std::size_t k = 0; k < 3; ++k) {
-      b.lo[k] = std::min(start_[v][k], end_[v][k]);
-      b.hi[k] = std::max(start_[v][k], end_[v][k]);
+  Step(std::span<const Point3> start, std::span<const Point3> end)
+      : start_(start),
+        end_(end),
+        boxes_(std::make_unique_for_overwrite<Box[]>(start.size())),
+        moving_(std::make_unique_for_overwrite<bool[]>(start.size())) {
+    for (std::size_t v = 0; v < start.size(); ++v) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        boxes_[v].lo[k] = std::min(start[v][k], end[v][k]);
+        boxes_[v].hi[k] = std::max(start[v][k], end[v][k]);
+      }
+      moving_[v] = start[v][0] != end[v][0] || start[v][1] != end[v][1] || start[v][2] != end[v][2];
     }
-    return b;
   }
+
+  const Box& box(VertexIndex v) const noexcept { return boxes_[v]; }
   Box box(const Triangle& t) const noexcept {
     return united(united(box(t[0]), box(t[1])), box(t[2]));
   }
   Box box(VertexIndex u, VertexIndex w) const noexcept { return united(box(u), box(w)); }
 
-  bool moves(VertexIndex v) const noexcept {
-    const Point3 &a = start_[v], &b = end_[v];
-    return a[0] != b[0] || a[1] != b[1] || a[2] != b[2];
-  }
+  bool moves(VertexIndex v) const noexcept { return moving_[v]; }
 
   /// Whether the four corners move by one and the same vector, as the mesh broad phase
   /// rules (ccd/src/mesh/broad_phase.cpp): the exact differences, head and tail, equal
@@ -88,6 +99,8 @@ class Step {
  private:
   std::span<const Point3> start_;
   std::span<const Point3> end_;
+  std::unique_ptr<Box[]> boxes_;
+  std::unique_ptr<bool[]> moving_;
 };
 
 /// The pairs met around one moving vertex after another (the header's argument), kept
@@ -138,9 +151,13 @@ class Finder {
   ccd::MeshCcdCandidates pairs() && {
     sort_pairs(found_);
     auto& vf = found_.vertex_face;
-    vf.erase(std::unique(vf.begin(), vf.end()), vf.end());
+    vf.erase(std::unique(vf.begin(), vf.end(),
+                         [](const auto& p, const auto& q) {
+                           return p.vertex == q.vertex && p.face == q.face;
+                         }),
+             vf.end());
     auto& ee = found_.edge_edge;
-    ee.erase(std::unique(ee.begin(), ee.end()), ee.end());
+    ee.erase(std::unique(ee.begin(), ee.end(), same), ee.end());
     return std::move(found_);
   }
 
@@ -173,7 +190,7 @@ class Finder {
       if (e.other == u || e.other == w || !meet(e_box, e.box)) continue;
       if (step_.rigid({x, e.other, u, w})) continue;
       const Edge a = edge(x, e.other), b = edge(u, w);
-      found_.edge_edge.push_back(a < b ? ccd::EdgeEdgePair{a, b} : ccd::EdgeEdgePair{b, a});
+      found_.edge_edge.push_back(before(a, b) ? ccd::EdgeEdgePair{a, b} : ccd::EdgeEdgePair{b, a});
     }
   }
 
