@@ -253,11 +253,12 @@ struct Reach {
 struct CollapsePass::State {
   State(const Surface& surface, PassWorkspace* workspace)
       : surface_(surface),
-        stars_(surface.triangles, surface.vertices.size()),
         kept_(arrays_of(workspace, own_)),
+        stars_(kept_.around),
         plans_(kept_.collapse_plans),
         outcome_of_(kept_.operation_of_plan),
         schedule_(surface.vertices.size()) {
+    stars_.assign(surface.triangles, surface.vertices.size());
     plans_.clear();
     outcome_of_.clear();
     owner_.assign(surface.vertices.size(), kNone);
@@ -451,9 +452,9 @@ struct CollapsePass::State {
   }
 
   const Surface& surface_;
-  VertexTriangles stars_;
   PassWorkspace own_;  ///< used when the caller keeps none
   PassWorkspace::Arrays& kept_;
+  VertexTriangles& stars_;  ///< the triangles around each vertex
   std::vector<Outcome> outcomes_;
   std::vector<CollapsePlan>& plans_;      ///< those going ahead
   std::vector<std::size_t>& outcome_of_;  ///< per plan: its collapse's index
