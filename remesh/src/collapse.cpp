@@ -155,6 +155,7 @@ void collapse(Surface& surface, const std::vector<const CollapsePlan*>& plans) {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 constexpr std::uint32_t kNoStar = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kUnreached = std::numeric_limits<std::uint32_t>::max();
 
 /// The part of the surface the collapses' motions can reach: the triangles around their
 /// ends, and every triangle whose box meets the box one of those sweeps (its corners and
@@ -175,7 +176,9 @@ struct Reach {
     std::vector<std::array<VertexIndex, 4>> swept;          // a moving triangle's corners and `to`
     std::vector<std::uint32_t> swept_triangle;              // its index in the surface
     std::vector<std::array<std::uint32_t, 2>> swept_stars;  // the stars of its moving ends
-    std::vector<bool> reached(s.triangles.size(), false);
+    // Per triangle: kUnreached, or (once reached) its index in the reach, made below.
+    std::vector<std::uint32_t> local_triangle(s.triangles.size(), kUnreached);
+    const auto reached = [&](std::size_t t) { return local_triangle[t] != kUnreached; };
     // The triangles around the collapses' ends, each once (around both ends: the edge's),
     // found from the stars, not by a walk of every triangle. A triangle has the ends of
     // one collapse only (those going ahead share no vertex around their ends).
@@ -189,7 +192,7 @@ struct Reach {
       const std::size_t first_swept = swept.size();
       for (const VertexIndex end : {p->a, p->b}) {
         for (const std::size_t t : around[end]) {
-          if (reached[t]) continue;
+          if (reached(t)) continue;
           const Triangle& tri = s.triangles[t];
           swept.push_back({tri[0], tri[1], tri[2], to});
           swept_triangle.push_back(static_cast<std::uint32_t>(t));
@@ -199,7 +202,7 @@ struct Reach {
               moving[k - first_star] = static_cast<std::uint32_t>(k);
           }
           swept_stars.push_back(moving);
-          reached[t] = true;
+          local_triangle[t] = 0;
         }
       }
       // Near each moving end: every triangle of its collapse (their motions reach beyond
@@ -216,15 +219,14 @@ struct Reach {
     internal::groups_near_triangles<4>(
         points, swept, s.triangles,
         [&](std::size_t g, std::size_t t) {
-          reached[t] = true;
+          local_triangle[t] = 0;
           for (const std::uint32_t k : swept_stars[g])
             if (k != kNoStar) stars[k].near.push_back(static_cast<std::uint32_t>(t));
         },
         4);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
-    const auto local_triangle = std::make_unique_for_overwrite<std::uint32_t[]>(s.triangles.size());
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-      if (!reached[t]) continue;
+      if (!reached(t)) continue;
       ccd::Triangle tri{};
       for (std::size_t k = 0; k < 3; ++k) {
         const VertexIndex v = s.triangles[t][k];
