@@ -112,7 +112,8 @@ class Finder {
       : triangles_(triangles),
         step_(step),
         triangle_seen_(triangles.size(), kUnseen),
-        vertex_seen_(vertex_count, kUnseen) {}
+        vertex_seen_(vertex_count, kUnseen),
+        asked_(kAskedSlots) {}
 
   void around(std::uint32_t star_index, const MovingStar& star) {
     const VertexIndex x = star.vertex;
@@ -144,7 +145,7 @@ class Finder {
       for (const VertexIndex y : t)
         corner_against_faces(star_index, y);
       for (std::size_t j = 0; j < 3; ++j)
-        edge_against_edges(x, t[j], t[(j + 1) % 3]);
+        edge_against_edges(star_index, x, t[j], t[(j + 1) % 3]);
     }
   }
 
@@ -170,6 +171,11 @@ class Finder {
     VertexIndex other;
     Box box;
   };
+  struct Asked {
+    std::uint32_t star = kUnseen;
+    Edge edge{};
+  };
+  static constexpr std::size_t kAskedSlots = 512;  // a choice of cost only
 
   void corner_against_faces(std::uint32_t star_index, VertexIndex y) {
     if (vertex_seen_[y] == star_index) return;
@@ -182,8 +188,9 @@ class Finder {
     }
   }
 
-  void edge_against_edges(VertexIndex x, VertexIndex u, VertexIndex w) {
+  void edge_against_edges(std::uint32_t star_index, VertexIndex x, VertexIndex u, VertexIndex w) {
     if (u == x || w == x) return;  // an edge at x shares x with every edge at x
+    if (asked_before(star_index, edge(u, w))) return;
     const Box e_box = step_.box(u, w);
     if (!meet(e_box, star_box_)) return;
     for (const EdgeAt& e : edges_) {
@@ -192,6 +199,19 @@ class Finder {
       const Edge a = edge(x, e.other), b = edge(u, w);
       found_.edge_edge.push_back(before(a, b) ? ccd::EdgeEdgePair{a, b} : ccd::EdgeEdgePair{b, a});
     }
+  }
+
+  /// Whether edge e was asked in this star already (as it is from its other triangle),
+  /// by the slot its ends hash to, which remembers the last edge that fell in it: a
+  /// repeat whose slot another edge took in between is asked again, and its pairs, found
+  /// twice, are dropped at the end. Asking an edge again finds the same pairs, so passing
+  /// over a repeat loses none.
+  bool asked_before(std::uint32_t star_index, const Edge& e) noexcept {
+    const std::uint32_t hash = e[0] * 0x9E3779B1u ^ e[1] * 0x85EBCA77u;
+    Asked& slot = asked_[(hash >> 16 ^ hash) & (kAskedSlots - 1)];
+    if (slot.star == star_index && slot.edge == e) return true;
+    slot = {star_index, e};
+    return false;
   }
 
   void add_vertex_face(VertexIndex v, std::uint32_t f, const Triangle& face) {
@@ -203,6 +223,7 @@ class Finder {
   const Step& step_;
   std::vector<std::uint32_t> triangle_seen_;  ///< per triangle: the last star it was near
   std::vector<std::uint32_t> vertex_seen_;    ///< per vertex: the last star it was asked in
+  std::vector<Asked> asked_;                  ///< edges asked lately (asked_before)
   std::vector<Around> faces_;                 ///< the star's triangles and their boxes
   std::vector<VertexIndex> others_;           ///< its vertices but x, each once
   std::vector<EdgeAt> edges_;                 ///< its edges at x
