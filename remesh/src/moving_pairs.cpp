@@ -104,8 +104,9 @@ class Step {
 };
 
 /// The pairs met around one moving vertex after another (the header's argument), kept
-/// by the rule, with repeats (a vertex or an edge met through several near triangles, a
-/// pair from both of its moving corners' stars), dropped once at the end.
+/// by the rule. A star asks each near triangle and each of their corners once, and each
+/// of their edges once unless asked_before forgets it; the repeats left (those, and a pair
+/// met from the stars of two of its corners) are dropped once at the end.
 class Finder {
  public:
   Finder(std::span<const Triangle> triangles, const Step& step, std::size_t vertex_count)
