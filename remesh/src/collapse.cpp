@@ -220,8 +220,13 @@ struct Reach {
         points, swept, s.triangles,
         [&](std::size_t g, std::size_t t) {
           local_triangle[t] = 0;
-          for (const std::uint32_t k : swept_stars[g])
-            if (k != kNoStar) stars[k].near.push_back(static_cast<std::uint32_t>(t));
+          // The scan meets t's groups one after another, so a star's repeat of t is mostly
+          // its last (the two trees' walk leaves more repeats, which moving_pairs passes over).
+          for (const std::uint32_t k : swept_stars[g]) {
+            if (k == kNoStar) continue;
+            std::vector<std::uint32_t>& near = stars[k].near;
+            if (near.empty() || near.back() != t) near.push_back(static_cast<std::uint32_t>(t));
+          }
         },
         4);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
