@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -392,6 +393,7 @@ struct CollapsePass::State {
     std::vector<Known> vf_known, ee_known;
     std::vector<Point3> end = start, previous_end;
     std::vector<bool> moved_differently(start.size(), false);
+    std::vector<std::uint8_t> moves(start.size(), 0);  // in this round
     ccd::Options exact;
     exact.method = ccd::Method::exact;
     const auto& global = reach.vertices;  // a reached vertex's index in the surface
@@ -402,7 +404,16 @@ struct CollapsePass::State {
         const std::size_t k = owner_[reach.vertices[i]];
         end[i] = k != kNone && live(k) ? plans_[k].to : start[i];
         moved_differently[i] = end[i] != previous_end[i];
+        moves[i] = end[i] != start[i] ? 1 : 0;
       }
+      // A pair none of whose corners moves in this round (a later round's pair of a refused
+      // collapse) is clear here: whatever CCD found, refuse() would find no live collapse
+      // moving one of its corners to refuse.
+      const auto stands = [&](std::initializer_list<VertexIndex> corners) {
+        for (const VertexIndex c : corners)
+          if (moves[c] != 0) return false;
+        return true;
+      };
       const std::vector<double> t1 = ccd::flat_positions(end);
       const ccd::StepPositions positions{t0, t1};
       if (first_round) {
@@ -423,7 +434,9 @@ struct CollapsePass::State {
             moved_differently[local[2]]) {
           const ccd::VertexFaceQuery query =
               ccd::vertex_face_query(positions, reach.triangles, pair);
-          vf_known[n] = !one_mover_apart(query) && ccd::vertex_face_ccd(query, exact).collision
+          vf_known[n] = !stands({pair.vertex, local[0], local[1], local[2]}) &&
+                                !one_mover_apart(query) &&
+                                ccd::vertex_face_ccd(query, exact).collision
                             ? colliding
                             : clear;
         }
@@ -443,7 +456,9 @@ struct CollapsePass::State {
             moved_differently[pair.a[1]] || moved_differently[pair.b[0]] ||
             moved_differently[pair.b[1]]) {
           const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
-          ee_known[n] = !one_mover_apart(query) && ccd::edge_edge_ccd(query, exact).collision
+          ee_known[n] = !stands({pair.a[0], pair.a[1], pair.b[0], pair.b[1]}) &&
+                                !one_mover_apart(query) &&
+                                ccd::edge_edge_ccd(query, exact).collision
                             ? colliding
                             : clear;
         }
