@@ -432,13 +432,13 @@ struct CollapsePass::State {
         if (vf_known[n] == unknown || moved_differently[pair.vertex] ||
             moved_differently[local[0]] || moved_differently[local[1]] ||
             moved_differently[local[2]]) {
-          const ccd::VertexFaceQuery query =
-              ccd::vertex_face_query(positions, reach.triangles, pair);
-          vf_known[n] = !stands({pair.vertex, local[0], local[1], local[2]}) &&
-                                !one_mover_apart(query) &&
-                                ccd::vertex_face_ccd(query, exact).collision
-                            ? colliding
-                            : clear;
+          vf_known[n] = clear;
+          if (!stands({pair.vertex, local[0], local[1], local[2]})) {
+            const ccd::VertexFaceQuery query =
+                ccd::vertex_face_query(positions, reach.triangles, pair);
+            if (!one_mover_apart(query) && ccd::vertex_face_ccd(query, exact).collision)
+              vf_known[n] = colliding;
+          }
         }
         if (vf_known[n] != colliding) continue;
         changed |= refuse(x, {Blocker::Kind::triangle, t});
@@ -455,12 +455,12 @@ struct CollapsePass::State {
         if (ee_known[n] == unknown || moved_differently[pair.a[0]] ||
             moved_differently[pair.a[1]] || moved_differently[pair.b[0]] ||
             moved_differently[pair.b[1]]) {
-          const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
-          ee_known[n] = !stands({pair.a[0], pair.a[1], pair.b[0], pair.b[1]}) &&
-                                !one_mover_apart(query) &&
-                                ccd::edge_edge_ccd(query, exact).collision
-                            ? colliding
-                            : clear;
+          ee_known[n] = clear;
+          if (!stands({pair.a[0], pair.a[1], pair.b[0], pair.b[1]})) {
+            const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
+            if (!one_mover_apart(query) && ccd::edge_edge_ccd(query, exact).collision)
+              ee_known[n] = colliding;
+          }
         }
         if (ee_known[n] != colliding) continue;
         const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};
