@@ -393,6 +393,17 @@ MUTANTS = [
      "remesh/src/collapse.cpp",
      "if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself",
      "if ((a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) && false) continue;", ["remesh_tests"]),
+    # The collapse pass's pairs: swept boxes that only touch meet
+    # (remesh/src/moving_pairs.cpp) ...
+    ("moving_pairs_boxes_open",
+     "remesh/src/moving_pairs.cpp",
+     "if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;",
+     "if (a.hi[k] <= b.lo[k] || b.hi[k] <= a.lo[k]) return false;", ["remesh_tests"]),
+    # ... and an edge is passed over in a star only when that very edge was asked in it.
+    ("moving_pairs_edge_repeat_by_one_end",
+     "remesh/src/moving_pairs.cpp",
+     "if (slot.star == star_index && slot.edge == e) return true;",
+     "if (slot.star == star_index && slot.edge[0] == e[0]) return true;", ["remesh_tests"]),
     # A split's partner skips only the other side's own triangle (remesh/src/swept_region.cpp).
     ("split_partner_skips_any_triangle_of_its_corners",
      "remesh/src/swept_region.cpp",

@@ -2,17 +2,20 @@
 // pseudo-motion (both ends move there on straight lines while everything else stands).
 //
 // collapse_edge decides one collapse by pair CCD on every pair with a moving corner
-// (first_collision); collapse_edges decides a pass through the mesh broad phase. Both are
-// exact, and the pass agrees with the single collapse on every collapse it does not defer
-// (tested). The surface after the collapse needs no check of its own: a pair of triangles
+// (first_collision); collapse_edges decides a pass through a broad phase around the moving
+// vertices (moving_pairs.hpp) that finds the mesh broad phase's pairs that can collide.
+// Both are exact, and the pass agrees with the single collapse on every collapse it does
+// not defer (tested). The surface after the collapse needs no check of its own: a pair of triangles
 // that intersects there was in contact during the motion, through a vertex-face or an
 // edge-edge pair the motion check decides (docs/remesh.md, "Collapse", has the argument;
 // Collapses.AnEndStateThatIntersectsIsRefusedByTheMotion, the evidence).
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <utility>
@@ -26,6 +29,7 @@
 #include "exactgeo/predicates/segment_triangle.hpp"
 #include "exactgeo/remesh/operations.hpp"
 #include "exactgeo/remesh/pseudo_motion.hpp"
+#include "moving_pairs.hpp"
 #include "one_mover.hpp"
 #include "operation_checks.hpp"
 #include "pair_order.hpp"
@@ -151,36 +155,62 @@ void collapse(Surface& surface, const std::vector<const CollapsePlan*>& plans) {
 }
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+constexpr std::uint32_t kNoStar = std::numeric_limits<std::uint32_t>::max();
+constexpr std::uint32_t kUnreached = std::numeric_limits<std::uint32_t>::max();
 
 /// The part of the surface the collapses' motions can reach: the triangles around their
 /// ends, and every triangle whose box meets the box one of those sweeps (its corners and
 /// its collapse's new point), found by box trees; as a small mesh of its own (triangles
-/// in surface order, over `vertices`, which maps its indices to the surface's). Every
-/// vertex-face or edge-edge pair with a moving corner whose swept boxes meet lies in it:
-/// a static element lies in the box of each of its triangles.
+/// in surface order, over `vertices`, which maps its indices to the surface's), with the
+/// star of each moving end (moving_pairs.hpp) in its indices. Every vertex-face or
+/// edge-edge pair with a moving corner whose swept boxes meet lies in it: a static
+/// element lies in the box of each of its triangles.
 struct Reach {
   std::vector<VertexIndex> vertices;
   std::vector<ccd::Triangle> triangles;
+  std::vector<MovingStar> stars;
 
-  /// `stars`: the triangles around each vertex of `s`.
-  Reach(const Surface& s, const VertexTriangles& stars,
+  /// `around`: the triangles around each vertex of `s`.
+  Reach(const Surface& s, const VertexTriangles& around,
         const std::vector<const CollapsePlan*>& plans) {
     std::vector<Point3> points = s.vertices;
-    std::vector<std::array<VertexIndex, 4>> swept;  // a moving triangle's corners and `to`
-    std::vector<bool> reached(s.triangles.size(), false);
+    std::vector<std::array<VertexIndex, 4>> swept;          // a moving triangle's corners and `to`
+    std::vector<std::uint32_t> swept_triangle;              // its index in the surface
+    std::vector<std::array<std::uint32_t, 2>> swept_stars;  // the stars of its moving ends
+    // Per triangle: kUnreached, or (once reached) its index in the reach, made below.
+    std::vector<std::uint32_t> local_triangle(s.triangles.size(), kUnreached);
+    const auto reached = [&](std::size_t t) { return local_triangle[t] != kUnreached; };
     // The triangles around the collapses' ends, each once (around both ends: the edge's),
     // found from the stars, not by a walk of every triangle. A triangle has the ends of
     // one collapse only (those going ahead share no vertex around their ends).
     for (const CollapsePlan* p : plans) {
       const auto to = static_cast<VertexIndex>(points.size());
       points.push_back(p->to);
+      const std::size_t first_star = stars.size();
       for (const VertexIndex end : {p->a, p->b}) {
-        for (const std::size_t t : stars[end]) {
-          if (reached[t]) continue;
+        if (s.vertices[end] != p->to) stars.push_back({end, {}, {}});
+      }
+      const std::size_t first_swept = swept.size();
+      for (const VertexIndex end : {p->a, p->b}) {
+        for (const std::size_t t : around[end]) {
+          if (reached(t)) continue;
           const Triangle& tri = s.triangles[t];
           swept.push_back({tri[0], tri[1], tri[2], to});
-          reached[t] = true;
+          swept_triangle.push_back(static_cast<std::uint32_t>(t));
+          std::array<std::uint32_t, 2> moving{kNoStar, kNoStar};
+          for (std::size_t k = first_star; k < stars.size(); ++k) {
+            if (std::find(tri.begin(), tri.end(), stars[k].vertex) != tri.end())
+              moving[k - first_star] = static_cast<std::uint32_t>(k);
+          }
+          swept_stars.push_back(moving);
+          local_triangle[t] = 0;
         }
+      }
+      // Near each moving end: every triangle of its collapse (their motions reach beyond
+      // their boxes at rest, which the trees see; another collapse's are apart: plan).
+      for (std::size_t k = first_star; k < stars.size(); ++k) {
+        for (std::size_t g = first_swept; g < swept.size(); ++g)
+          stars[k].near.push_back(swept_triangle[g]);
       }
     }
     // The moving triangles against every triangle: by two trees unless they are fewer than
@@ -188,10 +218,21 @@ struct Reach {
     // scan down their tree pays only when they are few: docs/remesh.md, "What a remesh
     // costs").
     internal::groups_near_triangles<4>(
-        points, swept, s.triangles, [&](std::size_t, std::size_t t) { reached[t] = true; }, 4);
+        points, swept, s.triangles,
+        [&](std::size_t g, std::size_t t) {
+          local_triangle[t] = 0;
+          // The scan meets t's groups one after another, so a star's repeat of t is mostly
+          // its last (the two trees' walk leaves more repeats, which moving_pairs passes over).
+          for (const std::uint32_t k : swept_stars[g]) {
+            if (k == kNoStar) continue;
+            std::vector<std::uint32_t>& near = stars[k].near;
+            if (near.empty() || near.back() != t) near.push_back(static_cast<std::uint32_t>(t));
+          }
+        },
+        4);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-      if (!reached[t]) continue;
+      if (!reached(t)) continue;
       ccd::Triangle tri{};
       for (std::size_t k = 0; k < 3; ++k) {
         const VertexIndex v = s.triangles[t][k];
@@ -201,7 +242,15 @@ struct Reach {
         }
         tri[k] = local[v];
       }
+      local_triangle[t] = static_cast<std::uint32_t>(triangles.size());
       triangles.push_back(tri);
+    }
+    for (MovingStar& star : stars) {
+      for (const std::size_t t : around[star.vertex])
+        star.around.push_back(local_triangle[t]);
+      for (std::uint32_t& t : star.near)
+        t = local_triangle[t];
+      star.vertex = local[star.vertex];
     }
   }
 };
@@ -212,11 +261,12 @@ struct Reach {
 struct CollapsePass::State {
   State(const Surface& surface, PassWorkspace* workspace)
       : surface_(surface),
-        stars_(surface.triangles, surface.vertices.size()),
         kept_(arrays_of(workspace, own_)),
+        stars_(kept_.around),
         plans_(kept_.collapse_plans),
         outcome_of_(kept_.operation_of_plan),
         schedule_(surface.vertices.size()) {
+    stars_.assign(surface.triangles, surface.vertices.size());
     plans_.clear();
     outcome_of_.clear();
     owner_.assign(surface.vertices.size(), kNone);
@@ -313,21 +363,24 @@ struct CollapsePass::State {
     return k != kNone && live(k) && plans_[k].b == v ? plans_[k].a : v;
   }
 
-  /// The motions of the live collapses, checked together by the mesh broad phase over the
-  /// part of the surface they can reach: every collision refuses the collapse whose
+  /// The motions of the live collapses, checked together as one step of the part of the
+  /// surface they can reach: every collision refuses the collapse whose
   /// motion makes it (no moving triangle of one comes near another's: plan), and the rest
   /// is checked again, until a step is clean.
   void refuse_collisions() {
     const Reach reach(surface_, stars_, live_plans());
     if (reach.triangles.empty()) return;
-    ccd::MeshCcd mesh_ccd(reach.vertices.size(), reach.triangles);
     std::vector<Point3> start(reach.vertices.size());
     for (std::size_t i = 0; i < start.size(); ++i)
       start[i] = surface_.vertices[reach.vertices[i]];
     const std::vector<double> t0 = ccd::flat_positions(start);
     // The broad phase's pairs, once, in the order step() reports its collisions: a later
     // round's motions are this one's with refused collapses standing still, whose swept
-    // boxes lie in the first round's, so its colliding pairs are among these. The narrow
+    // boxes lie in the first round's, so its colliding pairs are among these. They are
+    // found around the moving ends (moving_pairs.hpp): the pairs of the mesh broad phase
+    // of the reach (MeshCcd::candidates) whose swept boxes meet exactly, in its order
+    // (the reach's indices); the others it finds (float boxes rounded outward) have boxes
+    // apart, which exact CCD finds clear, and a clear pair decides nothing. The narrow
     // phase (exact, as step() runs it) on those that are not the collapse itself (pairs
     // that share a vertex once each live collapse's ends are merged meet at its new point
     // at the end of the step, by construction: a touch exact CCD spends the most on;
@@ -340,6 +393,7 @@ struct CollapsePass::State {
     std::vector<Known> vf_known, ee_known;
     std::vector<Point3> end = start, previous_end;
     std::vector<bool> moved_differently(start.size(), false);
+    std::vector<std::uint8_t> moves(start.size(), 0);  // in this round
     ccd::Options exact;
     exact.method = ccd::Method::exact;
     const auto& global = reach.vertices;  // a reached vertex's index in the surface
@@ -350,14 +404,20 @@ struct CollapsePass::State {
         const std::size_t k = owner_[reach.vertices[i]];
         end[i] = k != kNone && live(k) ? plans_[k].to : start[i];
         moved_differently[i] = end[i] != previous_end[i];
+        moves[i] = end[i] != start[i] ? 1 : 0;
       }
+      // A pair none of whose corners moves in this round (a later round's pair of a refused
+      // collapse) is clear here: whatever CCD found, refuse() would find no live collapse
+      // moving one of its corners to refuse.
+      const auto stands = [&](std::initializer_list<VertexIndex> corners) {
+        for (const VertexIndex c : corners)
+          if (moves[c] != 0) return false;
+        return true;
+      };
       const std::vector<double> t1 = ccd::flat_positions(end);
       const ccd::StepPositions positions{t0, t1};
       if (first_round) {
-        ccd::MeshCcdOptions one_thread;  // a few collapses' neighbourhoods: no workers
-        one_thread.threads = 1;
-        candidates = mesh_ccd.candidates(positions, one_thread);
-        sort_pairs(candidates);
+        candidates = moving_pairs(reach.triangles, start, end, reach.stars);
         vf_known.assign(candidates.vertex_face.size(), unknown);
         ee_known.assign(candidates.edge_edge.size(), unknown);
       }
@@ -372,11 +432,13 @@ struct CollapsePass::State {
         if (vf_known[n] == unknown || moved_differently[pair.vertex] ||
             moved_differently[local[0]] || moved_differently[local[1]] ||
             moved_differently[local[2]]) {
-          const ccd::VertexFaceQuery query =
-              ccd::vertex_face_query(positions, reach.triangles, pair);
-          vf_known[n] = !one_mover_apart(query) && ccd::vertex_face_ccd(query, exact).collision
-                            ? colliding
-                            : clear;
+          vf_known[n] = clear;
+          if (!stands({pair.vertex, local[0], local[1], local[2]})) {
+            const ccd::VertexFaceQuery query =
+                ccd::vertex_face_query(positions, reach.triangles, pair);
+            if (!one_mover_apart(query) && ccd::vertex_face_ccd(query, exact).collision)
+              vf_known[n] = colliding;
+          }
         }
         if (vf_known[n] != colliding) continue;
         changed |= refuse(x, {Blocker::Kind::triangle, t});
@@ -393,10 +455,12 @@ struct CollapsePass::State {
         if (ee_known[n] == unknown || moved_differently[pair.a[0]] ||
             moved_differently[pair.a[1]] || moved_differently[pair.b[0]] ||
             moved_differently[pair.b[1]]) {
-          const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
-          ee_known[n] = !one_mover_apart(query) && ccd::edge_edge_ccd(query, exact).collision
-                            ? colliding
-                            : clear;
+          ee_known[n] = clear;
+          if (!stands({pair.a[0], pair.a[1], pair.b[0], pair.b[1]})) {
+            const ccd::EdgeEdgeQuery query = ccd::edge_edge_query(positions, pair);
+            if (!one_mover_apart(query) && ccd::edge_edge_ccd(query, exact).collision)
+              ee_known[n] = colliding;
+          }
         }
         if (ee_known[n] != colliding) continue;
         const Blocker a{Blocker::Kind::edge, {ea[0], ea[1], kNoVertex}};
@@ -410,9 +474,9 @@ struct CollapsePass::State {
   }
 
   const Surface& surface_;
-  VertexTriangles stars_;
   PassWorkspace own_;  ///< used when the caller keeps none
   PassWorkspace::Arrays& kept_;
+  VertexTriangles& stars_;  ///< the triangles around each vertex
   std::vector<Outcome> outcomes_;
   std::vector<CollapsePlan>& plans_;      ///< those going ahead
   std::vector<std::size_t>& outcome_of_;  ///< per plan: its collapse's index

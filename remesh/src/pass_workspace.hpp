@@ -16,7 +16,8 @@
 namespace exactgeo::remesh {
 
 struct PassWorkspace::Arrays {
-  EdgeTriangles edges;  ///< split_edges', flip_edges' table of the surface's edges
+  EdgeTriangles edges;     ///< split_edges', flip_edges' table of the surface's edges
+  VertexTriangles around;  ///< a pass of collapses' table of the triangles around each vertex
   std::vector<internal::SplitPlan> split_plans;
   std::vector<internal::FlipPlan> flip_plans;
   std::vector<internal::CollapsePlan> collapse_plans;

@@ -64,19 +64,23 @@ bool EdgeTriangles::has(VertexIndex a, VertexIndex b) const noexcept {
   return false;
 }
 
-VertexTriangles::VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count)
-    : first_(vertex_count + 1, 0) {
+VertexTriangles::VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count) {
+  assign(triangles, vertex_count);
+}
+
+void VertexTriangles::assign(std::span<const Triangle> triangles, std::size_t vertex_count) {
+  first_.assign(vertex_count + 1, 0);
   for (const Triangle& t : triangles) {
     for (const VertexIndex v : t)
       ++first_[v + 1];
   }
   for (std::size_t v = 1; v < first_.size(); ++v)
     first_[v] += first_[v - 1];
-  triangles_.resize(first_.back());
-  std::vector<std::size_t> next(first_.begin(), first_.end() - 1);
+  triangles_.resize(first_.back());  // every entry written below
+  next_.assign(first_.begin(), first_.end() - 1);
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (const VertexIndex v : triangles[t])
-      triangles_[next[v]++] = t;
+      triangles_[next_[v]++] = t;
   }
 }
 

@@ -1,7 +1,7 @@
 // The shared triangle surface's tables (surface/triangle_surface.hpp) against brute force
 // on random triangle sets: the edges each once and sorted, the triangles at an edge, the
-// triangles around a vertex, each in triangle order; an edge table assigned new triangles
-// in the storage of old ones as one made fresh.
+// triangles around a vertex, each in triangle order; an edge table and a vertex table
+// assigned new triangles in the storage of old ones as ones made fresh.
 #include "exactgeo/surface/triangle_surface.hpp"
 
 #include <gtest/gtest.h>
@@ -33,6 +33,7 @@ std::vector<Triangle> random_triangles(std::mt19937_64& rng, std::size_t count,
 TEST(TriangleSurface, TablesAgreeWithBruteForce) {
   auto rng = testing::seeded_engine("surface.tables");
   EdgeTriangles reused;  // assigned each round's triangles, in the storage of the last's
+  VertexTriangles reused_around;
   for (int round = 0; round < 50; ++round) {
     const VertexIndex n = 3 + static_cast<VertexIndex>(rng() % 40);
     const std::vector<Triangle> triangles = random_triangles(rng, 1 + rng() % 60, n);
@@ -48,6 +49,7 @@ TEST(TriangleSurface, TablesAgreeWithBruteForce) {
     const EdgeTriangles at_edge(triangles, n);
     reused.assign(triangles, n);
     const VertexTriangles around(triangles, n);
+    reused_around.assign(triangles, n);
     for (VertexIndex a = 0; a < n; ++a) {
       std::vector<std::size_t> expected_around;
       for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -56,6 +58,9 @@ TEST(TriangleSurface, TablesAgreeWithBruteForce) {
       }
       const auto got = around[a];
       EXPECT_EQ(std::vector<std::size_t>(got.begin(), got.end()), expected_around) << a;
+      const auto again = reused_around[a];
+      EXPECT_EQ(std::vector<std::size_t>(again.begin(), again.end()), expected_around)
+          << a << ", assigned";
       for (VertexIndex b = 0; b < n; ++b) {
         std::vector<std::size_t> expected_at;
         for (const std::size_t t : expected_around) {

@@ -77,8 +77,13 @@ class EdgeTriangles {
 /// allocation each).
 class VertexTriangles {
  public:
+  VertexTriangles() = default;
   /// Precondition: every index below vertex_count.
   VertexTriangles(std::span<const Triangle> triangles, std::size_t vertex_count);
+
+  /// These triangles' table in place of the one held, in the same storage (a caller that
+  /// makes one per pass clears no array of the surface's size but the vertices' starts).
+  void assign(std::span<const Triangle> triangles, std::size_t vertex_count);
 
   /// The triangles with corner v, in triangle order. Precondition: v < vertex_count.
   std::span<const std::size_t> operator[](VertexIndex v) const noexcept {
@@ -88,6 +93,7 @@ class VertexTriangles {
  private:
   std::vector<std::size_t> first_;      ///< per vertex: where its triangles start
   std::vector<std::size_t> triangles_;  ///< triangle indices, bucketed by vertex
+  std::vector<std::size_t> next_;       ///< assign's fill cursor per vertex, kept for its storage
 };
 
 }  // namespace exactgeo
