@@ -194,8 +194,15 @@ void overlapping_groups_by_grid(std::span<const Point3> points,
       common &= beyond[b[j][c]];
     if (common != 0) continue;
     const ExactBox box = exact_box_of<NB>(points, b[j]);
-    const std::array<std::uint32_t, 3> lo = cell_of(box.lower);
-    for_cells(lo, cell_of(box.upper), [&](std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+    const std::array<std::uint32_t, 3> lo = cell_of(box.lower), hi = cell_of(box.upper);
+    if (lo == hi) {  // one cell: each group in it met once
+      const std::size_t c = cell_index(lo[0], lo[1], lo[2]);
+      for (std::uint32_t m = first[c]; m < first[c + 1]; ++m) {
+        if (boxes[members[m]].meets(box)) visit(static_cast<std::size_t>(members[m]), j);
+      }
+      continue;
+    }
+    for_cells(lo, hi, [&](std::uint32_t x, std::uint32_t y, std::uint32_t z) {
       const std::size_t c = cell_index(x, y, z);
       for (std::uint32_t m = first[c]; m < first[c + 1]; ++m) {
         const std::uint32_t i = members[m];
