@@ -43,10 +43,10 @@ class GridAxis {
   /// x's cell, non-decreasing in x: x - origin rounds monotonically (a correctly rounded
   /// difference with a constant keeps the order of its exact values), and so does its
   /// product with per_cell_ > 0 (finite; an overflow to an infinity keeps its side), and
-  /// the truncation of t > 0 clamped to last_ is non-decreasing. t is no NaN: x is finite
-  /// (a group's coordinate), so x - origin is finite or infinite, and per_cell_ is finite.
-  /// With one cell, per_cell_ is 0 and every x, t = 0 (or NaN for an infinite difference),
-  /// goes to cell 0.
+  /// the truncation of t > 0 clamped to last_ is non-decreasing. t is then no NaN: x is
+  /// finite (a group's coordinate), so x - origin is finite or infinite. With one cell,
+  /// per_cell_ is 0 and every x goes to cell 0 (t is 0, or NaN for an infinite
+  /// difference: not above 0 either way).
   std::uint32_t cell(double x) const noexcept {
     const double t = (x - origin_) * per_cell_;
     if (!(t > 0.0)) return 0;
@@ -110,8 +110,9 @@ void overlapping_groups_by_grid(std::span<const Point3> points,
   std::array<double, 3> span{};
   for (int k = 0; k < 3; ++k)
     span[k] = root.upper[k] - root.lower[k];
-  // Cells of side w along each axis wider than w, so that their count is within budget:
-  // w the larger of the mean side and the cube root of the box's volume per cell.
+  // Cells of about side w along each axis, w the larger of the mean side and the side of
+  // a cube (a square, a segment, over the axes the box spans) of the box's volume per cell
+  // of the budget, so that their count stays near the budget.
   double volume = 1.0;
   int spread = 0;  // the axes the box spans
   for (int k = 0; k < 3; ++k) {
