@@ -497,6 +497,15 @@ MUTANTS = [
      "leaf.set_box(j, kNoBox);",
      "leaf.set_box(j, {{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}});",
      ["boxes_tests", "ccd_tests"]),
+    # The exact grid of a pass's regions (boxes/exact_grid.hpp): a pair reported in every
+    # cell both boxes cover, not once; a grid axis's cell not monotone below its origin.
+    ("grid_pair_reported_in_every_shared_cell",
+     "boxes/include/exactgeo/boxes/exact_grid.hpp",
+     "          continue;\n        }\n        if (boxes[i].meets(box))",
+     "        }\n        if (boxes[i].meets(box))", ["boxes_tests"]),
+    ("grid_cell_below_origin_last",
+     "boxes/include/exactgeo/boxes/exact_grid.hpp",
+     "if (!(t > 0.0)) return 0;", "if (!(t > 0.0)) return last_;", ["boxes_tests", "remesh_tests"]),
     # The unit frame's window: labels are exact whatever it is; only speed depends on it.
     ("unit_frame_window_never_entered",
      "predicates/include/exactgeo/predicates/kernel/unit_magnitude.hpp",

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/boxes/exact_grid.hpp"
 #include "exactgeo/boxes/point_groups.hpp"
 #include "exactgeo/predicates/sign.hpp"
 #include "exactgeo/remesh/swept_region.hpp"
@@ -86,7 +87,8 @@ struct CornerPoints {
 };
 
 /// visit(g, t) for every group g of `groups` and triangle t of `triangles` whose boxes
-/// overlap (boxes/point_groups.hpp). A pass's regions or moving triangles are usually far
+/// overlap (boxes/point_groups.hpp): a collapse pass's moving triangles (the split and
+/// flip passes' regions go through the exact grid: first_in_regions). They are usually far
 /// fewer than the surface's triangles: then the triangles are scanned down a tree of the
 /// groups (no tree over the whole surface, built again each pass); otherwise the two trees
 /// are walked. The same pairs either way (the same float boxes), in another order.
@@ -139,6 +141,7 @@ class Buckets {
 /// that checks many passes (PassWorkspace): every member is filled anew before it is read.
 struct RegionQuery {
   RegionPoints boxed;
+  boxes::GridScratch grid;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   Buckets near;
 };

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/boxes/exact_grid.hpp"
 #include "exactgeo/boxes/point_groups.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 #include "exactgeo/predicates/segment_triangle.hpp"
@@ -379,10 +380,11 @@ std::string to_string(const Blocker& blocker) {
 
 namespace {
 
-/// The elements of the surface near one region: the triangles whose boxes meet its box
-/// (found by a box tree), their corners, each once, and their edges (the triangles'
-/// sides). Every element that meets the region has its box meeting the region's box, and
-/// so has a triangle of it; the others are tested and pass. Only what is left after the
+/// The elements of the surface near one region: the triangles whose exact boxes meet its
+/// exact box (found by a grid of the pass's regions, boxes/exact_grid.hpp), their corners,
+/// each once, and their edges (the triangles' sides). Every element that meets the region
+/// has its box meeting the region's box, and so has a triangle of it; the others are
+/// tested and pass. Only what is left after the
 /// separating planes is sorted: first_in reports the least element meeting the region,
 /// in the order first_in_region reports them (vertices by index, then edges by their
 /// ends, then triangles by index).
@@ -659,11 +661,15 @@ std::vector<std::optional<Blocker>> internal::first_in_regions(
     const Surface& surface, std::span<const std::array<RegionCorner, 4>> regions,
     std::span<const VertexIndex> partners, RegionQuery& query, std::span<const Sign> volumes) {
   query.boxed.assign(surface.vertices, regions);
-  // The triangles near each region.
+  // The triangles near each region: those whose exact boxes meet its exact box
+  // (boxes/exact_grid.hpp), every triangle first_in needs (an element that meets the
+  // region has its exact box meeting the region's, and so has every triangle it is
+  // part of).
   query.pairs.clear();
-  internal::groups_near_triangles<4>(
-      query.boxed.points, query.boxed.groups, surface.triangles,
-      [&](std::size_t r, std::size_t t) { query.pairs.emplace_back(r, t); });
+  boxes::overlapping_groups_by_grid<4, 3>(
+      query.boxed.points, std::span<const std::array<VertexIndex, 4>>(query.boxed.groups),
+      std::span<const Triangle>(surface.triangles),
+      [&](std::size_t r, std::size_t t) { query.pairs.emplace_back(r, t); }, query.grid);
   query.near.assign(regions.size(), query.pairs);
   std::vector<std::optional<Blocker>> found;
   found.reserve(regions.size());

@@ -88,9 +88,9 @@ bool regions_meet(const std::array<RegionCorner, 4>& x, const std::array<RegionC
 /// Exact. Precondition: `old` has non-zero area.
 bool turns_over_in_plane(const std::array<Point3, 3>& old, const std::array<Point3, 3>& made);
 
-/// first_in_region for several regions at once: one walk of two box trees (the regions',
-/// the surface's triangles') finds the triangles each region's box reaches, and each
-/// region tests those and their corners and edges only, so that a pass of many
+/// first_in_region for several regions at once: one scan of the surface's triangles
+/// through a grid of the regions' boxes finds the triangles each region's box reaches,
+/// and each region tests those and their corners and edges only, so that a pass of many
 /// operations costs about one pass over the surface. `partners` is empty (none) or holds
 /// one per region.
 std::vector<std::optional<Blocker>> first_in_regions(
