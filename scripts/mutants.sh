@@ -393,13 +393,15 @@ MUTANTS = [
      "remesh/src/collapse.cpp",
      "if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;  // the collapse itself",
      "if ((a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) && false) continue;", ["remesh_tests"]),
-    # The collapse pass's pairs: swept boxes that only touch meet
-    # (remesh/src/moving_pairs.cpp) ...
-    ("moving_pairs_boxes_open",
-     "remesh/src/moving_pairs.cpp",
-     "if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;",
-     "if (a.hi[k] <= b.lo[k] || b.hi[k] <= a.lo[k]) return false;", ["remesh_tests"]),
-    # ... and an edge is passed over in a star only when that very edge was asked in it.
+    # Exact boxes that only touch meet (boxes/exact_box.hpp: the collapse pass's moving
+    # pairs and the split and flip passes' exact grid compare them) ...
+    ("exact_boxes_open",
+     "boxes/include/exactgeo/boxes/exact_box.hpp",
+     "if (upper[k] < other.lower[k] || other.upper[k] < lower[k]) return false;",
+     "if (upper[k] <= other.lower[k] || other.upper[k] <= lower[k]) return false;",
+     ["boxes_tests", "remesh_tests"]),
+    # ... and the collapse pass's moving pairs pass over an edge in a star only when that
+    # very edge was asked in it (remesh/src/moving_pairs.cpp).
     ("moving_pairs_edge_repeat_by_one_end",
      "remesh/src/moving_pairs.cpp",
      "if (slot.star == star_index && slot.edge == e) return true;",

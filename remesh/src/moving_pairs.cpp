@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 
+#include "exactgeo/boxes/exact_box.hpp"
 #include "exactgeo/predicates/kernel/error_free.hpp"
 #include "pair_order.hpp"
 
@@ -16,25 +17,12 @@ namespace {
 
 constexpr std::uint32_t kUnseen = std::numeric_limits<std::uint32_t>::max();
 
-/// A closed box: the least and the greatest coordinates of its points, exactly.
-struct Box {
-  Point3 lo, hi;
-};
+/// Boxes compared exactly, closed (touching counts).
+using Box = boxes::ExactBox;
 
 Box united(Box a, const Box& b) noexcept {
-  for (std::size_t k = 0; k < 3; ++k) {
-    a.lo[k] = std::min(a.lo[k], b.lo[k]);
-    a.hi[k] = std::max(a.hi[k], b.hi[k]);
-  }
+  a.add(b);
   return a;
-}
-
-/// Whether two closed boxes share a point (touching counts).
-bool meet(const Box& a, const Box& b) noexcept {
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (a.hi[k] < b.lo[k] || b.hi[k] < a.lo[k]) return false;
-  }
-  return true;
 }
 
 bool has(const Triangle& t, VertexIndex v) noexcept {
@@ -63,8 +51,8 @@ class Step {
         moving_(std::make_unique_for_overwrite<bool[]>(start.size())) {
     for (std::size_t v = 0; v < start.size(); ++v) {
       for (std::size_t k = 0; k < 3; ++k) {
-        boxes_[v].lo[k] = std::min(start[v][k], end[v][k]);
-        boxes_[v].hi[k] = std::max(start[v][k], end[v][k]);
+        boxes_[v].lower[k] = std::min(start[v][k], end[v][k]);
+        boxes_[v].upper[k] = std::max(start[v][k], end[v][k]);
       }
       moving_[v] = start[v][0] != end[v][0] || start[v][1] != end[v][1] || start[v][2] != end[v][2];
     }
@@ -141,8 +129,8 @@ class Finder {
       triangle_seen_[n] = star_index;
       const Triangle& t = triangles_[n];
       const Box t_box = step_.box(t);
-      if (!meet(t_box, star_box_)) continue;
-      if (!has(t, x) && meet(x_box, t_box)) add_vertex_face(x, n, t);
+      if (!t_box.meets(star_box_)) continue;
+      if (!has(t, x) && x_box.meets(t_box)) add_vertex_face(x, n, t);
       for (const VertexIndex y : t)
         corner_against_faces(star_index, y);
       for (std::size_t j = 0; j < 3; ++j)
@@ -182,10 +170,10 @@ class Finder {
     if (vertex_seen_[y] == star_index) return;
     vertex_seen_[y] = star_index;
     const Box y_box = step_.box(y);
-    if (!meet(y_box, star_box_)) return;
+    if (!y_box.meets(star_box_)) return;
     for (const Around& f : faces_) {
       const Triangle& face = triangles_[f.index];
-      if (!has(face, y) && meet(y_box, f.box)) add_vertex_face(y, f.index, face);
+      if (!has(face, y) && y_box.meets(f.box)) add_vertex_face(y, f.index, face);
     }
   }
 
@@ -193,9 +181,9 @@ class Finder {
     if (u == x || w == x) return;  // an edge at x shares x with every edge at x
     if (asked_before(star_index, edge(u, w))) return;
     const Box e_box = step_.box(u, w);
-    if (!meet(e_box, star_box_)) return;
+    if (!e_box.meets(star_box_)) return;
     for (const EdgeAt& e : edges_) {
-      if (e.other == u || e.other == w || !meet(e_box, e.box)) continue;
+      if (e.other == u || e.other == w || !e_box.meets(e.box)) continue;
       if (step_.rigid({x, e.other, u, w})) continue;
       const Edge a = edge(x, e.other), b = edge(u, w);
       found_.edge_edge.push_back(before(a, b) ? ccd::EdgeEdgePair{a, b} : ccd::EdgeEdgePair{b, a});

@@ -40,8 +40,10 @@ struct ExactBox {
 
   /// Grows the box to hold another.
   void add(const ExactBox& other) noexcept {
-    add(other.lower);
-    add(other.upper);
+    for (int k = 0; k < 3; ++k) {
+      lower[k] = std::min(lower[k], other.lower[k]);
+      upper[k] = std::max(upper[k], other.upper[k]);
+    }
   }
 
   /// p in the closed box.
