@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
+#include "exactgeo/boxes/morton.hpp"
 #include "exactgeo/parallel/blocks.hpp"
 
 namespace exactgeo::inside {
@@ -17,34 +17,23 @@ namespace {
 /// candidate counts).
 constexpr std::size_t kBlock = 512;
 
-/// Bits per axis of the spatial order's Morton codes: 2^10 cells per axis of the points'
-/// box, 30 bits in all. A cost, not a certificate: any order gives the same answers.
-constexpr int kOrderBits = 10;
-
-/// x's cell along one axis of [lower, upper]: the fraction of the way, in 2^kOrderBits
-/// steps, clamped (a non-finite x, or an axis of no length, gives cell 0). Halved first so
-/// that no difference overflows, whatever the points' magnitude.
+/// x's cell along one axis of [lower, upper]: the fraction of the way, in
+/// 2^boxes::kMortonBits steps, clamped (a non-finite x, or an axis of no length, gives cell
+/// 0). Halved first so that no difference overflows, whatever the points' magnitude.
 std::uint32_t cell_of(double x, double lower, double upper) noexcept {
-  constexpr double kCells = 1 << kOrderBits;
+  constexpr double kCells = 1 << boxes::kMortonBits;
   const double extent = upper / 2 - lower / 2;
   const double fraction = (x / 2 - lower / 2) / extent;
   if (!(fraction > 0.0)) return 0;  // also NaN: a non-finite x or extent 0
   return static_cast<std::uint32_t>(std::min(fraction * kCells, kCells - 1));
 }
 
-/// The bits of v (below 2^kOrderBits) spread two apart: bit i moves to bit 3i.
-std::uint64_t spread(std::uint32_t v) noexcept {
-  std::uint64_t x = v;
-  x = (x | (x << 16)) & 0x030000FF;
-  x = (x | (x << 8)) & 0x0300F00F;
-  x = (x | (x << 4)) & 0x030C30C3;
-  x = (x | (x << 2)) & 0x09249249;
-  return x;
-}
-
-/// The points' Morton codes (Z order) through the box of their finite coordinates, each
-/// beside its index.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> morton_codes(std::span<const Point3> points) {
+/// The points' indices along a Morton (Z-order) curve through the box of their finite
+/// coordinates, ties in input order (boxes/morton.hpp: a stable radix sort, a few
+/// instructions a point where a comparison sort took about 200). Consecutive points are
+/// then mostly close, which the boundary tree's carried first cut pays off on
+/// (docs/inside.md, "Points in a spatial order"). Precondition: fewer than 2^32 points.
+std::vector<std::uint32_t> spatial_order(std::span<const Point3> points) {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   Point3 lower{kInf, kInf, kInf}, upper{-kInf, -kInf, -kInf};
   for (const Point3& p : points) {
@@ -54,38 +43,17 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> morton_codes(std::span<cons
       upper[i] = std::max(upper[i], p[i]);
     }
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> codes(points.size());
+  std::vector<std::uint64_t> keys(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
-    std::uint64_t code = 0;
+    std::uint32_t code = 0;
     for (int i = 0; i < 3; ++i)
-      code |= spread(cell_of(points[k][i], lower[i], upper[i])) << i;
-    codes[k] = {static_cast<std::uint32_t>(code), static_cast<std::uint32_t>(k)};
+      code |= boxes::morton_spread(cell_of(points[k][i], lower[i], upper[i])) << i;
+    keys[k] = std::uint64_t{code} << 32 | k;
   }
-  return codes;
-}
-
-/// The points' indices along a Morton (Z-order) curve through the box of their finite
-/// coordinates, ties in input order: a stable radix sort of the codes, kOrderBits bits a
-/// pass (a few instructions a point where a comparison sort took about 200). Consecutive
-/// points are then mostly close, which the boundary tree's carried first cut pays off
-/// on (docs/inside.md, "Points in a spatial order"). Precondition: fewer than 2^32 points.
-std::vector<std::uint32_t> spatial_order(std::span<const Point3> points) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> codes = morton_codes(points),
-                                                       next(codes.size());
-  constexpr std::uint32_t kBuckets = 1u << kOrderBits;
-  for (int shift = 0; shift < 3 * kOrderBits; shift += kOrderBits) {
-    std::vector<std::size_t> start(kBuckets + 1, 0);
-    for (const auto& c : codes)
-      ++start[((c.first >> shift) & (kBuckets - 1)) + 1];
-    for (std::uint32_t b = 0; b < kBuckets; ++b)
-      start[b + 1] += start[b];
-    for (const auto& c : codes)
-      next[start[(c.first >> shift) & (kBuckets - 1)]++] = c;
-    codes.swap(next);
-  }
+  boxes::sort_morton_keys(keys);
   std::vector<std::uint32_t> order(points.size());
-  for (std::size_t k = 0; k < codes.size(); ++k)
-    order[k] = codes[k].second;
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    order[k] = static_cast<std::uint32_t>(keys[k]);
   return order;
 }
 

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "exactgeo/boxes/float_box.hpp"
+#include "exactgeo/boxes/morton.hpp"
 #include "exactgeo/boxes/packet.hpp"
 #include "exactgeo/predicates/point.hpp"
 
@@ -162,18 +163,6 @@ class BoxTree {
     return c;
   }
 
-  /// Bits per axis of the Morton codes: 2^10 cells per axis, 30 bits in all.
-  static constexpr int kMortonBits = 10;
-
-  /// x's low 10 bits spread out to every third bit (bit i to bit 3 i).
-  static std::uint32_t spread(std::uint32_t x) noexcept {
-    x = (x | (x << 16)) & 0x030000FFu;
-    x = (x | (x << 8)) & 0x0300F00Fu;
-    x = (x | (x << 4)) & 0x030C30C3u;
-    x = (x | (x << 2)) & 0x09249249u;
-    return x;
-  }
-
   /// Each primitive as (Morton code << 32 | index), sorted: by code, ties by index. A
   /// centre that is not finite, or an axis whose centres' spread is not, gives cell 0 (a
   /// worse tree, never a wrong one: any order of the primitives makes a correct tree).
@@ -201,28 +190,12 @@ class BoxTree {
       for (int k = 0; k < 3; ++k) {
         const float cell = (centre[i][k] - lo[k]) * cells_per_unit[k];
         const float clamped = cell >= 0 ? std::min(cell, kCells - 1) : 0.0f;  // NaN: cell 0
-        code |= spread(static_cast<std::uint32_t>(clamped)) << k;
+        code |= morton_spread(static_cast<std::uint32_t>(clamped)) << k;
       }
       keys[i] = std::uint64_t{code} << 32 | i;
     }
-    radix_sort_codes(keys);
+    sort_morton_keys(keys);
     return keys;
-  }
-
-  /// Sorts keys by their high 32 bits (codes of 3 kMortonBits bits), stably: keys made in
-  /// index order stay in index order among equal codes. Three passes of ten bits.
-  static void radix_sort_codes(std::vector<std::uint64_t>& keys) {
-    std::vector<std::uint64_t> other(keys.size());
-    for (int shift = 32; shift < 32 + 3 * kMortonBits; shift += kMortonBits) {
-      std::array<std::size_t, (1 << kMortonBits) + 1> start{};
-      for (const std::uint64_t key : keys)
-        ++start[(key >> shift & ((1u << kMortonBits) - 1)) + 1];
-      for (std::size_t d = 1; d < start.size(); ++d)
-        start[d] += start[d - 1];
-      for (const std::uint64_t key : keys)
-        other[start[key >> shift & ((1u << kMortonBits) - 1)]++] = key;
-      keys.swap(other);
-    }
   }
 
   /// Makes order[begin, end) (Morton order) a subtree and returns its root's index.
