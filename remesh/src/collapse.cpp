@@ -213,23 +213,18 @@ struct Reach {
           stars[k].near.push_back(swept_triangle[g]);
       }
     }
-    // The moving triangles against every triangle: by two trees unless they are fewer than
-    // a quarter of the triangles (the reach's groups cluster around the collapses, and a
-    // scan down their tree pays only when they are few: docs/remesh.md, "What a remesh
-    // costs").
-    internal::groups_near_triangles<4>(
-        points, swept, s.triangles,
-        [&](std::size_t g, std::size_t t) {
-          local_triangle[t] = 0;
-          // The scan meets t's groups one after another, so a star's repeat of t is mostly
-          // its last (the two trees' walk leaves more repeats, which moving_pairs passes over).
-          for (const std::uint32_t k : swept_stars[g]) {
-            if (k == kNoStar) continue;
-            std::vector<std::uint32_t>& near = stars[k].near;
-            if (near.empty() || near.back() != t) near.push_back(static_cast<std::uint32_t>(t));
-          }
-        },
-        4);
+    // The moving triangles against every triangle (region_points.hpp). The scan meets a
+    // triangle's groups one after another, so a star's repeat of it is mostly its last (the
+    // two trees' walk leaves more repeats, which moving_pairs passes over).
+    const auto near_moving = [&](std::size_t g, std::size_t t) {
+      local_triangle[t] = 0;
+      for (const std::uint32_t k : swept_stars[g]) {
+        if (k == kNoStar) continue;
+        std::vector<std::uint32_t>& near = stars[k].near;
+        if (near.empty() || near.back() != t) near.push_back(static_cast<std::uint32_t>(t));
+      }
+    };
+    internal::groups_near_triangles<4>(points, swept, s.triangles, near_moving);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
       if (!reached(t)) continue;

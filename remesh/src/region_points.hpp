@@ -23,12 +23,6 @@ struct RegionPoints {
   std::vector<Point3> points;
   std::vector<std::array<VertexIndex, 4>> groups;
 
-  RegionPoints() = default;
-  RegionPoints(std::span<const Point3> vertices,
-               std::span<const std::array<RegionCorner, 4>> regions) {
-    assign(vertices, regions);
-  }
-
   /// These points and groups in place of the ones held, in the same storage.
   void assign(std::span<const Point3> vertices,
               std::span<const std::array<RegionCorner, 4>> regions) {
@@ -86,19 +80,20 @@ struct CornerPoints {
   }
 };
 
-/// visit(g, t) for every group g of `groups` and triangle t of `triangles` whose boxes
-/// overlap (boxes/point_groups.hpp): a collapse pass's moving triangles (the split and
-/// flip passes' regions go through the exact grid: first_in_regions). They are usually far
-/// fewer than the surface's triangles: then the triangles are scanned down a tree of the
-/// groups (no tree over the whole surface, built again each pass); otherwise the two trees
-/// are walked. The same pairs either way (the same float boxes), in another order.
-/// `fewer`: the triangles per group above which the scan is taken (a choice of cost only).
+/// visit(g, t) for every group g of `groups` (a collapse pass's moving triangles) and
+/// triangle t of `triangles` whose boxes overlap (boxes/point_groups.hpp); the split and
+/// flip passes' regions go through the exact grid instead (first_in_regions). While the
+/// groups are fewer than a quarter of the triangles, the triangles are scanned down a tree
+/// of the groups (no tree over the whole surface, built again each pass: the groups cluster
+/// around the collapses); otherwise the two trees are walked. The same pairs either way
+/// (the same float boxes), in another order. The quarter is a choice of cost only
+/// (docs/remesh.md, "What a remesh costs").
 template <std::size_t N, class Visit>
 void groups_near_triangles(std::span<const Point3> points,
                            std::span<const std::array<VertexIndex, N>> groups,
-                           std::span<const Triangle> triangles, Visit&& visit,
-                           std::size_t fewer = 16) {
-  if (fewer * groups.size() < triangles.size()) {
+                           std::span<const Triangle> triangles, Visit&& visit) {
+  constexpr std::size_t kFewer = 4;  // triangles per group above which the scan is taken
+  if (kFewer * groups.size() < triangles.size()) {
     boxes::overlapping_groups_by_scan<N, 3>(points, groups, triangles, visit);
   } else {
     boxes::overlapping_groups<N, 3>(points, groups, triangles, visit);
