@@ -65,14 +65,14 @@ bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double le
 }
 
 std::optional<bool> clearly_beyond_half_turn(double cross1, double dot1, double cross2, double dot2,
-                                             double slack) {
+                                             double tan_slack) {
   constexpr double kMargin = 1e-9;
   const double m = (cross1 + std::abs(dot1)) * (cross2 + std::abs(dot2));
   if (!(cross1 >= 0.0) || !(cross2 >= 0.0) || !usable(m)) return std::nullopt;
   const double s = cross1 * dot2 + dot1 * cross2;  // N sin(alpha + beta)
   const double c = dot1 * dot2 - cross1 * cross2;  // N cos(alpha + beta)
   const double margin = kMargin * m;
-  const double beyond = c < 0.0 ? std::tan(slack) * c - s : -s;
+  const double beyond = c < 0.0 ? tan_slack * c - s : -s;
   if (beyond > margin) return true;
   if (beyond < -margin) return false;
   return std::nullopt;

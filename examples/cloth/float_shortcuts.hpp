@@ -54,8 +54,9 @@ bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double le
 
 /// Whether two angles, atan2(cross1, dot1) + atan2(cross2, dot2) (cross1, cross2 >= 0: each
 /// in [0, pi], a corner's of a triangle, from its sides' cross and dot products), sum to
-/// more than pi + slack (slack >= 0, below a quarter turn), decided without atan2 where it
-/// is clear; nullopt otherwise (then atan2 decides). The sum less pi is the angle theta of
+/// more than pi + slack (slack >= 0, below a quarter turn; given as tan_slack = tan(slack),
+/// which a caller asking for many edges works out once), decided without atan2 where it is
+/// clear; nullopt otherwise (then atan2 decides). The sum less pi is the angle theta of
 /// (-s, -c), s = cross1 dot2 + dot1 cross2 and c = dot1 dot2 - cross1 cross2 (N sin and N
 /// cos of the sum, N the four sides' lengths' product): for c < 0, theta is within a
 /// quarter turn of 0 and theta - slack has the sign of t c - s (N sin(theta - slack) /
@@ -64,6 +65,6 @@ bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double le
 /// (cross2 + |dot2|) >= N: then theta lies at least 1e-9 from slack, far beyond the few
 /// ulps by which the products and the full computation's atan2 round.
 std::optional<bool> clearly_beyond_half_turn(double cross1, double dot1, double cross2, double dot2,
-                                             double slack);
+                                             double tan_slack);
 
 }  // namespace exactgeo::cloth

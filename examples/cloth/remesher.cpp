@@ -135,11 +135,12 @@ std::array<double, 2> material_corner(const Work& w, VertexIndex a, VertexIndex 
 
 /// Whether edge ab, with opposite corners c and d, is not Delaunay in the material: the
 /// angles at c and d sum to more than pi + kDelaunaySlack (decided without atan2 where
-/// clearly_beyond_half_turn can: float_shortcuts.hpp).
-bool not_delaunay(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d) {
+/// clearly_beyond_half_turn can: float_shortcuts.hpp; `tan_slack` is tan(kDelaunaySlack)).
+bool not_delaunay(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c, VertexIndex d,
+                  double tan_slack) {
   const auto [cross_c, dot_c] = material_corner(w, a, b, c);
   const auto [cross_d, dot_d] = material_corner(w, a, b, d);
-  if (const auto clear = clearly_beyond_half_turn(cross_c, dot_c, cross_d, dot_d, kDelaunaySlack))
+  if (const auto clear = clearly_beyond_half_turn(cross_c, dot_c, cross_d, dot_d, tan_slack))
     return *clear;
   return std::atan2(cross_c, dot_c) + std::atan2(cross_d, dot_d) >
          std::numbers::pi + kDelaunaySlack;
@@ -397,11 +398,12 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
 
 bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
   std::vector<Edge> flips;
+  const double tan_slack = std::tan(kDelaunaySlack);  // once, not per edge
   for (const SheetEdge& e : tables.edges(w)) {
     if (!e.right) continue;
     const VertexIndex c = remesh::third_corner(w.surface.triangles[e.left], e.a, e.b);
     const VertexIndex d = remesh::third_corner(w.surface.triangles[*e.right], e.a, e.b);
-    if (!not_delaunay(w, e.a, e.b, c, d)) continue;
+    if (!not_delaunay(w, e.a, e.b, c, d, tan_slack)) continue;
     // The new triangles c a d and d b c must turn as the old a b c does.
     const double old_turn = material_area(w, e.a, e.b, c);
     if (!(material_area(w, c, e.a, d) * old_turn > 0.0) ||

@@ -163,7 +163,8 @@ TEST(FloatShortcuts, AHalfTurnIsExceededAsTheAnglesSumSays) {
                                     std::min(sum, std::numbers::pi));
     const auto [cross1, dot1] = corner(first, scale);
     const auto [cross2, dot2] = corner(sum - first, scale);
-    const std::optional<bool> clear = clearly_beyond_half_turn(cross1, dot1, cross2, dot2, kSlack);
+    const std::optional<bool> clear =
+        clearly_beyond_half_turn(cross1, dot1, cross2, dot2, std::tan(kSlack));
     const bool full =
         std::atan2(cross1, dot1) + std::atan2(cross2, dot2) > std::numbers::pi + kSlack;
     beyond += full;
