@@ -53,6 +53,7 @@
 #include "support/hexahedron.hpp"
 #include "support/polygon_oracle.hpp"
 #include "support/rational_oracle.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -241,10 +242,7 @@ TEST_P(OpenTriangles, GeneralizedWindingNumbersHoldTheDefinitionsValue) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, OpenTriangles, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 TEST(OpenPatches, LabelsAndValuesAreThoseOfTheDecomposition) {
   auto rng = testing::seeded_engine("inside.open.patches");

@@ -30,6 +30,7 @@
 #include "oracle_label.hpp"
 #include "oracle_triangles.hpp"
 #include "support/hexfloat.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -137,10 +138,7 @@ TEST_P(SpotWithFacesCut, LabelsAreThoseOfTheDefinition) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, SpotWithFacesCut, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 TEST(OpenTree, ARibbonWithTenThousandRimEdges) {
   auto rng = testing::seeded_engine("inside.open_tree.ribbon");
@@ -166,10 +164,7 @@ TEST_P(HoledSphereThreeTimes, LabelsAreThoseOfTheDefinition) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, HoledSphereThreeTimes, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 class PerforatedSheet : public ::testing::TestWithParam<int> {};
 
@@ -192,10 +187,7 @@ TEST_P(PerforatedSheet, LabelsAreThoseOfTheDefinition) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, PerforatedSheet, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 class OpenBoxOfQuads : public ::testing::TestWithParam<int> {};
 
@@ -223,10 +215,7 @@ TEST_P(OpenBoxOfQuads, PointsInTheHoleAreUndecidedAndOneUlpOffAreDecided) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, OpenBoxOfQuads, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::inside::open_tree

@@ -59,6 +59,7 @@
 #include "support/hexahedron.hpp"
 #include "support/polygon_oracle.hpp"
 #include "support/rational_oracle.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -180,10 +181,7 @@ TEST_P(ZeroAreaFaces, AreDroppedAndChangeNoLabel) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, ZeroAreaFaces, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 TEST(ZeroAreaFaces, EveryFaceOfZeroAreaIsRefused) {
   Mesh mesh;
@@ -374,10 +372,7 @@ TEST_P(ZeroAreaBesideOpen, PointsOnASliversEdgeAreLabelledAsWithoutIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, ZeroAreaBesideOpen, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::inside::zero_area_beside_open

@@ -29,6 +29,7 @@
 #include "oracle_label.hpp"
 #include "oracle_triangles.hpp"
 #include "support/hexfloat.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -37,11 +38,6 @@ namespace {
 
 using mesh::Mesh;
 using testing::Triangle;
-
-std::string scale_name(const ::testing::TestParamInfo<int>& param_info) {
-  const int k = param_info.param;
-  return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-}
 
 struct Tally {
   std::size_t points = 0;
@@ -197,7 +193,7 @@ TEST_P(OpenSpaceCellsAtScale, AFlatHoleIsNeverLabelled) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, OpenSpaceCellsAtScale, ::testing::Values(0, 1000, -1000),
-                         scale_name);
+                         exactgeo::testing::scale_name);
 
 TEST(OpenSpaceCells, ARibbonWithTenThousandRimEdges) {
   auto rng = testing::seeded_engine("inside.open_cells.ribbon");

@@ -23,6 +23,7 @@
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "support/generators.hpp"
 #include "support/rational_oracle.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -237,7 +238,7 @@ TEST_P(BoundaryTermScales, RaysThroughAnEndOfAnEdgeMeetTheEdge) {
 /// whose edges are in the boundary chain, the first ray from (1, 1, 1) passing exactly
 /// through its corner (9, 5/2, 41/32).
 TEST(BoundaryTerm, ARayThroughTheCornerOfACollinearTriangleMeetsItsEdge) {
-  const std::vector<Point3> v{{0, 0, 0},        {4, 0, 0},        {0, 4, 0},
+  const std::vector<Point3> v{{0, 0, 0},         {4, 0, 0},          {0, 4, 0},
                               {9, 2.5, 1.28125}, {10, 2.5, 1.28125}, {11, 2.5, 1.28125}};
   const std::vector<BoundaryEdge> chain{{0, 1, 1}, {1, 2, 1}, {2, 0, 1},
                                         {3, 4, 1}, {4, 5, 1}, {5, 3, 1}};
@@ -261,10 +262,7 @@ TEST(BoundaryTerm, ARayThroughTheCornerOfACollinearTriangleMeetsItsEdge) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, BoundaryTermScales, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 TEST(BoundaryTerm, ARayThroughABoundaryEdgeIsNamed) {
   // The ray from p along r = (1, 3/16, 9/256) reaches the edge's midpoint m exactly.

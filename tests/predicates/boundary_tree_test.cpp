@@ -26,6 +26,7 @@
 
 #include "exactgeo/predicates/ray_directions.hpp"
 #include "support/hexfloat.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -189,10 +190,7 @@ TEST_P(BoundaryTreeChains, EnclosuresHoldTheOraclesTerm) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, BoundaryTreeChains, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 /// An arc of n edges of the unit circle in the plane z = 0, from angle 0 to 3 pi / 2,
 /// counter-clockwise: its box is [-1, 1]^2 x {0}, whose centre (the origin) is the
@@ -384,10 +382,7 @@ TEST_P(BoundaryTreeLevels, SettledLevelsAreOnTheOraclesSide) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, BoundaryTreeLevels, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 TEST(BoundaryTree, RaysThroughFarNodesAreSummedEdgeByEdge) {
   // A point far from a small loop, its ray aimed through the loop's disc: the ray meets

@@ -21,6 +21,7 @@
 
 #include "exactgeo/predicates/boundary_tree.hpp"
 #include "support/hexfloat.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/solid_angle_oracle.hpp"
 
@@ -222,10 +223,7 @@ TEST_P(VariationAtScale, NearLeavesOnARingAreBoundedEdgeByEdgeAndTightly) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, VariationAtScale, ::testing::Values(0, 40, -40),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::boundary_tree_variation_test

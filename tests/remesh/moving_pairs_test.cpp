@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::remesh {
@@ -214,10 +215,7 @@ TEST_P(MovingPairs, FindsExactlyThePairsOfTheRule) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, MovingPairs, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::remesh

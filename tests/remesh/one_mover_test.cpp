@@ -21,6 +21,7 @@
 #include "exactgeo/ccd/ccd.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 #include "remesh/hull_oracle.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 
 namespace exactgeo::remesh {
@@ -132,10 +133,7 @@ TEST_P(OneMover, NeverApartWhenTwoCornersOrNoneMove) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, OneMover, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::remesh

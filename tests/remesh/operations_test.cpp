@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scale_names.hpp"
+
 #include <array>
 #include <cmath>
 #include <set>
@@ -81,10 +83,7 @@ TEST(OperationsVerdicts, NamesAreDistinctAndOnlyAppliedIsApplied) {
 // The one instantiation of the Operations fixture (two_sheets.hpp): it covers the TEST_Ps
 // of every file of remesh_tests.
 INSTANTIATE_TEST_SUITE_P(Scales, Operations, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::remesh

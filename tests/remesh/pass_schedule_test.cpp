@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "remesh/hull_oracle.hpp"
+#include "support/scale_names.hpp"
 #include "support/seed.hpp"
 #include "support/segment_triangle_oracle.hpp"
 
@@ -310,10 +311,7 @@ TEST(PassScheduleVertices, ShareNoVertexIsGoAheadWithoutRegions) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, PassSchedule, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::remesh

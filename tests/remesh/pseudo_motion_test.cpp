@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/scale_names.hpp"
+
 #include <array>
 #include <cmath>
 #include <optional>
@@ -156,10 +158,7 @@ TEST_P(PseudoMotions, AnEdgeRisingThroughAStandingEdgeNamesIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scales, PseudoMotions, ::testing::Values(0, 1000, -1000),
-                         [](const ::testing::TestParamInfo<int>& param_info) {
-                           const int k = param_info.param;
-                           return (k < 0 ? "scale_2m" : "scale_2p") + std::to_string(std::abs(k));
-                         });
+                         exactgeo::testing::scale_name);
 
 }  // namespace
 }  // namespace exactgeo::remesh
