@@ -1,0 +1,149 @@
+#pragma once
+
+// A prototype: the generalized winding number of an open surface through a fixed cap
+// instead of the ray's cone (boundary_term.hpp, boundary_tree.hpp), measured against the
+// boundary tree in docs, not used by the classifier.
+//
+// The cap. The boundary chain of a surface F (mesh/boundary_chain.hpp: edges a -> b with
+// multiplicities, a closed 1-chain) splits into closed loops: walk unused edges until the
+// walk returns to a vertex it holds, and cut off the loop it closed (every vertex of a
+// closed chain has as much entering as leaving, so a walk can only stop where it began).
+// Each loop v_0 -> v_1 -> ... -> v_n = v_0 is triangulated with its own vertices by
+// recursive halving: the triangle (v_i, v_j, v_k), k = (i + j) / 2, then the ranges
+// [i, k] and [k, j], from [0, n]. The triangles over [i, j] have the boundary
+// v_i -> v_j minus the path v_i -> ... -> v_j (by induction: the triangle's edges
+// v_i -> v_j, v_j -> v_k, v_k -> v_i cancel the halves' chords v_i -> v_k and v_k -> v_j
+// and leave v_i -> v_j), so over [0, n] (whose chord v_0 -> v_0 is nothing) the boundary
+// is minus the loop: F + Cap has every edge balanced, a closed 2-chain. Equal triangles
+// are merged (a rim run twice gives its cap's triangles multiplicity 2), and triangles
+// with corners on one line (repeated ones included) left out: they have no area, and no
+// solid angle. The halving keeps the triangles of a range near the range's vertices, so
+// that a node's triangles are compact where the rim is.
+//
+// The identity. For p on neither F nor the cap, w_F(p) + w_Cap(p) = w_{F+Cap}(p) is an
+// integer: the signed crossing count S of any ray from p that meets F and the cap
+// transversally (exact predicates). So w_F = S - w_Cap, with no ray in w_Cap: no cones,
+// no chords, no ray-box test. A label against the levels +-1/2 needs w_Cap only as far as
+// the half-integer k - 1/2 or k + 1/2 nearest it: an enclosure of w_Cap strictly between
+// two consecutive half-integers decides w = S - w_Cap against +-1/2 for every integer S.
+//
+// Far nodes. A cluster of cap triangles in a box B at distance d from p has
+// |sum m Omega| <= F / d^2, F = sum |m| area (a triangle's solid angle is the integral
+// of n.(y - p) / |y - p|^3 over it), and the second-order expansion about the box's
+// centre c, M.g(c) + sum_ij Dg(c)_ij Q_ij with M = sum m (vector area) and
+// Q_ij = sum m (vector area)_i (centroid - c)_j (exact for flat triangles: n is constant
+// on each), within 3 rho^2 F / d^4 (boundary_tree.hpp, "Second order": the same
+// argument, over these triangles instead of a fan). In half angles, as summed, half of
+// each. The rest is BoundaryTree's: a first cut of far nodes whose bound is at most a
+// radian (and leaves' triangles), then the far node of largest bound opened until the
+// enclosure settles.
+//
+// Certified. Per node F rounded up, M and Q as midpoints of outward-rounded intervals
+// with bounds on their distance from the exact ones, d^2 from below (box_distance.hpp),
+// each leaf triangle's half angle in plain doubles with an a priori error bound
+// (cap_tree.cpp derives it; near its branch cut, p near the triangle itself, the exact
+// sign of det[a - p, b - p, c - p] says on which side p is). The tree is for inputs of
+// magnitude 1 as BoundaryTree is (areas and d^2 in the doubles' range; the classifier
+// would build it in its unit frame): far from it every node is near and the query sums
+// every triangle, or gives up.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "exactgeo/predicates/boundary_term.hpp"
+#include "exactgeo/predicates/point.hpp"
+
+namespace exactgeo {
+
+/// A cap triangle (a, b, c), indexing the surface's vertices, counted `multiplicity`
+/// times (nonzero, either sign).
+struct CapTriangle {
+  VertexIndex a = 0, b = 0, c = 0;
+  std::int32_t multiplicity = 1;
+};
+
+/// The cap of a closed boundary chain (above): triangles on the chain's own vertices
+/// whose boundary is minus the chain. Throws std::invalid_argument where the chain is
+/// not closed (a vertex with more entering than leaving). Precondition: edges index into
+/// `vertices`, finite coordinates.
+std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
+                                       std::span<const BoundaryEdge> edges);
+
+/// The most triangles a leaf holds.
+inline constexpr std::uint32_t kCapTreeLeafTriangles = 4;
+
+class CapTree {
+ public:
+  /// The triangles, their corners copied into the tree.
+  CapTree(std::span<const Point3> vertices, std::span<const CapTriangle> triangles);
+  CapTree() = default;
+
+  bool empty() const noexcept { return nodes_.empty(); }
+  std::size_t triangle_count() const noexcept { return triangles_.size(); }
+  std::size_t node_count() const noexcept { return nodes_.size(); }
+
+  /// A point's refinement: its far nodes, and the counts of the last query.
+  struct Refinement {
+    struct Far {
+      double bound = 0.0;  ///< radians of half angle
+      double value = 0.0;  ///< its expansion (0 without), in the sum
+      std::uint32_t node = 0;
+      bool expanded = false;
+    };
+    std::vector<Far> heap;  ///< a max-heap by bound
+    std::vector<std::uint32_t> stack;
+    /// The first cut (radians of half angle): a cost, not a certificate.
+    double first_cut = 1.0;
+    std::size_t tested = 0;      ///< nodes tested as far nodes
+    std::size_t triangles = 0;   ///< leaf triangles whose angle was computed
+    std::size_t far_nodes = 0;   ///< far nodes in the final cut
+    std::size_t expansions = 0;  ///< far nodes taken with their expansion, ever
+    std::size_t opened = 0;      ///< far nodes opened after the first cut
+  };
+
+  /// Bounds, in turns, on w_Cap(p) = (1/4 pi) sum m Omega(p; a, b, c) over the
+  /// triangles, refined until they lie strictly between two consecutive half-integers
+  /// k - 1/2 < lower <= upper < k + 1/2; nullopt where that cannot be done (p within
+  /// rounding of a triangle, or every node opened and still not).
+  std::optional<Enclosure> enclosure_apart(const Point3& point, Refinement& scratch) const;
+
+  /// Bounds, in turns, on w_Cap(p), refined until at most `width` turns apart or every
+  /// node is open; nullopt where p lies within rounding of a triangle.
+  std::optional<Enclosure> enclosure(const Point3& point, double width, Refinement& scratch) const;
+
+ private:
+  struct Node {
+    Point3 lower{}, upper{};
+    std::uint32_t first = 0, count = 0;  // its triangles: triangles_[first, first + count)
+    std::uint32_t left = 0, right = 0;   // children; 0 for a leaf
+    double fan = 0.0;                    // F, rounded up
+    double two_fan = 0.0;                // 2 F rounded up: the quick test's
+    Point3 centre{};
+    Vector3 moment{};
+    std::array<double, 6> quad{};
+    double moment_error = 0.0, moment_size = 0.0, quad_error = 0.0, quad_size = 0.0;
+    double reach = 0.0;
+    bool expansion = false;
+    double reach4 = 0.0, second_fan = 0.0, second_moment = 0.0, second_quad = 0.0;
+  };
+  struct Triangle {
+    Point3 a{}, b{}, c{};
+    double multiplicity = 1.0;
+  };
+  struct Refined {
+    double lower = 0.0, upper = 0.0;  // radians of half angle
+  };
+  std::uint32_t build(std::uint32_t first, std::uint32_t count);
+  void set_expansion(Node& node) const;
+  template <class Done>
+  std::optional<Refined> refine(const Point3& point, Refinement& r, const Done& done) const;
+
+  std::vector<Triangle> triangles_;
+  std::vector<Node> nodes_;
+};
+
+}  // namespace exactgeo
