@@ -68,7 +68,7 @@ double area_above(const Point3& a, const Point3& b, const Point3& c) noexcept {
 //  - Underflows lose at most 2^-1075 per operation on numbers of magnitude below 8,
 //    far below the 2^-1000 added to both bounds.
 //  - Then as there: the exact (N*, D*) lies within E = |dN| + |dD| of the computed point;
-//    where E <= r / 4 (r = |(N, D)| from below) and the segment between them does not
+//    where E <= r / 4 (r = max(|N|, |D|), at most |(N, D)|) and the segment between them does not
 //    cross the branch cut (|N| > |dN|, or D > |dD|), the half angles differ by at most
 //    (4/3) E / r; where D < -|dD|, the exact sign of N* (orient3d(p, a, b, c)) is given to
 //    N; kArctanError for the arctangent. The branch cut is where p lies on the triangle
@@ -113,10 +113,10 @@ struct HalfAngle {
   const double den = length + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
   const double num_error = kNumError * length + kTiny;
   const double den_error = kDenError * length + kTiny;
-  // (As half_angle: r from below, 2.5u of rounding under the 4u taken off.)
-  const double radius2 = num * num + den * den;
-  if (!(radius2 >= 0x1p-1000)) return std::nullopt;
-  const double radius = std::sqrt(radius2) * (1 - 4 * kU);
+  // r = max(|N|, |D|), exact, at most |(N, D)|: any r at most the distance from the
+  // origin serves (the segment then stays at least 3r/4 from it), and this one needs no
+  // square root (half_angle's is at most sqrt 2 times larger).
+  const double radius = std::max(std::abs(num), std::abs(den));
   const double e = num_error + den_error;
   if (!(e <= radius / 4)) return std::nullopt;
   if (!(std::abs(num) > num_error) && !(den > den_error)) {
@@ -128,8 +128,8 @@ struct HalfAngle {
   return HalfAngle{internal::arctan2(num, den), (4.0 / 3.0) * e / radius + internal::kArctanError};
 }
 
-/// The triangles of the loop's range [i, j] (recursive halving, cap_tree.hpp); vertex n
-/// is vertex 0.
+/// The triangles of the loop's range [i, j] (recursive halving, cap_tree.hpp), in
+/// pre-order (the range's own triangle, then its halves'); vertex n is vertex 0.
 void halve(std::span<const VertexIndex> loop, std::size_t i, std::size_t j,
            std::vector<CapTriangle>& out) {
   if (j - i < 2) return;
@@ -140,11 +140,10 @@ void halve(std::span<const VertexIndex> loop, std::size_t i, std::size_t j,
   halve(loop, k, j, out);
 }
 
-}  // namespace
-
-std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
-                                       std::span<const BoundaryEdge> edges) {
-  // The closed loops: walk unused edges, cutting off each loop the walk closes.
+/// The chain's closed loops, each as its vertices v_0, ..., v_{n-1} (the edge v_{n-1} ->
+/// v_0 closing it): walk unused edges, cutting off each loop the walk closes.
+std::vector<std::vector<VertexIndex>> loops_of(std::span<const Point3> vertices,
+                                               std::span<const BoundaryEdge> edges) {
   std::vector<std::int64_t> remaining(edges.size()), delta(vertices.size(), 0);
   std::vector<std::vector<std::uint32_t>> leaving(vertices.size());
   std::vector<BoundaryEdge> oriented(edges.begin(), edges.end());
@@ -163,7 +162,7 @@ std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
   if (std::any_of(delta.begin(), delta.end(), [](std::int64_t d) { return d != 0; })) {
     throw std::invalid_argument("cap_triangles: the boundary chain is not closed");
   }
-  std::vector<CapTriangle> raw;
+  std::vector<std::vector<VertexIndex>> loops;
   std::vector<std::int64_t> position(vertices.size(), -1);
   std::vector<VertexIndex> path;
   for (VertexIndex start = 0; start < vertices.size(); ++start) {
@@ -180,8 +179,7 @@ std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
       if (position[next] >= 0) {
         // The walk closed a loop: path[position[next]], ..., path.back(), next.
         const auto from = static_cast<std::size_t>(position[next]);
-        const std::span<const VertexIndex> loop(path.data() + from, path.size() - from);
-        halve(loop, 0, loop.size(), raw);
+        loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(from), path.end());
         for (std::size_t x = from + 1; x < path.size(); ++x)
           position[path[x]] = -1;
         path.resize(from + 1);
@@ -195,6 +193,16 @@ std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
     if (path.size() != 1) throw std::logic_error("cap_triangles: a walk did not close");
     position[start] = -1;
   }
+  return loops;
+}
+
+}  // namespace
+
+std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
+                                       std::span<const BoundaryEdge> edges) {
+  std::vector<CapTriangle> raw;
+  for (const std::vector<VertexIndex>& loop : loops_of(vertices, edges))
+    halve(loop, 0, loop.size(), raw);
   // Equal triangles merged (rotations alike; a reversed one counts negatively), those on
   // one line left out.
   for (CapTriangle& t : raw) {
@@ -222,15 +230,27 @@ std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
   return cap;
 }
 
-CapTree::CapTree(std::span<const Point3> vertices, std::span<const CapTriangle> triangles) {
-  if (triangles.empty()) return;
-  triangles_.reserve(triangles.size());
-  for (const CapTriangle& t : triangles) {
-    triangles_.push_back(
-        {vertices[t.a], vertices[t.b], vertices[t.c], static_cast<double>(t.multiplicity)});
+CapTree::CapTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
+  std::vector<std::vector<VertexIndex>> loops = loops_of(vertices, edges);
+  std::erase_if(loops, [](const std::vector<VertexIndex>& loop) { return loop.size() < 3; });
+  if (loops.empty()) return;
+  // Each loop's centre (of its vertices' box), for the halving of the loops.
+  std::vector<std::pair<Point3, std::uint32_t>> centres;
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    Point3 lower = vertices[loops[l][0]], upper = lower;
+    for (const VertexIndex v : loops[l]) {
+      for (int i = 0; i < 3; ++i) {
+        lower[i] = std::min(lower[i], vertices[v][i]);
+        upper[i] = std::max(upper[i], vertices[v][i]);
+      }
+    }
+    centres.push_back({{0.5 * lower[0] + 0.5 * upper[0], 0.5 * lower[1] + 0.5 * upper[1],
+                        0.5 * lower[2] + 0.5 * upper[2]},
+                       l});
   }
-  nodes_.reserve(2 * (triangles_.size() / kCapTreeLeafTriangles + 1));
-  build(0, static_cast<std::uint32_t>(triangles_.size()));
+  nodes_.reserve(4 * edges.size() / 3 + 2 * loops.size() + 2);
+  build_loops(vertices, loops, centres);
+  // A node without triangles (every one of its triangles on a line) is harmless: F = 0.
 }
 
 /// M = sum m (vector area) and Q = sum m (vector area) (centroid - c)^T in outward-rounded
@@ -305,17 +325,13 @@ void CapTree::set_expansion(Node& node) const {
   node.second_quad = up(up(1.5 * node.quad_error) + up(2 * kExpansionRounding * node.quad_size));
 }
 
-std::uint32_t CapTree::build(std::uint32_t first, std::uint32_t count) {
-  const auto index = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.emplace_back();
-  Node node;
-  node.first = first;
-  node.count = count;
+/// The node's box, F, centre and expansion, from its triangles.
+void CapTree::finish(Node& node) const {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   node.lower = {kInf, kInf, kInf};
   node.upper = {-kInf, -kInf, -kInf};
   double fan = 0.0;
-  for (std::uint32_t t = first; t < first + count; ++t) {
+  for (std::uint32_t t = node.first; t < node.first + node.count; ++t) {
     const Triangle& tri = triangles_[t];
     for (const Point3* v : {&tri.a, &tri.b, &tri.c}) {
       for (int i = 0; i < 3; ++i) {
@@ -332,21 +348,79 @@ std::uint32_t CapTree::build(std::uint32_t first, std::uint32_t count) {
         std::clamp(0.5 * node.lower[i] + 0.5 * node.upper[i], node.lower[i], node.upper[i]);
   }
   set_expansion(node);
-  if (count > kCapTreeLeafTriangles) {
-    // Halves by the triangles' centroids (their sums) along the box's longest axis.
-    int axis = 0;
-    for (int i = 1; i < 3; ++i) {
-      if (node.upper[i] - node.lower[i] > node.upper[axis] - node.lower[axis]) axis = i;
-    }
-    const std::uint32_t half = count / 2;
-    std::nth_element(triangles_.begin() + first, triangles_.begin() + first + half,
-                     triangles_.begin() + first + count,
-                     [axis](const Triangle& x, const Triangle& y) {
-                       return x.a[axis] + x.b[axis] + x.c[axis] < y.a[axis] + y.b[axis] + y.c[axis];
-                     });
-    node.left = build(first, half);
-    node.right = build(first + half, count - half);
+}
+
+/// The cap triangle (a, b, c) onto triangles_ unless its corners lie on one line.
+void CapTree::add_triangle(std::span<const Point3> vertices, VertexIndex a, VertexIndex b,
+                           VertexIndex c) {
+  if (a == b || b == c || c == a || collinear(vertices[a], vertices[b], vertices[c])) return;
+  triangles_.push_back({vertices[a], vertices[b], vertices[c], 1.0});
+  cap_.push_back({a, b, c, 1});
+}
+
+/// The node of the loop's range [i, j]: its own triangle (v_i, v_j, v_k), then its halves'
+/// nodes, or, for a short range, every triangle of the range as its own (a leaf). Its
+/// triangles lie in the box of v_i, ..., v_j: compact where the rim is.
+std::uint32_t CapTree::build_range(std::span<const Point3> vertices,
+                                   std::span<const VertexIndex> loop, std::size_t i,
+                                   std::size_t j) {
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  node.first = static_cast<std::uint32_t>(triangles_.size());
+  const std::size_t k = i + (j - i) / 2;
+  const auto at = [&](std::size_t x) { return loop[x % loop.size()]; };
+  if (j - i <= kCapTreeLeafSpan) {
+    std::vector<CapTriangle> leaf;
+    halve(loop, i, j, leaf);
+    for (const CapTriangle& t : leaf)
+      add_triangle(vertices, t.a, t.b, t.c);
+    node.own = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+  } else {
+    add_triangle(vertices, at(i), at(j), at(k));
+    node.own = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+    node.left = build_range(vertices, loop, i, k);
+    node.right = build_range(vertices, loop, k, j);
   }
+  node.count = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+  finish(node);
+  nodes_[index] = node;
+  return index;
+}
+
+/// The node of a set of loops: halved by their centres along the longest axis of the
+/// centres' box, down to one loop's node.
+std::uint32_t CapTree::build_loops(std::span<const Point3> vertices,
+                                   const std::vector<std::vector<VertexIndex>>& loops,
+                                   std::span<std::pair<Point3, std::uint32_t>> centres) {
+  if (centres.size() == 1) {
+    const std::vector<VertexIndex>& loop = loops[centres[0].second];
+    return build_range(vertices, loop, 0, loop.size());
+  }
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  node.first = static_cast<std::uint32_t>(triangles_.size());
+  Point3 lower = centres[0].first, upper = lower;
+  for (const auto& [c, l] : centres) {
+    for (int i = 0; i < 3; ++i) {
+      lower[i] = std::min(lower[i], c[i]);
+      upper[i] = std::max(upper[i], c[i]);
+    }
+  }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (upper[i] - lower[i] > upper[axis] - lower[axis]) axis = i;
+  }
+  const std::size_t half = centres.size() / 2;
+  std::nth_element(centres.begin(), centres.begin() + static_cast<std::ptrdiff_t>(half),
+                   centres.end(), [axis](const auto& x, const auto& y) {
+                     return std::tie(x.first[axis], x.second) < std::tie(y.first[axis], y.second);
+                   });
+  node.left = build_loops(vertices, loops, centres.subspan(0, half));
+  node.right = build_loops(vertices, loops, centres.subspan(half));
+  node.count = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+  finish(node);
   nodes_[index] = node;
   return index;
 }
@@ -363,8 +437,12 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
   // sum likewise; the errors' (never taken away).
   double sum = 0.0, magnitudes = 0.0, bounds = 0.0, bound_magnitudes = 0.0, errors = 0.0;
   std::size_t terms = 0, bound_terms = 0, error_terms = 0;
-  const auto add_triangles = [&](const Node& node) {
-    for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
+  // A node opened: its own triangles into the sum (a leaf's are all of them), its
+  // children onto the stack.
+  const auto open = [&](const Node& node) [[gnu::always_inline]] {
+    if (node.left != 0) r.stack.push_back(node.left);
+    if (node.right != 0) r.stack.push_back(node.right);
+    for (std::uint32_t i = node.first; i < node.first + node.own; ++i) {
       const Triangle& t = triangles_[i];
       const auto angle = triangle_half_angle(p, t.a, t.b, t.c);
       if (!angle) return false;
@@ -375,7 +453,7 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
       ++terms;
       ++error_terms;
     }
-    r.triangles += node.count;
+    r.triangles += node.own;
     return true;
   };
   double limit = r.first_cut;
@@ -387,12 +465,13 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
   // the zero-order bound F / (2 d^2) can be at most the limit only where F <= 2 limit d^2
   // (about: the test is a cost, the bound below the certificate), and the second-order
   // one only where d > 2 rho and (3/2) rho^2 F <= limit d^4.
-  const auto far = [&](const Node& node) -> bool {
+  const auto far = [&](const Node& node) __attribute__((always_inline))->bool {
     ++r.tested;
     const double d2 = internal::box_distance2_below(p, p, node.lower, node.upper);
-    const bool zero = node.two_fan <= limit * d2;
-    const bool second = node.expansion && d2 > node.reach4 && node.second_fan <= limit * d2 * d2;
-    if (!zero && !second) return false;
+    if (!(node.two_fan <= limit * d2) &&
+        !(node.expansion && d2 > node.reach4 && node.second_fan <= limit * d2 * d2)) {
+      return false;
+    }
     // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf
     // or NaN, neither accepted.
     double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
@@ -440,12 +519,7 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
       r.stack.pop_back();
       const Node& node = nodes_[n];
       if (far(node)) continue;
-      if (node.left == 0) {
-        if (!add_triangles(node)) return false;
-        continue;
-      }
-      r.stack.push_back(node.right);
-      r.stack.push_back(node.left);
+      if (!open(node)) return false;
     }
     return true;
   };
@@ -479,13 +553,7 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
     bounds -= top.bound;
     bound_magnitudes += top.bound;
     ++bound_terms;
-    const Node& node = nodes_[top.node];
-    if (node.left == 0) {
-      if (!add_triangles(node)) return std::nullopt;
-    } else {
-      r.stack.push_back(node.right);
-      r.stack.push_back(node.left);
-    }
+    if (!open(nodes_[top.node])) return std::nullopt;
   }
 }
 

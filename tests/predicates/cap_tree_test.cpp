@@ -18,6 +18,7 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -172,19 +173,24 @@ TEST(CapTriangles, CloseTheSurface) {
       const std::vector<BoundaryEdge> chain = chain_of(s);
       ASSERT_FALSE(chain.empty());
       const std::vector<CapTriangle> cap = cap_triangles(s.vertices, chain);
-      EdgeCounts counts;
-      for (const Face& f : s.faces) {
-        for (int k = 0; k < 3; ++k)
-          count(counts, f[k], f[(k + 1) % 3], 1);
+      const CapTree tree(s.vertices, chain);
+      // The merged cap and the tree's (each triangle once per loop that made it).
+      for (const std::span<const CapTriangle> triangles :
+           {std::span<const CapTriangle>(cap), tree.triangles()}) {
+        EdgeCounts counts;
+        for (const Face& f : s.faces) {
+          for (int k = 0; k < 3; ++k)
+            count(counts, f[k], f[(k + 1) % 3], 1);
+        }
+        for (const CapTriangle& t : triangles) {
+          ASSERT_NE(t.multiplicity, 0);
+          count(counts, t.a, t.b, t.multiplicity);
+          count(counts, t.b, t.c, t.multiplicity);
+          count(counts, t.c, t.a, t.multiplicity);
+        }
+        for (const auto& [e, m] : counts)
+          ASSERT_EQ(m, 0) << "edge " << e.first << " - " << e.second;
       }
-      for (const CapTriangle& t : cap) {
-        ASSERT_NE(t.multiplicity, 0);
-        count(counts, t.a, t.b, t.multiplicity);
-        count(counts, t.b, t.c, t.multiplicity);
-        count(counts, t.c, t.a, t.multiplicity);
-      }
-      for (const auto& [e, m] : counts)
-        ASSERT_EQ(m, 0) << "edge " << e.first << " - " << e.second;
       if (s.name.ends_with("twice")) {
         // Every triangle of a doubled rim's cap counted twice.
         for (const CapTriangle& t : cap)
@@ -213,7 +219,8 @@ TEST(CapTriangles, SmallLoops) {
 }
 
 /// Points of every kind for a surface and its cap: anywhere in [-1.5, 1.5]^3, far away,
-/// near a rim edge's midpoint and near a cap triangle's centroid (moved by 2^-4 to 2^-30).
+/// near a rim edge's midpoint (moved by 2^-4 to 2^-30) and near a cap triangle's centroid
+/// (by 2^-4 to 2^-55).
 std::vector<Point3> points_for(std::mt19937_64& rng, const Surface& s,
                                const std::vector<BoundaryEdge>& chain,
                                const std::vector<CapTriangle>& cap, int n) {
@@ -243,11 +250,14 @@ std::vector<Point3> points_for(std::mt19937_64& rng, const Surface& s,
         break;
       }
       default: {
+        // Down to 2^-55 from the triangle, where the sign of its half angle's numerator
+        // is the exact predicate's.
         const CapTriangle& t = cap[static_cast<std::size_t>(i) % cap.size()];
+        const double tiny = std::ldexp(1.0, -4 - std::uniform_int_distribution<int>(0, 51)(rng));
         Point3 p;
         for (int a = 0; a < 3; ++a) {
-          p[a] = (s.vertices[t.a][a] + s.vertices[t.b][a] + s.vertices[t.c][a]) / 3 +
-                 offset * unit(rng);
+          p[a] =
+              (s.vertices[t.a][a] + s.vertices[t.b][a] + s.vertices[t.c][a]) / 3 + tiny * unit(rng);
         }
         out.push_back(p);
       }
@@ -265,13 +275,12 @@ TEST(CapTree, EnclosuresHoldTheOracle) {
     for (const Surface& s : surfaces(rng)) {
       SCOPED_TRACE(s.name);
       const std::vector<BoundaryEdge> chain = chain_of(s);
-      const std::vector<CapTriangle> cap = cap_triangles(s.vertices, chain);
+      const CapTree tree(s.vertices, chain);
+      const std::vector<CapTriangle> cap(tree.triangles().begin(), tree.triangles().end());
       const std::vector<testing::Triangle> triangles = oracle_triangles(s.vertices, cap);
-      const CapTree tree(s.vertices, cap);
-      ASSERT_EQ(tree.triangle_count(), cap.size());
       CapTree::Refinement r;
       int i = 0;
-      for (const Point3& p : points_for(rng, s, chain, cap, 40)) {
+      for (const Point3& p : points_for(rng, s, chain, cap, 80)) {
         const double truth = testing::generalized_winding_oracle(p, triangles);
         const double width = kWidths[static_cast<std::size_t>(i++) % kWidths.size()];
         ++points;
@@ -333,9 +342,9 @@ TEST(CapTree, EndToEndWindingNumbers) {
   for (const Surface& s : surfaces(rng)) {
     SCOPED_TRACE(s.name);
     const std::vector<BoundaryEdge> chain = chain_of(s);
-    const std::vector<CapTriangle> cap = cap_triangles(s.vertices, chain);
+    const CapTree tree(s.vertices, chain);
+    const std::vector<CapTriangle> cap(tree.triangles().begin(), tree.triangles().end());
     const std::vector<testing::Triangle> faces = oracle_triangles(s);
-    const CapTree tree(s.vertices, cap);
     CapTree::Refinement r;
     for (const Point3& p : points_for(rng, s, chain, cap, 60)) {
       std::optional<std::int64_t> count;

@@ -52,6 +52,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/predicates/boundary_term.hpp"
@@ -73,18 +74,24 @@ struct CapTriangle {
 std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
                                        std::span<const BoundaryEdge> edges);
 
-/// The most triangles a leaf holds.
-inline constexpr std::uint32_t kCapTreeLeafTriangles = 4;
+/// The longest range of a loop a leaf holds (its triangles: one fewer).
+inline constexpr std::size_t kCapTreeLeafSpan = 4;
 
 class CapTree {
  public:
-  /// The triangles, their corners copied into the tree.
-  CapTree(std::span<const Point3> vertices, std::span<const CapTriangle> triangles);
+  /// The cap of the closed chain `edges` (cap_triangles' loops and halving, with equal
+  /// triangles not merged), its corners copied into the tree. Its nodes follow the
+  /// halving: a loop's range [i, j] holds its triangle (v_i, v_j, v_k) and its halves'
+  /// nodes, all in the box of v_i, ..., v_j; the loops are halved by their centres above
+  /// them. Throws std::invalid_argument where the chain is not closed.
+  CapTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges);
   CapTree() = default;
 
   bool empty() const noexcept { return nodes_.empty(); }
   std::size_t triangle_count() const noexcept { return triangles_.size(); }
   std::size_t node_count() const noexcept { return nodes_.size(); }
+  /// The cap's triangles (indexing the vertices given), in the tree's order.
+  std::span<const CapTriangle> triangles() const noexcept { return cap_; }
 
   /// A point's refinement: its far nodes, and the counts of the last query.
   struct Refinement {
@@ -119,6 +126,7 @@ class CapTree {
   struct Node {
     Point3 lower{}, upper{};
     std::uint32_t first = 0, count = 0;  // its triangles: triangles_[first, first + count)
+    std::uint32_t own = 0;               // the first `own` of them, not its children's
     std::uint32_t left = 0, right = 0;   // children; 0 for a leaf
     double fan = 0.0;                    // F, rounded up
     double two_fan = 0.0;                // 2 F rounded up: the quick test's
@@ -137,12 +145,19 @@ class CapTree {
   struct Refined {
     double lower = 0.0, upper = 0.0;  // radians of half angle
   };
-  std::uint32_t build(std::uint32_t first, std::uint32_t count);
+  std::uint32_t build_loops(std::span<const Point3> vertices,
+                            const std::vector<std::vector<VertexIndex>>& loops,
+                            std::span<std::pair<Point3, std::uint32_t>> centres);
+  std::uint32_t build_range(std::span<const Point3> vertices, std::span<const VertexIndex> loop,
+                            std::size_t i, std::size_t j);
+  void add_triangle(std::span<const Point3> vertices, VertexIndex a, VertexIndex b, VertexIndex c);
+  void finish(Node& node) const;
   void set_expansion(Node& node) const;
   template <class Done>
   std::optional<Refined> refine(const Point3& point, Refinement& r, const Done& done) const;
 
   std::vector<Triangle> triangles_;
+  std::vector<CapTriangle> cap_;  // the same, as indices
   std::vector<Node> nodes_;
 };
 
