@@ -578,6 +578,9 @@ std::optional<Enclosure> CapTree::enclosure_apart(const Point3& point, Refinemen
   const auto sum = refine(point, scratch, [](double lower, double upper) {
     return between_half_integers(turns(lower, upper));
   });
+  scratch.first_cut = !sum || scratch.opened > 0
+                          ? std::max(scratch.finest_first_cut, scratch.first_cut / 2)
+                          : std::min(scratch.coarsest_first_cut, scratch.first_cut * 2);
   if (!sum) return std::nullopt;
   return turns(sum->lower, sum->upper);
 }

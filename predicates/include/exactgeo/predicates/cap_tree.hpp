@@ -103,8 +103,14 @@ class CapTree {
     };
     std::vector<Far> heap;  ///< a max-heap by bound
     std::vector<std::uint32_t> stack;
-    /// The first cut (radians of half angle): a cost, not a certificate.
+    /// The first cut (radians of half angle): a cost, not a certificate. enclosure_apart
+    /// carries it from point to point, as BoundaryTree::term does: halved (down to
+    /// finest_first_cut) after a point its first cut did not settle, doubled (up to
+    /// coarsest_first_cut) after one it did. Fixed, the best differed by mesh: 0.25 on
+    /// b9_mesh.off, 1 on elephant-with-holes.off, 4 on pig.stl (cap-measure, NOTE-cap.md).
     double first_cut = 1.0;
+    double finest_first_cut = 0.0625;
+    double coarsest_first_cut = 4.0;
     std::size_t tested = 0;      ///< nodes tested as far nodes
     std::size_t triangles = 0;   ///< leaf triangles whose angle was computed
     std::size_t far_nodes = 0;   ///< far nodes in the final cut
