@@ -439,7 +439,7 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
   std::size_t terms = 0, bound_terms = 0, error_terms = 0;
   // A node opened: its own triangles into the sum (a leaf's are all of them), its
   // children onto the stack.
-  const auto open = [&](const Node& node) [[gnu::always_inline]] {
+  const auto open = [&](const Node& node) __attribute__((always_inline)) {
     if (node.left != 0) r.stack.push_back(node.left);
     if (node.right != 0) r.stack.push_back(node.right);
     for (std::uint32_t i = node.first; i < node.first + node.own; ++i) {
