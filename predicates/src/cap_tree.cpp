@@ -327,6 +327,8 @@ void CapTree::set_expansion(Node& node) const {
 
 /// The node's box, F, centre and expansion, from its triangles.
 void CapTree::finish(Node& node) const {
+  // No triangle (every one on a line): F = 0 and the box a point, far with value 0.
+  if (node.count == 0) return;
   constexpr double kInf = std::numeric_limits<double>::infinity();
   node.lower = {kInf, kInf, kInf};
   node.upper = {-kInf, -kInf, -kInf};

@@ -218,6 +218,36 @@ TEST(CapTriangles, SmallLoops) {
   EXPECT_THROW(cap_triangles(v, std::vector<BoundaryEdge>{{0, 1, 1}}), std::invalid_argument);
 }
 
+TEST(CapTree, TrianglesOnALineLeftOut) {
+  // The loop 0 -> 1 -> 2 -> 3 -> 4 with 0, 1, 2 on a line: its halving's triangle
+  // (v0, v2, v1) has no area and is left out; the other two cover the pentagon.
+  const std::vector<Point3> v{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}};
+  const std::vector<BoundaryEdge> loop{{0, 1, 1}, {1, 2, 1}, {2, 3, 1}, {3, 4, 1}, {4, 0, 1}};
+  const std::vector<CapTriangle> cap = cap_triangles(v, loop);
+  EXPECT_EQ(cap.size(), 2u);
+  const CapTree tree(v, loop);
+  ASSERT_EQ(tree.triangle_count(), 2u);
+  const std::vector<CapTriangle> own(tree.triangles().begin(), tree.triangles().end());
+  const std::vector<testing::Triangle> triangles = oracle_triangles(v, own);
+  CapTree::Refinement r;
+  for (const Point3& p : {Point3{1, 0.5, 1}, Point3{1, 0.5, -0x1p-40}, Point3{5, 5, 5}}) {
+    const double truth = testing::generalized_winding_oracle(p, triangles);
+    const auto e = tree.enclosure(p, 0.0, r);
+    ASSERT_TRUE(e.has_value());
+    EXPECT_LE(e->lower, truth);
+    EXPECT_GE(e->upper, truth);
+  }
+  // A loop all on a line: no cap at all, and w_Cap = 0.
+  const std::vector<BoundaryEdge> flat{{0, 1, 1}, {1, 2, 1}, {2, 0, 1}};
+  EXPECT_TRUE(cap_triangles(v, flat).empty());
+  const CapTree none(v, flat);
+  EXPECT_EQ(none.triangle_count(), 0u);
+  const auto e = none.enclosure_apart({1, 1, 1}, r);
+  ASSERT_TRUE(e.has_value());
+  EXPECT_LE(e->lower, 0.0);
+  EXPECT_GE(e->upper, 0.0);
+}
+
 /// Points of every kind for a surface and its cap: anywhere in [-1.5, 1.5]^3, far away,
 /// near a rim edge's midpoint (moved by 2^-4 to 2^-30) and near a cap triangle's centroid
 /// (by 2^-4 to 2^-55).
