@@ -2,7 +2,7 @@
 
 // A prototype: the generalized winding number of an open surface through a fixed cap
 // instead of the ray's cone (boundary_term.hpp, boundary_tree.hpp), measured against the
-// boundary tree in docs, not used by the classifier.
+// boundary tree (below); not used by the classifier.
 //
 // The cap. The boundary chain of a surface F (mesh/boundary_chain.hpp: edges a -> b with
 // multiplicities, a closed 1-chain) splits into closed loops: walk unused edges until the
@@ -14,8 +14,9 @@
 // v_i -> v_j minus the path v_i -> ... -> v_j (by induction: the triangle's edges
 // v_i -> v_j, v_j -> v_k, v_k -> v_i cancel the halves' chords v_i -> v_k and v_k -> v_j
 // and leave v_i -> v_j), so over [0, n] (whose chord v_0 -> v_0 is nothing) the boundary
-// is minus the loop: F + Cap has every edge balanced, a closed 2-chain. Equal triangles
-// are merged (a rim run twice gives its cap's triangles multiplicity 2), and triangles
+// is minus the loop: F + Cap has every edge balanced, a closed 2-chain. cap_triangles
+// merges equal triangles (a rim run twice gives its cap's triangles multiplicity 2; the
+// tree keeps each loop's own, a cost), and triangles
 // with corners on one line (repeated ones included) left out: they have no area, and no
 // solid angle. The halving keeps the triangles of a range near the range's vertices, so
 // that a node's triangles are compact where the rim is.
