@@ -1,0 +1,600 @@
+#include "exactgeo/predicates/cap_tree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <tuple>
+
+#include "arctan2.hpp"
+#include "boundary_term_filter.hpp"
+#include "box_distance.hpp"
+#include "double_interval.hpp"
+#include "exactgeo/predicates/orient3d.hpp"
+
+// The cap, the identity and the bounds: cap_tree.hpp.
+
+namespace exactgeo {
+namespace {
+
+using internal::DoubleInterval;
+
+constexpr double kU = 0x1p-53;
+constexpr double kTiny = 0x1p-1000;
+/// As boundary_tree.cpp's: a bound on the expansion's rounding relative to
+/// |M| / |c - p|^2 + 4 |Q| / |c - p|^3 (the same evaluation, derived there).
+constexpr double kExpansionRounding = 0x1p-40;
+
+double up(double x) noexcept {
+  return DoubleInterval::up(x);
+}
+
+/// area(a, b, c), its upper end in outward-rounded intervals; +inf when that overflows.
+double area_above(const Point3& a, const Point3& b, const Point3& c) noexcept {
+  std::array<DoubleInterval, 3> u, v;
+  for (int i = 0; i < 3; ++i) {
+    u[i] = DoubleInterval::difference(a[i], c[i]);
+    v[i] = DoubleInterval::difference(b[i], c[i]);
+  }
+  const DoubleInterval x = u[1] * v[2] - u[2] * v[1];
+  const DoubleInterval y = u[2] * v[0] - u[0] * v[2];
+  const DoubleInterval z = u[0] * v[1] - u[1] * v[0];
+  const double length = sqrt(x * x + y * y + z * z).hi;
+  if (!std::isfinite(length)) return std::numeric_limits<double>::infinity();
+  return up(0.5 * length);
+}
+
+// A triangle's half angle theta = atan2(N, D) (Van Oosterom and Strackee), N =
+// det[A, B, C], D = |A||B||C| + (A.B)|C| + (A.C)|B| + (B.C)|A|, A, B, C = corners - p,
+// in plain doubles, and its error bound. As boundary_term_filter.cpp's half_angle, whose
+// derivation this follows, with the third vector a rounded difference too (there it is
+// the exact direction -r); u = 2^-53, every vector scaled by a power of two so that its
+// largest component is in [1, 2):
+//
+//  - Each of A, B, C is within u|X| + 2^-1074 per component of the exact difference
+//    (scaled by the same power of two).
+//  - N: the cross product and the dot round within gamma_5 P, P = sum_i |A_i| (|B_j||C_k|
+//    + |B_k||C_j|); the three inputs' errors add, by trilinearity, (3u + 3u^2 + u^3) P:
+//    8.02u P in all (the half angle's filter had two inexact inputs: 7.01u P). P <=
+//    2 |A||B||C| (Cauchy-Schwarz, as there), and the computed L = fl(fl(|A||B|)|C|) is
+//    within a factor 1 + 24u of |A||B||C| (each computed length within 7u, two products):
+//    |N - N*| <= 16.04u (1 + 24u) L < 16.1u L; 20u L, rounded down by at most u, covers it.
+//  - D: the half angle's 96u L stands. Its derivation already took every length within 7u
+//    (three in L: 23u) and each dot's inputs within 2.01u of the exact ones with the
+//    dot's own gamma_3 (13u per product term, 39u for three) and the three sums (12u):
+//    74u L, whichever of the vectors was exact.
+//  - Underflows lose at most 2^-1075 per operation on numbers of magnitude below 8,
+//    far below the 2^-1000 added to both bounds.
+//  - Then as there: the exact (N*, D*) lies within E = |dN| + |dD| of the computed point;
+//    where E <= r / 4 (r = max(|N|, |D|), at most |(N, D)|) and the segment between them does not
+//    cross the branch cut (|N| > |dN|, or D > |dD|), the half angles differ by at most
+//    (4/3) E / r; where D < -|dD|, the exact sign of N* (orient3d(p, a, b, c)) is given to
+//    N; kArctanError for the arctangent. The branch cut is where p lies on the triangle
+//    (N* = 0 with D* < 0: p in the triangle's plane, inside it, where the half angle
+//    jumps between -pi and pi): there the sign is 0 and the angle is not defined.
+constexpr double kNumError = 20 * kU;
+constexpr double kDenError = 96 * kU;
+
+struct HalfAngle {
+  double theta = 0.0;
+  double error = 0.0;
+};
+
+/// Out of line: rare.
+[[gnu::noinline]] double side_of(const Point3& p, const Point3& a, const Point3& b,
+                                 const Point3& c) {
+  const Sign s = orient3d(p, a, b, c);
+  return s == Sign::zero ? 0.0 : s == Sign::positive ? 1.0 : -1.0;
+}
+
+/// The triangle's half angle seen from p within `error` radians; nullopt where the bound
+/// cannot be made (p within rounding of the triangle's edges' lines or on it).
+[[gnu::always_inline]] inline std::optional<HalfAngle> triangle_half_angle(const Point3& p,
+                                                                           const Point3& pa,
+                                                                           const Point3& pb,
+                                                                           const Point3& pc) {
+  const auto dot = [](const Vector3& x, const Vector3& y) {
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+  };
+  const auto a = internal::normalized({pa[0] - p[0], pa[1] - p[1], pa[2] - p[2]});
+  const auto b = internal::normalized({pb[0] - p[0], pb[1] - p[1], pb[2] - p[2]});
+  const auto c = internal::normalized({pc[0] - p[0], pc[1] - p[1], pc[2] - p[2]});
+  if (!a || !b || !c) return std::nullopt;  // p on a corner, or an overflow
+  const Vector3& A = *a;
+  const Vector3& B = *b;
+  const Vector3& C = *c;
+  const Vector3 bxc{B[1] * C[2] - B[2] * C[1], B[2] * C[0] - B[0] * C[2],
+                    B[0] * C[1] - B[1] * C[0]};
+  double num = dot(A, bxc);
+  const double la = std::sqrt(dot(A, A)), lb = std::sqrt(dot(B, B)), lc = std::sqrt(dot(C, C));
+  const double length = la * lb * lc;
+  const double den = length + dot(A, B) * lc + dot(A, C) * lb + dot(B, C) * la;
+  const double num_error = kNumError * length + kTiny;
+  const double den_error = kDenError * length + kTiny;
+  // r = max(|N|, |D|), exact, at most |(N, D)|: any r at most the distance from the
+  // origin serves (the segment then stays at least 3r/4 from it), and this one needs no
+  // square root (half_angle's is at most sqrt 2 times larger).
+  const double radius = std::max(std::abs(num), std::abs(den));
+  const double e = num_error + den_error;
+  if (!(e <= radius / 4)) return std::nullopt;
+  if (!(std::abs(num) > num_error) && !(den > den_error)) {
+    if (!(den < -den_error)) return std::nullopt;
+    const double side = side_of(p, pa, pb, pc);
+    if (side == 0.0) return std::nullopt;  // p on the triangle
+    num = std::copysign(std::abs(num), side);
+  }
+  return HalfAngle{internal::arctan2(num, den), (4.0 / 3.0) * e / radius + internal::kArctanError};
+}
+
+/// The triangles of the loop's range [i, j] (recursive halving, cap_tree.hpp), in
+/// pre-order (the range's own triangle, then its halves'); vertex n is vertex 0.
+void halve(std::span<const VertexIndex> loop, std::size_t i, std::size_t j,
+           std::vector<CapTriangle>& out) {
+  if (j - i < 2) return;
+  const std::size_t k = i + (j - i) / 2;
+  const auto at = [&](std::size_t x) { return loop[x % loop.size()]; };
+  out.push_back({at(i), at(j), at(k), 1});
+  halve(loop, i, k, out);
+  halve(loop, k, j, out);
+}
+
+/// The chain's closed loops, each as its vertices v_0, ..., v_{n-1} (the edge v_{n-1} ->
+/// v_0 closing it): walk unused edges, cutting off each loop the walk closes.
+std::vector<std::vector<VertexIndex>> loops_of(std::span<const Point3> vertices,
+                                               std::span<const BoundaryEdge> edges) {
+  std::vector<std::int64_t> remaining(edges.size()), delta(vertices.size(), 0);
+  std::vector<std::vector<std::uint32_t>> leaving(vertices.size());
+  std::vector<BoundaryEdge> oriented(edges.begin(), edges.end());
+  for (std::uint32_t e = 0; e < oriented.size(); ++e) {
+    BoundaryEdge& edge = oriented[e];
+    if (edge.multiplicity < 0) {
+      std::swap(edge.from, edge.to);
+      edge.multiplicity = -edge.multiplicity;
+    }
+    if (edge.from == edge.to || edge.multiplicity == 0) continue;
+    remaining[e] = edge.multiplicity;
+    leaving[edge.from].push_back(e);
+    delta[edge.to] += edge.multiplicity;
+    delta[edge.from] -= edge.multiplicity;
+  }
+  if (std::any_of(delta.begin(), delta.end(), [](std::int64_t d) { return d != 0; })) {
+    throw std::invalid_argument("cap_triangles: the boundary chain is not closed");
+  }
+  std::vector<std::vector<VertexIndex>> loops;
+  std::vector<std::int64_t> position(vertices.size(), -1);
+  std::vector<VertexIndex> path;
+  for (VertexIndex start = 0; start < vertices.size(); ++start) {
+    path.assign(1, start);
+    position[start] = 0;
+    for (VertexIndex at = start;;) {
+      auto& out = leaving[at];
+      while (!out.empty() && remaining[out.back()] == 0)
+        out.pop_back();
+      if (out.empty()) break;
+      const std::uint32_t e = out.back();
+      --remaining[e];
+      const VertexIndex next = oriented[e].to;
+      if (position[next] >= 0) {
+        // The walk closed a loop: path[position[next]], ..., path.back(), next.
+        const auto from = static_cast<std::size_t>(position[next]);
+        loops.emplace_back(path.begin() + static_cast<std::ptrdiff_t>(from), path.end());
+        for (std::size_t x = from + 1; x < path.size(); ++x)
+          position[path[x]] = -1;
+        path.resize(from + 1);
+      } else {
+        position[next] = static_cast<std::int64_t>(path.size());
+        path.push_back(next);
+      }
+      at = next;
+    }
+    // A closed chain's walk stops only where it began.
+    if (path.size() != 1) throw std::logic_error("cap_triangles: a walk did not close");
+    position[start] = -1;
+  }
+  return loops;
+}
+
+}  // namespace
+
+std::vector<CapTriangle> cap_triangles(std::span<const Point3> vertices,
+                                       std::span<const BoundaryEdge> edges) {
+  std::vector<CapTriangle> raw;
+  for (const std::vector<VertexIndex>& loop : loops_of(vertices, edges))
+    halve(loop, 0, loop.size(), raw);
+  // Equal triangles merged (rotations alike; a reversed one counts negatively), those on
+  // one line left out.
+  for (CapTriangle& t : raw) {
+    while (t.a > t.b || t.a > t.c)
+      t = {t.b, t.c, t.a, t.multiplicity};
+    if (t.b > t.c) t = {t.a, t.c, t.b, -t.multiplicity};
+  }
+  std::sort(raw.begin(), raw.end(), [](const CapTriangle& x, const CapTriangle& y) {
+    return std::tie(x.a, x.b, x.c) < std::tie(y.a, y.b, y.c);
+  });
+  std::vector<CapTriangle> cap;
+  for (std::size_t i = 0; i < raw.size();) {
+    std::size_t j = i;
+    std::int64_t m = 0;
+    for (; j < raw.size() && raw[j].a == raw[i].a && raw[j].b == raw[i].b && raw[j].c == raw[i].c;
+         ++j)
+      m += raw[j].multiplicity;
+    const CapTriangle& t = raw[i];
+    if (m != 0 && t.a != t.b && t.b != t.c &&
+        !collinear(vertices[t.a], vertices[t.b], vertices[t.c])) {
+      cap.push_back({t.a, t.b, t.c, static_cast<std::int32_t>(m)});
+    }
+    i = j;
+  }
+  return cap;
+}
+
+CapTree::CapTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
+  std::vector<std::vector<VertexIndex>> loops = loops_of(vertices, edges);
+  std::erase_if(loops, [](const std::vector<VertexIndex>& loop) { return loop.size() < 3; });
+  if (loops.empty()) return;
+  // Each loop's centre (of its vertices' box), for the halving of the loops.
+  std::vector<std::pair<Point3, std::uint32_t>> centres;
+  for (std::uint32_t l = 0; l < loops.size(); ++l) {
+    Point3 lower = vertices[loops[l][0]], upper = lower;
+    for (const VertexIndex v : loops[l]) {
+      for (int i = 0; i < 3; ++i) {
+        lower[i] = std::min(lower[i], vertices[v][i]);
+        upper[i] = std::max(upper[i], vertices[v][i]);
+      }
+    }
+    centres.push_back({{0.5 * lower[0] + 0.5 * upper[0], 0.5 * lower[1] + 0.5 * upper[1],
+                        0.5 * lower[2] + 0.5 * upper[2]},
+                       l});
+  }
+  nodes_.reserve(4 * edges.size() / 3 + 2 * loops.size() + 2);
+  build_loops(vertices, loops, centres);
+  // A node without triangles (every one of its triangles on a line) is harmless: F = 0.
+}
+
+/// M = sum m (vector area) and Q = sum m (vector area) (centroid - c)^T in outward-rounded
+/// intervals (cap_tree.hpp, "Far nodes"), their midpoints and bounds on their errors and
+/// sizes, the reach, and the bound's coefficients: as BoundaryTree::set_expansion and
+/// set_bound_coefficients.
+void CapTree::set_expansion(Node& node) const {
+  const Point3& c = node.centre;
+  std::array<DoubleInterval, 3> m{};
+  std::array<std::array<DoubleInterval, 3>, 3> q{};
+  const DoubleInterval third = DoubleInterval{1.0, 1.0} / DoubleInterval::exact(3.0);
+  const DoubleInterval half = DoubleInterval::exact(0.5);
+  for (std::uint32_t t = node.first; t < node.first + node.count; ++t) {
+    const Triangle& tri = triangles_[t];
+    std::array<DoubleInterval, 3> u, v, w, e, f, x, s;
+    for (int i = 0; i < 3; ++i) {
+      u[i] = DoubleInterval::difference(tri.a[i], c[i]);
+      v[i] = DoubleInterval::difference(tri.b[i], c[i]);
+      w[i] = DoubleInterval::difference(tri.c[i], c[i]);
+      e[i] = v[i] - u[i];
+      f[i] = w[i] - u[i];
+      s[i] = (u[i] + v[i] + w[i]) * third;
+    }
+    const DoubleInterval times = DoubleInterval::exact(tri.multiplicity) * half;
+    x[0] = (e[1] * f[2] - e[2] * f[1]) * times;
+    x[1] = (e[2] * f[0] - e[0] * f[2]) * times;
+    x[2] = (e[0] * f[1] - e[1] * f[0]) * times;
+    for (int i = 0; i < 3; ++i) {
+      m[i] = m[i] + x[i];
+      for (int j = 0; j < 3; ++j)
+        q[i][j] = q[i][j] + x[i] * s[j];
+    }
+  }
+  const auto midpoint = [](const DoubleInterval& x, double& error) {
+    const double mid = std::clamp(0.5 * x.lo + 0.5 * x.hi, x.lo, x.hi);
+    error = up(std::max(x.hi - mid, mid - x.lo));
+    return mid;
+  };
+  double error = 0.0, size2 = 0.0, reach2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    double err = 0.0;
+    node.moment[i] = midpoint(m[i], err);
+    error = up(error + err);
+    size2 = up(size2 + up(node.moment[i] * node.moment[i]));
+    const double r = up(std::max(c[i] - node.lower[i], node.upper[i] - c[i]));
+    reach2 = up(reach2 + up(r * r));
+  }
+  node.moment_error = error;
+  node.moment_size = up(std::sqrt(size2));
+  node.reach = up(std::sqrt(reach2));
+  constexpr std::array<std::array<int, 2>, 6> kEntries{
+      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
+  double quad_error = 0.0, quad_size = 0.0;
+  for (std::size_t k = 0; k < kEntries.size(); ++k) {
+    const auto [i, j] = kEntries[k];
+    double err = 0.0;
+    node.quad[k] = midpoint((q[i][j] + q[j][i]) * half, err);
+    const double copies = i == j ? 1.0 : 2.0;
+    quad_error = up(quad_error + copies * err);
+    quad_size = up(quad_size + copies * std::abs(node.quad[k]));
+  }
+  node.quad_error = quad_error;
+  node.quad_size = quad_size;
+  node.expansion = std::isfinite(error) && std::isfinite(node.moment_size) &&
+                   std::isfinite(node.reach) && std::isfinite(quad_error) &&
+                   std::isfinite(quad_size);
+  // (3/2) rho^2 F over d^4, (1/2) (moment_error + kExpansionRounding moment_size) over
+  // d^2, ((3/2) quad_error + 2 kExpansionRounding quad_size) over d^3, each rounded up.
+  node.reach4 = 4 * node.reach * node.reach;  // where to try it: a cost
+  node.second_fan = up(up(up(1.5 * node.reach) * node.reach) * node.fan);
+  node.second_moment = up(0.5 * up(node.moment_error + up(kExpansionRounding * node.moment_size)));
+  node.second_quad = up(up(1.5 * node.quad_error) + up(2 * kExpansionRounding * node.quad_size));
+}
+
+/// The node's box, F, centre and expansion, from its triangles.
+void CapTree::finish(Node& node) const {
+  // No triangle (every one on a line): F = 0 and the box a point, far with value 0.
+  if (node.count == 0) return;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  node.lower = {kInf, kInf, kInf};
+  node.upper = {-kInf, -kInf, -kInf};
+  double fan = 0.0;
+  for (std::uint32_t t = node.first; t < node.first + node.count; ++t) {
+    const Triangle& tri = triangles_[t];
+    for (const Point3* v : {&tri.a, &tri.b, &tri.c}) {
+      for (int i = 0; i < 3; ++i) {
+        node.lower[i] = std::min(node.lower[i], (*v)[i]);
+        node.upper[i] = std::max(node.upper[i], (*v)[i]);
+      }
+    }
+    fan = up(fan + up(area_above(tri.a, tri.b, tri.c) * std::abs(tri.multiplicity)));
+  }
+  node.fan = fan;
+  node.two_fan = 2 * fan;
+  for (int i = 0; i < 3; ++i) {
+    node.centre[i] =
+        std::clamp(0.5 * node.lower[i] + 0.5 * node.upper[i], node.lower[i], node.upper[i]);
+  }
+  set_expansion(node);
+}
+
+/// The cap triangle (a, b, c) onto triangles_ unless its corners lie on one line.
+void CapTree::add_triangle(std::span<const Point3> vertices, VertexIndex a, VertexIndex b,
+                           VertexIndex c) {
+  if (a == b || b == c || c == a || collinear(vertices[a], vertices[b], vertices[c])) return;
+  triangles_.push_back({vertices[a], vertices[b], vertices[c], 1.0});
+  cap_.push_back({a, b, c, 1});
+}
+
+/// The node of the loop's range [i, j]: its own triangle (v_i, v_j, v_k), then its halves'
+/// nodes, or, for a short range, every triangle of the range as its own (a leaf). Its
+/// triangles lie in the box of v_i, ..., v_j: compact where the rim is.
+std::uint32_t CapTree::build_range(std::span<const Point3> vertices,
+                                   std::span<const VertexIndex> loop, std::size_t i,
+                                   std::size_t j) {
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  node.first = static_cast<std::uint32_t>(triangles_.size());
+  const std::size_t k = i + (j - i) / 2;
+  const auto at = [&](std::size_t x) { return loop[x % loop.size()]; };
+  if (j - i <= kCapTreeLeafSpan) {
+    std::vector<CapTriangle> leaf;
+    halve(loop, i, j, leaf);
+    for (const CapTriangle& t : leaf)
+      add_triangle(vertices, t.a, t.b, t.c);
+    node.own = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+  } else {
+    add_triangle(vertices, at(i), at(j), at(k));
+    node.own = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+    node.left = build_range(vertices, loop, i, k);
+    node.right = build_range(vertices, loop, k, j);
+  }
+  node.count = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+  finish(node);
+  nodes_[index] = node;
+  return index;
+}
+
+/// The node of a set of loops: halved by their centres along the longest axis of the
+/// centres' box, down to one loop's node.
+std::uint32_t CapTree::build_loops(std::span<const Point3> vertices,
+                                   const std::vector<std::vector<VertexIndex>>& loops,
+                                   std::span<std::pair<Point3, std::uint32_t>> centres) {
+  if (centres.size() == 1) {
+    const std::vector<VertexIndex>& loop = loops[centres[0].second];
+    return build_range(vertices, loop, 0, loop.size());
+  }
+  const auto index = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Node node;
+  node.first = static_cast<std::uint32_t>(triangles_.size());
+  Point3 lower = centres[0].first, upper = lower;
+  for (const auto& [c, l] : centres) {
+    for (int i = 0; i < 3; ++i) {
+      lower[i] = std::min(lower[i], c[i]);
+      upper[i] = std::max(upper[i], c[i]);
+    }
+  }
+  int axis = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (upper[i] - lower[i] > upper[axis] - lower[axis]) axis = i;
+  }
+  const std::size_t half = centres.size() / 2;
+  std::nth_element(centres.begin(), centres.begin() + static_cast<std::ptrdiff_t>(half),
+                   centres.end(), [axis](const auto& x, const auto& y) {
+                     return std::tie(x.first[axis], x.second) < std::tie(y.first[axis], y.second);
+                   });
+  node.left = build_loops(vertices, loops, centres.subspan(0, half));
+  node.right = build_loops(vertices, loops, centres.subspan(half));
+  node.count = static_cast<std::uint32_t>(triangles_.size()) - node.first;
+  finish(node);
+  nodes_[index] = node;
+  return index;
+}
+
+template <class Done>
+std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
+                                                const Done& done) const {
+  r.heap.clear();
+  r.stack.clear();
+  r.tested = r.triangles = r.far_nodes = r.expansions = r.opened = 0;
+  if (nodes_.empty()) return Refined{};
+  // The running sums (as BoundaryTree::refine): the angles' and far values' sum with the
+  // magnitudes of all it was given or had taken away and their count; the far bounds'
+  // sum likewise; the errors' (never taken away).
+  double sum = 0.0, magnitudes = 0.0, bounds = 0.0, bound_magnitudes = 0.0, errors = 0.0;
+  std::size_t terms = 0, bound_terms = 0, error_terms = 0;
+  // A node opened: its own triangles into the sum (a leaf's are all of them), its
+  // children onto the stack.
+  const auto open = [&](const Node& node) __attribute__((always_inline)) {
+    if (node.left != 0) r.stack.push_back(node.left);
+    if (node.right != 0) r.stack.push_back(node.right);
+    for (std::uint32_t i = node.first; i < node.first + node.own; ++i) {
+      const Triangle& t = triangles_[i];
+      const auto angle = triangle_half_angle(p, t.a, t.b, t.c);
+      if (!angle) return false;
+      const double value = t.multiplicity * angle->theta;
+      sum += value;
+      magnitudes += std::abs(value);
+      errors += std::abs(t.multiplicity) * angle->error;
+      ++terms;
+      ++error_terms;
+    }
+    r.triangles += node.own;
+    return true;
+  };
+  double limit = r.first_cut;
+  bool heaped = false;
+  const auto by_bound = [](const Refinement::Far& a, const Refinement::Far& b) {
+    return a.bound < b.bound;
+  };
+  // The node as a far node, where its bound is at most `limit`. First without divisions:
+  // the zero-order bound F / (2 d^2) can be at most the limit only where F <= 2 limit d^2
+  // (about: the test is a cost, the bound below the certificate), and the second-order
+  // one only where d > 2 rho and (3/2) rho^2 F <= limit d^4.
+  const auto far = [&](const Node& node) __attribute__((always_inline))->bool {
+    ++r.tested;
+    const double d2 = internal::box_distance2_below(p, p, node.lower, node.upper);
+    if (!(node.two_fan <= limit * d2) &&
+        !(node.expansion && d2 > node.reach4 && node.second_fan <= limit * d2 * d2)) {
+      return false;
+    }
+    // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf
+    // or NaN, neither accepted.
+    double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
+    bool expanded = false;
+    if (node.expansion && d2 > node.reach4 && d2 > 0x1p-400 && d2 < 0x1p400) {
+      // (As BoundaryTree::far_value: d from below, the quotients and their sum within 4u.)
+      const double d = std::sqrt(d2) * (1 - 0x1p-50);
+      const double d3 = d2 * d;
+      const double bound2 =
+          (node.second_fan / (d2 * d2) + node.second_moment / d2 + node.second_quad / d3) *
+              (1 + 0x1p-48) +
+          kTiny;
+      if (bound2 < bound) {
+        bound = bound2;
+        expanded = true;
+      }
+    }
+    if (!(bound <= limit)) return false;
+    double value = 0.0;
+    if (expanded) {
+      const Vector3 v{node.centre[0] - p[0], node.centre[1] - p[1], node.centre[2] - p[2]};
+      const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+      const std::array<double, 6>& s = node.quad;
+      const double trace = s[0] + s[1] + s[2];
+      const double vqv = s[0] * v[0] * v[0] + s[1] * v[1] * v[1] + s[2] * v[2] * v[2] +
+                         2 * (s[3] * v[0] * v[1] + s[4] * v[0] * v[2] + s[5] * v[1] * v[2]);
+      const double mv = node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2];
+      value = 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
+      ++r.expansions;
+    }
+    // The expansion's rounding is in its bound (kExpansionRounding).
+    sum += value;
+    magnitudes += std::abs(value);
+    ++terms;
+    bounds += bound;
+    bound_magnitudes += bound;
+    ++bound_terms;
+    r.heap.push_back({bound, value, static_cast<std::uint32_t>(&node - nodes_.data()), expanded});
+    if (heaped) std::push_heap(r.heap.begin(), r.heap.end(), by_bound);
+    return true;
+  };
+  const auto descend = [&]() {
+    while (!r.stack.empty()) {
+      const std::uint32_t n = r.stack.back();
+      r.stack.pop_back();
+      const Node& node = nodes_[n];
+      if (far(node)) continue;
+      if (!open(node)) return false;
+    }
+    return true;
+  };
+  r.stack.push_back(0);
+  while (true) {
+    if (!descend()) return std::nullopt;
+    // (As BoundaryTree::refine: recursive summation's (k - 1) u of the magnitudes, and the
+    // factor for these products' and sums' own rounding.)
+    const double error = (errors + bounds +
+                          kU * (static_cast<double>(terms + 2) * magnitudes +
+                                static_cast<double>(bound_terms + 2) * bound_magnitudes +
+                                static_cast<double>(error_terms + 2) * errors)) *
+                             (1 + 8 * kU) +
+                         kTiny;
+    const double lower = sum - error, upper = sum + error;
+    if (done(lower, upper)) {
+      r.far_nodes = r.heap.size();
+      return Refined{lower, upper};
+    }
+    if (r.heap.empty()) return std::nullopt;
+    if (!heaped) std::make_heap(r.heap.begin(), r.heap.end(), by_bound);
+    heaped = true;
+    limit = std::min(limit, r.heap.front().bound / 8);
+    std::pop_heap(r.heap.begin(), r.heap.end(), by_bound);
+    const Refinement::Far top = r.heap.back();
+    r.heap.pop_back();
+    ++r.opened;
+    sum -= top.value;
+    magnitudes += std::abs(top.value);
+    ++terms;
+    bounds -= top.bound;
+    bound_magnitudes += top.bound;
+    ++bound_terms;
+    if (!open(nodes_[top.node])) return std::nullopt;
+  }
+}
+
+namespace {
+
+/// Radians of half angle to turns, rounded outward (internal::turns_of).
+Enclosure turns(double lower, double upper) {
+  return internal::turns_of({BoundaryTermKind::enclosed, lower, upper});
+}
+
+/// Between two consecutive half-integers, strictly: k - 1/2 < lower <= upper < k + 1/2
+/// (k +- 1/2 exact for these magnitudes).
+bool between_half_integers(const Enclosure& e) {
+  if (!(std::abs(e.lower) < 0x1p50 && std::abs(e.upper) < 0x1p50)) return false;
+  const double k = std::nearbyint(e.lower);
+  return k - 0.5 < e.lower && e.upper < k + 0.5;
+}
+
+}  // namespace
+
+std::optional<Enclosure> CapTree::enclosure_apart(const Point3& point, Refinement& scratch) const {
+  const auto sum = refine(point, scratch, [](double lower, double upper) {
+    return between_half_integers(turns(lower, upper));
+  });
+  scratch.first_cut = !sum || scratch.opened > 0
+                          ? std::max(scratch.finest_first_cut, scratch.first_cut / 2)
+                          : std::min(scratch.coarsest_first_cut, scratch.first_cut * 2);
+  if (!sum) return std::nullopt;
+  return turns(sum->lower, sum->upper);
+}
+
+std::optional<Enclosure> CapTree::enclosure(const Point3& point, double width,
+                                            Refinement& scratch) const {
+  const double radians = width * 2 * std::numbers::pi;
+  const auto sum = refine(point, scratch, [&](double lower, double upper) {
+    return upper - lower <= radians || scratch.heap.empty();
+  });
+  if (!sum) return std::nullopt;
+  return turns(sum->lower, sum->upper);
+}
+
+}  // namespace exactgeo
