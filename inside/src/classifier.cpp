@@ -1,6 +1,9 @@
 #include "exactgeo/inside/classifier.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <span>
@@ -81,6 +84,14 @@ CandidateSearch candidate_search(const ClassifierOptions& options, std::size_t f
   return faces < enough_faces ? CandidateSearch::box_tree : CandidateSearch::embree;
 }
 
+/// The rule's label of a point whose w = S - w_Cap, w_Cap strictly between the two
+/// half-integers around `cap` (enclosure_apart): w lies strictly between n - 1/2 and
+/// n + 1/2, n = S - j, so |w| >= 1/2 exactly where n != 0 and w >= 1/2 where n >= 1.
+Location cap_label(FillRule rule, std::int64_t crossings, const Enclosure& cap) noexcept {
+  const auto j = static_cast<std::int64_t>(std::nearbyint(cap.lower));
+  return holds(rule, crossings - j) ? Location::inside : Location::outside;
+}
+
 template <class Signs>
 std::vector<PatchSpan> spans_of(const Signs& signs, const std::vector<SurfaceFace>& faces,
                                 std::span<const Point3> points) {
@@ -117,12 +128,53 @@ struct Classifier::State {
   /// The same edges in a tree (boundary_tree.hpp), over the vertices the exact rays see:
   /// the term from near edges and far nodes, which settles most points.
   BoundaryTree boundary_tree;
+  /// The cap of the same chain over the same vertices (cap_tree.hpp): F + Cap is closed,
+  /// and w_F = S - w_Cap, S the signed count of a ray's crossings with F and the cap.
+  CapTree cap;
+  /// The cap's triangles as faces (indices into the mesh's vertices), their spans (none:
+  /// triangles) and their candidate search (nullopt: every cap triangle, for
+  /// CandidateSearch::brute_force).
+  std::vector<SurfaceFace> cap_faces;
+  std::vector<PatchSpan> cap_spans;
+  std::optional<internal::TreeCandidates> cap_search;
 
   /// `point` in the tree's coordinates (the unit frame's when it is on), when it maps
   /// there exactly.
   std::optional<Point3> in_tree_frame(const Point3& point) const noexcept {
     if (frame.on()) return frame.map(point);
     return point;
+  }
+
+  /// The cap of `boundary` over `vertices` (the ones the exact rays see), its faces and
+  /// their candidate search: a box tree over the cap's triangles alone, in the float frame
+  /// of the faces' corners' box (which holds every cap corner: each is a boundary vertex,
+  /// a corner of a face), or none (`every`: each ray tries every cap triangle).
+  void build_cap(std::span<const Point3> vertices, bool every) {
+    cap = CapTree(vertices, boundary);
+    for (const CapTriangle& t : cap.triangles()) {
+      // (The tree's triangles have multiplicity 1; any other is the same chain.)
+      for (std::int32_t m = 0; m < std::abs(t.multiplicity); ++m)
+        cap_faces.push_back(t.multiplicity > 0 ? SurfaceFace::triangle(t.a, t.b, t.c)
+                                               : SurfaceFace::triangle(t.a, t.c, t.b));
+    }
+    cap_spans.assign(cap_faces.size(), PatchSpan{});
+    if (every || cap_faces.empty()) return;
+    // A mesh of the cap's corners only (the search's ids are the faces', in order).
+    mesh::Mesh corners;
+    std::vector<VertexIndex> index(mesh.vertices.size(), kNoVertex);
+    for (const SurfaceFace& f : cap_faces) {
+      std::array<VertexIndex, 3> c{};
+      for (std::size_t i = 0; i < 3; ++i) {
+        VertexIndex& at = index[f.corners[i]];
+        if (at == kNoVertex) {
+          at = static_cast<VertexIndex>(corners.vertices.size());
+          corners.vertices.push_back(mesh.vertices[f.corners[i]]);
+        }
+        c[i] = at;
+      }
+      corners.faces.push_back(mesh::make_triangle(c[0], c[1], c[2]));
+    }
+    cap_search.emplace(corners, box);
   }
 
   PreparedFaces prepared(Arithmetic arithmetic) const noexcept {
@@ -167,6 +219,25 @@ SignedRayCount Classifier::count_ray(const State& s, const Signs& signs, Arithme
                                 kernel::Offset::vector(direction));
 }
 
+template <class Signs>
+SignedRayCount Classifier::count_cap_ray(const State& s, const Signs& signs,
+                                         const RayOrigin& origin, std::size_t k,
+                                         ClassifierScratch& scratch) {
+  if (s.cap_search) {
+    s.cap_search->find(origin.given, k, scratch.cap_candidates);
+  } else {
+    scratch.cap_candidates.resize(s.cap_faces.size());
+    for (std::size_t f = 0; f < s.cap_faces.size(); ++f)
+      scratch.cap_candidates[f] = static_cast<std::uint32_t>(f);
+  }
+  const auto corner = [&](VertexIndex i) {
+    return kernel::Offset::between(origin.exact, origin.vertices[i]);
+  };
+  const Vector3 direction = ray_direction(k);
+  return count_signed_crossings(signs, PreparedFaces{s.cap_faces, s.cap_spans},
+                                scratch.cap_candidates, corner, kernel::Offset::vector(direction));
+}
+
 /// The signed crossing count of `point` along the ray sequence, a tree proposing the
 /// candidate faces. Precondition: point in s.box, the closed box of the faces' corners.
 std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& point,
@@ -182,47 +253,91 @@ std::optional<std::int64_t> Classifier::cast_rays(const State& s, const Point3& 
   return found->winding;
 }
 
-/// The generalized winding number's label. Outside the box, a ray away from it crosses
-/// nothing (S = 0) and only the boundary term counts: an open surface can hold points
-/// beyond its corners' box (a rolled sheet does).
+/// The generalized winding number's label. First through the cap (cap_tree.hpp): with
+/// S the signed crossings of a ray with F and the cap together (exact) and
+/// j - 1/2 < w_Cap < j + 1/2 certified, w = S - w_Cap lies strictly between n - 1/2 and
+/// n + 1/2, n = S - j, so the rule's label is that of the integer n. Where the cap does
+/// not settle the point (it lies on a cap triangle, w_Cap is too near a half-integer, or
+/// the point does not map into the trees' frame), and for plain doubles: the ray's count
+/// with F plus the cone's term, from the boundary tree, else over every edge, exactly.
+/// Outside the box, a ray away from it crosses no face and no cap triangle (S = 0, w =
+/// -w_Cap): an open surface can hold points beyond its corners' box (a rolled sheet does).
 Location Classifier::classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                    ClassifierScratch& scratch) {
-  // The tree's term first (certified, and settling all but points near a level); the term
-  // over every edge, with its exact stages, where it does not settle the label.
+  // The cap first, then the tree's term (certified, and settling all but points near a
+  // level); the term over every edge, with its exact stages, where neither settles it.
   const bool certified = arithmetic != Arithmetic::plain_double;
   if (internal::strictly_outside(s.box, point)) {
     const Vector3 ray = internal::ray_away_from(s.box, point);
     if (const std::optional<Point3> mapped = s.in_tree_frame(point); mapped && certified) {
+      if (const std::optional<Enclosure> cap = s.cap.enclosure_apart(*mapped, scratch.cap)) {
+        ++scratch.routes.cap;
+        return cap_label(s.rule, 0, *cap);
+      }
+      ++scratch.routes.cap_unsettled;
       if (const auto label = internal::open_label_from_tree(s.rule, 0, *mapped, ray,
                                                             s.boundary_tree, scratch.boundary)) {
+        ++scratch.routes.cone;
         return *label;
       }
     }
     const auto label =
         internal::open_label(s.rule, 0, point, ray, s.mesh.vertices, s.boundary, arithmetic);
+    if (certified) ++scratch.routes.cone;
     return label.value_or(Location::undecided);  // a ray that meets no edge: never nullopt
   }
   if (s.open_cells && certified) {
     if (const std::optional<Location> known = s.open_cells->lookup(point)) return *known;
   }
   const RayOrigin origin(s, point);
-  // The tree holds the vertices the rays see; a point the frame cannot map sees others.
+  // The trees hold the vertices the rays see; a point the frame cannot map sees others.
   const bool tree_sees_origin =
       certified && (!s.frame.on() || origin.vertices.data() == s.frame.vertices().data());
   return kernel::with_signs(arithmetic, [&](const auto& signs) {
+    // The cap's enclosure does not depend on the ray: found once, at the first ray that
+    // crosses F and the cap cleanly.
+    enum class CapRoute : std::uint8_t { untried, settled, off };
+    CapRoute route = tree_sees_origin ? CapRoute::untried : CapRoute::off;
+    Enclosure cap{};
     for (std::size_t k = 0; k < max_rays(arithmetic); ++k) {
       const SignedRayCount count = count_ray(s, signs, arithmetic, origin, k, scratch);
       if (count.kind == RayCount::origin_on_face) return Location::boundary;
       if (count.kind == RayCount::degenerate) continue;
+      if (route != CapRoute::off) {
+        const SignedRayCount on_cap = count_cap_ray(s, signs, origin, k, scratch);
+        if (on_cap.kind == RayCount::degenerate) {
+          ++scratch.routes.cap_degenerate_rays;
+          continue;
+        }
+        if (on_cap.kind == RayCount::origin_on_face) {
+          // On the cap, not on F: w_Cap is not defined there, w_F is; the cone decides.
+          ++scratch.routes.on_cap;
+          route = CapRoute::off;
+        } else if (route == CapRoute::untried) {
+          if (const std::optional<Enclosure> e = s.cap.enclosure_apart(origin.exact, scratch.cap)) {
+            cap = *e;
+            route = CapRoute::settled;
+          } else {
+            ++scratch.routes.cap_unsettled;
+            route = CapRoute::off;
+          }
+        }
+        if (route == CapRoute::settled) {
+          ++scratch.routes.cap;
+          return cap_label(s.rule, count.total + on_cap.total, cap);
+        }
+      }
       if (tree_sees_origin) {
         if (const auto label =
                 internal::open_label_from_tree(s.rule, count.total, origin.exact, ray_direction(k),
                                                s.boundary_tree, scratch.boundary)) {
+          ++scratch.routes.cone;
           return *label;
         }
       }
       if (const auto label = internal::open_label(s.rule, count.total, point, ray_direction(k),
                                                   s.mesh.vertices, s.boundary, arithmetic)) {
+        if (certified) ++scratch.routes.cone;
         return *label;
       }
     }
@@ -350,8 +465,11 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
       s.frame.on() ? s.frame.vertices() : std::span<const Point3>(s.mesh.vertices);
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, ray_vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
-  if (!s.boundary.empty()) s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
   const CandidateSearch search = candidate_search(options, s.mesh.faces.size());
+  if (!s.boundary.empty()) {
+    s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
+    s.build_cap(ray_vertices, search == CandidateSearch::brute_force);
+  }
   if (search == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);
   if (search == CandidateSearch::box_tree) s.tree.emplace(s.mesh, s.box);
   // A cell's points share one integer winding number; an open surface's vary, and its

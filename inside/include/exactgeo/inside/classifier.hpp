@@ -14,9 +14,14 @@
 // decide every one.
 //
 // An open surface (boundary edges, each run net once more one way than the other) is
-// labelled by its generalized winding number: the ray's signed count plus a certified
-// term over the boundary edges (exactgeo/predicates/boundary_term.hpp,
-// internal/open_label.hpp), `undecided` where no precision allowed settles it.
+// labelled by its generalized winding number w. With exact and rational arithmetic the
+// surface F is first closed by a fixed cap on its rim (exactgeo/predicates/cap_tree.hpp):
+// w = S - w_Cap, S the ray's signed count with F and the cap together, w_Cap enclosed
+// between two consecutive half-integers by the cap's tree. Where that does not settle
+// (the point on a cap triangle, or w_Cap too near a half-integer), and for plain doubles:
+// the ray's signed count with F plus a certified term over the boundary edges
+// (exactgeo/predicates/boundary_term.hpp, internal/open_label.hpp), `undecided` where no
+// precision allowed settles it.
 
 #include <array>
 #include <cstddef>
@@ -34,6 +39,7 @@
 #include "exactgeo/predicates/arithmetic.hpp"
 #include "exactgeo/predicates/boundary_term.hpp"
 #include "exactgeo/predicates/boundary_tree.hpp"
+#include "exactgeo/predicates/cap_tree.hpp"
 #include "exactgeo/predicates/crossing_parity.hpp"
 #include "exactgeo/predicates/point.hpp"
 
@@ -90,6 +96,25 @@ struct ClassifierScratch {
   std::vector<std::uint32_t> candidates;
   /// An open surface's boundary edges near the point and far nodes' ends.
   BoundaryTree::Refinement boundary;
+  /// An open surface's cap: the candidate cap triangles for a ray, and the cap tree's far
+  /// nodes.
+  std::vector<std::uint32_t> cap_candidates;
+  CapTree::Refinement cap;
+  /// How an open surface's labels were reached, counted over the classify calls that used
+  /// this scratch (exact and rational arithmetic; for tests and measurements).
+  struct OpenRoutes {
+    std::size_t cap = 0;   ///< labels from S - w_Cap (F's crossings and the cap's)
+    std::size_t cone = 0;  ///< labels from the cone's term (the boundary tree, or every edge)
+    /// Points whose ray origin lies on a cap triangle (not on F): labelled by the cone.
+    std::size_t on_cap = 0;
+    /// Points whose cap enclosure did not settle (w_Cap too near a half-integer, or the
+    /// point within rounding of a cap triangle): labelled by the cone.
+    std::size_t cap_unsettled = 0;
+    /// Rays cast again because they met a cap triangle's edge or corner (or lay in its
+    /// plane), F's crossings being clean.
+    std::size_t cap_degenerate_rays = 0;
+  };
+  OpenRoutes routes;
 };
 
 class Classifier {
@@ -187,6 +212,11 @@ class Classifier {
   static SignedRayCount count_ray(const State& s, const Signs& signs, Arithmetic arithmetic,
                                   const RayOrigin& origin, std::size_t k,
                                   ClassifierScratch& scratch);
+  /// The signed crossings of ray k with the cap's triangles (an open surface's, with exact
+  /// or rational signs).
+  template <class Signs>
+  static SignedRayCount count_cap_ray(const State& s, const Signs& signs, const RayOrigin& origin,
+                                      std::size_t k, ClassifierScratch& scratch);
   /// classify for an open surface.
   static Location classify_open(const State& s, const Point3& point, Arithmetic arithmetic,
                                 ClassifierScratch& scratch);
