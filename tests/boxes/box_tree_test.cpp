@@ -84,7 +84,9 @@ Pairs walked(const Walk<NA, NB>& walk, std::size_t splits) {
 
 TEST(BoxTree, OneTreeReportsEveryOverlappingPairOnce) {
   auto rng = testing::seeded_engine("boxes.box_tree.self");
-  for (int round = 0; round < 6; ++round) {
+  // 6 rounds at full effort (tests/support/seed.hpp), at least one at each magnitude.
+  const auto rounds = static_cast<int>(testing::scaled_trials(6, 2));
+  for (int round = 0; round < rounds; ++round) {
     const std::size_t vertices = 400;
     const VertexBoxes v = random_vertices(rng, vertices, round % 2 ? 1e-300 : 1.0);
     const auto faces = random_primitives<4>(rng, 600, vertices);

@@ -109,7 +109,9 @@ template <class Query>
 void check_random_queries(const char* stream) {
   Rng rng = testing::seeded_engine(stream);
   Tally tally;
-  for (int i = 0; i < 1500; ++i) {
+  // 1500 at full effort (tests/support/seed.hpp), at least one of each five kinds.
+  const auto count = static_cast<int>(testing::scaled_trials(1500, 5));
+  for (int i = 0; i < count; ++i) {
     const Query q = varied_query<Query>(rng, i);
     check_claims(q, rng, 3, tally);
     if (::testing::Test::HasFatalFailure()) return;
@@ -151,7 +153,9 @@ double worst_error_ratio(const Query& q, Rng& rng) {
 TEST(Coplanarity, CoefficientErrorsStayWithinTheThreshold) {
   Rng rng = testing::seeded_engine("Coplanarity.CoefficientErrors");
   double worst = 0.0;
-  for (int i = 0; i < 1500; ++i) {
+  // 1500 at full effort (tests/support/seed.hpp), at least one of each five kinds.
+  const auto cases = static_cast<int>(testing::scaled_trials(1500, 5));
+  for (int i = 0; i < cases; ++i) {
     worst = std::max(worst, worst_error_ratio(varied_query<VertexFaceQuery>(rng, i), rng));
     worst = std::max(worst, worst_error_ratio(varied_query<EdgeEdgeQuery>(rng, i), rng));
     ASSERT_LE(worst, 1.0) << "case " << i;

@@ -114,7 +114,9 @@ double worst_error_ratio(const Query& q, Rng& rng) {
 TEST(SliceSides, CoefficientErrorsStayWithinTheThreshold) {
   Rng rng = testing::seeded_engine("SliceSides.CoefficientErrors");
   double worst = 0.0;
-  for (int i = 0; i < 400; ++i) {
+  // 400 at full effort (tests/support/seed.hpp), at least one of each five kinds.
+  const auto cases = static_cast<int>(testing::scaled_trials(400, 5));
+  for (int i = 0; i < cases; ++i) {
     worst = std::max(worst, worst_error_ratio(varied_query<VertexFaceQuery>(rng, i), rng));
     worst = std::max(worst, worst_error_ratio(varied_query<EdgeEdgeQuery>(rng, i), rng));
     ASSERT_LE(worst, 1.0) << "case " << i;
@@ -158,7 +160,9 @@ TEST(SliceSides, ClaimsHoldNearDegeneracies) {
 }
 
 TEST(SliceSides, ClaimsHoldOnRandomVertexFaceQueries) {
-  const Tally t = check_queries("SliceSides.VertexFace", 250, [](Rng& rng, int i) {
+  // 250 at full effort (tests/support/seed.hpp), at least one of each five kinds.
+  const auto count = static_cast<int>(testing::scaled_trials(250, 5));
+  const Tally t = check_queries("SliceSides.VertexFace", count, [](Rng& rng, int i) {
     return varied_query<VertexFaceQuery>(rng, i);
   });
   // The mix includes exact scalings by 2^+-200 and more, beyond the quartics' guard, where
@@ -169,7 +173,9 @@ TEST(SliceSides, ClaimsHoldOnRandomVertexFaceQueries) {
 }
 
 TEST(SliceSides, ClaimsHoldOnRandomEdgeEdgeQueries) {
-  const Tally t = check_queries("SliceSides.EdgeEdge", 250, [](Rng& rng, int i) {
+  // 250 at full effort (tests/support/seed.hpp), at least one of each five kinds.
+  const auto count = static_cast<int>(testing::scaled_trials(250, 5));
+  const Tally t = check_queries("SliceSides.EdgeEdge", count, [](Rng& rng, int i) {
     return varied_query<EdgeEdgeQuery>(rng, i);
   });
   // The mix includes exact scalings by 2^+-200 and more, beyond the quartics' guard, where

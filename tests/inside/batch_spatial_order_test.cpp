@@ -74,14 +74,16 @@ constexpr std::size_t kOracleEvery = 320;
 
 /// Every point's label from classify_batch equals its own call's, on every thread count,
 /// and, on a sample, the label of the generalized winding number's definition (`unscaled`:
-/// the mesh before its scaling by 2^scale, whose triangles the oracle integrates).
+/// the mesh before its scaling by 2^scale, whose triangles the oracle integrates). The
+/// `random` points scale with the effort (tests/support/seed.hpp); the points next to the
+/// rim edges are all kept.
 void expect_batch_equals_one_by_one(const Mesh& unscaled, int scale, std::mt19937_64& rng,
                                     std::size_t random) {
   const Mesh mesh = testing::scaled(unscaled, scale);
   const Classifier classifier(mesh);
   ASSERT_TRUE(classifier.open());
   ASSERT_GE(classifier.boundary().size(), kSpatialOrderEdges);
-  const std::vector<Point3> points = probes(rng, classifier, random);
+  const std::vector<Point3> points = probes(rng, classifier, testing::scaled_trials(random));
   std::vector<Location> one_by_one(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     one_by_one[i] = classifier.classify(points[i], Arithmetic::exact);

@@ -51,8 +51,10 @@ TEST_P(EmbreeCandidatesTest, IncludeEveryFaceTheExactRayTouches) {
   };
 
   // Extreme magnitudes send the exact predicates to GMP (products leave the double
-  // range), about 100 times slower: fewer rays there.
-  const int trials = std::abs(m.exponent) > 100 ? 24 : 400;
+  // range), about 100 times slower: fewer rays there. Scaled with the effort
+  // (tests/support/seed.hpp).
+  const auto trials =
+      static_cast<int>(testing::scaled_trials(std::abs(m.exponent) > 100 ? 24 : 400));
   std::size_t touched = 0;
   for (int trial = 0; trial < trials; ++trial) {
     const std::size_t k = direction(rng);

@@ -133,8 +133,11 @@ TEST_P(OpenTriangles, LabelsAreThoseOfTheDefinition) {
   const int k = GetParam();
   auto rng = testing::seeded_engine("inside.open.triangles." + std::to_string(k));
   std::uniform_real_distribution<double> anywhere(-1.3, 1.3), unit(0.0, 1.0);
-  // Extreme magnitudes take the exact stages for many signs: fewer points there.
-  const int meshes = 6, points = k == 0 ? 120 : 40;
+  // Extreme magnitudes take the exact stages for many signs: fewer points there. Meshes
+  // and points scale with the effort (tests/support/seed.hpp), at least one mesh of each
+  // number of holes.
+  const int meshes = static_cast<int>(testing::scaled_trials(6, 3));
+  const int points = static_cast<int>(testing::scaled_trials(k == 0 ? 120 : 40, 10));
   Tally tally;
   for (int m = 0; m < meshes; ++m) {
     Mesh mesh = subdivided_octahedron(rng, k);
@@ -273,7 +276,8 @@ TEST(OpenPatches, LabelsAndValuesAreThoseOfTheDecomposition) {
     }
     for (const FillRule rule : {FillRule::nonzero, FillRule::positive}) {
       const Classifier classifier(mesh, with(rule));
-      for (int p = 0; p < 150; ++p) {
+      const int points = static_cast<int>(testing::scaled_trials(150, 10));  // every cut face
+      for (int p = 0; p < points; ++p) {
         const Point3 q{anywhere(rng), anywhere(rng), anywhere(rng)};
         // The oracle's own ray: the first one every patch answers even or odd along.
         std::optional<std::int64_t> crossings;

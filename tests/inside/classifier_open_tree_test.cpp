@@ -115,6 +115,12 @@ void expect_oracle_labels(const Mesh& mesh, int copies, std::mt19937_64& rng, in
   }
 }
 
+/// A count of points scaled with the effort (tests/support/seed.hpp), at least `least`.
+int scaled_points(int full, int least) {
+  return static_cast<int>(
+      testing::scaled_trials(static_cast<std::size_t>(full), static_cast<std::size_t>(least)));
+}
+
 class SpotWithFacesCut : public ::testing::TestWithParam<int> {};
 
 TEST_P(SpotWithFacesCut, LabelsAreThoseOfTheDefinition) {
@@ -130,7 +136,8 @@ TEST_P(SpotWithFacesCut, LabelsAreThoseOfTheDefinition) {
     Mesh mesh = spot;
     std::shuffle(mesh.faces.begin(), mesh.faces.end(), rng);
     mesh.faces.resize(mesh.faces.size() - cut);
-    expect_oracle_labels(scaled(mesh, scale), 1, rng, 14, 10, 4, tally);
+    expect_oracle_labels(scaled(mesh, scale), 1, rng, scaled_points(14, 6), scaled_points(10, 4),
+                         scaled_points(4, 2), tally);
     ASSERT_FALSE(HasFatalFailure());
   }
   EXPECT_GT(tally.inside, tally.compared / 10);
@@ -156,7 +163,8 @@ TEST_P(HoledSphereThreeTimes, LabelsAreThoseOfTheDefinition) {
   Tally tally;
   for (int m = 0; m < 2; ++m) {
     const Mesh mesh = scaled(holed_sphere(rng, 24, 48), scale);
-    expect_oracle_labels(mesh, 3, rng, 20, 12, 4, tally);
+    expect_oracle_labels(mesh, 3, rng, scaled_points(20, 6), scaled_points(12, 4),
+                         scaled_points(4, 2), tally);
     ASSERT_FALSE(HasFatalFailure());
   }
   EXPECT_GT(tally.inside, tally.compared / 10);
@@ -177,7 +185,8 @@ TEST_P(PerforatedSheet, LabelsAreThoseOfTheDefinition) {
   const Mesh mesh = perforated_sheet(rng, 56, 14);
   Tally tally;
   for (const int copies : {1, 3}) {
-    expect_oracle_labels(scaled(mesh, scale), copies, rng, 18, 14, 4, tally);
+    expect_oracle_labels(scaled(mesh, scale), copies, rng, scaled_points(18, 6),
+                         scaled_points(14, 4), scaled_points(4, 2), tally);
     ASSERT_FALSE(HasFatalFailure());
   }
   const Classifier classifier(mesh);

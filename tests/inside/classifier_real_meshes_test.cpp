@@ -90,8 +90,10 @@ std::vector<Point3> test_points(const Mesh& mesh, const mesh::Box& box, std::mt1
   return points;
 }
 
-void expect_embree_matches_brute_force(const std::string& path, std::size_t count) {
+void expect_embree_matches_brute_force(const std::string& path, std::size_t full_count) {
   SCOPED_TRACE(path);
+  // Scaled with the effort (tests/support/seed.hpp).
+  const std::size_t count = testing::scaled_trials(full_count, 60);
   const Mesh mesh = mesh::load_mesh(path).mesh;
   const Classifier embree(mesh);
   const Classifier brute(mesh, {.candidates = CandidateSearch::brute_force,

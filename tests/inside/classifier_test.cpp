@@ -660,7 +660,9 @@ TEST(KnownTruthPolycube, SingleVoxelAndEdgeTouchingPair) {
 void moved_test(std::string_view stream, bool triangles) {
   auto rng = testing::seeded_engine(stream);
   const std::array<int, 3> sizes{4, 5, 4};
-  for (std::size_t trial = 0; trial < sizes.size(); ++trial) {
+  // Every size at least once at a lower effort (tests/support/seed.hpp).
+  const std::size_t trials = testing::scaled_trials(sizes.size(), 2);
+  for (std::size_t trial = 0; trial < trials; ++trial) {
     const int n = sizes[trial];
     const Voxels voxels = random_density_voxels(rng, n);
     const Variant variant{triangles, true, rng()};

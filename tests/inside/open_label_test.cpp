@@ -74,8 +74,11 @@ std::string str(const std::optional<Location>& l) {
 TEST(OpenLabel, StackedTrianglesAgainstTheDefinition) {
   auto rng = testing::seeded_engine("inside.open_label.stacked");
   std::size_t compared = 0, inside = 0, refused_rays = 0, plain_agree = 0, plain_compared = 0;
+  // 120 triangles a scale at full effort (tests/support/seed.hpp), at least one of each
+  // multiplicity.
+  const auto trials = static_cast<int>(testing::scaled_trials(120, 5));
   for (const int scale : {0, 1000, -1000}) {
-    for (int trial = 0; trial < 120; ++trial) {
+    for (int trial = 0; trial < trials; ++trial) {
       const int k = std::array{1, 2, 3, 5, 8}[static_cast<std::size_t>(trial % 5)];
       std::vector<Point3> vertices;
       for (int c = 0; c < 3; ++c)

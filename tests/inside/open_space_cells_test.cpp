@@ -49,9 +49,13 @@ struct Tally {
 /// Points anywhere in the box, next to the rims, and near points a cell labels (moved by
 /// 2^-4 to 2^-40 of the box, so into neighbouring cells and onto their shared planes'
 /// neighbourhoods): the classifier with cells against the one without, for both rules, and
-/// the first `oracle_points` that a cell labels against the definition.
-void expect_cells_right(const Mesh& mesh, std::mt19937_64& rng, int anywhere, int near_rims,
-                        int oracle_points, Tally& tally) {
+/// the first `oracle_points` that a cell labels against the definition. The counts of
+/// points anywhere and near the rims scale with the effort (tests/support/seed.hpp), at
+/// least one of each 30 offsets near the rims.
+void expect_cells_right(const Mesh& mesh, std::mt19937_64& rng, int full_anywhere,
+                        int full_near_rims, int oracle_points, Tally& tally) {
+  const int anywhere = static_cast<int>(testing::scaled_trials(full_anywhere, 30));
+  const int near_rims = static_cast<int>(testing::scaled_trials(full_near_rims, 30));
   const std::vector<Triangle> triangles = testing::triangles_of(mesh);
   for (const FillRule rule : {FillRule::nonzero, FillRule::positive}) {
     const Classifier cells(mesh, {.rule = rule});

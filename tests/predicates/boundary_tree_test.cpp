@@ -152,9 +152,11 @@ TEST_P(BoundaryTreeChains, EnclosuresHoldTheOraclesTerm) {
     ASSERT_EQ(tree.edge_count(), chain.edges.size());
     Tally tally;
     // The oracle takes about 35 us an edge: fewer points on the long chains and far from
-    // magnitude 1 (where every node is near, see below).
+    // magnitude 1 (where every node is near, see below). Scaled with the effort
+    // (tests/support/seed.hpp), at least one point for each of the three rays.
     const std::size_t n = chain.edges.size();
-    const int points = k != 0 ? 4 : n > 2000 ? 4 : n > 500 ? 12 : 30;
+    const std::size_t full = k != 0 ? 4 : n > 2000 ? 4 : n > 500 ? 12 : 30;
+    const auto points = static_cast<int>(testing::scaled_trials(full, 3));
     for (int i = 0; i < points; ++i) {
       const Vector3 ray = ray_direction(static_cast<std::size_t>(i % 3));
       // Anywhere, far away, and near an edge (its midpoint moved by 2^-4 to 2^-30).
@@ -347,7 +349,10 @@ TEST_P(BoundaryTreeLevels, SettledLevelsAreOnTheOraclesSide) {
   chain = scaled(chain, k);
   const BoundaryTree tree(chain.vertices, chain.edges);
   std::size_t settled = 0, points = 0, angles = 0;
-  for (int i = 0; i < (k == 0 ? 40 : 8); ++i) {
+  // Scaled with the effort (tests/support/seed.hpp), at least one point for each of the
+  // five rays.
+  const auto trials = static_cast<int>(testing::scaled_trials(k == 0 ? 40 : 8, 5));
+  for (int i = 0; i < trials; ++i) {
     const Point3 p{std::ldexp(1.2 * unit(rng), k), std::ldexp(1.2 * unit(rng), k),
                    std::ldexp(0.3 * unit(rng), k)};
     const Vector3 ray = ray_direction(static_cast<std::size_t>(i % 5));

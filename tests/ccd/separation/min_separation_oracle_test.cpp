@@ -434,7 +434,8 @@ double random_delta(Rng& rng) {
 
 TEST(MinSeparationOracle, RandomVertexFaceConsistency) {
   Rng rng = exactgeo::testing::seeded_engine("min_separation_oracle");
-  for (int iteration = 0; iteration < 120; ++iteration) {
+  const auto iterations = static_cast<int>(exactgeo::testing::scaled_trials(120));
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     const VertexFaceQuery q = random_vertex_face(rng);
     const double delta = random_delta(rng), larger = delta + random_delta(rng) + 0.25;
     const MinSeparationAnswer a = min_separation_oracle(q, delta);
@@ -455,7 +456,8 @@ TEST(MinSeparationOracle, RandomVertexFaceConsistency) {
 
 TEST(MinSeparationOracle, RandomEdgeEdgeConsistency) {
   Rng rng = exactgeo::testing::seeded_engine("min_separation_oracle.edge_edge");
-  for (int iteration = 0; iteration < 120; ++iteration) {
+  const auto iterations = static_cast<int>(exactgeo::testing::scaled_trials(120));
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     const EdgeEdgeQuery q = random_edge_edge(rng);
     const double delta = random_delta(rng), larger = delta + random_delta(rng) + 0.25;
     const MinSeparationAnswer a = min_separation_oracle(q, delta);
@@ -506,7 +508,8 @@ TEST(MinSeparationOracle, RigidTranslationKeepsTheStaticDistance) {
 // Arbitrary doubles (long dyadic fractions): the answer still agrees with the samples.
 TEST(MinSeparationOracle, RandomDoublesAgreeWithSamples) {
   Rng rng = exactgeo::testing::seeded_engine("min_separation_oracle.doubles");
-  for (int iteration = 0; iteration < 30; ++iteration) {
+  const auto iterations = static_cast<int>(exactgeo::testing::scaled_trials(30));
+  for (int iteration = 0; iteration < iterations; ++iteration) {
     SCOPED_TRACE(::testing::Message() << "iteration " << iteration);
     const double delta = exactgeo::testing::uniform(rng, 0.0, 1.0);
     const VertexFaceQuery vf{
