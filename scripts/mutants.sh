@@ -198,8 +198,9 @@ MUTANTS = [
     # bound, the ray-box test that makes the tetrahedra's 4 pi vanish, the chords; the
     # refinement's bookkeeping (an opened node's value left in the sum, the running sums'
     # rounding dropped).
-    ("boundary_tree_area_halved",
-     "predicates/src/boundary_tree.cpp",
+    # (The area bound and the second-order coefficients are far_field.hpp's, the cap's too.)
+    ("far_field_area_halved",
+     "predicates/src/far_field.hpp",
      "return up(0.5 * length);", "return up(0.25 * length);",
      ["predicates_tests", "inside_tests"]),
     ("boundary_tree_nested_bound_without_the_childrens_chords",
@@ -259,8 +260,8 @@ MUTANTS = [
      "predicates/src/cap_tree.cpp",
      "num = std::copysign(std::abs(num), side);", "num = std::abs(num);",
      ["predicates_tests", "inside_tests"]),
-    ("boundary_tree_second_order_bound_without_its_reach",
-     "predicates/src/boundary_tree.cpp",
+    ("far_field_second_order_bound_without_its_reach",
+     "predicates/src/far_field.hpp",
      "node.second_fan = up(up(up(1.5 * node.reach) * node.reach) * node.fan);",
      "node.second_fan = 0.0 * node.fan;",
      ["predicates_tests", "inside_tests"]),

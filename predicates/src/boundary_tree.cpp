@@ -13,6 +13,7 @@
 #include "boundary_term_filter.hpp"
 #include "box_distance.hpp"
 #include "double_interval.hpp"
+#include "far_field.hpp"
 
 // The identity, why a ray that misses a node's box makes it exact, and the bound:
 // boundary_tree.hpp.
@@ -20,37 +21,12 @@
 namespace exactgeo {
 namespace {
 
+using internal::area_above;
 using internal::DoubleInterval;
+using internal::up;
 
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
-/// A bound on the expansion's rounding relative to |M| / |c - p|^2 + 4 |Q| / |c - p|^3
-/// (|Q| the sum of its entries' magnitudes, which bounds the trace and |v^T Q v| / |v|^2):
-/// c - p within u per component, which moves (c - p) / |c - p|^3 by 2u relatively; the
-/// dot within 3u of |M| |c - p|; |c - p|^3 within 6u; the quotient u: 12u for the first
-/// term; the trace, v^T Q v (six products and five sums, v within u) and the difference,
-/// then the two quotients, within 20u of the second's bound: far below this.
-constexpr double kExpansionRounding = 0x1p-40;
-
-double up(double x) noexcept {
-  return DoubleInterval::up(x);
-}
-
-/// area(a, b, c) (half the cross product's length), its upper end in outward-rounded
-/// intervals; +inf when that overflows.
-double area_above(const Point3& a, const Point3& b, const Point3& c) noexcept {
-  std::array<DoubleInterval, 3> u, v;
-  for (int i = 0; i < 3; ++i) {
-    u[i] = DoubleInterval::difference(a[i], c[i]);
-    v[i] = DoubleInterval::difference(b[i], c[i]);
-  }
-  const DoubleInterval x = u[1] * v[2] - u[2] * v[1];
-  const DoubleInterval y = u[2] * v[0] - u[0] * v[2];
-  const DoubleInterval z = u[0] * v[1] - u[1] * v[0];
-  const double length = sqrt(x * x + y * y + z * z).hi;
-  if (!std::isfinite(length)) return std::numeric_limits<double>::infinity();
-  return up(0.5 * length);
-}
 
 /// |b - a|, its upper end in outward-rounded intervals; +inf when that overflows.
 double length_above(const Point3& a, const Point3& b) noexcept {
@@ -152,14 +128,14 @@ std::vector<BoundaryTree::TrailPlace> trail_places(std::span<const BoundaryEdge>
 }  // namespace
 
 /// M = (1/2) sum m (a - c) x (b - c) and Q = sum m (1/6) ((a - c) x (b - c))
-/// ((a - c) + (b - c))^T (boundary_tree.hpp, "Second order") in outward-rounded
-/// intervals, their midpoints and bounds on their errors and sizes; the reach, the
-/// distance from c to the farthest corner of the box, rounded up.
-void BoundaryTree::set_expansion(Node& node, std::span<const BoundaryEdge> edges) const {
-  const Point3& c = node.centre;
-  std::array<DoubleInterval, 3> m{};
-  std::array<std::array<DoubleInterval, 3>, 3> q{};
+/// ((a - c) + (b - c))^T (boundary_tree.hpp, "Second order") of the fan of `edges` about
+/// c, in outward-rounded intervals.
+internal::Moments BoundaryTree::fan_moments(const Point3& c,
+                                            std::span<const BoundaryEdge> edges) const {
+  internal::Moments moments;
+  auto& [m, q] = moments;
   const DoubleInterval sixth = DoubleInterval{1.0, 1.0} / DoubleInterval::exact(6.0);
+  const DoubleInterval half = DoubleInterval::exact(0.5);
   for (const BoundaryEdge& e : edges) {
     std::array<DoubleInterval, 3> u, v, x, s;
     for (int i = 0; i < 3; ++i) {
@@ -172,57 +148,12 @@ void BoundaryTree::set_expansion(Node& node, std::span<const BoundaryEdge> edges
     x[1] = (u[2] * v[0] - u[0] * v[2]) * times;
     x[2] = (u[0] * v[1] - u[1] * v[0]) * times;
     for (int i = 0; i < 3; ++i) {
-      m[i] = m[i] + x[i];
+      m[i] = m[i] + x[i] * half;
       for (int j = 0; j < 3; ++j)
         q[i][j] = q[i][j] + x[i] * s[j] * sixth;
     }
   }
-  const auto midpoint = [](const DoubleInterval& x, double& error) {
-    const double mid = std::clamp(0.5 * x.lo + 0.5 * x.hi, x.lo, x.hi);
-    error = up(std::max(x.hi - mid, mid - x.lo));
-    return mid;
-  };
-  double error = 0.0, size2 = 0.0, reach2 = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    double e = 0.0;
-    node.moment[i] = midpoint(m[i] * DoubleInterval::exact(0.5), e);
-    error = up(error + e);
-    size2 = up(size2 + up(node.moment[i] * node.moment[i]));
-    const double r = up(std::max(c[i] - node.lower[i], node.upper[i] - c[i]));
-    reach2 = up(reach2 + up(r * r));
-  }
-  node.moment_error = error;
-  node.moment_size = up(std::sqrt(size2));
-  node.reach = up(std::sqrt(reach2));
-  // The symmetric part, (Q + Q^T) / 2: an off-diagonal entry stands for two of the nine.
-  constexpr std::array<std::array<int, 2>, 6> kEntries{
-      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
-  double quad_error = 0.0, quad_size = 0.0;
-  for (std::size_t k = 0; k < kEntries.size(); ++k) {
-    const auto [i, j] = kEntries[k];
-    double e = 0.0;
-    node.quad[k] = midpoint((q[i][j] + q[j][i]) * DoubleInterval::exact(0.5), e);
-    const double copies = i == j ? 1.0 : 2.0;
-    quad_error = up(quad_error + copies * e);
-    quad_size = up(quad_size + copies * std::abs(node.quad[k]));
-  }
-  node.quad_error = quad_error;
-  node.quad_size = quad_size;
-  node.expansion = std::isfinite(error) && std::isfinite(node.moment_size) &&
-                   std::isfinite(node.reach) && std::isfinite(quad_error) &&
-                   std::isfinite(quad_size);
-}
-
-/// The second-order bound's parts that do not depend on the point (far_value), each an
-/// upper bound by outward rounding (products and sums of positive upper bounds, each
-/// moved up an ulp): (3/2) rho^2 F over d^4, (1/2) (moment_error + kExpansionRounding
-/// moment_size) over d^2, ((3/2) quad_error + 2 kExpansionRounding quad_size) over d^3.
-/// An overflow makes one infinite, and the bound then never chosen.
-void BoundaryTree::set_bound_coefficients(Node& node) noexcept {
-  node.reach4 = 4 * node.reach * node.reach;  // where to try it: a cost, not a bound
-  node.second_fan = up(up(up(1.5 * node.reach) * node.reach) * node.fan);
-  node.second_moment = up(0.5 * up(node.moment_error + up(kExpansionRounding * node.moment_size)));
-  node.second_quad = up(up(1.5 * node.quad_error) + up(2 * kExpansionRounding * node.quad_size));
+  return moments;
 }
 
 BoundaryTree::BoundaryTree(std::span<const Point3> vertices, std::span<const BoundaryEdge> edges) {
@@ -340,7 +271,7 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
   std::vector<BoundaryEdge> closed(own.begin(), own.end());
   for (const BoundaryEdge& e : chords)
     closed.push_back({e.to, e.from, e.multiplicity});
-  set_expansion(node, closed);
+  const internal::Moments moments = fan_moments(centre, closed);
   // F = sum |m| area(a, b, c) over Z, rounded up (the children may give a smaller one,
   // below).
   const auto fan_of = [&](std::span<const BoundaryEdge> edges) {
@@ -415,7 +346,7 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
   }
   // (A node of more chords costs nearly what its edges cost, and is opened.)
   node.far_pays = 2 * node.chords_count < node.count && std::isfinite(node.fan);
-  set_bound_coefficients(node);
+  internal::set_far_field(node, moments);
   nodes_[index] = node;
   return index;
 }
@@ -448,7 +379,7 @@ struct BoundaryTree::Query {
   // 2^-400 < d^2 < 2^400 neither d^4 nor |c - p|^3 below overflows or underflows.)
   if (node.expansion && d2 > node.reach4 && d2 > 0x1p-400 && d2 < 0x1p400) {
     // d from below (the root within u/2); the coefficients are upper bounds
-    // (set_bound_coefficients), and the three quotients (d^4 and d^3 within u, the
+    // (internal::set_far_field), and the three quotients (d^4 and d^3 within u, the
     // quotients within u) and their sum (2u) within 4u, all positive.
     const double d = std::sqrt(d2) * (1 - 0x1p-50);
     const double d3 = d2 * d;

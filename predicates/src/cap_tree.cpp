@@ -13,39 +13,19 @@
 #include "box_distance.hpp"
 #include "double_interval.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
+#include "far_field.hpp"
 
 // The cap, the identity and the bounds: cap_tree.hpp.
 
 namespace exactgeo {
 namespace {
 
+using internal::area_above;
 using internal::DoubleInterval;
+using internal::up;
 
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
-/// As boundary_tree.cpp's: a bound on the expansion's rounding relative to
-/// |M| / |c - p|^2 + 4 |Q| / |c - p|^3 (the same evaluation, derived there).
-constexpr double kExpansionRounding = 0x1p-40;
-
-double up(double x) noexcept {
-  return DoubleInterval::up(x);
-}
-
-/// area(a, b, c), its upper end in outward-rounded intervals; +inf when that overflows.
-double area_above(const Point3& a, const Point3& b, const Point3& c) noexcept {
-  std::array<DoubleInterval, 3> u, v;
-  for (int i = 0; i < 3; ++i) {
-    u[i] = DoubleInterval::difference(a[i], c[i]);
-    v[i] = DoubleInterval::difference(b[i], c[i]);
-  }
-  const DoubleInterval x = u[1] * v[2] - u[2] * v[1];
-  const DoubleInterval y = u[2] * v[0] - u[0] * v[2];
-  const DoubleInterval z = u[0] * v[1] - u[1] * v[0];
-  const double length = sqrt(x * x + y * y + z * z).hi;
-  if (!std::isfinite(length)) return std::numeric_limits<double>::infinity();
-  return up(0.5 * length);
-}
-
 // A triangle's half angle theta = atan2(N, D) (Van Oosterom and Strackee), N =
 // det[A, B, C], D = |A||B||C| + (A.B)|C| + (A.C)|B| + (B.C)|A|, A, B, C = corners - p,
 // in plain doubles, and its error bound. As boundary_term_filter.cpp's half_angle, whose
@@ -254,13 +234,12 @@ CapTree::CapTree(std::span<const Point3> vertices, std::span<const BoundaryEdge>
 }
 
 /// M = sum m (vector area) and Q = sum m (vector area) (centroid - c)^T in outward-rounded
-/// intervals (cap_tree.hpp, "Far nodes"), their midpoints and bounds on their errors and
-/// sizes, the reach, and the bound's coefficients: as BoundaryTree::set_expansion and
-/// set_bound_coefficients.
+/// intervals (cap_tree.hpp, "Far nodes"), and from them the node's expansion and its
+/// bound's coefficients (far_field.hpp).
 void CapTree::set_expansion(Node& node) const {
   const Point3& c = node.centre;
-  std::array<DoubleInterval, 3> m{};
-  std::array<std::array<DoubleInterval, 3>, 3> q{};
+  internal::Moments moments;
+  auto& [m, q] = moments;
   const DoubleInterval third = DoubleInterval{1.0, 1.0} / DoubleInterval::exact(3.0);
   const DoubleInterval half = DoubleInterval::exact(0.5);
   for (std::uint32_t t = node.first; t < node.first + node.count; ++t) {
@@ -284,45 +263,7 @@ void CapTree::set_expansion(Node& node) const {
         q[i][j] = q[i][j] + x[i] * s[j];
     }
   }
-  const auto midpoint = [](const DoubleInterval& x, double& error) {
-    const double mid = std::clamp(0.5 * x.lo + 0.5 * x.hi, x.lo, x.hi);
-    error = up(std::max(x.hi - mid, mid - x.lo));
-    return mid;
-  };
-  double error = 0.0, size2 = 0.0, reach2 = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    double err = 0.0;
-    node.moment[i] = midpoint(m[i], err);
-    error = up(error + err);
-    size2 = up(size2 + up(node.moment[i] * node.moment[i]));
-    const double r = up(std::max(c[i] - node.lower[i], node.upper[i] - c[i]));
-    reach2 = up(reach2 + up(r * r));
-  }
-  node.moment_error = error;
-  node.moment_size = up(std::sqrt(size2));
-  node.reach = up(std::sqrt(reach2));
-  constexpr std::array<std::array<int, 2>, 6> kEntries{
-      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
-  double quad_error = 0.0, quad_size = 0.0;
-  for (std::size_t k = 0; k < kEntries.size(); ++k) {
-    const auto [i, j] = kEntries[k];
-    double err = 0.0;
-    node.quad[k] = midpoint((q[i][j] + q[j][i]) * half, err);
-    const double copies = i == j ? 1.0 : 2.0;
-    quad_error = up(quad_error + copies * err);
-    quad_size = up(quad_size + copies * std::abs(node.quad[k]));
-  }
-  node.quad_error = quad_error;
-  node.quad_size = quad_size;
-  node.expansion = std::isfinite(error) && std::isfinite(node.moment_size) &&
-                   std::isfinite(node.reach) && std::isfinite(quad_error) &&
-                   std::isfinite(quad_size);
-  // (3/2) rho^2 F over d^4, (1/2) (moment_error + kExpansionRounding moment_size) over
-  // d^2, ((3/2) quad_error + 2 kExpansionRounding quad_size) over d^3, each rounded up.
-  node.reach4 = 4 * node.reach * node.reach;  // where to try it: a cost
-  node.second_fan = up(up(up(1.5 * node.reach) * node.reach) * node.fan);
-  node.second_moment = up(0.5 * up(node.moment_error + up(kExpansionRounding * node.moment_size)));
-  node.second_quad = up(up(1.5 * node.quad_error) + up(2 * kExpansionRounding * node.quad_size));
+  internal::set_far_field(node, moments);
 }
 
 /// The node's box, F, centre and expansion, from its triangles.

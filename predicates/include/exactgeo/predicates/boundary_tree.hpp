@@ -142,6 +142,10 @@
 
 namespace exactgeo {
 
+namespace internal {
+struct Moments;  // far_field.hpp
+}  // namespace internal
+
 /// The first cut of the refinement: nodes whose bound is above this (radians of half
 /// angle; the levels lie 2 pi apart) are opened before any angle is computed; later, a
 /// node is opened straight away where its bound exceeds an eighth of the smallest bound
@@ -255,8 +259,8 @@ class BoundaryTree {
     double reach = 0.0;
     bool expansion = false;  // all of these finite
     // The expansion's bound's coefficients, each rounded up (boundary_tree.cpp,
-    // set_bound_coefficients): 4 rho^2, where it is first tried, and the numerators of
-    // its three terms over d^4, d^2 and d^3.
+    // internal::set_far_field, far_field.hpp): 4 rho^2, where it is first tried, and the numerators
+    // of its three terms over d^4, d^2 and d^3.
     double reach4 = 0.0, second_fan = 0.0, second_moment = 0.0, second_quad = 0.0;
   };
   /// A far node's part of the sum: its chords' angles and expansion, their errors (in
@@ -270,8 +274,7 @@ class BoundaryTree {
   static double dipole_bound(const Node& node, double d2) noexcept;
   void join_chords(std::vector<std::pair<VertexIndex, std::int64_t>>& starts,
                    std::vector<std::pair<VertexIndex, std::int64_t>>& finishes);
-  void set_expansion(Node& node, std::span<const BoundaryEdge> edges) const;
-  static void set_bound_coefficients(Node& node) noexcept;
+  internal::Moments fan_moments(const Point3& centre, std::span<const BoundaryEdge> edges) const;
   std::optional<FarValue> far_value(const Node& node, const Query& query, double limit,
                                     bool misses) const;
   /// The refinement's sum: kind enclosed with its bounds in radians of half angle, or
