@@ -258,9 +258,9 @@ class BoundaryTree {
     double moment_error = 0.0, moment_size = 0.0, quad_error = 0.0, quad_size = 0.0;
     double reach = 0.0;
     bool expansion = false;  // all of these finite
-    // The expansion's bound's coefficients, each rounded up (boundary_tree.cpp,
-    // internal::set_far_field, far_field.hpp): 4 rho^2, where it is first tried, and the numerators
-    // of its three terms over d^4, d^2 and d^3.
+    // The expansion's bound's coefficients, each rounded up (predicates/src/far_field.hpp):
+    // 4 rho^2, where it is first tried, and the numerators of its three terms over d^4,
+    // d^2 and d^3.
     double reach4 = 0.0, second_fan = 0.0, second_moment = 0.0, second_quad = 0.0;
   };
   /// A far node's part of the sum: its chords' angles and expansion, their errors (in
