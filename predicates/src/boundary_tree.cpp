@@ -370,43 +370,11 @@ struct BoundaryTree::Query {
   if (!node.far_pays) return std::nullopt;
   const Point3& p = q.point;
   const double d2 = distance2_below(p, node.lower, node.upper);
-  // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf or
-  // NaN, neither accepted.
-  double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
-  bool expanded = false;
-  // The expansion's bound (boundary_tree.hpp, "Second order"), where smaller: below
-  // d = 2 rho the zero-order bound is the smaller, and not worth the square root. (With
-  // 2^-400 < d^2 < 2^400 neither d^4 nor |c - p|^3 below overflows or underflows.)
-  if (node.expansion && d2 > node.reach4 && d2 > 0x1p-400 && d2 < 0x1p400) {
-    // d from below (the root within u/2); the coefficients are upper bounds
-    // (internal::set_far_field), and the three quotients (d^4 and d^3 within u, the
-    // quotients within u) and their sum (2u) within 4u, all positive.
-    const double d = std::sqrt(d2) * (1 - 0x1p-50);
-    const double d3 = d2 * d;
-    const double second =
-        (node.second_fan / (d2 * d2) + node.second_moment / d2 + node.second_quad / d3) *
-            (1 + 0x1p-48) +
-        kTiny;
-    if (second < bound) {
-      bound = second;
-      expanded = true;
-    }
-  }
+  const auto [bound, expanded] = internal::far_bound(node, d2);  // far_field.hpp
   if (!(bound <= limit) || !(misses || ray_misses(p, q.ray, q.inverse, node.lower, node.upper))) {
     return std::nullopt;
   }
-  double expansion = 0.0;
-  if (expanded) {
-    // (d <= |c - p| <= d + 2 rho < 2d: c lies in the box.)
-    const Vector3 v{node.centre[0] - p[0], node.centre[1] - p[1], node.centre[2] - p[2]};
-    const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-    const std::array<double, 6>& s = node.quad;
-    const double trace = s[0] + s[1] + s[2];
-    const double vqv = s[0] * v[0] * v[0] + s[1] * v[1] * v[1] + s[2] * v[2] * v[2] +
-                       2 * (s[3] * v[0] * v[1] + s[4] * v[0] * v[2] + s[5] * v[1] * v[2]);
-    const double mv = node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2];
-    expansion = 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
-  }
+  const double expansion = expanded ? internal::expansion_value(node, p) : 0.0;
   double value = expansion, magnitudes = std::abs(expansion), errors = 0.0;
   for (std::uint32_t i = 0; i < node.chords_count; ++i) {
     const BoundaryEdge& e = chords_[node.chords_first + i];

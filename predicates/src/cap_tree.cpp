@@ -415,34 +415,11 @@ std::optional<CapTree::Refined> CapTree::refine(const Point3& p, Refinement& r,
         !(node.expansion && d2 > node.reach4 && node.second_fan <= limit * d2 * d2)) {
       return false;
     }
-    // F / (2 d^2), moved up past its two roundings (and an underflow); d2 = 0 gives inf
-    // or NaN, neither accepted.
-    double bound = 0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny;
-    bool expanded = false;
-    if (node.expansion && d2 > node.reach4 && d2 > 0x1p-400 && d2 < 0x1p400) {
-      // (As BoundaryTree::far_value: d from below, the quotients and their sum within 4u.)
-      const double d = std::sqrt(d2) * (1 - 0x1p-50);
-      const double d3 = d2 * d;
-      const double bound2 =
-          (node.second_fan / (d2 * d2) + node.second_moment / d2 + node.second_quad / d3) *
-              (1 + 0x1p-48) +
-          kTiny;
-      if (bound2 < bound) {
-        bound = bound2;
-        expanded = true;
-      }
-    }
+    const auto [bound, expanded] = internal::far_bound(node, d2);  // far_field.hpp
     if (!(bound <= limit)) return false;
     double value = 0.0;
     if (expanded) {
-      const Vector3 v{node.centre[0] - p[0], node.centre[1] - p[1], node.centre[2] - p[2]};
-      const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-      const std::array<double, 6>& s = node.quad;
-      const double trace = s[0] + s[1] + s[2];
-      const double vqv = s[0] * v[0] * v[0] + s[1] * v[1] * v[1] + s[2] * v[2] * v[2] +
-                         2 * (s[3] * v[0] * v[1] + s[4] * v[0] * v[2] + s[5] * v[1] * v[2]);
-      const double mv = node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2];
-      value = 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
+      value = internal::expansion_value(node, p);
       ++r.expansions;
     }
     // The expansion's rounding is in its bound (kExpansionRounding).

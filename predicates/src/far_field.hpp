@@ -103,4 +103,50 @@ void set_far_field(Node& node, const Moments& moments) noexcept {
   node.second_quad = up(up(1.5 * node.quad_error) + up(2 * kExpansionRounding * node.quad_size));
 }
 
+/// A far node's bound on what its expansion (`expanded`) or its area bound leaves out, in
+/// radians of half angle, at squared distance d2 (from below) from the point: F / (2 d^2)
+/// moved up past its two roundings (and an underflow; d2 = 0 gives inf or NaN, neither
+/// accepted by a caller's `bound <= limit`), or the second-order bound where it is
+/// smaller. Below d = 2 rho the zero-order bound is the smaller, and not worth the square
+/// root; with 2^-400 < d^2 < 2^400 neither d^4 nor |c - p|^3 overflows or underflows. d
+/// from below (the root within u/2); the coefficients are upper bounds (set_far_field),
+/// and the three quotients (d^4 and d^3 within u, the quotients within u) and their sum
+/// (2u) within 4u, all positive.
+struct FarBound {
+  double bound = 0.0;
+  bool expanded = false;
+};
+template <class Node>
+[[gnu::always_inline]] inline FarBound far_bound(const Node& node, double d2) noexcept {
+  constexpr double kU = 0x1p-53, kTiny = 0x1p-1000;
+  FarBound far{0.5 * (node.fan / d2) * (1 + 4 * kU) + kTiny, false};
+  if (node.expansion && d2 > node.reach4 && d2 > 0x1p-400 && d2 < 0x1p400) {
+    const double d = std::sqrt(d2) * (1 - 0x1p-50);
+    const double d3 = d2 * d;
+    const double second =
+        (node.second_fan / (d2 * d2) + node.second_moment / d2 + node.second_quad / d3) *
+            (1 + 0x1p-48) +
+        kTiny;
+    if (second < far.bound) far = {second, true};
+  }
+  return far;
+}
+
+/// The expansion's value at p, in radians of half angle: (1/2) (M.g(c) + Dg(c) : Q) with
+/// v = c - p, g(c) = v / |v|^3 and Dg(c) = (I - 3 v v^T / |v|^2) / |v|^3 (trace-free, so
+/// Q's symmetric part is all it sees). Its rounding is in the bound (kExpansionRounding).
+/// Precondition: far_bound chose the expansion (d <= |c - p| <= d + 2 rho < 2d: c lies in
+/// the box).
+template <class Node>
+[[gnu::always_inline]] inline double expansion_value(const Node& node, const Point3& p) noexcept {
+  const Vector3 v{node.centre[0] - p[0], node.centre[1] - p[1], node.centre[2] - p[2]};
+  const double r2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const std::array<double, 6>& s = node.quad;
+  const double trace = s[0] + s[1] + s[2];
+  const double vqv = s[0] * v[0] * v[0] + s[1] * v[1] * v[1] + s[2] * v[2] * v[2] +
+                     2 * (s[3] * v[0] * v[1] + s[4] * v[0] * v[2] + s[5] * v[1] * v[2]);
+  const double mv = node.moment[0] * v[0] + node.moment[1] * v[1] + node.moment[2] * v[2];
+  return 0.5 * (mv + (trace * r2 - 3 * vqv) / r2) / (r2 * std::sqrt(r2));
+}
+
 }  // namespace exactgeo::internal
