@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -36,12 +37,11 @@ constexpr std::size_t kExactDirections = std::size_t{1} << 25;
 constexpr std::size_t kPlainDoubleDirections = 64;
 
 /// An open surface's space cells (open_space_cells.hpp): the rays tried from a box's
-/// centre (a ray that meets a boundary edge gives no decomposition), the most angles its
-/// term may take, the most variation over a box worth a ray, and the variation past
-/// which its parts are not worth trying either (their reach is half the box's). Costs,
-/// not certificates: any values give the labels' guarantee.
+/// centre (one that meets an edge of F or of the cap gives no count), the most variation
+/// over a box worth a ray, and the variation past which its parts are not worth trying
+/// either (their reach is half the box's). Costs, not certificates: any values give the
+/// labels' guarantee.
 constexpr std::size_t kBoxRays = 4;
-constexpr std::size_t kBoxAngles = 64;
 constexpr double kBoxVariation = 0.5;
 constexpr double kHopelessVariation = 2.0;
 
@@ -126,8 +126,16 @@ struct Classifier::State {
   /// surface being open with the faces of zero area counted (Classifier's constructor).
   std::vector<BoundaryEdge> boundary;
   /// The same edges in a tree (boundary_tree.hpp), over the vertices the exact rays see:
-  /// the term from near edges and far nodes, which settles most points.
-  BoundaryTree boundary_tree;
+  /// the cone's term from near edges and far nodes, for the points the cap does not settle
+  /// (one on a cap triangle, or whose w_Cap lies too near a half-integer). Built on first
+  /// use, once, by whichever thread asks first: most surfaces never ask.
+  const BoundaryTree& boundary_tree() const {
+    std::call_once(boundary_tree_once,
+                   [this] { lazy_boundary_tree = BoundaryTree(ray_vertices(), boundary); });
+    return lazy_boundary_tree;
+  }
+  mutable std::once_flag boundary_tree_once;
+  mutable BoundaryTree lazy_boundary_tree;
   /// The cap of the same chain over the same vertices (cap_tree.hpp): F + Cap is closed,
   /// and w_F = S - w_Cap, S the signed count of a ray's crossings with F and the cap.
   CapTree cap;
@@ -137,6 +145,11 @@ struct Classifier::State {
   std::vector<SurfaceFace> cap_faces;
   std::vector<PatchSpan> cap_spans;
   std::optional<internal::TreeCandidates> cap_search;
+
+  /// The vertices the exact rays see: the unit frame's when it is on.
+  std::span<const Point3> ray_vertices() const noexcept {
+    return frame.on() ? frame.vertices() : std::span<const Point3>(mesh.vertices);
+  }
 
   /// `point` in the tree's coordinates (the unit frame's when it is on), when it maps
   /// there exactly.
@@ -276,7 +289,7 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
       }
       ++scratch.routes.cap_unsettled;
       if (const auto label = internal::open_label_from_tree(s.rule, 0, *mapped, ray,
-                                                            s.boundary_tree, scratch.boundary)) {
+                                                            s.boundary_tree(), scratch.boundary)) {
         ++scratch.routes.cone;
         return *label;
       }
@@ -330,7 +343,7 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
       if (tree_sees_origin) {
         if (const auto label =
                 internal::open_label_from_tree(s.rule, count.total, origin.exact, ray_direction(k),
-                                               s.boundary_tree, scratch.boundary)) {
+                                               s.boundary_tree(), scratch.boundary)) {
           ++scratch.routes.cone;
           return *label;
         }
@@ -346,10 +359,13 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
 }
 
 /// The label of every point of the closed box [lower, upper], which no face reaches
-/// (open_space_cells.hpp): w at the box's centre, S along a ray plus the tree's term
-/// enclosed, widened by the tree's bound on w's variation over the box. nullopt where
-/// that does not settle the rule's levels (or the box or its centre do not map into the
-/// tree's frame).
+/// (open_space_cells.hpp): with delta the boundary tree's bound on w's variation over
+/// the box and c its centre, w(c) = S - w_Cap(c) as for a point (classify_open), w_Cap(c)
+/// enclosed with delta to spare between the half-integers j - 1/2 and j + 1/2; then
+/// every p of the box has w(p) within delta of w(c), strictly between n - 1/2 and n + 1/2
+/// (n = S - j), and the label of n (cap_label). nullopt where that does not settle (c on
+/// a cap triangle, w_Cap(c) too near a half-integer for delta, or the box or its centre
+/// not in the trees' frame).
 internal::OpenBoxAnswer Classifier::open_box_label(const State& s, const Point3& lower,
                                                    const Point3& upper,
                                                    ClassifierScratch& scratch) {
@@ -367,7 +383,7 @@ internal::OpenBoxAnswer Classifier::open_box_label(const State& s, const Point3&
     tree_upper = *u;
   }
   const std::optional<double> variation =
-      s.boundary_tree.variation(tree_lower, tree_upper, origin.exact, kHopelessVariation);
+      s.cap.variation(tree_lower, tree_upper, origin.exact, kHopelessVariation);
   if (!variation || *variation > kBoxVariation) return {std::nullopt, variation.has_value(), false};
   const std::optional<Location> label =
       kernel::with_signs(Arithmetic::exact, [&](const auto& signs) -> std::optional<Location> {
@@ -375,12 +391,14 @@ internal::OpenBoxAnswer Classifier::open_box_label(const State& s, const Point3&
           const SignedRayCount count = count_ray(s, signs, Arithmetic::exact, origin, k, scratch);
           if (count.kind == RayCount::origin_on_face) return std::nullopt;  // (no face is there)
           if (count.kind == RayCount::degenerate) continue;
-          const auto crossings = static_cast<double>(count.total);
-          const std::optional<Enclosure> term = s.boundary_tree.enclosure_apart(
-              origin.exact, ray_direction(k), {-0.5 - crossings, 0.5 - crossings}, *variation,
-              kBoxAngles, scratch.boundary);
-          if (!term) continue;
-          return internal::open_box_label(s.rule, count.total, *term, *variation);
+          const SignedRayCount on_cap = count_cap_ray(s, signs, origin, k, scratch);
+          // On a cap triangle w_Cap is not defined: no label (a cost; its points go on).
+          if (on_cap.kind == RayCount::origin_on_face) return std::nullopt;
+          if (on_cap.kind == RayCount::degenerate) continue;
+          const std::optional<Enclosure> cap =
+              s.cap.enclosure_apart(origin.exact, scratch.cap, *variation);
+          if (!cap) return std::nullopt;
+          return cap_label(s.rule, count.total + on_cap.total, *cap);
         }
         return std::nullopt;
       });
@@ -461,13 +479,11 @@ Classifier::Classifier(mesh::Mesh mesh, ClassifierOptions options)
   s.frame = internal::UnitFrame(s.mesh, s.box);
   // Spans in the frame the rays use: the same for the exact signs (a power of two changes
   // no sign), and the plain double baseline then runs entirely in one frame.
-  const std::span<const Point3> ray_vertices =
-      s.frame.on() ? s.frame.vertices() : std::span<const Point3>(s.mesh.vertices);
+  const std::span<const Point3> ray_vertices = s.ray_vertices();
   s.exact_spans = spans_of(kernel::ExactSigns{}, s.faces, ray_vertices);
   s.double_spans = spans_of(kernel::DoubleSigns{}, s.faces, ray_vertices);
   const CandidateSearch search = candidate_search(options, s.mesh.faces.size());
   if (!s.boundary.empty()) {
-    s.boundary_tree = BoundaryTree(ray_vertices, s.boundary);
     s.build_cap(ray_vertices, search == CandidateSearch::brute_force);
   }
   if (search == CandidateSearch::embree) s.embree.emplace(s.mesh, s.box);

@@ -61,20 +61,6 @@ std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossin
   return verdict(rule, term->versus);
 }
 
-std::optional<Location> open_box_label(FillRule rule, std::int64_t crossings, const Enclosure& term,
-                                       double variation) {
-  const auto s = static_cast<double>(crossings);
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  // The term's range over the box, rounded outward; the levels -1/2 - S and 1/2 - S are
-  // exact (S is far below 2^52).
-  const double lower = std::nextafter(term.lower - variation, -kInf);
-  const double upper = std::nextafter(term.upper + variation, kInf);
-  const auto versus = [&](double level) {
-    return upper < level ? Versus::below : lower > level ? Versus::above : Versus::unsure;
-  };
-  return verdict(rule, {versus(-0.5 - s), versus(0.5 - s)});
-}
-
 Vector3 ray_away_from(const mesh::Box& box, const Point3& point) noexcept {
   Vector3 ray{0.0, 0.0, 0.0};
   for (int i = 0; i < 3; ++i) {

@@ -28,17 +28,6 @@ using internal::up;
 constexpr double kU = 0x1p-53;
 constexpr double kTiny = 0x1p-1000;
 
-/// |b - a|, its upper end in outward-rounded intervals; +inf when that overflows.
-double length_above(const Point3& a, const Point3& b) noexcept {
-  DoubleInterval sum{};
-  for (int i = 0; i < 3; ++i) {
-    const DoubleInterval d = DoubleInterval::difference(b[i], a[i]);
-    sum = sum + d * d;
-  }
-  const double length = sqrt(sum).hi;
-  return std::isfinite(length) ? length : std::numeric_limits<double>::infinity();
-}
-
 // The per-point tests take a priori bounds instead of directed rounding (std::nextafter
 // is a library call, and a point visits many nodes): a difference, product or quotient of
 // doubles is within u = 2^-53 of its exact value relatively, or 2^-1075 absolutely where
@@ -283,14 +272,6 @@ std::uint32_t BoundaryTree::build(std::uint32_t first, std::uint32_t count) {
     return fan;
   };
   node.fan = fan_of(closed);
-  for (const BoundaryEdge& e : own) {
-    node.length = up(node.length + up(length_above(vertices_[e.from], vertices_[e.to]) *
-                                      std::abs(static_cast<double>(e.multiplicity))));
-  }
-  for (const BoundaryEdge& e : chords) {
-    node.end_length = up(node.end_length + up(length_above(vertices_[e.from], vertices_[e.to]) *
-                                              std::abs(static_cast<double>(e.multiplicity))));
-  }
   if (count > kBoundaryTreeLeafEdges) {
     // Halves by the edges' midpoints along the box's longest axis.
     int axis = 0;
@@ -568,24 +549,6 @@ std::optional<Enclosure> BoundaryTree::enclosure(const Point3& point, const Vect
   const auto sum =
       refine(point, ray, scratch, std::numeric_limits<std::size_t>::max(), kBoundaryTreeFirstCut,
              [&](double lower, double upper) { return upper - lower <= radians; });
-  if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
-  return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
-}
-
-std::optional<Enclosure> BoundaryTree::enclosure_apart(const Point3& point, const Vector3& ray,
-                                                       std::array<double, 2> levels, double margin,
-                                                       std::size_t most_angles,
-                                                       Refinement& scratch) const {
-  // In radians of half angle, rounded: when to stop is a cost, not a certificate (the
-  // caller compares the enclosure in turns).
-  const double to_radians = 2 * std::numbers::pi;
-  const double gap = margin * to_radians;
-  const auto apart = [&](double lower, double upper) {
-    return std::all_of(levels.begin(), levels.end(), [&](double level) {
-      return upper + gap < level * to_radians || lower - gap > level * to_radians;
-    });
-  };
-  const auto sum = refine(point, ray, scratch, most_angles, kBoundaryTreeFirstCut, apart);
   if (!sum || sum->kind != BoundaryTermKind::enclosed) return std::nullopt;
   return internal::turns_of({BoundaryTermKind::enclosed, sum->lower, sum->upper});
 }

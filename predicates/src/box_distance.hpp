@@ -1,8 +1,8 @@
 #pragma once
 
-// A lower bound on the squared distance between two axis-aligned boxes, which the boundary
-// tree's far-field test (a point, a box of one point) and its variation bound over a box
-// (boundary_tree.cpp, boundary_tree_variation.cpp) both take.
+// A lower bound on the squared distance between two axis-aligned boxes, which the trees'
+// far-field tests (a point, a box of one point; boundary_tree.cpp, cap_tree.cpp) and the
+// cap's variation bound over a box (cap_tree_variation.cpp) take.
 
 #include <algorithm>
 

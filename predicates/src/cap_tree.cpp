@@ -14,6 +14,7 @@
 #include "double_interval.hpp"
 #include "exactgeo/predicates/orient3d.hpp"
 #include "far_field.hpp"
+#include "variation_bound.hpp"
 
 // The cap, the identity and the bounds: cap_tree.hpp.
 
@@ -282,7 +283,7 @@ void CapTree::finish(Node& node) const {
         node.upper[i] = std::max(node.upper[i], (*v)[i]);
       }
     }
-    fan = up(fan + up(area_above(tri.a, tri.b, tri.c) * std::abs(tri.multiplicity)));
+    fan = up(fan + up(sizes_[t].area * std::abs(tri.multiplicity)));
   }
   node.fan = fan;
   node.two_fan = 2 * fan;
@@ -298,6 +299,10 @@ void CapTree::add_triangle(std::span<const Point3> vertices, VertexIndex a, Vert
                            VertexIndex c) {
   if (a == b || b == c || c == a || collinear(vertices[a], vertices[b], vertices[c])) return;
   triangles_.push_back({vertices[a], vertices[b], vertices[c], 1.0});
+  sizes_.push_back({area_above(vertices[a], vertices[b], vertices[c]),
+                    {internal::segment_length_above(vertices[a], vertices[b]),
+                     internal::segment_length_above(vertices[b], vertices[c]),
+                     internal::segment_length_above(vertices[c], vertices[a])}});
   cap_.push_back({a, b, c, 1});
 }
 
@@ -484,24 +489,51 @@ Enclosure turns(double lower, double upper) {
   return internal::turns_of({BoundaryTermKind::enclosed, lower, upper});
 }
 
-/// Between two consecutive half-integers, strictly: k - 1/2 < lower <= upper < k + 1/2
-/// (k +- 1/2 exact for these magnitudes).
-bool between_half_integers(const Enclosure& e) {
+/// [lower - margin, upper + margin] between two consecutive half-integers, strictly:
+/// k - 1/2 < lower - margin and upper + margin < k + 1/2 (k +- 1/2 exact for these
+/// magnitudes, the widened ends rounded outward).
+bool between_half_integers(const Enclosure& e, double margin) {
   if (!(std::abs(e.lower) < 0x1p50 && std::abs(e.upper) < 0x1p50)) return false;
+  const double lower = margin == 0.0 ? e.lower : DoubleInterval::down(e.lower - margin);
+  const double upper = margin == 0.0 ? e.upper : up(e.upper + margin);
   const double k = std::nearbyint(e.lower);
-  return k - 0.5 < e.lower && e.upper < k + 0.5;
+  return k - 0.5 < lower && upper < k + 0.5;
+}
+
+/// No x in [lower, upper] has [x - margin, x + margin] strictly between two consecutive
+/// half-integers: every k's window (k - 1/2 + margin, k + 1/2 - margin) misses the
+/// enclosure (margin at least 1/2 leaves no window). Only the k nearest the ends can
+/// miss it: a k between them lies in the enclosure, and in its own window. Then no
+/// refinement can settle the point.
+bool apart_impossible(const Enclosure& e, double margin) {
+  if (!(margin < 0.5)) return true;
+  if (!(std::abs(e.lower) < 0x1p50 && std::abs(e.upper) < 0x1p50)) return false;
+  const double first = std::nearbyint(e.lower), last = std::nearbyint(e.upper);
+  if (last - first >= 2) return false;
+  for (const double k : {first, last}) {
+    // The window's ends rounded outward (a larger window): a miss is then certain.
+    const double low = DoubleInterval::down(k - 0.5 + margin);
+    const double high = up(k + 0.5 - margin);
+    if (e.upper > low && e.lower < high) return false;
+  }
+  return true;
 }
 
 }  // namespace
 
-std::optional<Enclosure> CapTree::enclosure_apart(const Point3& point, Refinement& scratch) const {
-  const auto sum = refine(point, scratch, [](double lower, double upper) {
-    return between_half_integers(turns(lower, upper));
+std::optional<Enclosure> CapTree::enclosure_apart(const Point3& point, Refinement& scratch,
+                                                  double margin) const {
+  bool hopeless = false;
+  const auto sum = refine(point, scratch, [&](double lower, double upper) {
+    const Enclosure e = turns(lower, upper);
+    if (between_half_integers(e, margin)) return true;
+    hopeless = margin > 0.0 && apart_impossible(e, margin);
+    return hopeless;
   });
-  scratch.first_cut = !sum || scratch.opened > 0
+  scratch.first_cut = !sum || hopeless || scratch.opened > 0
                           ? std::max(scratch.finest_first_cut, scratch.first_cut / 2)
                           : std::min(scratch.coarsest_first_cut, scratch.first_cut * 2);
-  if (!sum) return std::nullopt;
+  if (!sum || hopeless) return std::nullopt;
   return turns(sum->lower, sum->upper);
 }
 

@@ -208,30 +208,5 @@ TEST(OpenSpaceCells, ARibbonWithTenThousandRimEdges) {
   EXPECT_GT(tally.by_cells, 100u);
 }
 
-TEST(OpenSpaceCells, ABoxLabelIsWidenedByTheVariation) {
-  using internal::open_box_label;
-  // w in S + [lower - variation, upper + variation]; levels at +-1/2.
-  EXPECT_EQ(open_box_label(FillRule::nonzero, 0, {0.30, 0.40}, 0.05),
-            std::optional(Location::outside));
-  EXPECT_FALSE(open_box_label(FillRule::nonzero, 0, {0.30, 0.40}, 0.11).has_value());
-  EXPECT_FALSE(open_box_label(FillRule::nonzero, 0, {-0.40, -0.30}, 0.11).has_value());
-  EXPECT_EQ(open_box_label(FillRule::nonzero, 1, {-0.40, -0.30}, 0.05),
-            std::optional(Location::inside));
-  EXPECT_FALSE(open_box_label(FillRule::nonzero, 1, {-0.40, -0.30}, 0.11).has_value());
-  EXPECT_EQ(open_box_label(FillRule::nonzero, -1, {0.30, 0.40}, 0.05),
-            std::optional(Location::inside));
-  EXPECT_EQ(open_box_label(FillRule::positive, -1, {0.30, 0.40}, 0.05),
-            std::optional(Location::outside));
-  EXPECT_EQ(open_box_label(FillRule::positive, 0, {0.45, 0.46}, 0.03),
-            std::optional(Location::outside));
-  EXPECT_FALSE(open_box_label(FillRule::positive, 0, {0.45, 0.46}, 0.05).has_value());
-  EXPECT_FALSE(open_box_label(FillRule::positive, 0, {0.55, 0.56}, 0.05).has_value());
-  EXPECT_EQ(open_box_label(FillRule::positive, 0, {0.55, 0.56}, 0.04),
-            std::optional(Location::inside));
-  // A level exactly at a bound is not strictly outside the range.
-  EXPECT_FALSE(open_box_label(FillRule::positive, 0, {0.25, 0.25}, 0.25).has_value());
-  EXPECT_FALSE(open_box_label(FillRule::positive, 0, {0.75, 0.75}, 0.25).has_value());
-}
-
 }  // namespace
 }  // namespace exactgeo::inside::open_cells

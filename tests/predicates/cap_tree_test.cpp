@@ -341,6 +341,54 @@ TEST(CapTree, EnclosuresHoldTheOracle) {
   EXPECT_GT(with_far, points / 3);
 }
 
+TEST(CapTree, EnclosuresApartKeepTheirMargin) {
+  // enclosure_apart with a margin (a box of space cells asks for its variation): where it
+  // answers, the oracle's w_Cap with the margin on either side lies strictly between two
+  // consecutive half-integers; where the oracle's value is that far inside with room to
+  // spare (2^-8 turns), it answers; and it gives up at once (the enclosure found so far
+  // leaves no room) rather than opening every node: fewer angles than the enclosure at
+  // width 0 takes.
+  auto rng = testing::seeded_engine("predicates.cap_tree.margins");
+  constexpr std::array<double, 5> kMargins{0.0, 0x1p-10, 0.1, 0.3, 0.45};
+  std::size_t answered = 0, owed = 0, given_up = 0, cheap = 0;
+  for (const Surface& s : surfaces(rng)) {
+    SCOPED_TRACE(s.name);
+    const std::vector<BoundaryEdge> chain = chain_of(s);
+    const CapTree tree(s.vertices, chain);
+    const std::vector<CapTriangle> cap(tree.triangles().begin(), tree.triangles().end());
+    const std::vector<testing::Triangle> triangles = oracle_triangles(s.vertices, cap);
+    CapTree::Refinement r, all;
+    int i = 0;
+    for (const Point3& p : points_for(rng, s, chain, cap, 40)) {
+      const double margin = kMargins[static_cast<std::size_t>(i++) % kMargins.size()];
+      const double truth = testing::generalized_winding_oracle(p, triangles);
+      const double k = std::nearbyint(truth);
+      const bool room = k - 0.5 + margin + 0x1p-8 < truth && truth < k + 0.5 - margin - 0x1p-8;
+      if (const auto e = tree.enclosure_apart(p, r, margin)) {
+        ++answered;
+        ASSERT_LE(e->lower, truth) << testing::hex(p);
+        ASSERT_GE(e->upper, truth) << testing::hex(p);
+        EXPECT_LT(k - 0.5, truth - margin) << testing::hex(p) << " margin " << margin;
+        EXPECT_LT(truth + margin, k + 0.5) << testing::hex(p) << " margin " << margin;
+        EXPECT_LT(k - 0.5, e->lower - margin) << testing::hex(p) << " margin " << margin;
+        EXPECT_LT(e->upper + margin, k + 0.5) << testing::hex(p) << " margin " << margin;
+      } else if (room) {
+        // Within rounding of a cap triangle only (no enclosure at any width).
+        EXPECT_FALSE(tree.enclosure(p, 0.0, all).has_value()) << testing::hex(p);
+      } else if (margin > 0.0 && tree.enclosure(p, 0.0, all)) {
+        ++given_up;
+        cheap += r.triangles < all.triangles;
+      }
+      owed += room;
+    }
+  }
+  std::printf("%zu answered, %zu with room, %zu given up (%zu before every angle)\n", answered,
+              owed, given_up, cheap);
+  EXPECT_GE(answered, owed);
+  EXPECT_GT(given_up, 0u);
+  EXPECT_GT(cheap, given_up / 2);
+}
+
 /// The signed crossing count of the ray from p along `ray` with the faces and the cap
 /// (each crossing the sign of the triangle's normal along the ray, times its
 /// multiplicity), exact; nullopt where the ray meets a triangle other than through its

@@ -94,31 +94,6 @@
 // (k - 1) u times their magnitudes), the far bounds' running total likewise, and each
 // node's errors (its angles', its expansion's) stay counted after it is opened.
 //
-// Variation over a box (the certified space cells of an open surface). Off the surface w
-// is smooth, and its gradient depends on the boundary only: each face's solid angle has
-// the gradient of the Biot-Savart law for a unit current around its edges,
-// grad Omega(y) = sum over its edges of the integral of dl x (x - y) / |x - y|^3 (up to
-// sign), and the faces' shared edges cancel, leaving the boundary's edges with their
-// multiplicities. So |grad w(y)| <= (1/4 pi) sum_E |m| length(e) / dist(y, e)^2, and
-// with E's edges in a node box B, dist(y, e) >= dist(C, B) for y in a box C. Where C
-// misses the surface, the segment from c in C to any p in C lies in C (convex), off the
-// surface, and |w(p) - w(c)| <= |p - c| max |grad w| <= rho G, rho the reach of C from c
-// and G = (1/4 pi) sum over a cut of the tree of L_N / dist(C, B_N)^2, L_N = sum |m|
-// length(e) over N's edges. Any cut gives a bound; the descent takes a node where its
-// box is at least two of its diagonals from C (farther, opening it would gain little),
-// and a near leaf's edges one by one, each at its own box's distance from C.
-//
-// A node's part of that field is also bounded through its decomposition ("Chords"
-// below): as currents, E is the triangle loops (a, b, c) of its closed chain Z (or the
-// nested ones) plus its chords. A triangle loop's Biot-Savart field is the gradient of
-// the triangle's solid angle, the integral over it of the derivative of g, whose norm is
-// at most 2 / |x - y|^3 (the eigenvalues of (I - 3 u u^T) / |u|^3 are 1, 1 and -2 over
-// |u|^3): at most 2 area / d^3 for y at least d from the node's box, which holds the
-// triangle. A chord s -> e adds at most |m| |e - s| / d^2. So N contributes at most
-// min(L_N / d^2, 2 F_N / d^3 + X_N / d^2), X_N = sum over the chords of |m| |e - s|:
-// for a far closed loop the field of a dipole, falling as 1 / d^3, where L_N / d^2
-// counts its rim as if no part of it cancelled another.
-//
 // Certified. F is computed once per node in outward-rounded intervals (its upper end);
 // M and Q likewise, kept as midpoints with bounds on their distance from the exact
 // ones; d^2 from below and the ray-box test from the slabs with a priori error bounds
@@ -218,21 +193,6 @@ class BoundaryTree {
   std::optional<Enclosure> enclosure(const Point3& point, const Vector3& ray, double width,
                                      Refinement& scratch) const;
 
-  /// Bounds, in turns, on the same term, refined until each level lies more than `margin`
-  /// turns outside them (or every node is open); nullopt as for enclosure, or where that
-  /// takes more than `most_angles` angles.
-  std::optional<Enclosure> enclosure_apart(const Point3& point, const Vector3& ray,
-                                           std::array<double, 2> levels, double margin,
-                                           std::size_t most_angles, Refinement& scratch) const;
-
-  /// An upper bound, in turns, on |w(p) - w(centre)| for every p of the box [lower,
-  /// upper], w the generalized winding number of a surface whose boundary is these edges
-  /// ("Variation over a box" above). Precondition: the box misses that surface and holds
-  /// `centre`. nullopt where the bound exceeds `most`, the box meets a leaf's box, or a
-  /// square overflows (the classifier asks in its unit frame, where none does).
-  std::optional<double> variation(const Point3& lower, const Point3& upper, const Point3& centre,
-                                  double most) const;
-
   /// The boundary vertices.
   std::span<const Point3> vertices() const noexcept { return vertices_; }
   std::size_t edge_count() const noexcept { return edges_.size(); }
@@ -244,8 +204,6 @@ class BoundaryTree {
     std::uint32_t chords_first = 0, chords_count = 0;  // its chords: chords_[...]
     std::uint32_t left = 0, right = 0;                 // children; 0 for a leaf
     double fan = 0.0;                                  // F, rounded up
-    double length = 0.0;                               // sum |m| length(e), rounded up
-    double end_length = 0.0;                           // sum |m| length over its chords, rounded up
     bool far_pays = false;                             // chords fewer than half its edges
     // The expansion ("Second order" above): the centre, the fan's vector area M (its
     // enclosure's midpoint, within moment_error of M, at most moment_size long), the
@@ -271,7 +229,6 @@ class BoundaryTree {
   };
   struct Query;
   std::uint32_t build(std::uint32_t first, std::uint32_t count);
-  static double dipole_bound(const Node& node, double d2) noexcept;
   void join_chords(std::vector<std::pair<VertexIndex, std::int64_t>>& starts,
                    std::vector<std::pair<VertexIndex, std::int64_t>>& finishes);
   internal::Moments fan_moments(const Point3& centre, std::span<const BoundaryEdge> edges) const;

@@ -53,6 +53,29 @@
 // 0.90 times the instructions of the cone's on b9_mesh.off, 0.95 on
 // elephant-with-holes.off and 0.52 on pig.stl (docs/inside.md, "End to end").
 //
+// Variation over a box (the certified space cells of an open surface). Off the surface w
+// is smooth, and its gradient depends on the boundary only: each face's solid angle has
+// the gradient of the Biot-Savart law for a unit current around its edges, and the
+// faces' shared edges cancel. The cap's triangles have the same boundary, reversed: the
+// field of the surface's rim is minus the sum of the cap triangles' loops' fields, each
+// the gradient of that triangle's solid angle, smooth off the triangle's edges even
+// where the triangle itself passes. A flat triangle's gradient is the integral over it of
+// the derivative of n.(y - p) / |y - p|^3, whose norm is at most 2 / |y - p|^3 (the
+// eigenvalues of (I - 3 u u^T) / |u|^3 are 1, 1 and -2 over |u|^3): at most 2 area / d^3
+// at distance d from its box, and as a loop's Biot-Savart field at most sum |e| / d_e^2
+// over its edges, d_e from each edge's box. So for y in a box C,
+// |grad w(y)| <= (1/4 pi) sum over a cut of the tree of 2 F_N / dist(C, B_N)^3, with near
+// nodes' own triangles each at the smaller of its two bounds. Where C misses the surface
+// (it may meet the cap), the segment from its centre c to any p of C lies in C, off the
+// surface, and |w(p) - w(c)| <= rho max |grad w|, rho the reach of C from c. Any cut gives
+// a bound; the walk takes a node whole where its box is two of its diagonals from C or
+// its bound is small beside what the caller can use, opens the others (the nearer child
+// first), and stops once the sum passes that. A box near a large cap triangle (a wide
+// hole's) has no useful bound: the cap spans the hole where the rim's own field is
+// small. Measured on the classifier's space cells (docs/inside.md, "Open surfaces"):
+// more cells labelled than the boundary tree's chords and fans allowed on Spot with holes,
+// elephant-with-holes and pig, none on b9_mesh.off either way.
+//
 // Certified. Per node F rounded up, M and Q as midpoints of outward-rounded intervals
 // with bounds on their distance from the exact ones, d^2 from below (box_distance.hpp),
 // each leaf triangle's half angle in plain doubles with an a priori error bound
@@ -60,7 +83,10 @@
 // sign of det[a - p, b - p, c - p] says on which side p is). The tree is for inputs of
 // magnitude 1 as BoundaryTree is (areas and d^2 in the doubles' range; the classifier
 // builds it in its unit frame): far from it every node is near and the query sums
-// every triangle, or gives up.
+// every triangle, or gives up. The variation's bound: each triangle's area and edge
+// lengths from above once (outward-rounded intervals; a length's nine roundings within
+// 2^-49), each term's quotients and products within u and counted so in the sum's
+// rounding bound, the dipole bound's within 7u (a factor 1 + 2^-49), and rho rounded up.
 
 #include <array>
 #include <cstddef>
@@ -135,13 +161,24 @@ class CapTree {
 
   /// Bounds, in turns, on w_Cap(p) = (1/4 pi) sum m Omega(p; a, b, c) over the
   /// triangles, refined until they lie strictly between two consecutive half-integers
-  /// k - 1/2 < lower <= upper < k + 1/2; nullopt where that cannot be done (p within
-  /// rounding of a triangle, or every node opened and still not).
-  std::optional<Enclosure> enclosure_apart(const Point3& point, Refinement& scratch) const;
+  /// with `margin` turns to spare, k - 1/2 < lower - margin <= upper + margin < k + 1/2
+  /// (a box of space cells asks for its variation as the margin); nullopt where that
+  /// cannot be done (p within rounding of a triangle, every node opened and still not,
+  /// or, for a positive margin, no value in the bounds found so far could be).
+  std::optional<Enclosure> enclosure_apart(const Point3& point, Refinement& scratch,
+                                           double margin = 0.0) const;
 
   /// Bounds, in turns, on w_Cap(p), refined until at most `width` turns apart or every
   /// node is open; nullopt where p lies within rounding of a triangle.
   std::optional<Enclosure> enclosure(const Point3& point, double width, Refinement& scratch) const;
+
+  /// An upper bound, in turns, on |w(p) - w(centre)| for every p of the box [lower,
+  /// upper], w the generalized winding number of a surface whose boundary is minus the
+  /// cap's ("Variation over a box" above). Precondition: the box misses that surface (it
+  /// may meet the cap) and holds `centre`. nullopt where the bound exceeds `most`, the
+  /// box meets the box of a near cap triangle's edge, or a square overflows.
+  std::optional<double> variation(const Point3& lower, const Point3& upper, const Point3& centre,
+                                  double most) const;
 
  private:
   struct Node {
@@ -163,6 +200,12 @@ class CapTree {
     Point3 a{}, b{}, c{};
     double multiplicity = 1.0;
   };
+  /// A triangle's area and edge lengths (b - a, c - b, a - c), each from above: for F and
+  /// the variation's near triangles, kept apart from the corners the angles read.
+  struct Sizes {
+    double area = 0.0;
+    std::array<double, 3> lengths{};
+  };
   struct Refined {
     double lower = 0.0, upper = 0.0;  // radians of half angle
   };
@@ -172,12 +215,15 @@ class CapTree {
   std::uint32_t build_range(std::span<const Point3> vertices, std::span<const VertexIndex> loop,
                             std::size_t i, std::size_t j);
   void add_triangle(std::span<const Point3> vertices, VertexIndex a, VertexIndex b, VertexIndex c);
+  static std::optional<double> near_triangle_bound(const Point3& lower, const Point3& upper,
+                                                   const Triangle& t, const Sizes& sizes) noexcept;
   void finish(Node& node) const;
   void set_expansion(Node& node) const;
   template <class Done>
   std::optional<Refined> refine(const Point3& point, Refinement& r, const Done& done) const;
 
   std::vector<Triangle> triangles_;
+  std::vector<Sizes> sizes_;      // one per triangle
   std::vector<CapTriangle> cap_;  // the same, as indices
   std::vector<Node> nodes_;
 };

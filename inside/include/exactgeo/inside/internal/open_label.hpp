@@ -36,14 +36,6 @@ std::optional<Location> open_label_from_tree(FillRule rule, std::int64_t crossin
                                              const BoundaryTree& tree,
                                              BoundaryTree::Refinement& scratch);
 
-/// The label of every point p of a box that misses the surface, where the term along a
-/// ray from a point c of the box (with `crossings` signed crossings) lies in `term` and
-/// |w(p) - w(c)| <= variation (open_space_cells.hpp): the rule's label where
-/// crossings + [term.lower - variation, term.upper + variation], rounded outward, lies
-/// strictly on one side of each level; nullopt otherwise.
-std::optional<Location> open_box_label(FillRule rule, std::int64_t crossings, const Enclosure& term,
-                                       double variation);
-
 /// A direction whose ray from `point` (outside `box`) leaves the box behind: along the
 /// axis on which the point lies outside it, away from it. It crosses no face and meets
 /// no edge, so S = 0 along it.
