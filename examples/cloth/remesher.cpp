@@ -128,6 +128,16 @@ class SurfaceTables {
     if (pending_) edges(w);
     return &changes_;
   }
+  /// Takes `table` as the edges of the work's surface (it must be theirs).
+  void adopt(SheetEdgeTable table) { edges_.emplace(std::move(table)); }
+  /// The edges of the work's surface as it is (patched first when a pass left them to be),
+  /// taken out.
+  SheetEdgeTable release(const Work& w) {
+    edges(w);
+    SheetEdgeTable table = std::move(*edges_);
+    edges_.reset();
+    return table;
+  }
   /// After a pass: the tables to be patched when it changed the surface.
   void pass_done(bool changed) {
     if (changed) pending_ = edges_.has_value();
@@ -369,9 +379,15 @@ Work work_of(const ClothMesh& mesh) {
   return w;
 }
 
+/// How write_back numbered the work's vertices and sheet triangles in the mesh.
+struct Numbering {
+  std::vector<VertexIndex> vertex;      ///< per vertex: its index in the mesh (kNoVertex: gone)
+  std::vector<std::size_t> sheet_face;  ///< per sheet triangle: its face in the mesh
+};
+
 /// The mesh back from the work: used sheet vertices first (in order), then the obstacle's,
-/// sheet faces first.
-void write_back(const Work& w, ClothMesh& mesh) {
+/// sheet faces first; how each vertex and sheet triangle was numbered into `numbering`.
+void write_back(const Work& w, ClothMesh& mesh, Numbering& numbering) {
   const Surface& s = w.surface;
   std::vector<char> used(s.vertices.size(), 0), fixed(s.vertices.size(), 0);  // bytes
   for (const remesh::Triangle& t : s.triangles) {
@@ -380,7 +396,9 @@ void write_back(const Work& w, ClothMesh& mesh) {
   }
   for (VertexIndex v = 0; v < s.vertices.size(); ++v)
     fixed[v] = s.is_fixed(v) ? 1 : 0;
-  std::vector<VertexIndex> renumber(s.vertices.size(), remesh::kNoVertex);
+  std::vector<VertexIndex>& renumber = numbering.vertex;
+  renumber.assign(s.vertices.size(), remesh::kNoVertex);
+  numbering.sheet_face.assign(s.triangles.size(), 0);
   std::vector<VertexIndex> order;
   order.reserve(s.vertices.size());
   for (const bool obstacle : {false, true}) {
@@ -409,8 +427,10 @@ void write_back(const Work& w, ClothMesh& mesh) {
   mesh.faces.clear();
   mesh.faces.reserve(s.triangles.size());
   for (const bool obstacle : {false, true}) {
-    for (const remesh::Triangle& t : s.triangles) {
+    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+      const remesh::Triangle& t = s.triangles[f];
       if (sheet(t) == obstacle) continue;
+      if (!obstacle) numbering.sheet_face[f] = mesh.faces.size();
       mesh.faces.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
     }
     if (!obstacle) mesh.sheet_faces = mesh.faces.size();
@@ -452,8 +472,25 @@ RemeshCounts& RemeshCounts::operator+=(const RemeshCounts& c) noexcept {
   return *this;
 }
 
+std::optional<SheetEdgeTable> KeptSheetEdges::take_for(const ClothMesh& mesh) {
+  std::optional<SheetEdgeTable> taken = std::move(table_);
+  table_.reset();
+  if (!taken || mesh.vertex_count() != vertices_ || mesh.sheet_vertices() != sheet_vertices_ ||
+      mesh.faces != faces_) {
+    return std::nullopt;
+  }
+  return taken;
+}
+
+void KeptSheetEdges::keep(SheetEdgeTable table, const ClothMesh& mesh) {
+  table_ = std::move(table);
+  faces_ = mesh.faces;
+  vertices_ = mesh.vertex_count();
+  sheet_vertices_ = mesh.sheet_vertices();
+}
+
 RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
-                    remesh::PassWorkspace* workspace) {
+                    remesh::PassWorkspace* workspace, KeptSheetEdges* kept) {
   const auto start = std::chrono::steady_clock::now();
   RemeshCounts counts;
   Work w = work_of(mesh);
@@ -461,6 +498,9 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
   // Split vertices come after the obstacle's (as split_edges appends them), and so do
   // their entries in the work's per-vertex arrays; write_back puts them with the sheets.
   SurfaceTables tables;
+  if (kept != nullptr) {
+    if (std::optional<SheetEdgeTable> table = kept->take_for(mesh)) tables.adopt(std::move(*table));
+  }
   const auto run = [&](const auto& one_pass) {
     for (int pass = 0; pass < parameters.passes; ++pass) {
       const bool changed = one_pass();
@@ -471,7 +511,15 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
   run([&] { return split_pass(w, parameters, tables, counts.split); });
   run([&] { return collapse_pass(w, parameters, tables, counts.collapse); });
   run([&] { return flip_pass(w, tables, counts.flip); });
-  write_back(w, mesh);
+  Numbering numbering;
+  write_back(w, mesh, numbering);
+  if (kept != nullptr) {
+    // The work's table, numbered as the mesh written back: the sheets' vertices and
+    // faces come first there, each in their order, so the entries keep theirs.
+    SheetEdgeTable table = tables.release(w);
+    table.renumber(numbering.vertex, numbering.sheet_face);
+    kept->keep(std::move(table), mesh);
+  }
   counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return counts;
 }

@@ -226,4 +226,14 @@ bool SheetEdgeTable::update(const Surface& after, const TriangleChanges& changes
   return true;
 }
 
+void SheetEdgeTable::renumber(std::span<const VertexIndex> vertex,
+                              std::span<const std::size_t> triangle) {
+  for (SheetEdge& e : edges_) {
+    e.a = vertex[e.a];
+    e.b = vertex[e.b];
+    e.left = triangle[e.left];
+    if (e.right) e.right = triangle[*e.right];
+  }
+}
+
 }  // namespace exactgeo::cloth

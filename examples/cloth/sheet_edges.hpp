@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "exactgeo/remesh/operations.hpp"
@@ -43,6 +44,13 @@ class SheetEdgeTable {
   /// table was built again, nothing: the return value is false then.
   bool update(const remesh::Surface& after, const remesh::TriangleChanges& changes,
               std::vector<remesh::VertexIndex>& touched);
+
+  /// The table of the same surface with its vertices and triangles numbered anew: vertex v
+  /// as vertex[v], triangle t as triangle[t]. Precondition: both maps increase over the
+  /// table's vertices and triangles (those of the sheets: a mesh written back with the
+  /// sheets' vertices and faces first, each in their order), so that the entries keep
+  /// their order and each its direction and its triangles' order.
+  void renumber(std::span<const remesh::VertexIndex> vertex, std::span<const std::size_t> triangle);
 
  private:
   void build(const remesh::Surface& s);

@@ -5,7 +5,8 @@
 // triangles no sheet's), at 2^0 and 2^+-1000, the sizes patched after every other pass
 // (the changed vertices of two passes gathered, as the remesher does when a pass reads no
 // sizes). A collapse to its edge's midpoint moves a vertex that stays on the sheet: the
-// sizes' patch must then decline, and does only then.
+// sizes' patch must then decline, and does only then. A table renumbered as the cloth
+// writes its mesh back is that mesh's.
 
 #include <gtest/gtest.h>
 
@@ -165,6 +166,72 @@ TEST_P(SheetTablesAt, PatchedTablesEqualFreshOnes) {
 
 INSTANTIATE_TEST_SUITE_P(Scales, SheetTablesAt, ::testing::Values(0, 1000, -1000),
                          exactgeo::testing::scale_name);
+
+/// `s` numbered as the cloth writes a mesh back: the used vertices that are not fixed
+/// first, in order, then the fixed ones; the sheets' triangles (no corner fixed) first, in
+/// order, then the others. The maps into `vertex` and `sheet_face`.
+Surface written_back(const Surface& s, std::vector<VertexIndex>& vertex,
+                     std::vector<std::size_t>& sheet_face) {
+  std::vector<char> used(s.vertices.size(), 0);
+  for (const remesh::Triangle& t : s.triangles)
+    for (const VertexIndex v : t)
+      used[v] = 1;
+  Surface out;
+  vertex.assign(s.vertices.size(), remesh::kNoVertex);
+  for (const bool fixed : {false, true}) {
+    for (VertexIndex v = 0; v < s.vertices.size(); ++v) {
+      if (s.is_fixed(v) != fixed || (!fixed && !used[v])) continue;
+      vertex[v] = static_cast<VertexIndex>(out.vertices.size());
+      out.vertices.push_back(s.vertices[v]);
+      out.fixed.push_back(fixed);
+    }
+  }
+  sheet_face.assign(s.triangles.size(), 0);
+  const auto sheet = [&](const remesh::Triangle& t) {
+    return !s.is_fixed(t[0]) && !s.is_fixed(t[1]) && !s.is_fixed(t[2]);
+  };
+  for (const bool obstacle : {false, true}) {
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+      const remesh::Triangle& tri = s.triangles[t];
+      if (sheet(tri) == obstacle) continue;
+      if (!obstacle) sheet_face[t] = out.triangles.size();
+      out.triangles.push_back({vertex[tri[0]], vertex[tri[1]], vertex[tri[2]]});
+    }
+  }
+  return out;
+}
+
+TEST(SheetEdgeTable, RenumberedAsTheMeshWrittenBackItIsThatMeshsTable) {
+  auto rng = testing::seeded_engine("examples.sheet_tables.renumbered");
+  remesh::PassWorkspace workspace;
+  std::size_t renumbered = 0;
+  const std::size_t surfaces = testing::scaled_trials(6, 2);
+  for (std::size_t k = 0; k < surfaces; ++k) {
+    Sheets w = sheets(0, rng);
+    Surface& s = w.surface;
+    // Passes that leave vertices unused (collapses) and append some after the fixed ones
+    // (splits), as a remesh does.
+    for (int pass = 0; pass < 3; ++pass) {
+      const SheetProposals p = sheet_proposals(s, 0, rng);
+      if (pass == 1) {
+        remesh::collapse_edges(s, p.collapses, &workspace);
+      } else {
+        remesh::split_edges(s, p.splits, &workspace);
+      }
+    }
+    std::vector<VertexIndex> vertex;
+    std::vector<std::size_t> sheet_face;
+    const Surface back = written_back(s, vertex, sheet_face);
+    SheetEdgeTable table(s);
+    const bool moved = std::any_of(
+        table.edges().begin(), table.edges().end(),
+        [&](const SheetEdge& e) { return vertex[e.a] != e.a || e.left != sheet_face[e.left]; });
+    table.renumber(vertex, sheet_face);
+    EXPECT_EQ(table.edges(), SheetEdgeTable(back).edges()) << "surface " << k;
+    renumbered += moved ? 1 : 0;
+  }
+  EXPECT_GT(renumbered, 0U);  // the numbers did change
+}
 
 TEST(SheetEdgeTable, AnEdgeOfThreeTrianglesIsLeftOutAndAPatchBuildsTheTableAgain) {
   auto rng = testing::seeded_engine("examples.sheet_tables.crowded");
