@@ -103,13 +103,14 @@ bool SheetEdgeTable::update(const Surface& after, const TriangleChanges& changes
   const auto key_of = [](VertexIndex p, VertexIndex q) {
     return p < q ? std::uint64_t{p} << 32 | q : std::uint64_t{q} << 32 | p;
   };
+  old_keys_.clear();
   keys_.clear();
   sides_.clear();
   changed_.assign(changes.triangles_before, 0);
   const auto add_keys = [&](const Triangle& t) {
     if (!sheet(t)) return;
     for (int k = 0; k < 3; ++k)
-      keys_.push_back(key_of(t[k], t[(k + 1) % 3]));
+      old_keys_.push_back(key_of(t[k], t[(k + 1) % 3]));
   };
   const auto add_sides = [&](std::size_t index) {
     const Triangle& t = after.triangles[index];
@@ -128,14 +129,24 @@ bool SheetEdgeTable::update(const Surface& after, const TriangleChanges& changes
   }
   for (std::size_t t = changes.first_added(); t < after.triangles.size(); ++t)
     add_sides(t);
-  // The sides by edge, then triangle; the keys: the edges before and after, once each.
+  // The sides by edge, then triangle; the keys: the edges before and after, once each, in
+  // order.
   std::sort(sides_.begin(), sides_.end(), [](const Side& x, const Side& y) {
     return x.edge != y.edge ? x.edge < y.edge : x.triangle < y.triangle;
   });
-  for (const Side& side : sides_)
+  std::sort(old_keys_.begin(), old_keys_.end());
+  old_keys_.erase(std::unique(old_keys_.begin(), old_keys_.end()), old_keys_.end());
+  // Merged with the sides' edges, which are in order already (the sort of the keys alone
+  // is the smaller one).
+  auto old_key = old_keys_.begin();
+  for (const Side& side : sides_) {
+    if (!keys_.empty() && keys_.back() == side.edge) continue;
+    for (; old_key != old_keys_.end() && *old_key < side.edge; ++old_key)
+      keys_.push_back(*old_key);
+    if (old_key != old_keys_.end() && *old_key == side.edge) ++old_key;
     keys_.push_back(side.edge);
-  std::sort(keys_.begin(), keys_.end());
-  keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+  }
+  keys_.insert(keys_.end(), old_key, old_keys_.end());
 
   // Each triangle's index after the pass, when the pass removed some.
   const bool renumbered = !changes.removed.empty();

@@ -66,11 +66,12 @@ class SheetEdgeTable {
     std::uint64_t edge;
     std::size_t triangle;  ///< after the pass
   };
-  std::vector<std::uint64_t> keys_;  ///< the changed triangles' edges, sorted, once each
-  std::vector<Side> sides_;          ///< the changed triangles' sides after the pass
-  std::vector<std::size_t> after_;   ///< per triangle before the pass: its index after
-  std::vector<char> changed_;        ///< per triangle before the pass: removed or rewritten
-  std::vector<SheetEdge> next_;      ///< the patched table, swapped in
+  std::vector<std::uint64_t> old_keys_;  ///< the changed triangles' edges before the pass
+  std::vector<std::uint64_t> keys_;      ///< their edges before and after, sorted, once each
+  std::vector<Side> sides_;              ///< the changed triangles' sides after the pass
+  std::vector<std::size_t> after_;       ///< per triangle before the pass: its index after
+  std::vector<char> changed_;            ///< per triangle before the pass: removed or rewritten
+  std::vector<SheetEdge> next_;          ///< the patched table, swapped in
 };
 
 }  // namespace exactgeo::cloth
