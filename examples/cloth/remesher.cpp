@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace exactgeo::cloth {
@@ -475,8 +477,12 @@ RemeshCounts& RemeshCounts::operator+=(const RemeshCounts& c) noexcept {
 std::optional<SheetEdgeTable> KeptSheetEdges::take_for(const ClothMesh& mesh) {
   std::optional<SheetEdgeTable> taken = std::move(table_);
   table_.reset();
+  // The faces compared as bytes (three indices each, no padding: equal bytes are equal
+  // faces), one memcmp instead of a comparison per index.
+  static_assert(std::has_unique_object_representations_v<ccd::Triangle>);
   if (!taken || mesh.vertex_count() != vertices_ || mesh.sheet_vertices() != sheet_vertices_ ||
-      mesh.faces != faces_) {
+      mesh.faces.size() != faces_.size() ||
+      std::memcmp(mesh.faces.data(), faces_.data(), faces_.size() * sizeof(ccd::Triangle)) != 0) {
     return std::nullopt;
   }
   return taken;

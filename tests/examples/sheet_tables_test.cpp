@@ -6,7 +6,7 @@
 // (the changed vertices of two passes gathered, as the remesher does when a pass reads no
 // sizes). A collapse to its edge's midpoint moves a vertex that stays on the sheet: the
 // sizes' patch must then decline, and does only then. A table renumbered as the cloth
-// writes its mesh back is that mesh's.
+// writes its mesh back is that mesh's, and a kept table is taken for that mesh only.
 
 #include <gtest/gtest.h>
 
@@ -18,6 +18,7 @@
 
 #include "exactgeo/remesh/operations.hpp"
 #include "remesh/stacked_sheets.hpp"
+#include "remesher.hpp"
 #include "sheet_edges.hpp"
 #include "support/scale_names.hpp"
 #include "support/seed.hpp"
@@ -231,6 +232,50 @@ TEST(SheetEdgeTable, RenumberedAsTheMeshWrittenBackItIsThatMeshsTable) {
     renumbered += moved ? 1 : 0;
   }
   EXPECT_GT(renumbered, 0U);  // the numbers did change
+}
+
+TEST(KeptSheetEdges, ATableIsTakenOnceAndOnlyForTheMeshItWasKeptFor) {
+  auto rng = testing::seeded_engine("examples.sheet_tables.kept");
+  // A mesh of two bumpy sheets, the second an obstacle (its vertices after the sheet's).
+  const Surface s = testing::stack(2, 3, rng);
+  ClothMesh mesh;
+  const std::size_t sheet = s.vertices.size() / 2;
+  for (const Point3& p : s.vertices)
+    mesh.positions.insert(mesh.positions.end(), p.begin(), p.end());
+  mesh.material.assign(sheet, Material{0.0, 0.0});
+  mesh.velocity.assign(3 * sheet, 0.0);
+  mesh.faces.assign(s.triangles.begin(), s.triangles.end());
+  mesh.sheet_faces = s.triangles.size() / 2;
+  Surface marked = s;
+  marked.fixed.assign(s.vertices.size(), false);
+  std::fill(marked.fixed.begin() + static_cast<std::ptrdiff_t>(sheet), marked.fixed.end(), true);
+  const SheetEdgeTable table(marked);
+  ASSERT_FALSE(table.edges().empty());
+
+  KeptSheetEdges kept;
+  EXPECT_FALSE(kept.take_for(mesh)) << "nothing kept yet";
+  kept.keep(table, mesh);
+  const std::optional<SheetEdgeTable> taken = kept.take_for(mesh);
+  ASSERT_TRUE(taken);
+  EXPECT_EQ(taken->edges(), table.edges());
+  EXPECT_FALSE(kept.take_for(mesh)) << "taken once";
+
+  ClothMesh other = mesh;  // a face that is not the one written
+  std::swap(other.faces[1][0], other.faces[1][1]);
+  kept.keep(table, mesh);
+  EXPECT_FALSE(kept.take_for(other));
+  other = mesh;  // one vertex more
+  other.positions.insert(other.positions.end(), {0.0, 0.0, 0.0});
+  kept.keep(table, mesh);
+  EXPECT_FALSE(kept.take_for(other));
+  other = mesh;  // one sheet vertex less (the same vertices)
+  other.material.pop_back();
+  kept.keep(table, mesh);
+  EXPECT_FALSE(kept.take_for(other));
+  other = mesh;  // the same faces, moved vertices: the table is still the mesh's
+  other.positions[0] += 1.0;
+  kept.keep(table, mesh);
+  EXPECT_TRUE(kept.take_for(other));
 }
 
 TEST(SheetEdgeTable, AnEdgeOfThreeTrianglesIsLeftOutAndAPatchBuildsTheTableAgain) {
