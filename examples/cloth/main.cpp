@@ -307,6 +307,7 @@ int run(const Options& o) {
   remesh_parameters.max_length = scene.spacing;
   remesh_parameters.min_length = scene.spacing / 2.0;
   exactgeo::remesh::PassWorkspace remesh_workspace;  // the passes' memory, kept for the run
+  exactgeo::cloth::KeptSheetEdges remesh_edges;      // the sheet edges one remesh leaves the next
 
   Totals totals;
   if (o.time_narrow_phase) totals.timing.emplace();
@@ -409,7 +410,7 @@ int run(const Options& o) {
     if (intersecting("after the step", step)) return kCollision;
     if (o.remesh) {
       const exactgeo::cloth::RemeshCounts counts =
-          exactgeo::cloth::remesh(mesh, remesh_parameters, &remesh_workspace);
+          exactgeo::cloth::remesh(mesh, remesh_parameters, &remesh_workspace, &remesh_edges);
       totals.remesh += counts;
       if (counts.split.applied + counts.collapse.applied + counts.flip.applied > 0) {
         cloth_model->set_topology(mesh.faces, mesh.sheet_faces, mesh.material);

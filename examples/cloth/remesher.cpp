@@ -1,14 +1,18 @@
 #include "remesher.hpp"
 
 #include "float_shortcuts.hpp"
+#include "sheet_edges.hpp"
+#include "vertex_sizes.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace exactgeo::cloth {
@@ -18,7 +22,6 @@ namespace {
 using remesh::Edge;
 using remesh::Surface;
 using remesh::VertexIndex;
-using Material = std::array<double, 2>;
 
 /// Splits and collapses use these fractions of an edge's size (a split edge's halves and a
 /// collapse's new edges then stay between them, so the two do not undo each other).
@@ -35,78 +38,6 @@ struct Work {
   std::vector<Point3> velocity;             ///< per vertex (the obstacles' are unused)
   remesh::PassWorkspace* passes = nullptr;  ///< the passes' memory, the caller's (or none)
 };
-
-/// A sheet edge with its triangles: `left` walks a -> b, `right` (if any) b -> a.
-struct SheetEdge {
-  VertexIndex a = 0;
-  VertexIndex b = 0;
-  std::size_t left = 0;
-  std::optional<std::size_t> right;
-};
-
-/// Every edge of the sheets' triangles with its triangles (edges of more than two, which
-/// the sheets never have, are left out), ordered by their ends. The triangles' sides are
-/// bucketed by their smaller vertex (a counting sort: linear, not a sort of all sides),
-/// then paired within each bucket.
-std::vector<SheetEdge> sheet_edges(const Surface& s) {
-  struct Side {
-    VertexIndex other;  // the larger end
-    std::size_t triangle;
-    bool forward;  // the triangle walks smaller -> larger
-  };
-  std::vector<std::size_t> first(s.vertices.size() + 1, 0);
-  // Which vertices are fixed, a byte each (read three times per triangle), and which
-  // triangles are the sheets' (no corner fixed: the obstacles' are), asked once, used twice.
-  std::vector<char> fixed(s.vertices.size(), 0);
-  for (VertexIndex v = 0; v < s.vertices.size(); ++v)
-    fixed[v] = s.is_fixed(v) ? 1 : 0;
-  std::vector<char> sheet(s.triangles.size());
-  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    const remesh::Triangle& tri = s.triangles[t];
-    sheet[t] = (fixed[tri[0]] | fixed[tri[1]] | fixed[tri[2]]) == 0;
-    if (!sheet[t]) continue;
-    for (int k = 0; k < 3; ++k)
-      ++first[std::min(tri[k], tri[(k + 1) % 3]) + 1];
-  }
-  for (std::size_t v = 1; v < first.size(); ++v)
-    first[v] += first[v - 1];
-  std::vector<Side> sides(first.back());
-  std::vector<std::size_t> next(first.begin(), first.end() - 1);
-  for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-    const remesh::Triangle& tri = s.triangles[t];
-    if (!sheet[t]) continue;
-    for (int k = 0; k < 3; ++k) {
-      const VertexIndex p = tri[k], q = tri[(k + 1) % 3];
-      sides[next[std::min(p, q)]++] = {std::max(p, q), t, p < q};
-    }
-  }
-  std::vector<SheetEdge> edges;
-  edges.reserve(sides.size());
-  for (VertexIndex v = 0; v + 1 < first.size(); ++v) {
-    const auto begin = sides.begin() + static_cast<std::ptrdiff_t>(first[v]);
-    const auto end = sides.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
-    // By (other, triangle): a bucket is filled in triangle order, so a stable insertion
-    // sort by the other end (a bucket holds a few sides) leaves it so.
-    for (auto i = begin; i != end; ++i) {
-      const Side side = *i;
-      auto j = i;
-      for (; j != begin && (j - 1)->other > side.other; --j)
-        *j = *(j - 1);
-      *j = side;
-    }
-    for (auto i = begin; i != end;) {
-      auto j = i + 1;
-      while (j != end && j->other == i->other)
-        ++j;
-      SheetEdge e = i->forward ? SheetEdge{v, i->other, i->triangle, std::nullopt}
-                               : SheetEdge{i->other, v, i->triangle, std::nullopt};
-      if (j == i + 2) e.right = (i + 1)->triangle;
-      if (j - i <= 2) edges.push_back(e);
-      i = j;
-    }
-  }
-  return edges;
-}
 
 double material_length(const Work& w, VertexIndex a, VertexIndex b) {
   return std::hypot(w.material[b][0] - w.material[a][0], w.material[b][1] - w.material[a][1]);
@@ -146,13 +77,6 @@ bool not_delaunay(const Work& w, VertexIndex a, VertexIndex b, VertexIndex c, Ve
          std::numbers::pi + kDelaunaySlack;
 }
 
-std::array<double, 3> normal(const Surface& s, const remesh::Triangle& t) {
-  const Point3 &p = s.vertices[t[0]], &q = s.vertices[t[1]], &r = s.vertices[t[2]];
-  const double ux = q[0] - p[0], uy = q[1] - p[1], uz = q[2] - p[2];
-  const double vx = r[0] - p[0], vy = r[1] - p[1], vz = r[2] - p[2];
-  return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
-}
-
 double triangle_min_angle_to_floor(const Surface& s, const remesh::Triangle& t) {
   return world_min_angle_to_floor(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]);
 }
@@ -164,65 +88,73 @@ bool keeps_quality(const OldWorst& old_worst, double new_worst) {
   return new_worst >= kMinAngle || new_worst >= old_worst();
 }
 
-/// The size every vertex asks for (Remesher's sizing, remesher.hpp).
-std::vector<double> vertex_sizes(const Work& w, const std::vector<SheetEdge>& edges,
-                                 const RemeshParameters& p) {
-  std::vector<double> size(w.surface.vertices.size(), p.max_length);
-  // Each triangle's normal, worked out once for its (up to three) inner edges.
-  std::vector<std::array<double, 3>> normals(w.surface.triangles.size());
-  std::vector<char> known(w.surface.triangles.size(), 0);
-  const auto normal_of = [&](std::size_t t) -> const std::array<double, 3>& {
-    if (!known[t]) {
-      normals[t] = normal(w.surface, w.surface.triangles[t]);
-      known[t] = 1;
-    }
-    return normals[t];
-  };
-  for (const SheetEdge& e : edges) {
-    if (!e.right) continue;
-    const auto& n1 = normal_of(e.left);
-    const auto& n2 = normal_of(*e.right);
-    const std::array<double, 3> c{n1[1] * n2[2] - n1[2] * n2[1], n1[2] * n2[0] - n1[0] * n2[2],
-                                  n1[0] * n2[1] - n1[1] * n2[0]};
-    const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-    const Material &ma = w.material[e.a], &mb = w.material[e.b];
-    const double dx = mb[0] - ma[0], dy = mb[1] - ma[1];
-    if (asks_no_less_than_max(c, dot, dx * dx + dy * dy, p.max_length, p.turn_per_edge)) continue;
-    const double theta = std::atan2(std::hypot(c[0], c[1], c[2]), dot);
-    if (!(theta > 0.0)) continue;
-    const double ask = material_length(w, e.a, e.b) * p.turn_per_edge / theta;
-    size[e.a] = std::min(size[e.a], ask);
-    size[e.b] = std::min(size[e.b], ask);
-  }
-  for (double& s : size)
-    s = std::clamp(s, p.min_length, p.max_length);
-  return size;
-}
-
 /// The sheets' edges and the sizes their vertices ask for, worked out when first asked and
 /// kept while the surface stays as it was: a pass that applies nothing leaves it unchanged
 /// (its triangles, their order, the vertices and their material), so the next pass, of
-/// this kind or another, reads the same tables.
+/// this kind or another, reads the same tables. A pass that changes the surface reports
+/// what it changed (remesh::TriangleChanges, into changes()), and both tables are patched
+/// there (SheetEdgeTable::update, update_vertex_sizes) when next asked for: the sizes of
+/// the vertices whose edges changed are worked out again (a split's new vertex takes its
+/// material coordinates before the next pass asks).
 class SurfaceTables {
  public:
   const std::vector<SheetEdge>& edges(const Work& w) {
-    if (!edges_) edges_ = sheet_edges(w.surface);
-    return *edges_;
+    if (!edges_) {
+      edges_.emplace(w.surface);
+    } else if (pending_) {
+      pending_ = false;
+      if (edges_->update(w.surface, changes_, touched_)) {
+        sizes_touched_.insert(sizes_touched_.end(), touched_.begin(), touched_.end());
+        sizes_moved_.insert(sizes_moved_.end(), changes_.moved.begin(), changes_.moved.end());
+      } else {
+        sizes_.reset();  // built again: which vertices' edges changed is not known
+      }
+    }
+    return edges_->edges();
   }
   const std::vector<double>& sizes(const Work& w, const RemeshParameters& p) {
-    if (!sizes_) sizes_ = vertex_sizes(w, edges(w), p);
+    const std::vector<SheetEdge>& edges = this->edges(w);
+    if (sizes_ && !sizes_touched_.empty() &&
+        !update_vertex_sizes(*sizes_, w.surface, w.material, edges, p, sizes_touched_, sizes_moved_,
+                             marks_)) {
+      sizes_.reset();
+    }
+    sizes_touched_.clear();
+    sizes_moved_.clear();
+    if (!sizes_) sizes_ = vertex_sizes(w.surface, w.material, edges, p);
     return *sizes_;
   }
-  /// After a pass: forgotten when it changed the surface.
-  void pass_done(bool changed) {
-    if (!changed) return;
+  /// Where a pass on `w` reports its changes (a pending patch made first: the report is
+  /// the last pass's).
+  remesh::TriangleChanges* changes(const Work& w) {
+    if (pending_) edges(w);
+    return &changes_;
+  }
+  /// Takes `table` as the edges of the work's surface (it must be theirs).
+  void adopt(SheetEdgeTable table) { edges_.emplace(std::move(table)); }
+  /// The edges of the work's surface as it is (patched first when a pass left them to be),
+  /// taken out.
+  SheetEdgeTable release(const Work& w) {
+    edges(w);
+    SheetEdgeTable table = std::move(*edges_);
     edges_.reset();
-    sizes_.reset();
+    return table;
+  }
+  /// After a pass: the tables to be patched when it changed the surface.
+  void pass_done(bool changed) {
+    if (changed) pending_ = edges_.has_value();
   }
 
  private:
-  std::optional<std::vector<SheetEdge>> edges_;
+  std::optional<SheetEdgeTable> edges_;
   std::optional<std::vector<double>> sizes_;
+  remesh::TriangleChanges changes_;   ///< the last pass's
+  bool pending_ = false;              ///< the edges wait for the patch of changes_
+  std::vector<VertexIndex> touched_;  ///< the edges' patch's
+  /// The ends of the edges changed, and the vertices moved, since the sizes were patched.
+  std::vector<VertexIndex> sizes_touched_;
+  std::vector<VertexIndex> sizes_moved_;
+  std::vector<char> marks_;  ///< update_vertex_sizes' storage
 };
 
 double edge_size(const std::vector<double>& size, VertexIndex a, VertexIndex b) {
@@ -263,7 +195,8 @@ bool split_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables, Verdi
   std::vector<remesh::Split> splits;
   for (const auto& [ratio, split] : wanted)
     splits.push_back(split);
-  const std::vector<remesh::Outcome> outcomes = remesh::split_edges(w.surface, splits, w.passes);
+  const std::vector<remesh::Outcome> outcomes =
+      remesh::split_edges(w.surface, splits, w.passes, tables.changes(w));
   bool any = false;
   for (std::size_t i = 0; i < outcomes.size(); ++i) {
     counts.add(outcomes[i].verdict);
@@ -389,7 +322,7 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
     pass.propose({kept, gone, w.surface.vertices[kept]});
   }
   bool any = false;
-  for (const remesh::Outcome& o : pass.finish(w.surface)) {
+  for (const remesh::Outcome& o : pass.finish(w.surface, tables.changes(w))) {
     counts.add(o.verdict);
     any = any || o.applied();
   }
@@ -420,7 +353,8 @@ bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
     flips.push_back(remesh::edge_of(e.a, e.b));
   }
   bool any = false;
-  for (const remesh::Outcome& o : remesh::flip_edges(w.surface, flips, w.passes)) {
+  for (const remesh::Outcome& o :
+       remesh::flip_edges(w.surface, flips, w.passes, tables.changes(w))) {
     counts.add(o.verdict);
     any = any || o.applied();
   }
@@ -447,9 +381,15 @@ Work work_of(const ClothMesh& mesh) {
   return w;
 }
 
+/// How write_back numbered the work's vertices and sheet triangles in the mesh.
+struct Numbering {
+  std::vector<VertexIndex> vertex;      ///< per vertex: its index in the mesh (kNoVertex: gone)
+  std::vector<std::size_t> sheet_face;  ///< per sheet triangle: its face in the mesh
+};
+
 /// The mesh back from the work: used sheet vertices first (in order), then the obstacle's,
-/// sheet faces first.
-void write_back(const Work& w, ClothMesh& mesh) {
+/// sheet faces first; how each vertex and sheet triangle was numbered into `numbering`.
+void write_back(const Work& w, ClothMesh& mesh, Numbering& numbering) {
   const Surface& s = w.surface;
   std::vector<char> used(s.vertices.size(), 0), fixed(s.vertices.size(), 0);  // bytes
   for (const remesh::Triangle& t : s.triangles) {
@@ -458,7 +398,9 @@ void write_back(const Work& w, ClothMesh& mesh) {
   }
   for (VertexIndex v = 0; v < s.vertices.size(); ++v)
     fixed[v] = s.is_fixed(v) ? 1 : 0;
-  std::vector<VertexIndex> renumber(s.vertices.size(), remesh::kNoVertex);
+  std::vector<VertexIndex>& renumber = numbering.vertex;
+  renumber.assign(s.vertices.size(), remesh::kNoVertex);
+  numbering.sheet_face.assign(s.triangles.size(), 0);
   std::vector<VertexIndex> order;
   order.reserve(s.vertices.size());
   for (const bool obstacle : {false, true}) {
@@ -487,8 +429,10 @@ void write_back(const Work& w, ClothMesh& mesh) {
   mesh.faces.clear();
   mesh.faces.reserve(s.triangles.size());
   for (const bool obstacle : {false, true}) {
-    for (const remesh::Triangle& t : s.triangles) {
+    for (std::size_t f = 0; f < s.triangles.size(); ++f) {
+      const remesh::Triangle& t = s.triangles[f];
       if (sheet(t) == obstacle) continue;
+      if (!obstacle) numbering.sheet_face[f] = mesh.faces.size();
       mesh.faces.push_back({renumber[t[0]], renumber[t[1]], renumber[t[2]]});
     }
     if (!obstacle) mesh.sheet_faces = mesh.faces.size();
@@ -530,8 +474,29 @@ RemeshCounts& RemeshCounts::operator+=(const RemeshCounts& c) noexcept {
   return *this;
 }
 
+std::optional<SheetEdgeTable> KeptSheetEdges::take_for(const ClothMesh& mesh) {
+  std::optional<SheetEdgeTable> taken = std::move(table_);
+  table_.reset();
+  // The faces compared as bytes (three indices each, no padding: equal bytes are equal
+  // faces), one memcmp instead of a comparison per index.
+  static_assert(std::has_unique_object_representations_v<ccd::Triangle>);
+  if (!taken || mesh.vertex_count() != vertices_ || mesh.sheet_vertices() != sheet_vertices_ ||
+      mesh.faces.size() != faces_.size() ||
+      std::memcmp(mesh.faces.data(), faces_.data(), faces_.size() * sizeof(ccd::Triangle)) != 0) {
+    return std::nullopt;
+  }
+  return taken;
+}
+
+void KeptSheetEdges::keep(SheetEdgeTable table, const ClothMesh& mesh) {
+  table_ = std::move(table);
+  faces_ = mesh.faces;
+  vertices_ = mesh.vertex_count();
+  sheet_vertices_ = mesh.sheet_vertices();
+}
+
 RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
-                    remesh::PassWorkspace* workspace) {
+                    remesh::PassWorkspace* workspace, KeptSheetEdges* kept) {
   const auto start = std::chrono::steady_clock::now();
   RemeshCounts counts;
   Work w = work_of(mesh);
@@ -539,6 +504,9 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
   // Split vertices come after the obstacle's (as split_edges appends them), and so do
   // their entries in the work's per-vertex arrays; write_back puts them with the sheets.
   SurfaceTables tables;
+  if (kept != nullptr) {
+    if (std::optional<SheetEdgeTable> table = kept->take_for(mesh)) tables.adopt(std::move(*table));
+  }
   const auto run = [&](const auto& one_pass) {
     for (int pass = 0; pass < parameters.passes; ++pass) {
       const bool changed = one_pass();
@@ -549,7 +517,15 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
   run([&] { return split_pass(w, parameters, tables, counts.split); });
   run([&] { return collapse_pass(w, parameters, tables, counts.collapse); });
   run([&] { return flip_pass(w, tables, counts.flip); });
-  write_back(w, mesh);
+  Numbering numbering;
+  write_back(w, mesh, numbering);
+  if (kept != nullptr) {
+    // The work's table, numbered as the mesh written back: the sheets' vertices and
+    // faces come first there, each in their order, so the entries keep theirs.
+    SheetEdgeTable table = tables.release(w);
+    table.renumber(numbering.vertex, numbering.sheet_face);
+    kept->keep(std::move(table), mesh);
+  }
   counts.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return counts;
 }

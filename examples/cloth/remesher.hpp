@@ -20,10 +20,12 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "exactgeo/ccd/mesh/mesh_ccd.hpp"
 #include "exactgeo/remesh/operations.hpp"
+#include "sheet_edges.hpp"
 
 namespace exactgeo::cloth {
 
@@ -67,11 +69,32 @@ struct RemeshCounts {
   RemeshCounts& operator+=(const RemeshCounts& c) noexcept;
 };
 
+/// The sheet edge table one remesh leaves for the next (sheet_edges.hpp): that of the mesh
+/// it wrote back, which the next remesh given it takes instead of building its own when
+/// the mesh's faces and its numbers of vertices and sheet vertices are still the ones
+/// written (a time step moves the vertices, not the faces). Caller-owned, kept for a run.
+class KeptSheetEdges {
+ public:
+  /// The table kept for `mesh` (taken out), or none when `mesh` is not the one it was
+  /// kept for.
+  std::optional<SheetEdgeTable> take_for(const ClothMesh& mesh);
+  /// Keeps `table`, the sheet edge table of `mesh`.
+  void keep(SheetEdgeTable table, const ClothMesh& mesh);
+
+ private:
+  std::optional<SheetEdgeTable> table_;
+  std::vector<ccd::Triangle> faces_;  ///< the mesh's it is the table of
+  std::size_t vertices_ = 0;
+  std::size_t sheet_vertices_ = 0;
+};
+
 /// Remeshes the sheets of `mesh` (intersection free, as every operation keeps it).
 /// `workspace`: the passes' memory (remesh::PassWorkspace), kept by the caller from one
-/// remesh to the next so that each pass reuses it; none, and each pass makes its own. The
-/// same operations either way.
+/// remesh to the next so that each pass reuses it; none, and each pass makes its own.
+/// `kept`: the sheet edge table the last remesh left (KeptSheetEdges), taken when it is
+/// still the mesh's, and the one of the mesh written back left there; none, and each
+/// remesh builds its own. The same operations either way.
 RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
-                    remesh::PassWorkspace* workspace = nullptr);
+                    remesh::PassWorkspace* workspace = nullptr, KeptSheetEdges* kept = nullptr);
 
 }  // namespace exactgeo::cloth

@@ -132,26 +132,57 @@ std::variant<Outcome, CollapsePlan> plan_collapse(const Surface& s, const Vertex
   return CollapsePlan{a, b, to, EdgeTrianglesOfOne(on_edge)};
 }
 
-/// Makes the planned collapses on `surface` (the one they were planned on), in place:
-/// each edge's triangles gone (the others in order), b replaced by a, both at `to`.
-void collapse(Surface& surface, const std::vector<const CollapsePlan*>& plans) {
-  std::vector<bool> removed(surface.triangles.size(), false);
+/// Makes the planned collapses on `surface` (the one they were planned on; `stars`, its
+/// triangles around each vertex), in place: each edge's triangles gone (the others moved
+/// down in order), b replaced by a, both at `to`; what changed into `changes` (when given:
+/// TriangleChanges). Only a triangle around some b has a corner replaced, so only those
+/// are rewritten, and the kept triangles between two removed ones move down as a run.
+void collapse(Surface& surface, const VertexTriangles& stars,
+              const std::vector<const CollapsePlan*>& plans, TriangleChanges* changes = nullptr) {
+  const std::size_t count = surface.triangles.size();
+  if (changes != nullptr) changes->reset(count);
   std::vector<VertexIndex> merged_into(surface.vertices.size(), kNoVertex);
+  std::vector<std::size_t> removed, around;  // the edges' triangles; those around the b's
   for (const CollapsePlan* p : plans) {
+    if (changes != nullptr) {
+      for (const VertexIndex end : {p->a, p->b})
+        if (surface.vertices[end] != p->to) changes->moved.push_back(end);
+    }
     surface.vertices[p->a] = surface.vertices[p->b] = p->to;
-    for (const std::size_t t : p->on_edge)
-      removed[t] = true;
+    removed.insert(removed.end(), p->on_edge.begin(), p->on_edge.end());
+    const std::span<const std::size_t> star = stars[p->b];
+    around.insert(around.end(), star.begin(), star.end());
     merged_into[p->b] = p->a;
   }
-  std::size_t kept = 0;  // the triangles kept so far, moved down in order
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    if (removed[t]) continue;
+  std::sort(removed.begin(), removed.end());
+  removed.erase(std::unique(removed.begin(), removed.end()), removed.end());
+  std::sort(around.begin(), around.end());
+  around.erase(std::unique(around.begin(), around.end()), around.end());
+  for (const std::size_t t : around) {
+    if (std::binary_search(removed.begin(), removed.end(), t)) continue;
     Triangle tri = surface.triangles[t];
     for (VertexIndex& c : tri)
       if (merged_into[c] != kNoVertex) c = merged_into[c];
-    surface.triangles[kept++] = tri;
+    if (changes != nullptr) changes->rewritten.push_back({t, surface.triangles[t]});
+    surface.triangles[t] = tri;
   }
-  surface.triangles.resize(kept);
+  if (changes != nullptr) {
+    for (const std::size_t t : removed)
+      changes->removed.push_back({t, surface.triangles[t]});
+    std::sort(changes->moved.begin(), changes->moved.end());
+  }
+  // The runs between removed triangles, each moved down past those removed before it.
+  auto& triangles = surface.triangles;
+  std::size_t kept = removed.empty() ? count : removed[0];
+  for (std::size_t i = 0; i < removed.size(); ++i) {
+    const std::size_t from = removed[i] + 1;
+    const std::size_t to = i + 1 < removed.size() ? removed[i + 1] : count;
+    std::copy(triangles.begin() + static_cast<std::ptrdiff_t>(from),
+              triangles.begin() + static_cast<std::ptrdiff_t>(to),
+              triangles.begin() + static_cast<std::ptrdiff_t>(kept));
+    kept += to - from;
+  }
+  triangles.resize(kept);
 }
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
@@ -325,10 +356,10 @@ struct CollapsePass::State {
     outcome_of_.push_back(i);
   }
 
-  std::vector<Outcome> finish(Surface& surface) {
+  std::vector<Outcome> finish(Surface& surface, TriangleChanges* changes) {
     refuse_collisions();
     if (&surface != &surface_) surface = surface_;
-    collapse(surface, live_plans());
+    collapse(surface, stars_, live_plans(), changes);
     return std::move(outcomes_);
   }
 
@@ -483,15 +514,15 @@ struct CollapsePass::State {
 
 Outcome collapse_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& to) {
   PlanScratch scratch;
-  const auto planned = plan_collapse(
-      surface, VertexTriangles(surface.triangles, surface.vertices.size()), a, b, to, scratch);
+  const VertexTriangles stars(surface.triangles, surface.vertices.size());
+  const auto planned = plan_collapse(surface, stars, a, b, to, scratch);
   if (const auto* refused = std::get_if<Outcome>(&planned)) return *refused;
   const CollapsePlan& plan = std::get<CollapsePlan>(planned);
   const std::array<Move, 2> moves{Move{a, to}, Move{b, to}};
   if (auto hit = first_collision(surface, moves, edge_of(a, b))) {
     return collision(*hit, collapsing(a, b));
   }
-  collapse(surface, {&plan});
+  collapse(surface, stars, {&plan});
   return {};
 }
 
@@ -518,18 +549,18 @@ void CollapsePass::propose(const Collapse& collapse) {
   state().propose(collapse);
 }
 
-std::vector<Outcome> CollapsePass::finish(Surface& surface) {
-  std::vector<Outcome> outcomes = state().finish(surface);
+std::vector<Outcome> CollapsePass::finish(Surface& surface, TriangleChanges* changes) {
+  std::vector<Outcome> outcomes = state().finish(surface, changes);
   state_.reset();
   return outcomes;
 }
 
 std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses,
-                                    PassWorkspace* workspace) {
+                                    PassWorkspace* workspace, TriangleChanges* changes) {
   CollapsePass pass(surface, workspace);
   for (const Collapse& c : collapses)
     pass.propose(c);
-  return pass.finish(surface);
+  return pass.finish(surface, changes);
 }
 
 }  // namespace exactgeo::remesh

@@ -8,6 +8,8 @@
 // zero area, no turn-over); which of those sweep regions apart from the earlier ones'
 // (pass_schedule.hpp). Then the regions are checked against the surface in one walk.
 
+#include <array>
+#include <cstddef>
 #include <variant>
 #include <vector>
 
@@ -91,7 +93,8 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b) {
 }
 
 std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
-                                PassWorkspace* workspace) {
+                                PassWorkspace* workspace, TriangleChanges* changes) {
+  if (changes != nullptr) changes->reset(surface.triangles.size());
   PassWorkspace own;  // used when the caller keeps none
   PassWorkspace::Arrays& kept = arrays_of(workspace, own);
   EdgeTriangles& table = kept.edges;
@@ -166,8 +169,11 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
       outcomes[edge_of_plan[checked[n]]] = collision(*hits[n], flipping(plan.a, plan.b));
       continue;
     }
+    if (changes != nullptr)
+      record_rewrites(surface, std::array<std::size_t, 2>{plan.t1, plan.t2}, *changes);
     apply_flip(surface, plan);
   }
+  if (changes != nullptr) sort_rewrites(*changes);
   return outcomes;
 }
 

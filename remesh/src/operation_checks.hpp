@@ -137,4 +137,21 @@ class EdgeTrianglesOfOne {
   std::size_t size_ = 0;
 };
 
+/// Records, before an operation rewrites them in place, the triangles it rewrites (their
+/// indices and corners) in a pass's report (TriangleChanges).
+template <class Triangles>
+void record_rewrites(const Surface& s, const Triangles& rewritten, TriangleChanges& changes) {
+  for (const std::size_t t : rewritten)
+    changes.rewritten.push_back({t, s.triangles[t]});
+}
+
+/// The report's rewritten triangles in index order (a pass applies its operations in the
+/// order they were proposed; they share no triangle, so no index comes twice).
+inline void sort_rewrites(TriangleChanges& changes) {
+  std::sort(changes.rewritten.begin(), changes.rewritten.end(),
+            [](const TriangleChanges::Was& x, const TriangleChanges::Was& y) {
+              return x.triangle < y.triangle;
+            });
+}
+
 }  // namespace exactgeo::remesh::internal

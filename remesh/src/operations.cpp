@@ -1,5 +1,6 @@
 #include "exactgeo/remesh/operations.hpp"
 
+#include <algorithm>
 #include <memory>
 
 #include "pass_workspace.hpp"
@@ -18,6 +19,19 @@ std::string_view to_string(Verdict v) noexcept {
       return "deferred";
   }
   return "?";
+}
+
+std::size_t TriangleChanges::index_after(std::size_t t) const noexcept {
+  const auto below = std::partition_point(removed.begin(), removed.end(),
+                                          [t](const Was& r) { return r.triangle < t; });
+  return t - static_cast<std::size_t>(below - removed.begin());
+}
+
+void TriangleChanges::reset(std::size_t triangles) noexcept {
+  triangles_before = triangles;
+  removed.clear();
+  rewritten.clear();
+  moved.clear();
 }
 
 PassWorkspace::PassWorkspace() = default;

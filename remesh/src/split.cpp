@@ -218,7 +218,8 @@ Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3&
 }
 
 std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits,
-                                 PassWorkspace* workspace) {
+                                 PassWorkspace* workspace, TriangleChanges* changes) {
+  if (changes != nullptr) changes->reset(surface.triangles.size());
   PassWorkspace own;  // used when the caller keeps none
   PassWorkspace::Arrays& kept = arrays_of(workspace, own);
   EdgeTriangles& table = kept.edges;
@@ -306,9 +307,14 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
       if (!hit) hit = hits[next_region];
     }
     const SplitPlan& plan = plans[k];
-    outcomes[split_of_plan[k]] =
-        hit ? collision(*hit, splitting(plan.a, plan.b)) : apply_split(surface, plan);
+    if (hit) {
+      outcomes[split_of_plan[k]] = collision(*hit, splitting(plan.a, plan.b));
+      continue;
+    }
+    if (changes != nullptr) record_rewrites(surface, plan.on_edge, *changes);
+    outcomes[split_of_plan[k]] = apply_split(surface, plan);
   }
+  if (changes != nullptr) sort_rewrites(*changes);
   return outcomes;
 }
 

@@ -21,6 +21,7 @@
 // much a collapse or a relocation turns a neighbouring triangle (a quality matter; a
 // triangle folding through another part of the surface is a contact, and refused).
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -88,6 +89,41 @@ struct Outcome {
   bool applied() const noexcept { return verdict == Verdict::applied; }
 };
 
+/// What a pass (split_edges, collapse_edges, CollapsePass::finish, flip_edges) did to the
+/// surface's triangles, for a caller that keeps tables of them (the triangles on each edge,
+/// around each vertex) and patches them where the pass changed the surface instead of
+/// building them again. A pass removes triangles (a collapse: its edge's), gives triangles
+/// new corners in place (a split's, a flip's and the others around a collapse's removed
+/// end) and appends triangles (a split's second halves); every other triangle keeps its
+/// corners and the order of the whole stays: triangle t of the surface before the pass,
+/// not removed, is index_after(t) after it, and the appended triangles are those from
+/// first_added() on. Vertices are only appended (a split's) or moved (`moved`).
+/// Filled anew by each pass it is handed to (its vectors' storage kept).
+struct TriangleChanges {
+  /// A triangle of the surface before the pass: its index and its corners then.
+  struct Was {
+    std::size_t triangle = 0;
+    Triangle corners{};
+    bool operator==(const Was&) const = default;
+  };
+  std::size_t triangles_before = 0;  ///< the number of triangles before the pass
+  std::vector<Was> removed;          ///< ascending by index
+  /// Given new corners (their corners now: the surface's at index_after), ascending by
+  /// index; none of them removed, none twice (a pass's operations share no triangle).
+  std::vector<Was> rewritten;
+  /// The vertices given a new position (a collapse's ends, when its new point is not
+  /// where they were), ascending.
+  std::vector<VertexIndex> moved;
+
+  /// The index after the pass of triangle t before it: t less the removed triangles below
+  /// t (a binary search of `removed`). Precondition: t was not removed.
+  std::size_t index_after(std::size_t t) const noexcept;
+  /// The index of the first appended triangle (there are none when it is the count).
+  std::size_t first_added() const noexcept { return triangles_before - removed.size(); }
+  /// Forgets the last pass's changes (storage kept): nothing changed in `triangles` triangles.
+  void reset(std::size_t triangles) noexcept;
+};
+
 /// Moves vertex v to `to`. Refused for a fixed vertex or one no triangle uses.
 Outcome relocate_vertex(Surface& surface, VertexIndex v, const Point3& to);
 
@@ -123,8 +159,10 @@ struct Collapse {
 /// order; collapse_edge on each applied edge of the surface before the pass would have
 /// applied it too. Removed triangles leave the list; the other triangles keep their order.
 /// `workspace`: memory kept between passes (PassWorkspace), or none (a pass of its own).
+/// `changes`: filled with what the pass changed (TriangleChanges), or none.
 std::vector<Outcome> collapse_edges(Surface& surface, std::span<const Collapse> collapses,
-                                    PassWorkspace* workspace = nullptr);
+                                    PassWorkspace* workspace = nullptr,
+                                    TriangleChanges* changes = nullptr);
 
 /// A pass of collapses proposed one at a time: collapse_edges for a caller that decides
 /// what to propose as it goes. Each proposal is planned and scheduled when it is made, by
@@ -159,8 +197,9 @@ class CollapsePass {
   void propose(const Collapse& collapse);
   /// One outcome per proposal, in order, with the collapses that go ahead and meet
   /// nothing made on `surface` (the one the pass was made for). Once: afterwards (or
-  /// once moved from) every member throws std::logic_error.
-  std::vector<Outcome> finish(Surface& surface);
+  /// once moved from) every member throws std::logic_error. `changes` as for
+  /// collapse_edges.
+  std::vector<Outcome> finish(Surface& surface, TriangleChanges* changes = nullptr);
 
  private:
   struct State;
@@ -175,10 +214,11 @@ Outcome flip_edge(Surface& surface, VertexIndex a, VertexIndex b);
 /// region's box meets the box of an earlier one of the pass is deferred, the others'
 /// regions are checked in one pass over the surface (first_in_regions) and every flip
 /// that meets nothing is made. One outcome per edge, in order; flip_edge on each applied
-/// edge of the surface before the pass would have applied it too. `workspace` as for
-/// collapse_edges.
+/// edge of the surface before the pass would have applied it too. `workspace` and
+/// `changes` as for collapse_edges (a flip rewrites its edge's two triangles).
 std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
-                                PassWorkspace* workspace = nullptr);
+                                PassWorkspace* workspace = nullptr,
+                                TriangleChanges* changes = nullptr);
 
 /// Adds a vertex at `at` and splits edge ab and its triangles there.
 Outcome split_edge(Surface& surface, VertexIndex a, VertexIndex b, const Point3& at);
@@ -193,8 +233,11 @@ struct Split {
 /// Many splits at once (a refinement pass), as flip_edges: a split whose box (its
 /// triangles and the new vertex) meets an earlier one's is deferred, the others' regions
 /// are checked in one pass over the surface, and every split that meets nothing is made
-/// (new vertices in the order of the splits). `workspace` as for collapse_edges.
+/// (new vertices in the order of the splits). `workspace` and `changes` as for
+/// collapse_edges (a split rewrites each triangle x y c of its edge as x m c and appends
+/// m y c).
 std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits,
-                                 PassWorkspace* workspace = nullptr);
+                                 PassWorkspace* workspace = nullptr,
+                                 TriangleChanges* changes = nullptr);
 
 }  // namespace exactgeo::remesh
