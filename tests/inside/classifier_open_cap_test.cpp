@@ -6,7 +6,8 @@
 //   - points anywhere near a sphere with holes take the cap (and agree with the oracle
 //     and with every face and every cap triangle tried);
 //   - a point on a cap triangle but not on F is not boundary: the cone's term labels it;
-//   - a ray through a cap triangle's edge (F's crossings clean) is cast again.
+//   - a ray through a cap triangle's edge (F's crossings clean) is cast again;
+//   - the cone's tree, built on first use, gives the same labels from four threads.
 
 #include <gtest/gtest.h>
 
@@ -19,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "exactgeo/inside/batch.hpp"
 #include "exactgeo/inside/classifier.hpp"
 #include "exactgeo/inside/fill_rule.hpp"
 #include "exactgeo/inside/location.hpp"
@@ -197,6 +199,43 @@ TEST_P(OpenCap, APointOnACapTriangleIsLabelledByTheCone) {
     }
   }
   EXPECT_GT(compared, 80u);  // of 92
+}
+
+TEST_P(OpenCap, TheConesTreeBuiltOnFirstUseAnswersAlikeFromManyThreads) {
+  // Points on cap triangles take the cone, whose tree the classifier builds on first use:
+  // four threads asking a fresh classifier at once give the labels one thread gives (and
+  // the oracle's).
+  const int k = GetParam();
+  auto rng = testing::seeded_engine("inside.open.cap.lazy_tree." + std::to_string(k));
+  const Mesh mesh = raised_open_box(k);
+  const std::vector<Triangle> triangles = testing::triangles_of(mesh);
+  std::uniform_int_distribution<int> weight(1, 6);
+  std::vector<Point3> points;
+  {
+    const Classifier classifier(mesh, with(FillRule::nonzero, CandidateSearch::box_tree));
+    const Cap cap = cap_of(mesh, classifier);
+    for (int i = 0; i < 64; ++i) {
+      const auto& t = cap.triangles[static_cast<std::size_t>(i) % cap.triangles.size()];
+      const int a = weight(rng);
+      const int b = std::uniform_int_distribution<int>(1, 7 - a)(rng);
+      points.push_back(combination({{a, t[0]}, {b, t[1]}, {8 - a - b, t[2]}}));
+    }
+  }
+  const Classifier one(mesh, with(FillRule::nonzero, CandidateSearch::box_tree));
+  const Classifier many(mesh, with(FillRule::nonzero, CandidateSearch::box_tree));
+  std::vector<Location> alone(points.size()), together(points.size());
+  classify_batch(one, points, alone, Arithmetic::exact, 1);
+  classify_batch(many, points, together, Arithmetic::exact, 4);
+  std::size_t compared = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_EQ(to_string(together[i]), to_string(alone[i])) << hex(points[i]);
+    ASSERT_NE(alone[i], Location::boundary) << hex(points[i]);
+    const std::optional<Location> want = oracle_label(FillRule::nonzero, points[i], triangles);
+    if (!want) continue;
+    ASSERT_EQ(to_string(alone[i]), to_string(*want)) << hex(points[i]);
+    ++compared;
+  }
+  EXPECT_GT(compared, 50u);
 }
 
 TEST_P(OpenCap, ARayThroughACapTrianglesEdgeIsCastAgain) {
