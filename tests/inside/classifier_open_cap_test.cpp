@@ -162,25 +162,32 @@ Point3 combination(const std::vector<std::pair<int, Point3>>& terms) {
   return p;
 }
 
+/// `each` points inside each of the cap's triangles (weights 1 to 6 of its corners,
+/// summing to 8: exact at every scale).
+std::vector<Point3> points_on_cap(const Cap& cap, int each, std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> weight(1, 6);
+  std::vector<Point3> points;
+  for (const auto& t : cap.triangles) {
+    for (int i = 0; i < each; ++i) {
+      const int a = weight(rng);
+      const int b = std::uniform_int_distribution<int>(1, 7 - a)(rng);
+      points.push_back(combination({{a, t[0]}, {b, t[1]}, {8 - a - b, t[2]}}));
+    }
+  }
+  return points;
+}
+
 TEST_P(OpenCap, APointOnACapTriangleIsLabelledByTheCone) {
   const int k = GetParam();
   auto rng = testing::seeded_engine("inside.open.cap.on_cap." + std::to_string(k));
   const Mesh mesh = raised_open_box(k);
   const std::vector<Triangle> triangles = testing::triangles_of(mesh);
-  std::uniform_int_distribution<int> weight(1, 6);
   std::size_t compared = 0;
   for (const FillRule rule : {FillRule::nonzero, FillRule::positive}) {
     for (const CandidateSearch search : {CandidateSearch::box_tree, CandidateSearch::brute_force}) {
       const Classifier classifier(mesh, with(rule, search));
       const Cap cap = cap_of(mesh, classifier);
-      std::vector<Point3> points;
-      for (const auto& t : cap.triangles) {
-        for (int i = 0; i < 8; ++i) {  // inside the triangle: weights 1 to 6, summing to 8
-          const int a = weight(rng);
-          const int b = std::uniform_int_distribution<int>(1, 7 - a)(rng);
-          points.push_back(combination({{a, t[0]}, {b, t[1]}, {8 - a - b, t[2]}}));
-        }
-      }
+      std::vector<Point3> points = points_on_cap(cap, 8, rng);
       for (int i = 1; i < 8; ++i)  // on the diagonal between them (no edge of F)
         points.push_back(combination({{i, cap.diagonal[0]}, {8 - i, cap.diagonal[1]}}));
       ClassifierScratch scratch;
@@ -209,18 +216,8 @@ TEST_P(OpenCap, TheConesTreeBuiltOnFirstUseAnswersAlikeFromManyThreads) {
   auto rng = testing::seeded_engine("inside.open.cap.lazy_tree." + std::to_string(k));
   const Mesh mesh = raised_open_box(k);
   const std::vector<Triangle> triangles = testing::triangles_of(mesh);
-  std::uniform_int_distribution<int> weight(1, 6);
-  std::vector<Point3> points;
-  {
-    const Classifier classifier(mesh, with(FillRule::nonzero, CandidateSearch::box_tree));
-    const Cap cap = cap_of(mesh, classifier);
-    for (int i = 0; i < 64; ++i) {
-      const auto& t = cap.triangles[static_cast<std::size_t>(i) % cap.triangles.size()];
-      const int a = weight(rng);
-      const int b = std::uniform_int_distribution<int>(1, 7 - a)(rng);
-      points.push_back(combination({{a, t[0]}, {b, t[1]}, {8 - a - b, t[2]}}));
-    }
-  }
+  const std::vector<Point3> points = points_on_cap(
+      cap_of(mesh, Classifier(mesh, with(FillRule::nonzero, CandidateSearch::box_tree))), 32, rng);
   const Classifier one(mesh, with(FillRule::nonzero, CandidateSearch::box_tree));
   const Classifier many(mesh, with(FillRule::nonzero, CandidateSearch::box_tree));
   std::vector<Location> alone(points.size()), together(points.size());
