@@ -359,8 +359,8 @@ Location Classifier::classify_open(const State& s, const Point3& point, Arithmet
 }
 
 /// The label of every point of the closed box [lower, upper], which no face reaches
-/// (open_space_cells.hpp): with delta the boundary tree's bound on w's variation over
-/// the box and c its centre, w(c) = S - w_Cap(c) as for a point (classify_open), w_Cap(c)
+/// (open_space_cells.hpp): with delta the cap tree's bound on w's variation over the
+/// box and c its centre, w(c) = S - w_Cap(c) as for a point (classify_open), w_Cap(c)
 /// enclosed with delta to spare between the half-integers j - 1/2 and j + 1/2; then
 /// every p of the box has w(p) within delta of w(c), strictly between n - 1/2 and n + 1/2
 /// (n = S - j), and the label of n (cap_label). nullopt where that does not settle (c on

@@ -44,7 +44,7 @@ double dipole_bound(double fan, double d2) noexcept {
 /// A near triangle's part of the gradient's sum, from above: the smaller of its boundary
 /// loop's Biot-Savart bound, sum |m| length / d^2 over its edges with d from each edge's
 /// box, and its dipole bound 2 |m| area / d^3 from its own box; nullopt where the box
-/// meets the box of an edge (or a square overflows).
+/// meets both its own box and an edge's (or a square overflows).
 std::optional<double> CapTree::near_triangle_bound(const Point3& lower, const Point3& upper,
                                                    const Triangle& t, const Sizes& sizes) noexcept {
   constexpr double kInf = std::numeric_limits<double>::infinity();

@@ -1,10 +1,10 @@
 #pragma once
 
-// What the boundary tree's and the cap tree's bounds on w's variation over a box share
-// (boundary_tree.hpp and cap_tree.hpp, "Variation over a box"): the gradient's factor in
-// turns, the rounding of a dipole bound, when a node is taken whole, the box's reach from
-// its centre, a segment's length from above, and the bound from a sum of positive terms.
-// Each tree descends its own nodes with its own per-node bound.
+// The pieces of the cap tree's bound on w's variation over a box (cap_tree.hpp,
+// "Variation over a box") with their rounding arguments: the gradient's factor in turns,
+// the rounding of a dipole bound, when a node is taken whole, the box's reach from its
+// centre, a segment's length from above (also the tree's build's, for its triangles'
+// edges), and the bound from a sum of positive terms.
 
 #include <algorithm>
 #include <cmath>
@@ -18,9 +18,8 @@ namespace exactgeo::internal {
 /// Above 1 / (4 pi) = 0.0795774...: the gradient's factor in turns.
 inline constexpr double kOneOverFourPiAbove = 0.0796;
 
-/// Covers the rounding of a dipole bound 2 F / d^3 (+ X / d^2) from F, X and d^2 (a root,
-/// two products, two quotients, a sum: within 7u relatively, u = 2^-53) with room to
-/// spare.
+/// Covers the rounding of a dipole bound 2 |m| F / d^3 from F and d^2 (a root, two
+/// products, a quotient: within 4u relatively, u = 2^-53) with room to spare.
 inline constexpr double kDipoleRounding = 1 + 0x1p-49;
 
 /// A node is taken whole where its box is at least this many of its diagonals from the

@@ -176,7 +176,8 @@ class CapTree {
   /// upper], w the generalized winding number of a surface whose boundary is minus the
   /// cap's ("Variation over a box" above). Precondition: the box misses that surface (it
   /// may meet the cap) and holds `centre`. nullopt where the bound exceeds `most`, the
-  /// box meets the box of a near cap triangle's edge, or a square overflows.
+  /// box meets a near cap triangle's box and one of its edges' boxes, or a square
+  /// overflows.
   std::optional<double> variation(const Point3& lower, const Point3& upper, const Point3& centre,
                                   double most) const;
 
