@@ -231,43 +231,65 @@ CapTree::CapTree(std::span<const Point3> vertices, std::span<const BoundaryEdge>
   }
   nodes_.reserve(4 * edges.size() / 3 + 2 * loops.size() + 2);
   build_loops(vertices, loops, centres);
+  set_expansions();
   // A node without triangles (every one of its triangles on a line) is harmless: F = 0.
 }
 
-/// M = sum m (vector area) and Q = sum m (vector area) (centroid - c)^T in outward-rounded
-/// intervals (cap_tree.hpp, "Far nodes"), and from them the node's expansion and its
-/// bound's coefficients (far_field.hpp).
-void CapTree::set_expansion(Node& node) const {
-  const Point3& c = node.centre;
-  internal::Moments moments;
-  auto& [m, q] = moments;
+/// Every node's expansion (far_field.hpp) from M = sum m (vector area) and Q = sum m
+/// (vector area) (centroid - c)^T about its centre c, in outward-rounded intervals
+/// (cap_tree.hpp, "Far nodes"): its own triangles' summed, its children's taken over. M
+/// does not depend on the centre, and Q about c is the child's Q about its own centre c'
+/// plus M (c' - c)^T (the centroids' offsets shift by c' - c), so each triangle is summed
+/// once instead of once per ancestor. A child's index is above its parent's (build_range
+/// and build_loops place a node before its children), so the nodes taken from the last
+/// to the first meet every child before its parent.
+void CapTree::set_expansions() {
+  std::vector<internal::Moments> moments(nodes_.size());
   const DoubleInterval third = DoubleInterval{1.0, 1.0} / DoubleInterval::exact(3.0);
   const DoubleInterval half = DoubleInterval::exact(0.5);
-  for (std::uint32_t t = node.first; t < node.first + node.count; ++t) {
-    const Triangle& tri = triangles_[t];
-    std::array<DoubleInterval, 3> u, v, w, e, f, x, s;
-    for (int i = 0; i < 3; ++i) {
-      u[i] = DoubleInterval::difference(tri.a[i], c[i]);
-      v[i] = DoubleInterval::difference(tri.b[i], c[i]);
-      w[i] = DoubleInterval::difference(tri.c[i], c[i]);
-      e[i] = v[i] - u[i];
-      f[i] = w[i] - u[i];
-      s[i] = (u[i] + v[i] + w[i]) * third;
+  for (std::size_t n = nodes_.size(); n-- > 0;) {
+    Node& node = nodes_[n];
+    if (node.count == 0) continue;  // no triangle: M = Q = 0, no expansion
+    const Point3& c = node.centre;
+    auto& [m, q] = moments[n];
+    for (std::uint32_t t = node.first; t < node.first + node.own; ++t) {
+      const Triangle& tri = triangles_[t];
+      std::array<DoubleInterval, 3> u, v, w, e, f, x, s;
+      for (int i = 0; i < 3; ++i) {
+        u[i] = DoubleInterval::difference(tri.a[i], c[i]);
+        v[i] = DoubleInterval::difference(tri.b[i], c[i]);
+        w[i] = DoubleInterval::difference(tri.c[i], c[i]);
+        e[i] = v[i] - u[i];
+        f[i] = w[i] - u[i];
+        s[i] = (u[i] + v[i] + w[i]) * third;
+      }
+      const DoubleInterval times = DoubleInterval::exact(tri.multiplicity) * half;
+      x[0] = (e[1] * f[2] - e[2] * f[1]) * times;
+      x[1] = (e[2] * f[0] - e[0] * f[2]) * times;
+      x[2] = (e[0] * f[1] - e[1] * f[0]) * times;
+      for (int i = 0; i < 3; ++i) {
+        m[i] = m[i] + x[i];
+        for (int j = 0; j < 3; ++j)
+          q[i][j] = q[i][j] + x[i] * s[j];
+      }
     }
-    const DoubleInterval times = DoubleInterval::exact(tri.multiplicity) * half;
-    x[0] = (e[1] * f[2] - e[2] * f[1]) * times;
-    x[1] = (e[2] * f[0] - e[0] * f[2]) * times;
-    x[2] = (e[0] * f[1] - e[1] * f[0]) * times;
-    for (int i = 0; i < 3; ++i) {
-      m[i] = m[i] + x[i];
+    for (const std::uint32_t child : {node.left, node.right}) {
+      if (child == 0 || nodes_[child].count == 0) continue;
+      const auto& [cm, cq] = moments[child];
+      std::array<DoubleInterval, 3> shift;
       for (int j = 0; j < 3; ++j)
-        q[i][j] = q[i][j] + x[i] * s[j];
+        shift[j] = DoubleInterval::difference(nodes_[child].centre[j], c[j]);
+      for (int i = 0; i < 3; ++i) {
+        m[i] = m[i] + cm[i];
+        for (int j = 0; j < 3; ++j)
+          q[i][j] = q[i][j] + cq[i][j] + cm[i] * shift[j];
+      }
     }
+    internal::set_far_field(node, moments[n]);
   }
-  internal::set_far_field(node, moments);
 }
 
-/// The node's box, F, centre and expansion, from its triangles.
+/// The node's box, F and centre, from its triangles (its expansion: set_expansions).
 void CapTree::finish(Node& node) const {
   // No triangle (every one on a line): F = 0 and the box a point, far with value 0.
   if (node.count == 0) return;
@@ -291,7 +313,6 @@ void CapTree::finish(Node& node) const {
     node.centre[i] =
         std::clamp(0.5 * node.lower[i] + 0.5 * node.upper[i], node.lower[i], node.upper[i]);
   }
-  set_expansion(node);
 }
 
 /// The cap triangle (a, b, c) onto triangles_ unless its corners lie on one line.

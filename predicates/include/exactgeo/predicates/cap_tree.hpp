@@ -77,16 +77,17 @@
 // elephant-with-holes and pig, none on b9_mesh.off either way.
 //
 // Certified. Per node F rounded up, M and Q as midpoints of outward-rounded intervals
-// with bounds on their distance from the exact ones, d^2 from below (box_distance.hpp),
-// each leaf triangle's half angle in plain doubles with an a priori error bound
-// (cap_tree.cpp derives it; near its branch cut, p near the triangle itself, the exact
-// sign of det[a - p, b - p, c - p] says on which side p is). The tree is for inputs of
-// magnitude 1 as BoundaryTree is (areas and d^2 in the doubles' range; the classifier
-// builds it in its unit frame): far from it every node is near and the query sums
-// every triangle, or gives up. The variation's bound: each triangle's area and edge
-// lengths from above once (outward-rounded intervals; a length's nine roundings within
-// 2^-49), each term's quotients and products within u and counted so in the sum's
-// rounding bound, the dipole bound's within 7u (a factor 1 + 2^-49), and rho rounded up.
+// with bounds on their distance from the exact ones (a node's from its own triangles and
+// its children's, whose Q moves to the node's centre c as Q + M (c' - c)^T, c' theirs), d^2 from
+// below (box_distance.hpp), each leaf triangle's half angle in plain doubles with an a priori error
+// bound (cap_tree.cpp derives it; near its branch cut, p near the triangle itself, the exact sign
+// of det[a - p, b - p, c - p] says on which side p is). The tree is for inputs of magnitude 1 as
+// BoundaryTree is (areas and d^2 in the doubles' range; the classifier builds it in its unit
+// frame): far from it every node is near and the query sums every triangle, or gives up. The
+// variation's bound: each triangle's area and edge lengths from above once (outward-rounded
+// intervals; a length's nine roundings within 2^-49), each term's quotients and products within u
+// and counted so in the sum's rounding bound, the dipole bound's within 7u (a factor 1 + 2^-49),
+// and rho rounded up.
 
 #include <array>
 #include <cstddef>
@@ -219,7 +220,7 @@ class CapTree {
   static std::optional<double> near_triangle_bound(const Point3& lower, const Point3& upper,
                                                    const Triangle& t, const Sizes& sizes) noexcept;
   void finish(Node& node) const;
-  void set_expansion(Node& node) const;
+  void set_expansions();
   template <class Done>
   std::optional<Refined> refine(const Point3& point, Refinement& r, const Done& done) const;
 
