@@ -4,10 +4,10 @@
 // MPFR, support/solid_angle_oracle.hpp) at the box's corners and at random points of it.
 // The surface is a rectangle in the plane z = 0 whose edges are cut into many boundary
 // edges (its cap lies in the same plane); boxes beside and over a small one, random
-// boxes near a larger one on either side of its plane (where a bound with half the box's
-// reach, or with the distance to a node above the box measured to the box's far side,
-// falls below the change), along the axis of a far square loop and of a ring, at 2^0 and
-// 2^+-40.
+// boxes near a larger one on either side of its plane, and thin boxes along the axis of a
+// far square loop and of a ring (where a bound with half the box's reach, half the
+// dipole's factor, or the distance to a node measured to the box's far side falls below
+// the change), at 2^0 and 2^+-40.
 
 #include <gtest/gtest.h>
 
@@ -130,8 +130,8 @@ TEST_P(VariationAtScale, BoxesBesideASmallHoleHoldTheChange) {
 
 TEST_P(VariationAtScale, RandomBoxesNearTheRectangleHoldTheChange) {
   // Boxes of sides 2^-4 to 2, 2^-3 to 8 from the plane on either side, anywhere over the
-  // rectangle and beyond its edges; the bound where it is given (not past `most`, no leaf
-  // box met) holds the oracle's change.
+  // rectangle and beyond its edges; the bound where it is given (not past `most`, no near
+  // cap triangle's box and edge box met) holds the oracle's change.
   const int k = GetParam();
   auto rng = testing::seeded_engine("predicates.cap_tree.variation.random." + std::to_string(k));
   const Rectangle r = rectangle(6.0, 3.0, 48, k);
