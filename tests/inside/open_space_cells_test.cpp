@@ -4,10 +4,10 @@
 // by its own ray and certified term) and, for a sample, against the definition,
 // w = (1/4 pi) sum of the faces' solid angles in 512-bit MPFR
 // (support/solid_angle_oracle.hpp), which shares no code with the library. Meshes with 12
-// to 10,000 boundary edges (Spot with faces cut, a sphere with holes of every size, an
-// open box, a ribbon), points anywhere in the box, next to rims, in and near the cells
-// that carry a label, and in the plane of a flat hole (w = 1/2 exactly: no cell may label
-// those), at 2^0 and 2^+-1000.
+// to 10,000 boundary edges (Spot with faces cut, a sphere with holes of every size, once
+// and three times over, an open box, a ribbon), points anywhere in the box, next to rims,
+// in and near the cells that carry a label, and in the plane of a flat hole (w = 1/2
+// exactly: no cell may label those), at 2^0 and 2^+-1000.
 
 #include <gtest/gtest.h>
 
@@ -162,6 +162,24 @@ TEST_P(OpenSpaceCellsAtScale, ASphereWithHolesOfEverySize) {
   ASSERT_FALSE(HasFatalFailure());
   EXPECT_GT(tally.by_cells, tally.points / 4);
   EXPECT_GT(tally.inside_by_cells, tally.by_cells / 10);
+  EXPECT_GT(tally.by_oracle, 10u);
+}
+
+TEST_P(OpenSpaceCellsAtScale, ASphereWithHolesThreeTimesOver) {
+  // Every face three times: the rims' multiplicity 3, w three times the sphere's (up to
+  // 3/2 beside a hole), the cap's loops each three times over; the cells must label as the
+  // rays do, and as the definition does.
+  const int scale = GetParam();
+  auto rng = testing::seeded_engine("inside.open_cells.sphere_thrice." + std::to_string(scale));
+  Tally tally;
+  Mesh mesh = testing::scaled(testing::holed_sphere(rng, 16, 32), scale);
+  const std::vector<mesh::Face> once = mesh.faces;
+  for (int copy = 1; copy < 3; ++copy)
+    mesh.faces.insert(mesh.faces.end(), once.begin(), once.end());
+  expect_cells_right(mesh, rng, 1500, 300, 10, tally);
+  ASSERT_FALSE(HasFatalFailure());
+  EXPECT_GT(tally.by_cells, tally.points / 5);
+  EXPECT_GT(tally.inside_by_cells, 0u);  // both ways (the share varies with the holes)
   EXPECT_GT(tally.by_oracle, 10u);
 }
 
