@@ -295,31 +295,45 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
                    VerdictCounts& counts) {
   const std::vector<SheetEdge>& edges = tables.edges(w);
   const std::vector<double>& size = tables.sizes(w, p);
-  std::vector<std::pair<double, const SheetEdge*>> wanted;
-  for (const SheetEdge& e : edges) {
-    const double limit = kCollapseBelow * edge_size(size, e.a, e.b);
-    if (clearly_longer_in_material(w, e.a, e.b, limit) == true) continue;  // not below it
-    const double length = material_length(w, e.a, e.b);
-    if (length < limit) wanted.push_back({length, &e});
-  }
-  std::stable_sort(wanted.begin(), wanted.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
-  RingScratch scratch;
-  // Proposed as they are found, so that an edge near a collapse already going ahead,
-  // which the pass would defer to the next one, is not checked for its shape at all.
   remesh::CollapsePass pass(w.surface, w.passes);
   // The triangles around each vertex as the pass starts (the pass defers the collapses
   // whose surroundings another one of it changes): the pass's own table.
   const auto stars = [&pass](VertexIndex v) { return pass.triangles_around(v); };
-  for (const auto& [length, e] : wanted) {
-    if (!pass.could_go_ahead(e->a, e->b)) continue;
-    const bool boundary = !e->right;
-    VertexIndex kept = e->a, gone = e->b;
+  // The edges below their limit whose collapse suits the sheet one way (a first, then b),
+  // in the order of the edges. collapse_suits reads the surface, the material and the
+  // sizes, which proposals do not change (the pass makes its collapses in finish()), so
+  // it is asked of every candidate before any is proposed; could_go_ahead reads only the
+  // collapses proposed before, and only suited edges are proposed. So asking it of the
+  // suited edges alone, in the order of lengths, proposes the same collapses in the same
+  // order as asking both of every candidate in that order: the stable sort of the suited
+  // ones keeps their order among themselves, ties by the order of the edges, as a stable
+  // sort of all does. Most candidates do not suit (the stack: 1,045 proposed of 461,100
+  // over 60 steps), so the sort and could_go_ahead see few.
+  struct Suited {
+    double length;
+    const SheetEdge* edge;
+    VertexIndex kept, gone;
+  };
+  std::vector<Suited> suited;
+  RingScratch scratch;
+  for (const SheetEdge& e : edges) {
+    const double limit = kCollapseBelow * edge_size(size, e.a, e.b);
+    if (clearly_longer_in_material(w, e.a, e.b, limit) == true) continue;  // not below it
+    const double length = material_length(w, e.a, e.b);
+    if (!(length < limit)) continue;
+    const bool boundary = !e.right;
+    VertexIndex kept = e.a, gone = e.b;
     if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
       if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) continue;
     }
-    pass.propose({kept, gone, w.surface.vertices[kept]});
+    suited.push_back({length, &e, kept, gone});
+  }
+  std::stable_sort(suited.begin(), suited.end(),
+                   [](const Suited& x, const Suited& y) { return x.length < y.length; });
+  for (const Suited& s : suited) {
+    if (pass.could_go_ahead(s.edge->a, s.edge->b))
+      pass.propose({s.kept, s.gone, w.surface.vertices[s.kept]});
   }
   bool any = false;
   for (const remesh::Outcome& o : pass.finish(w.surface, tables.changes(w))) {
