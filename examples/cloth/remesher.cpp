@@ -318,16 +318,19 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
   RingScratch scratch;
   for (const SheetEdge& e : edges) {
     const double limit = kCollapseBelow * edge_size(size, e.a, e.b);
-    if (clearly_longer_in_material(w, e.a, e.b, limit) == true) continue;  // not below it
-    const double length = material_length(w, e.a, e.b);
-    if (!(length < limit)) continue;
+    // Clearly not longer is clearly shorter: the squares a relative 1e-9 apart put hypot
+    // below the limit (FloatShortcuts.ClearlyLongerAnswersAsHypot), so the length, the
+    // sort's key, is worked out for the suited edges only; hypot decides the others.
+    const std::optional<bool> longer = clearly_longer_in_material(w, e.a, e.b, limit);
+    if (longer == true) continue;
+    if (!longer && !(material_length(w, e.a, e.b) < limit)) continue;
     const bool boundary = !e.right;
     VertexIndex kept = e.a, gone = e.b;
     if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
       if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) continue;
     }
-    suited.push_back({length, &e, kept, gone});
+    suited.push_back({material_length(w, e.a, e.b), &e, kept, gone});
   }
   std::stable_sort(suited.begin(), suited.end(),
                    [](const Suited& x, const Suited& y) { return x.length < y.length; });
