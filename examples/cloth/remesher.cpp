@@ -244,22 +244,28 @@ struct RingScratch {
   std::vector<VertexIndex> ends;
 };
 
-/// Whether removing `gone` into `kept` (gone moves to kept's place) suits the sheet: a
-/// boundary end moves only along its boundary edge and is no corner of the outline, no
-/// edge made is longer than it may be, and no triangle turns over in the material.
-bool collapse_suits(const Work& w, const std::vector<double>& size,
-                    std::span<const std::size_t> star, VertexIndex kept, VertexIndex gone,
-                    bool boundary_edge, RingScratch& scratch) {
-  // The edges made first: most collapses a pass wants fail there (they would make an edge
-  // too long), and it needs no ring. A neighbour in two triangles is asked twice.
+/// Whether removing `gone` into `kept` makes an edge longer than it may be (kept joined
+/// to each other corner of the triangles around gone; a neighbour in two triangles is
+/// asked twice). Most collapses a pass wants fail here, so it is small enough to be
+/// inlined into the candidates' loop and needs no ring.
+bool makes_too_long_edge(const Work& w, const std::vector<double>& size,
+                         std::span<const std::size_t> star, VertexIndex kept, VertexIndex gone) {
   for (const std::size_t t : star) {
     for (const VertexIndex x : w.surface.triangles[t]) {
       if (x == kept || x == gone) continue;
       const double limit = kSplitAbove * edge_size(size, kept, x);
       const std::optional<bool> longer = clearly_longer_in_material(w, kept, x, limit);
-      if (longer ? *longer : material_length(w, kept, x) > limit) return false;
+      if (longer ? *longer : material_length(w, kept, x) > limit) return true;
     }
   }
+  return false;
+}
+
+/// collapse_suits for a collapse that makes no edge too long: the rest of its conditions,
+/// out of line (few candidates get this far).
+[[gnu::noinline]] bool collapse_shape_suits(const Work& w, std::span<const std::size_t> star,
+                                            VertexIndex kept, VertexIndex gone, bool boundary_edge,
+                                            RingScratch& scratch) {
   std::vector<VertexIndex>& sides = scratch.sides;
   std::vector<VertexIndex>& ends = scratch.ends;
   ring_sides(w.surface, star, gone, sides);
@@ -289,6 +295,17 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
     }
   }
   return true;
+}
+
+/// Whether removing `gone` into `kept` (gone moves to kept's place) suits the sheet: a
+/// boundary end moves only along its boundary edge and is no corner of the outline, no
+/// edge made is longer than it may be, and no triangle turns over in the material. The
+/// edges made are asked first.
+bool collapse_suits(const Work& w, const std::vector<double>& size,
+                    std::span<const std::size_t> star, VertexIndex kept, VertexIndex gone,
+                    bool boundary_edge, RingScratch& scratch) {
+  return !makes_too_long_edge(w, size, star, kept, gone) &&
+         collapse_shape_suits(w, star, kept, gone, boundary_edge, scratch);
 }
 
 bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
