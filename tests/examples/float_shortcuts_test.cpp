@@ -102,7 +102,9 @@ TEST(FloatShortcuts, ClearlyLongerAnswersAsHypot) {
     ASSERT_EQ(*longer, length > limit)
         << "trial " << trial << " dx " << dx << " dy " << dy << " limit " << limit;
     // Not longer is strictly shorter (the collapse pass takes it for length < limit).
-    if (!*longer) ASSERT_LT(length, limit) << "trial " << trial;
+    if (!*longer) {
+      ASSERT_LT(length, limit) << "trial " << trial;
+    }
   }
   EXPECT_GT(answered, 100000);
 }
