@@ -2,11 +2,13 @@
 
 #include "float_shortcuts.hpp"
 #include "sheet_edges.hpp"
+#include "unsuited_edges.hpp"
 #include "vertex_sizes.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
 #include <optional>
@@ -130,6 +132,8 @@ class SurfaceTables {
     if (pending_) edges(w);
     return &changes_;
   }
+  /// The last pass's report (valid after a pass that changed the surface).
+  const remesh::TriangleChanges& last_changes() const noexcept { return changes_; }
   /// Takes `table` as the edges of the work's surface (it must be theirs).
   void adopt(SheetEdgeTable table) { edges_.emplace(std::move(table)); }
   /// The edges of the work's surface as it is (patched first when a pass left them to be),
@@ -308,14 +312,31 @@ bool collapse_suits(const Work& w, const std::vector<double>& size,
          collapse_shape_suits(w, star, kept, gone, boundary_edge, scratch);
 }
 
+/// What a remesh's collapse passes keep from one to the next (unsuited_edges.hpp).
+struct CollapseMemory {
+  UnsuitedEdges unsuited;
+  std::vector<double> sizes;    ///< those the last pass read
+  std::vector<char> unsettled;  ///< per vertex
+  bool after_a_pass = false;    ///< the last pass was a collapse pass of this remesh
+};
+
 bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
-                   VerdictCounts& counts) {
+                   CollapseMemory& memory, VerdictCounts& counts) {
   const std::vector<SheetEdge>& edges = tables.edges(w);
   const std::vector<double>& size = tables.sizes(w, p);
   remesh::CollapsePass pass(w.surface, w.passes);
   // The triangles around each vertex as the pass starts (the pass defers the collapses
   // whose surroundings another one of it changes): the pass's own table.
   const auto stars = [&pass](VertexIndex v) { return pass.triangles_around(v); };
+  // An edge that suited neither way in the last collapse pass, both of its ends settled
+  // since (unsuited_edges.hpp: everything its checks read is as it was), suits neither
+  // way now; after a remesh's first collapse pass every vertex is unsettled.
+  memory.unsuited.start_pass();
+  if (memory.after_a_pass) {
+    mark_unsettled(w.surface, tables.last_changes(), memory.sizes, size, stars, memory.unsettled);
+  } else {
+    memory.unsettled.assign(w.surface.vertices.size(), 1);
+  }
   // The edges below their limit whose collapse suits the sheet one way (a first, then b),
   // in the order of the edges. collapse_suits reads the surface, the material and the
   // sizes, which proposals do not change (the pass makes its collapses in finish()), so
@@ -341,11 +362,20 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
     const std::optional<bool> longer = clearly_longer_in_material(w, e.a, e.b, limit);
     if (longer == true) continue;
     if (!longer && !(material_length(w, e.a, e.b) < limit)) continue;
+    const std::uint64_t key = UnsuitedEdges::key(e.a, e.b);
+    if (memory.unsettled[e.a] == 0 && memory.unsettled[e.b] == 0 &&
+        memory.unsuited.was_unsuited(key)) {
+      memory.unsuited.add(key);
+      continue;
+    }
     const bool boundary = !e.right;
     VertexIndex kept = e.a, gone = e.b;
     if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) {
       std::swap(kept, gone);
-      if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) continue;
+      if (!collapse_suits(w, size, stars(gone), kept, gone, boundary, scratch)) {
+        memory.unsuited.add(key);
+        continue;
+      }
     }
     suited.push_back({material_length(w, e.a, e.b), &e, kept, gone});
   }
@@ -355,6 +385,8 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
     if (pass.could_go_ahead(s.edge->a, s.edge->b))
       pass.propose({s.kept, s.gone, w.surface.vertices[s.kept]});
   }
+  memory.sizes.assign(size.begin(), size.end());
+  memory.after_a_pass = true;
   bool any = false;
   for (const remesh::Outcome& o : pass.finish(w.surface, tables.changes(w))) {
     counts.add(o.verdict);
@@ -549,7 +581,8 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
     }
   };
   run([&] { return split_pass(w, parameters, tables, counts.split); });
-  run([&] { return collapse_pass(w, parameters, tables, counts.collapse); });
+  CollapseMemory collapse_memory;
+  run([&] { return collapse_pass(w, parameters, tables, collapse_memory, counts.collapse); });
   run([&] { return flip_pass(w, tables, counts.flip); });
   Numbering numbering;
   write_back(w, mesh, numbering);
