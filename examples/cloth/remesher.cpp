@@ -250,8 +250,8 @@ struct RingScratch {
 
 /// Whether removing `gone` into `kept` makes an edge longer than it may be (kept joined
 /// to each other corner of the triangles around gone; a neighbour in two triangles is
-/// asked twice). Most collapses a pass wants fail here, so it is small enough to be
-/// inlined into the candidates' loop and needs no ring.
+/// asked twice). Most collapses a pass wants fail here; it needs no ring, and apart from
+/// the rest of the shape check its calls save and restore few registers.
 bool makes_too_long_edge(const Work& w, const std::vector<double>& size,
                          std::span<const std::size_t> star, VertexIndex kept, VertexIndex gone) {
   for (const std::size_t t : star) {
