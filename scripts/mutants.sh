@@ -381,7 +381,7 @@ MUTANTS = [
      "predicates/src/variation_bound.hpp",
      "const double above = up(sum * (1 + static_cast<double>(terms + 2) * 0x1p-52));",
      "const double above = sum;", ["predicates_tests", "inside_tests"]),
-    # The cloth remesher's float shortcuts (examples/cloth/float_shortcuts.cpp): each margin
+    # The cloth remesher's float shortcuts (examples/cloth/float_shortcuts.cpp, .hpp): each margin
     # turned the wrong way, so that the shortcut answers where the full computation differs.
     ("cloth_floor_margin_thin",
      "examples/cloth/float_shortcuts.cpp",
@@ -389,7 +389,7 @@ MUTANTS = [
      "return usable(dot_squared) && cross_squared * kMargin >= tan_squared * dot_squared;",
      ["examples_tests"]),
     ("cloth_length_margin_thin",
-     "examples/cloth/float_shortcuts.cpp",
+     "examples/cloth/float_shortcuts.hpp",
      "if (squared > (1.0 + kMargin) * limit_squared) return true;",
      "if (squared > (1.0 - kMargin) * limit_squared) return true;", ["examples_tests"]),
     ("cloth_ask_margin_thin",

@@ -44,15 +44,6 @@ double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& 
   return world_min_angle(p, q, r);
 }
 
-std::optional<bool> clearly_longer(double dx, double dy, double limit) {
-  constexpr double kMargin = 1e-9;
-  const double squared = dx * dx + dy * dy, limit_squared = limit * limit;
-  if (!usable(squared) || !usable(limit_squared)) return std::nullopt;
-  if (squared > (1.0 + kMargin) * limit_squared) return true;
-  if (squared < (1.0 - kMargin) * limit_squared) return false;
-  return std::nullopt;
-}
-
 bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
                            double max_length, double turn_per_edge) {
   constexpr double kMargin = 1.0 + 1e-6;

@@ -13,6 +13,7 @@
 // (tests/examples/float_shortcuts_test.cpp).
 
 #include <array>
+#include <cmath>
 #include <numbers>
 #include <optional>
 
@@ -40,8 +41,18 @@ double world_min_angle(const Point3& p, const Point3& q, const Point3& r);
 double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& r);
 
 /// Whether hypot(dx, dy) > limit, decided by the squares when they are a relative 1e-9
-/// apart; nullopt otherwise (then hypot decides).
-std::optional<bool> clearly_longer(double dx, double dy, double limit);
+/// apart; nullopt otherwise (then hypot decides). Inline: the collapse candidates' shape
+/// check asks it of every edge a collapse would make, millions of times a run.
+inline std::optional<bool> clearly_longer(double dx, double dy, double limit) {
+  constexpr double kMargin = 1e-9;
+  constexpr double kTiny = 1e-280;  // as float_shortcuts.cpp's: below, squares lose precision
+  const auto usable = [](double square) { return square > kTiny && std::isfinite(square); };
+  const double squared = dx * dx + dy * dy, limit_squared = limit * limit;
+  if (!usable(squared) || !usable(limit_squared)) return std::nullopt;
+  if (squared > (1.0 + kMargin) * limit_squared) return true;
+  if (squared < (1.0 - kMargin) * limit_squared) return false;
+  return std::nullopt;
+}
 
 /// Whether an edge whose triangles' normals have cross product `c` and dot product `dot`,
 /// and whose material length squared is `length_squared`, surely asks for a size of at
