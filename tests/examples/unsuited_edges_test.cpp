@@ -11,6 +11,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/remesh/operations.hpp"
@@ -51,9 +52,7 @@ TEST_P(MarkUnsettledAt, AnUnmarkedVertexHasTheSameStarSizesAndPositions) {
   for (std::size_t k = 0; k < surfaces; ++k) {
     Surface s = testing::stack(3, 5, rng, 0.2);
     testing::crumple(s, rng);
-    for (Point3& p : s.vertices)
-      for (double& x : p)
-        x = std::ldexp(x, exponent);
+    s = testing::times_power_of_two(std::move(s), exponent);
     std::vector<double> sizes_before(s.vertices.size());
     for (double& x : sizes_before)
       x = std::ldexp(0.25 + 0.25 * static_cast<double>(rng() % 3), exponent);

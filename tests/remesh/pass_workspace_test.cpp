@@ -25,16 +25,6 @@ namespace {
 using testing::crumple;
 using testing::stack;
 
-/// The surface with every coordinate times 2^exponent (exact: no sign of any predicate
-/// changes).
-Surface scaled(Surface s, int exponent) {
-  for (Point3& p : s.vertices) {
-    for (double& x : p)
-      x = std::ldexp(x, exponent);
-  }
-  return s;
-}
-
 /// The proposals of one pass: every edge, in a random order, with a point for a split or
 /// a collapse (the midpoint, lifted by a random multiple of 2^-7 or not; for a collapse
 /// on an even pass, its first end).
@@ -87,7 +77,7 @@ TEST(PassWorkspace, AReusedWorkspaceAnswersAsAFreshOne) {
     for (const int n : {7, 4, 6}) {
       Surface start = stack(3, n, rng, 0.2);
       crumple(start, rng);
-      Surface kept = scaled(start, exponent), fresh = kept;
+      Surface kept = testing::times_power_of_two(start, exponent), fresh = kept;
       for (int pass = 0; pass < 4; ++pass) {
         const std::string where = "2^" + std::to_string(exponent) + ", n " + std::to_string(n) +
                                   ", pass " + std::to_string(pass);

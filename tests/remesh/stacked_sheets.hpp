@@ -55,4 +55,14 @@ inline void crumple(Surface& surface, std::mt19937_64& rng) {
   }
 }
 
+/// The surface with every coordinate times 2^exponent: exact, so no predicate's sign
+/// changes (the tests' scales 2^0 and 2^+-1000).
+inline Surface times_power_of_two(Surface s, int exponent) {
+  for (Point3& p : s.vertices) {
+    for (double& x : p)
+      x = std::ldexp(x, exponent);
+  }
+  return s;
+}
+
 }  // namespace exactgeo::testing

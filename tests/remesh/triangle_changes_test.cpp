@@ -26,15 +26,7 @@ namespace {
 
 using testing::crumple;
 using testing::stack;
-
-/// Every coordinate times 2^exponent (exact: no predicate's sign changes).
-Surface times_power_of_two(Surface s, int exponent) {
-  for (Point3& p : s.vertices) {
-    for (double& x : p)
-      x = std::ldexp(x, exponent);
-  }
-  return s;
-}
+using testing::times_power_of_two;
 
 /// Every edge of `s` in a random order, with a point for a split (the midpoint, lifted by a
 /// random multiple of 2^(exponent - 7) or not) or a collapse (its first end, or that point).
