@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <variant>
 #include <vector>
 
@@ -97,8 +98,28 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
   if (changes != nullptr) changes->reset(surface.triangles.size());
   PassWorkspace own;  // used when the caller keeps none
   PassWorkspace::Arrays& kept = arrays_of(workspace, own);
+  // The triangles on the proposed edges ab, and whether edge cd exists for their third
+  // corners c and d, from a table of the triangles around a, b, c and d only, not of the
+  // whole surface (a remesher's pass proposes a few edges of many): one of the triangles
+  // around a and b finds c and d, a second one the triangles around all four. An edge
+  // with a marked end has all its triangles in the table (each has that corner).
   EdgeTriangles& table = kept.edges;
-  table.assign(surface.triangles, surface.vertices.size());
+  std::vector<std::uint8_t>& marked = kept.marked;
+  marked.assign(surface.vertices.size(), 0);
+  for (const Edge& e : edges) {
+    for (const VertexIndex v : e)
+      if (v < marked.size()) marked[v] = 1;  // an index out of range finds no triangles
+  }
+  table.assign_marked(surface.triangles, surface.vertices.size(), marked);
+  std::vector<std::size_t> on_edge;  // reused from flip to flip
+  for (const Edge& e : edges) {
+    table.on(e[0], e[1], on_edge);
+    for (const std::size_t t : on_edge) {
+      for (const VertexIndex v : surface.triangles[t])
+        marked[v] = 1;
+    }
+  }
+  table.assign_marked(surface.triangles, surface.vertices.size(), marked);
   std::vector<Outcome> outcomes(edges.size());
   // 1. Topology.
   std::vector<FlipPlan>& plans = kept.flip_plans;
@@ -107,7 +128,6 @@ std::vector<Outcome> flip_edges(Surface& surface, std::span<const Edge> edges,
   edge_of_plan.clear();
   plans.reserve(edges.size());  // one allocation, not a chain of growing copies
   edge_of_plan.reserve(edges.size());
-  std::vector<std::size_t> on_edge;  // reused from flip to flip
   for (std::size_t i = 0; i < edges.size(); ++i) {
     const auto [a, b] = edges[i];
     // An index out of range finds no triangles here, and flip_topology names it.

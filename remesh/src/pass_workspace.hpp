@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "exactgeo/predicates/sign.hpp"
@@ -16,7 +17,10 @@
 namespace exactgeo::remesh {
 
 struct PassWorkspace::Arrays {
-  EdgeTriangles edges;     ///< split_edges', flip_edges' table of the surface's edges
+  /// split_edges', flip_edges' table of the edges of the triangles around the vertices
+  /// `marked` (EdgeTriangles::assign_marked): those the pass's operations ask about.
+  EdgeTriangles edges;
+  std::vector<std::uint8_t> marked;  ///< per vertex: the edge table holds its triangles
   VertexTriangles around;  ///< a pass of collapses' table of the triangles around each vertex
   std::vector<internal::SplitPlan> split_plans;
   std::vector<internal::FlipPlan> flip_plans;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <variant>
 #include <vector>
 
@@ -222,8 +223,17 @@ std::vector<Outcome> split_edges(Surface& surface, std::span<const Split> splits
   if (changes != nullptr) changes->reset(surface.triangles.size());
   PassWorkspace own;  // used when the caller keeps none
   PassWorkspace::Arrays& kept = arrays_of(workspace, own);
+  // The triangles on the proposed edges, from a table of the triangles around their ends
+  // only (every triangle on edge ab has corner a), not of the whole surface: a remesher's
+  // pass proposes a few edges of many.
   EdgeTriangles& table = kept.edges;
-  table.assign(surface.triangles, surface.vertices.size());
+  std::vector<std::uint8_t>& marked = kept.marked;
+  marked.assign(surface.vertices.size(), 0);
+  for (const Split& s : splits) {
+    for (const VertexIndex v : {s.a, s.b})
+      if (v < marked.size()) marked[v] = 1;  // an index out of range finds no triangles
+  }
+  table.assign_marked(surface.triangles, surface.vertices.size(), marked);
   std::vector<Outcome> outcomes(splits.size());
   // 1. Topology.
   std::vector<SplitPlan>& plans = kept.split_plans;

@@ -40,6 +40,32 @@ void EdgeTriangles::assign(std::span<const Triangle> triangles, std::size_t vert
   }
 }
 
+void EdgeTriangles::assign_marked(std::span<const Triangle> triangles, std::size_t vertex_count,
+                                  std::span<const std::uint8_t> marked) {
+  // The marked triangles in triangle order, then assign's counting sort over them alone.
+  chosen_.clear();
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const Triangle& c = triangles[t];
+    if ((marked[c[0]] | marked[c[1]] | marked[c[2]]) != 0) chosen_.push_back(t);
+  }
+  first_.assign(vertex_count + 1, 0);
+  sides_.resize(3 * chosen_.size());
+  for (const std::size_t t : chosen_) {
+    const Triangle& c = triangles[t];
+    for (int k = 0; k < 3; ++k)
+      ++first_[std::min(c[k], c[(k + 1) % 3]) + 1];
+  }
+  for (std::size_t v = 1; v < first_.size(); ++v)
+    first_[v] += first_[v - 1];
+  next_.assign(first_.begin(), first_.end() - 1);
+  for (const std::size_t t : chosen_) {
+    for (int k = 0; k < 3; ++k) {
+      const Edge e = edge_of(triangles[t][k], triangles[t][(k + 1) % 3]);
+      sides_[next_[e[0]]++] = {e[1], t};  // in triangle order within each bucket
+    }
+  }
+}
+
 std::vector<std::size_t> EdgeTriangles::on(VertexIndex a, VertexIndex b) const {
   std::vector<std::size_t> found;
   on(a, b, found);

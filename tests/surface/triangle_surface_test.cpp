@@ -1,13 +1,15 @@
 // The shared triangle surface's tables (surface/triangle_surface.hpp) against brute force
 // on random triangle sets: the edges each once and sorted, the triangles at an edge, the
 // triangles around a vertex, each in triangle order; an edge table and a vertex table
-// assigned new triangles in the storage of old ones as ones made fresh.
+// assigned new triangles in the storage of old ones as ones made fresh; an edge table of the
+// triangles around marked vertices only as the whole one for every edge with a marked end.
 #include "exactgeo/surface/triangle_surface.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <random>
 #include <set>
 #include <vector>
@@ -70,6 +72,30 @@ TEST(TriangleSurface, TablesAgreeWithBruteForce) {
         EXPECT_EQ(at_edge.on(a, b), expected_at) << a << "-" << b;
         EXPECT_EQ(reused.on(a, b), expected_at) << a << "-" << b << ", assigned";
         EXPECT_EQ(reused.has(a, b), !expected_at.empty()) << a << "-" << b << ", assigned";
+      }
+    }
+  }
+}
+
+TEST(TriangleSurface, AMarkedTableAnswersAsTheWholeOneForEdgesWithAMarkedEnd) {
+  auto rng = testing::seeded_engine("surface.marked_table");
+  EdgeTriangles marked_table;  // assigned each round, in the storage of the last round's
+  for (int round = 0; round < 200; ++round) {
+    const VertexIndex n = 3 + static_cast<VertexIndex>(rng() % 40);
+    const std::vector<Triangle> triangles = random_triangles(rng, 1 + rng() % 80, n);
+    // From none to every vertex marked, a tenth to a half of them most rounds.
+    std::vector<std::uint8_t> marked(n, 0);
+    const std::uint64_t in_ten = round == 0 ? 0 : round == 1 ? 10 : 1 + rng() % 5;
+    for (std::uint8_t& m : marked)
+      m = rng() % 10 < in_ten ? 1 : 0;
+    const EdgeTriangles whole(triangles, n);
+    marked_table.assign_marked(triangles, n, marked);
+    for (VertexIndex a = 0; a < n; ++a) {
+      for (VertexIndex b = 0; b < n + 2; ++b) {  // ends out of range too
+        if (marked[a] == 0 && (b >= n || marked[b] == 0)) continue;
+        EXPECT_EQ(marked_table.on(a, b), whole.on(a, b)) << round << ": " << a << "-" << b;
+        EXPECT_EQ(marked_table.on(b, a), whole.on(b, a)) << round << ": " << b << "-" << a;
+        EXPECT_EQ(marked_table.has(a, b), whole.has(a, b)) << round << ": " << a << "-" << b;
       }
     }
   }

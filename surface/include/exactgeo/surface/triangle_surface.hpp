@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -53,6 +54,14 @@ class EdgeTriangles {
   /// The table of `triangles` in place of this one's, in this one's storage (a caller that
   /// builds one per pass keeps it). Precondition: as the constructor's.
   void assign(std::span<const Triangle> triangles, std::size_t vertex_count);
+  /// The table of those of `triangles` with a marked corner (marked[v] != 0), the others
+  /// left out, in this one's storage: a caller that asks about a few edges (a pass of
+  /// operations) marks an end of each and builds no table of the whole surface. on(a, b)
+  /// and has(a, b) answer as the whole table's for every edge with a marked end (each
+  /// triangle on it has that corner). Precondition: as assign's, and marked.size() at
+  /// least vertex_count.
+  void assign_marked(std::span<const Triangle> triangles, std::size_t vertex_count,
+                     std::span<const std::uint8_t> marked);
 
   /// The triangles with corners a and b, in triangle order (none for indices out of range).
   std::vector<std::size_t> on(VertexIndex a, VertexIndex b) const;
@@ -69,7 +78,8 @@ class EdgeTriangles {
     std::size_t triangle;
   };
   std::vector<Side> sides_;
-  std::vector<std::size_t> next_;  ///< assign's fill cursor per vertex, kept for its storage
+  std::vector<std::size_t> next_;    ///< assign's fill cursor per vertex, kept for its storage
+  std::vector<std::size_t> chosen_;  ///< assign_marked's triangles, kept for its storage
 };
 
 /// The triangles around every vertex, by index in triangle order: one array bucketed by
