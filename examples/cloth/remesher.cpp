@@ -1,5 +1,6 @@
 #include "remesher.hpp"
 
+#include "flip_candidates.hpp"
 #include "float_shortcuts.hpp"
 #include "sheet_edges.hpp"
 #include "unsuited_edges.hpp"
@@ -395,11 +396,32 @@ bool collapse_pass(Work& w, const RemeshParameters& p, SurfaceTables& tables,
   return any;
 }
 
-bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
+/// What a remesh's flip passes keep from one to the next (flip_candidates.hpp).
+struct FlipMemory {
+  FlipCandidates candidates;
+  bool after_a_pass = false;  ///< the last pass was a flip pass of this remesh
+};
+
+bool flip_pass(Work& w, SurfaceTables& tables, FlipMemory& memory, VerdictCounts& counts) {
   std::vector<Edge> flips;
   const double tan_slack = std::tan(kDelaunaySlack);  // once, not per edge
-  for (const SheetEdge& e : tables.edges(w)) {
+  const std::vector<SheetEdge>& edges = tables.edges(w);
+  // An edge whose triangles the last flip pass of this remesh left as they were is a
+  // candidate exactly when it was one then (flip_candidates.hpp): only the others are
+  // asked. The candidates are proposed in the table's order either way.
+  memory.candidates.start_pass(memory.after_a_pass ? &tables.last_changes() : nullptr,
+                               w.surface.triangles.size());
+  memory.after_a_pass = true;
+  for (const SheetEdge& e : edges) {
     if (!e.right) continue;
+    const std::uint64_t key = UnsuitedEdges::key(e.a, e.b);
+    if (const std::optional<bool> known = memory.candidates.known(e, key)) {
+      if (*known) {
+        flips.push_back(remesh::edge_of(e.a, e.b));
+        memory.candidates.add(key);
+      }
+      continue;
+    }
     const VertexIndex c = remesh::third_corner(w.surface.triangles[e.left], e.a, e.b);
     const VertexIndex d = remesh::third_corner(w.surface.triangles[*e.right], e.a, e.b);
     if (!not_delaunay(w, e.a, e.b, c, d, tan_slack)) continue;
@@ -417,6 +439,7 @@ bool flip_pass(Work& w, SurfaceTables& tables, VerdictCounts& counts) {
                                       triangle_min_angle_to_floor(w.surface, {d, e.b, c}));
     if (!keeps_quality(old_worst, new_worst)) continue;
     flips.push_back(remesh::edge_of(e.a, e.b));
+    memory.candidates.add(key);
   }
   bool any = false;
   for (const remesh::Outcome& o :
@@ -583,7 +606,8 @@ RemeshCounts remesh(ClothMesh& mesh, const RemeshParameters& parameters,
   run([&] { return split_pass(w, parameters, tables, counts.split); });
   CollapseMemory collapse_memory;
   run([&] { return collapse_pass(w, parameters, tables, collapse_memory, counts.collapse); });
-  run([&] { return flip_pass(w, tables, counts.flip); });
+  FlipMemory flip_memory;
+  run([&] { return flip_pass(w, tables, flip_memory, counts.flip); });
   Numbering numbering;
   write_back(w, mesh, numbering);
   if (kept != nullptr) {
