@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <iterator>
 #include <limits>
@@ -204,7 +205,16 @@ struct Reach {
   /// `around`: the triangles around each vertex of `s`.
   Reach(const Surface& s, const VertexTriangles& around,
         const std::vector<const CollapsePlan*>& plans) {
-    std::vector<Point3> points = s.vertices;
+    // The points of the moving triangles' groups: the surface's vertices, and after them
+    // the collapses' new points that lie at neither end. A new point with the bits of an
+    // end's position (a collapse into an end: the cloth's) is that end in its groups: the
+    // same point, so the same float box, and the largest coordinate of all, which sets
+    // the boxes' scale, is the same; so the scan finds the same pairs, and the surface's
+    // vertices are not copied to append it.
+    std::vector<Point3> elsewhere;
+    const auto same_bits = [](const Point3& x, const Point3& y) {
+      return std::memcmp(x.data(), y.data(), sizeof(Point3)) == 0;
+    };
     std::vector<std::array<VertexIndex, 4>> swept;          // a moving triangle's corners and `to`
     std::vector<std::uint32_t> swept_triangle;              // its index in the surface
     std::vector<std::array<std::uint32_t, 2>> swept_stars;  // the stars of its moving ends
@@ -215,8 +225,12 @@ struct Reach {
     // found from the stars, not by a walk of every triangle. A triangle has the ends of
     // one collapse only (those going ahead share no vertex around their ends).
     for (const CollapsePlan* p : plans) {
-      const auto to = static_cast<VertexIndex>(points.size());
-      points.push_back(p->to);
+      VertexIndex to = p->a;
+      if (same_bits(p->to, s.vertices[p->b])) to = p->b;
+      if (!same_bits(p->to, s.vertices[to])) {
+        to = static_cast<VertexIndex>(s.vertices.size() + elsewhere.size());
+        elsewhere.push_back(p->to);
+      }
       const std::size_t first_star = stars.size();
       for (const VertexIndex end : {p->a, p->b}) {
         if (s.vertices[end] != p->to) stars.push_back({end, {}, {}});
@@ -255,6 +269,14 @@ struct Reach {
         if (near.empty() || near.back() != t) near.push_back(static_cast<std::uint32_t>(t));
       }
     };
+    std::vector<Point3> joined;
+    std::span<const Point3> points = s.vertices;
+    if (!elsewhere.empty()) {
+      joined.reserve(s.vertices.size() + elsewhere.size());
+      joined = s.vertices;
+      joined.insert(joined.end(), elsewhere.begin(), elsewhere.end());
+      points = joined;
+    }
     internal::groups_near_triangles<4>(points, swept, s.triangles, near_moving);
     std::vector<VertexIndex> local(s.vertices.size(), kNoVertex);
     for (std::size_t t = 0; t < s.triangles.size(); ++t) {
