@@ -1,8 +1,7 @@
 #pragma once
 
-// A pass's swept regions as groups of points for the box queries of boxes/point_groups.hpp:
-// a region's corners index the surface's vertices, and its new point (a split's, vertex
-// kNoVertex) is appended after them; and the pairs such a query finds, bucketed.
+// A pass's swept regions as groups of points for the box queries of boxes/point_groups.hpp
+// and boxes/exact_grid.hpp, and the pairs such a query finds, bucketed.
 
 #include <array>
 #include <cstddef>
@@ -18,7 +17,11 @@
 
 namespace exactgeo::remesh::internal {
 
-/// `points` starts with the surface's vertices; `groups` holds each region's four corners.
+/// A pass's regions as groups of points of their own: region r's corners are points 4r to
+/// 4r + 3, a vertex corner at its vertex's place in the surface, a new point (a split's,
+/// vertex kNoVertex) where it is; for the box query of the regions against the surface's
+/// triangles (the same exact boxes as the corners' on the surface, and no copy of the
+/// surface's vertices to append the new points).
 struct RegionPoints {
   std::vector<Point3> points;
   std::vector<std::array<VertexIndex, 4>> groups;
@@ -26,16 +29,13 @@ struct RegionPoints {
   /// These points and groups in place of the ones held, in the same storage.
   void assign(std::span<const Point3> vertices,
               std::span<const std::array<RegionCorner, 4>> regions) {
-    points.assign(vertices.begin(), vertices.end());
+    points.resize(4 * regions.size());
     groups.resize(regions.size());
     for (std::size_t r = 0; r < regions.size(); ++r) {
       for (std::size_t k = 0; k < 4; ++k) {
-        if (regions[r][k].vertex != kNoVertex) {
-          groups[r][k] = regions[r][k].vertex;
-        } else {
-          groups[r][k] = static_cast<VertexIndex>(points.size());
-          points.push_back(regions[r][k].point);
-        }
+        const RegionCorner& c = regions[r][k];
+        points[4 * r + k] = c.vertex != kNoVertex ? vertices[c.vertex] : c.point;
+        groups[r][k] = static_cast<VertexIndex>(4 * r + k);
       }
     }
   }

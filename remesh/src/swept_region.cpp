@@ -668,7 +668,7 @@ std::vector<std::optional<Blocker>> internal::first_in_regions(
   query.pairs.clear();
   boxes::overlapping_groups_by_grid<4, 3>(
       query.boxed.points, std::span<const std::array<VertexIndex, 4>>(query.boxed.groups),
-      std::span<const Triangle>(surface.triangles),
+      surface.vertices, std::span<const Triangle>(surface.triangles),
       [&](std::size_t r, std::size_t t) { query.pairs.emplace_back(r, t); }, query.grid);
   query.near.assign(regions.size(), query.pairs);
   std::vector<std::optional<Blocker>> found;

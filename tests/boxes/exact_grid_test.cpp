@@ -2,7 +2,8 @@
 // exactly those and each once, against brute force over all pairs; random groups on a
 // coarse lattice (many boxes that only touch) at 2^0 and 2^+-1000, degenerate sets (every
 // point at one place, a flat set, groups far apart, coordinates near the largest double),
-// and grids from one cell to many. A grid axis's cell never decreases along the axis.
+// and grids from one cell to many, the few groups over the same points as the many or over
+// points of their own. A grid axis's cell never decreases along the axis.
 
 #include "exactgeo/boxes/exact_grid.hpp"
 
@@ -91,6 +92,31 @@ FewAndMany random_few_and_many(std::mt19937_64& rng, std::vector<Point3>& points
   return g;
 }
 
+/// The same with the few groups over points of their own (the overload with two sets of
+/// points): group i's corners copied to points 4i to 4i + 3, in reverse order, so that
+/// reading them from the many's points instead gives other boxes.
+MetPairs met_by_grid_with_own_points(std::span<const Point3> points, const FewAndMany& g,
+                                     GridScratch& scratch, double cells_per_group) {
+  std::vector<Point3> own(4 * g.few.size());
+  std::vector<std::array<VertexIndex, 4>> few(g.few.size());
+  for (std::size_t i = 0; i < g.few.size(); ++i) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t at = 4 * i + (3 - k);
+      own[at] = points[g.few[i][k]];
+      few[i][k] = static_cast<VertexIndex>(at);
+    }
+  }
+  MetPairs pairs;
+  overlapping_groups_by_grid<4, 3>(
+      own, std::span<const std::array<VertexIndex, 4>>(few), points,
+      std::span<const std::array<VertexIndex, 3>>(g.many),
+      [&](std::size_t i, std::size_t j) {
+        ++pairs[{i, j}];
+      },
+      scratch, cells_per_group);
+  return pairs;
+}
+
 void expect_exactly_the_meeting_pairs(std::span<const Point3> points, const FewAndMany& g,
                                       const std::string& what) {
   const MetPairs expected = met_by_brute_force<4, 3>(
@@ -100,6 +126,8 @@ void expect_exactly_the_meeting_pairs(std::span<const Point3> points, const FewA
     const MetPairs found =
         met_by_grid<4, 3>(points, std::span(g.few), std::span(g.many), scratch, cells_per_group);
     EXPECT_EQ(found, expected) << what << ", " << cells_per_group << " cells per group";
+    EXPECT_EQ(met_by_grid_with_own_points(points, g, scratch, cells_per_group), expected)
+        << what << ", " << cells_per_group << " cells per group, the few's own points";
   }
 }
 

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "exactgeo/boxes/exact_box.hpp"
@@ -80,20 +81,24 @@ ExactBox exact_box_of(std::span<const Point3> points, const std::array<VertexInd
   return box;
 }
 
-/// visit(i, j) for every group i of `a` (the few) and j of `b` (the many) whose exact
-/// boxes meet, each pair once, in the order of j (the header says why every pair is
-/// found, once). Points finite. `cells_per_group`: about how many cells the grid has per
-/// group of `a` (a choice of cost only).
+/// visit(i, j) for every group i of `a` (the few, indices into `points_a`) and j of `b`
+/// (the many, indices into `points_b`) whose exact boxes meet, each pair once, in the
+/// order of j (the header says why every pair is found, once). Points finite.
+/// `cells_per_group`: about how many cells the grid has per group of `a` (a choice of cost
+/// only). The few may have points of their own (a pass's regions, with their new points),
+/// so that the many's (a surface's vertices) need not be copied to append them.
 template <std::size_t NA, std::size_t NB, class Visit>
-void overlapping_groups_by_grid(std::span<const Point3> points,
+void overlapping_groups_by_grid(std::span<const Point3> points_a,
                                 std::span<const std::array<VertexIndex, NA>> a,
+                                std::span<const Point3> points_b,
                                 std::span<const std::array<VertexIndex, NB>> b, Visit&& visit,
                                 GridScratch& scratch, double cells_per_group = 2.0) {
   if (a.empty() || b.empty()) return;
+  const std::span<const Point3> points = points_b;
   std::vector<ExactBox>& boxes = scratch.boxes;
   boxes.resize(a.size());
   for (std::size_t i = 0; i < a.size(); ++i)
-    boxes[i] = exact_box_of<NA>(points, a[i]);
+    boxes[i] = exact_box_of<NA>(points_a, a[i]);
   ExactBox root = boxes[0];
   for (const ExactBox& box : boxes)
     root.add(box);
@@ -216,6 +221,16 @@ void overlapping_groups_by_grid(std::span<const Point3> points,
       }
     });
   }
+}
+
+/// The same with the groups of `a` and `b` over one set of points.
+template <std::size_t NA, std::size_t NB, class Visit>
+void overlapping_groups_by_grid(std::span<const Point3> points,
+                                std::span<const std::array<VertexIndex, NA>> a,
+                                std::span<const std::array<VertexIndex, NB>> b, Visit&& visit,
+                                GridScratch& scratch, double cells_per_group = 2.0) {
+  overlapping_groups_by_grid<NA, NB>(points, a, points, b, std::forward<Visit>(visit), scratch,
+                                     cells_per_group);
 }
 
 }  // namespace exactgeo::boxes
