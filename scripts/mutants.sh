@@ -393,11 +393,11 @@ MUTANTS = [
      "if (squared > (1.0 + kMargin) * limit_squared) return true;",
      "if (squared > (1.0 - kMargin) * limit_squared) return true;", ["examples_tests"]),
     ("cloth_ask_margin_thin",
-     "examples/cloth/float_shortcuts.cpp",
+     "examples/cloth/float_shortcuts.hpp",
      "usable(rhs) && kMargin * lhs < rhs;", "usable(rhs) && lhs < kMargin * rhs;",
      ["examples_tests"]),
     ("cloth_half_turn_margin_thin",
-     "examples/cloth/float_shortcuts.cpp",
+     "examples/cloth/float_shortcuts.hpp",
      "const double margin = kMargin * m;", "const double margin = -kMargin * m;",
      ["examples_tests"]),
     # remesh: a split's partner is only its other triangle; its corner and edges are tested.

@@ -44,29 +44,4 @@ double world_min_angle_to_floor(const Point3& p, const Point3& q, const Point3& 
   return world_min_angle(p, q, r);
 }
 
-bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
-                           double max_length, double turn_per_edge) {
-  constexpr double kMargin = 1.0 + 1e-6;
-  if (!(dot > 0.0)) return false;
-  const double cross_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-  const double lhs = cross_squared * (max_length * max_length);
-  const double rhs = length_squared * (turn_per_edge * turn_per_edge) * (dot * dot);
-  return usable(cross_squared) && usable(dot * dot) && usable(length_squared) && usable(lhs) &&
-         usable(rhs) && kMargin * lhs < rhs;
-}
-
-std::optional<bool> clearly_beyond_half_turn(double cross1, double dot1, double cross2, double dot2,
-                                             double tan_slack) {
-  constexpr double kMargin = 1e-9;
-  const double m = (cross1 + std::abs(dot1)) * (cross2 + std::abs(dot2));
-  if (!(cross1 >= 0.0) || !(cross2 >= 0.0) || !usable(m)) return std::nullopt;
-  const double s = cross1 * dot2 + dot1 * cross2;  // N sin(alpha + beta)
-  const double c = dot1 * dot2 - cross1 * cross2;  // N cos(alpha + beta)
-  const double margin = kMargin * m;
-  const double beyond = c < 0.0 ? tan_slack * c - s : -s;
-  if (beyond > margin) return true;
-  if (beyond < -margin) return false;
-  return std::nullopt;
-}
-
 }  // namespace exactgeo::cloth

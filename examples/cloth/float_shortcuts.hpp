@@ -59,9 +59,20 @@ inline std::optional<bool> clearly_longer(double dx, double dy, double limit) {
 /// least `max_length` (the ask is length * turn_per_edge / angle, the angle between the
 /// normals atan2(|c|, dot)): the angle is at most its tangent |c| / dot for dot > 0, so
 /// |c|^2 max_length^2 below length^2 turn^2 dot^2 by a relative 1e-6 puts the ask above
-/// max_length. False means: work it out.
-bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
-                           double max_length, double turn_per_edge);
+/// max_length. False means: work it out. Inline, as clearly_longer: the sizes ask it of
+/// every inner sheet edge at each remesh's start.
+inline bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double length_squared,
+                                  double max_length, double turn_per_edge) {
+  constexpr double kMargin = 1.0 + 1e-6;
+  constexpr double kTiny = 1e-280;  // as float_shortcuts.cpp's: below, squares lose precision
+  const auto usable = [](double square) { return square > kTiny && std::isfinite(square); };
+  if (!(dot > 0.0)) return false;
+  const double cross_squared = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+  const double lhs = cross_squared * (max_length * max_length);
+  const double rhs = length_squared * (turn_per_edge * turn_per_edge) * (dot * dot);
+  return usable(cross_squared) && usable(dot * dot) && usable(length_squared) && usable(lhs) &&
+         usable(rhs) && kMargin * lhs < rhs;
+}
 
 /// Whether two angles, atan2(cross1, dot1) + atan2(cross2, dot2) (cross1, cross2 >= 0: each
 /// in [0, pi], a corner's of a triangle, from its sides' cross and dot products), sum to
@@ -74,8 +85,22 @@ bool asks_no_less_than_max(const std::array<double, 3>& c, double dot, double le
 /// cos(slack), t = tan(slack)); for c >= 0, theta is at least a quarter turn from 0 and
 /// has the sign of -s. Either is taken only when it exceeds 1e-9 m, m = (cross1 + |dot1|)
 /// (cross2 + |dot2|) >= N: then theta lies at least 1e-9 from slack, far beyond the few
-/// ulps by which the products and the full computation's atan2 round.
-std::optional<bool> clearly_beyond_half_turn(double cross1, double dot1, double cross2, double dot2,
-                                             double tan_slack);
+/// ulps by which the products and the full computation's atan2 round. Inline: the flip
+/// candidates ask it of every inner sheet edge in a remesh's first flip pass.
+inline std::optional<bool> clearly_beyond_half_turn(double cross1, double dot1, double cross2,
+                                                    double dot2, double tan_slack) {
+  constexpr double kMargin = 1e-9;
+  constexpr double kTiny = 1e-280;  // as float_shortcuts.cpp's: below, squares lose precision
+  const auto usable = [](double square) { return square > kTiny && std::isfinite(square); };
+  const double m = (cross1 + std::abs(dot1)) * (cross2 + std::abs(dot2));
+  if (!(cross1 >= 0.0) || !(cross2 >= 0.0) || !usable(m)) return std::nullopt;
+  const double s = cross1 * dot2 + dot1 * cross2;  // N sin(alpha + beta)
+  const double c = dot1 * dot2 - cross1 * cross2;  // N cos(alpha + beta)
+  const double margin = kMargin * m;
+  const double beyond = c < 0.0 ? tan_slack * c - s : -s;
+  if (beyond > margin) return true;
+  if (beyond < -margin) return false;
+  return std::nullopt;
+}
 
 }  // namespace exactgeo::cloth
